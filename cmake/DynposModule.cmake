@@ -1,0 +1,39 @@
+# Warning and sanitizer flags shared by every dynpos target.
+add_library(dynpos_warnings INTERFACE)
+target_compile_options(dynpos_warnings INTERFACE -Wall -Wextra -Wpedantic
+  $<$<BOOL:${DYNPOS_WERROR}>:-Werror>)
+if(DYNPOS_SANITIZE)
+  target_compile_options(dynpos_warnings INTERFACE -fsanitize=address,undefined
+    -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
+  target_link_options(dynpos_warnings INTERFACE -fsanitize=address,undefined)
+endif()
+
+# dynpos_add_module(NAME DEPS targets...)
+# One static library per module from src/NAME/*.cpp, public headers in include/dynpos/NAME.
+# A module links only to the modules it names, so a wrong include fails to build.
+function(dynpos_add_module name)
+  cmake_parse_arguments(ARG "" "" "DEPS" ${ARGN})
+  file(GLOB sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/${name}/*.cpp)
+  if(NOT sources)  # a header-only module
+    add_library(dynpos_${name} INTERFACE)
+    target_include_directories(dynpos_${name} INTERFACE ${PROJECT_SOURCE_DIR}/include)
+    target_link_libraries(dynpos_${name} INTERFACE ${ARG_DEPS})
+    add_library(dynpos::${name} ALIAS dynpos_${name})
+    return()
+  endif()
+  add_library(dynpos_${name} STATIC ${sources})
+  add_library(dynpos::${name} ALIAS dynpos_${name})
+  target_include_directories(dynpos_${name}
+    PUBLIC $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include>
+    PRIVATE ${PROJECT_SOURCE_DIR}/src/${name})
+  target_link_libraries(dynpos_${name} PUBLIC ${ARG_DEPS} PRIVATE dynpos_warnings)
+endfunction()
+
+# dynpos_add_test(NAME SOURCE LIBS...): one GoogleTest executable registered with CTest.
+function(dynpos_add_test name source)
+  add_executable(${name} ${source})
+  target_link_libraries(${name} PRIVATE ${ARGN} GTest::gtest GTest::gmock GTest::gtest_main dynpos_warnings)
+  target_compile_definitions(${name} PRIVATE DYNPOS_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60
+    PROPERTIES ENVIRONMENT "DYNPOS_SOURCE_DIR=${PROJECT_SOURCE_DIR}")
+endfunction()

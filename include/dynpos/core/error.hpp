@@ -1,0 +1,43 @@
+#pragma once
+/// \file
+/// The one error type for bad user input (files, options, column maps).
+///
+/// Our own bugs are asserts; anything a user can get wrong throws InputError, which carries
+/// where the problem is (file, line, column or channel) and how to fix it. The CLI catches it at
+/// the top, prints what(), and exits non-zero.
+
+#include <cstddef>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace dynpos::core {
+
+/// Where in the user's input a problem was found. Every field is optional.
+struct InputLocation {
+  std::string file;                  ///< path as the user gave it
+  std::optional<std::size_t> line;   ///< 1-based line number in the file
+  std::optional<std::size_t> column; ///< 1-based column (field) number
+  std::string column_name;           ///< header name of the column, or channel/role name
+};
+
+/// Bad user input: the message says what is wrong, where, and (in `hint`) how to fix it.
+class InputError : public std::runtime_error {
+ public:
+  InputError(InputLocation where, std::string what, std::string hint = {});
+
+  const InputLocation& where() const noexcept { return where_; }
+  const std::string& problem() const noexcept { return problem_; }
+  const std::string& hint() const noexcept { return hint_; }
+
+ private:
+  InputLocation where_;
+  std::string problem_;
+  std::string hint_;
+};
+
+/// "file:line:column (name): problem; hint" — the text InputError::what() returns.
+std::string format_input_error(const InputLocation& where, const std::string& problem,
+                               const std::string& hint);
+
+}  // namespace dynpos::core
