@@ -34,6 +34,6 @@ function(dynpos_add_test name source)
   add_executable(${name} ${source})
   target_link_libraries(${name} PRIVATE ${ARGN} GTest::gtest GTest::gmock GTest::gtest_main dynpos_warnings)
   target_compile_definitions(${name} PRIVATE DYNPOS_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
-  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60
+  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 TEST_PREFIX "${name}."
     PROPERTIES ENVIRONMENT "DYNPOS_SOURCE_DIR=${PROJECT_SOURCE_DIR}")
 endfunction()

@@ -7,8 +7,14 @@ std::string format_input_error(const InputLocation& where, const std::string& pr
   std::string out;
   if (!where.file.empty()) {
     out += where.file;
-    if (where.line) out += ":" + std::to_string(*where.line);
-    if (where.column) out += ":" + std::to_string(*where.column);
+    if (where.line) {
+      out += ':';
+      out += std::to_string(*where.line);
+    }
+    if (where.column) {
+      out += ':';
+      out += std::to_string(*where.column);
+    }
   } else if (where.line) {
     out += "line " + std::to_string(*where.line);
     if (where.column) out += ", column " + std::to_string(*where.column);

@@ -15,10 +15,10 @@ namespace dynpos::core {
 
 /// Where in the user's input a problem was found. Every field is optional.
 struct InputLocation {
-  std::string file;                  ///< path as the user gave it
-  std::optional<std::size_t> line;   ///< 1-based line number in the file
-  std::optional<std::size_t> column; ///< 1-based column (field) number
-  std::string column_name;           ///< header name of the column, or channel/role name
+  std::string file;                   ///< path as the user gave it
+  std::optional<std::size_t> line;    ///< 1-based line number in the file
+  std::optional<std::size_t> column;  ///< 1-based column (field) number
+  std::string column_name;            ///< header name of the column, or channel/role name
 };
 
 /// Bad user input: the message says what is wrong, where, and (in `hint`) how to fix it.

@@ -26,7 +26,7 @@ inline bool is_missing(double value) { return std::isnan(value); }
 /// How a channel is interpolated onto another time axis.
 enum class Interp {
   kLinear,   ///< continuous signals: linear between the two valid neighbours
-  kNearest,  ///< discrete signals: the valid sample nearest in time
+  kNearest,  ///< discrete signals: the valid sample nearest in time (a tie takes the earlier)
   kHold,     ///< discrete signals: the last valid sample at or before t (zero-order hold)
 };
 
@@ -86,10 +86,14 @@ class Log {
 
   /// The log on another time axis: each channel by its own Interp mode, using only valid
   /// samples; NaN outside the channel's valid range (no extrapolation) and inside gaps wider
-  /// than options.max_gap_s. `time_s` must be strictly increasing.
+  /// than options.max_gap_s. A target time equal to a valid sample's time gets that sample.
+  /// Runs in O(N + M) per channel (N rows, M target times).
+  /// Throws std::invalid_argument if `time_s` is not finite and strictly increasing, or if
+  /// options.max_gap_s is negative or NaN.
   Log resample(const std::vector<double>& time_s, const ResampleOptions& options = {}) const;
 
-  /// The samples with t_from_s <= t <= t_to_s (all channels).
+  /// The samples with t_from_s <= t <= t_to_s (all channels); empty if none.
+  /// Throws std::invalid_argument if t_from_s > t_to_s or either is NaN.
   Log window(double t_from_s, double t_to_s) const;
 
  private:

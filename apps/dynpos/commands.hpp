@@ -1,0 +1,30 @@
+#pragma once
+// The dynpos subcommands: each file registers one on the top-level app.
+// A registered callback throws on failure; main() maps exceptions to exit codes.
+
+#include <CLI/CLI.hpp>
+
+namespace dynpos::cli {
+
+/// Exit codes of the dynpos executable.
+enum ExitCode : int {
+  kExitOk = 0,
+  kExitFailure = 1,      ///< an unexpected error while running
+  kExitInputError = 2,   ///< bad input or options: the message says where and how to fix it
+  kExitUnavailable = 3,  ///< the subcommand is part of the contract but not in this version
+};
+
+/// Thrown by a subcommand that is part of the CLI contract but not shipped in this version.
+struct Unavailable {
+  std::string command;
+  std::string planned;  ///< what the subcommand will do
+};
+
+void register_simulate(CLI::App& app);
+void register_identify(CLI::App& app);
+void register_leverarm(CLI::App& app);
+void register_hybrid(CLI::App& app);
+void register_compare(CLI::App& app);
+void register_demo(CLI::App& app);
+
+}  // namespace dynpos::cli

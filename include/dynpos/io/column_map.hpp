@@ -1,0 +1,130 @@
+#pragma once
+/// \file
+/// ColumnMap: which column of a CSV log holds which role, in which unit and scale.
+///
+/// A map comes from a TOML file (load_column_map) and/or the command line (apply_overrides);
+/// the command line wins. Every role, unit and number is checked when it enters the map, so
+/// a bad map fails before any log is read, with the file, line and column of the mistake.
+///
+/// TOML schema (full reference and example in docs/log-format.md):
+///
+///     [csv]                        # optional; the defaults are shown
+///     delimiter = "auto"           # "auto", ",", ";", "\t" or "tab"
+///     comment = "#"                # lines starting with this are skipped; "" = none
+///     missing = []                 # tokens read as missing, besides the empty cell
+///
+///     [roles]
+///     time = "Time [s]"                              # just the column name
+///     heading = { column = "HDG", unit = "deg" }     # column and unit
+///     "thrust.port" = { column = "PS thrust", unit = "kN", scale = 1.0 }
+///
+/// Unit resolution for a mapped column, first match wins:
+///   1. the declared unit (--unit ROLE=UNIT, else `unit` in the map file);
+///   2. a unit in brackets at the end of the CSV header ("Speed [kn]", "Heading (deg)");
+///   3. the role's default unit (roles.hpp).
+///
+/// Scale multiplies the raw number before unit conversion: value in the unit = raw × scale,
+/// then SI = unit.to_si(raw × scale). Use it for loggers that store scaled integers
+/// (heading in 0.01° → unit = "deg", scale = 0.01) or the opposite sign convention (-1).
+
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "dynpos/core/error.hpp"
+#include "dynpos/core/units.hpp"
+#include "dynpos/io/roles.hpp"
+
+namespace dynpos::io {
+
+/// How the CSV text is split and which cells mean "missing".
+struct CsvFormat {
+  /// Field delimiter; nullopt = detect from the header line (comma, semicolon or tab: the one
+  /// that occurs most often outside quotes; comma when none occurs).
+  std::optional<char> delimiter;
+  /// Lines whose first non-blank characters are this prefix are skipped; empty = no comments.
+  std::string comment_prefix = "#";
+  /// Cell texts (after trimming spaces, case-sensitive) read as missing, besides the empty
+  /// cell, e.g. {"NA", "NaN"}. Without them a literal "nan" or "inf" cell is an error.
+  std::vector<std::string> missing_tokens;
+
+  /// Throws core::InputError if the delimiter is not ',', ';' or '\t' or the comment prefix
+  /// contains a delimiter character.
+  void validate() const;
+};
+
+/// One role's column: where it is in the file and how its numbers become SI.
+struct RoleColumn {
+  std::string column;               ///< header name in the file; empty = not given yet
+  std::optional<std::string> unit;  ///< declared unit spelling (checked against the role)
+  double scale = 1.0;               ///< multiplies the raw number before unit conversion
+  core::InputLocation source;       ///< where the column was declared, for error messages
+};
+
+/// Roles → columns, plus the CSV format options.
+class ColumnMap {
+ public:
+  /// Maps `role` to `column`. Throws core::InputError (at `where`) for an unknown role or an
+  /// empty column name.
+  void set_column(std::string_view role, std::string_view column, core::InputLocation where = {});
+  /// Like set_column(), and forgets the role's unit and scale (they described the old column).
+  void replace_column(std::string_view role, std::string_view column,
+                      core::InputLocation where = {});
+  /// Declares the unit of `role`. Throws core::InputError for an unknown role, an unknown unit
+  /// (the hint lists the spellings of the role's quantity) or a unit of another quantity.
+  void set_unit(std::string_view role, std::string_view unit, core::InputLocation where = {});
+  /// Sets the scale of `role`. Throws core::InputError if it is not finite or is zero.
+  void set_scale(std::string_view role, double scale, core::InputLocation where = {});
+
+  /// The role's entry, or nullptr if the role is not mapped.
+  const RoleColumn* find(std::string_view role) const;
+  /// All entries, by role name.
+  const std::map<std::string, RoleColumn, std::less<>>& roles() const noexcept { return roles_; }
+  bool empty() const noexcept { return roles_.empty(); }
+
+  const CsvFormat& format() const noexcept { return format_; }
+  CsvFormat& format() noexcept { return format_; }
+
+  /// Throws core::InputError if `time` is not mapped or a role has a unit or scale but no
+  /// column (e.g. --unit heading=rad without a column for heading).
+  void validate() const;
+
+ private:
+  RoleColumn& entry(std::string_view role, const core::InputLocation& where);
+
+  std::map<std::string, RoleColumn, std::less<>> roles_;
+  CsvFormat format_;
+};
+
+/// Parses a TOML column map; `source_name` (a path) is used in error messages.
+/// Throws core::InputError with line and column for TOML syntax errors, unknown tables or
+/// keys, unknown roles and bad units.
+ColumnMap parse_column_map(std::string_view toml_text, const std::string& source_name);
+
+/// Reads and parses a TOML column map file. Throws core::InputError if it cannot be read.
+ColumnMap load_column_map(const std::filesystem::path& path);
+
+/// Applies one `--col ROLE=COLUMN` argument (the text after the option). Replacing a role's
+/// column also drops the unit and scale the map file declared for it, since they described
+/// the old column. Throws core::InputError for a malformed argument or an unknown role.
+void apply_column_override(ColumnMap& map, std::string_view argument);
+
+/// Applies one `--unit ROLE=UNIT` argument. Throws core::InputError for a malformed argument,
+/// an unknown role, an unknown unit or a unit of the wrong quantity.
+void apply_unit_override(ColumnMap& map, std::string_view argument);
+
+/// Applies all `--col` arguments, then all `--unit` arguments, so a unit given on the command
+/// line always survives a column given there too.
+void apply_overrides(ColumnMap& map, const std::vector<std::string>& column_arguments,
+                     const std::vector<std::string>& unit_arguments);
+
+/// The unit `spelling` for `role`, checked: throws core::InputError at `where` if the
+/// spelling is unknown (hint: the accepted spellings for the role's quantity) or measures
+/// another quantity than the role's. Generic roles accept any known unit.
+core::Unit unit_for_role(const RoleSpec& role, std::string_view spelling,
+                         const core::InputLocation& where);
+
+}  // namespace dynpos::io

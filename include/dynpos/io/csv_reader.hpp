@@ -1,0 +1,70 @@
+#pragma once
+/// \file
+/// Streaming CSV log reader: loads only the mapped columns (and an optional time window) of a
+/// log that may be far larger than memory.
+///
+/// The file is read one line at a time; only the cells of mapped columns are parsed, and only
+/// rows inside the window are stored. Numbers are parsed locale-independently ('.' decimal
+/// point). Rules, in brief (details and examples in docs/log-format.md):
+/// - the first line that is neither blank nor a comment is the header; later blank and comment
+///   lines are skipped; CRLF line ends, a UTF-8 byte-order mark and quoted fields ("a,b", with
+///   "" for a quote, also spanning lines) are handled;
+/// - a blank cell, or one equal to a declared missing token, is missing (NaN), never zero;
+/// - text in a number cell, or a literal nan/inf that is not a declared missing token, is an
+///   error naming file:line:column and the header;
+/// - time must be present in every row and strictly increasing;
+/// - every row has as many fields as the header.
+/// Every error is a core::InputError with file, line, column number and header name.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "dynpos/core/log.hpp"
+#include "dynpos/io/column_map.hpp"
+
+namespace dynpos::io {
+
+/// Options for read_csv() and read_csv_all().
+struct CsvReadOptions {
+  /// Keep only rows with t_from_s <= t [s, after unit conversion]; nullopt = from the start.
+  std::optional<double> t_from_s;
+  /// Keep only rows with t <= t_to_s [s]; reading stops at the first later row, so rows after
+  /// the window are neither stored nor checked. nullopt = to the end.
+  std::optional<double> t_to_s;
+
+  /// Throws core::InputError if a bound is not finite or t_from_s > t_to_s.
+  void validate() const;
+};
+
+/// A header cell split into its name and the unit text of a trailing "[unit]" or "(unit)";
+/// unit is empty when there is none. "Speed [kn]" → {"Speed", "kn"}; "Heading (deg)" →
+/// {"Heading", "deg"}; "Thrust" → {"Thrust", ""}.
+struct HeaderCell {
+  std::string name;
+  std::string unit;
+};
+HeaderCell split_header_cell(std::string_view cell);
+
+/// Reads the mapped columns of a CSV log. Channels are named after their roles, in the order
+/// of their columns in the file, converted to SI (unit: declared > header bracket > role
+/// default) with the role's interpolation. Throws core::InputError (see the file comment).
+core::Log read_csv(const std::filesystem::path& path, const ColumnMap& map,
+                   const CsvReadOptions& options = {});
+
+/// Reads every numeric column of a CSV log, such as the ones write_csv() produces: the first
+/// column is time, each other column becomes a channel named after its header name (without
+/// the unit). A known bracket unit is converted to SI; an unknown one is kept as logged with
+/// its text as the channel unit; no bracket gives an empty unit. A column whose first value is
+/// text is skipped as a whole; text later in a numeric column is an error. Channels whose name
+/// is a role get the role's interpolation, others are linear.
+core::Log read_csv_all(const std::filesystem::path& path, const CsvReadOptions& options = {},
+                       const CsvFormat& format = {});
+
+/// The header cells of a CSV log (trimmed, unquoted), e.g. to list the columns a map may use.
+std::vector<std::string> read_csv_header(const std::filesystem::path& path,
+                                         const CsvFormat& format = {});
+
+}  // namespace dynpos::io

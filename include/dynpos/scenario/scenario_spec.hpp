@@ -1,0 +1,66 @@
+#pragma once
+/// \file
+/// ScenarioSpec: what one virtual sea-trial run does — its length, environment and the
+/// schedule of operator commands — as read from a scenario file in data/scenarios/.
+///
+/// Angles here are in the units of the scenario file's keys (degrees); the runner converts.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace dynpos::scenario {
+
+/// Joystick (manual) thrust demand, held from t_s until the next entry: the fraction of the
+/// maximum force or moment in each DOF that goes to the thrust allocation.
+struct JoystickCommand {
+  double t_s = 0.0;        ///< [s] ≥ 0, when the demand is applied
+  double surge_pct = 0.0;  ///< [%] −100…100 of maximum surge force, + forward
+  double sway_pct = 0.0;   ///< [%] −100…100 of maximum sway force, + starboard
+  double yaw_pct = 0.0;    ///< [%] −100…100 of maximum yaw moment, + bow to starboard
+};
+
+/// The weather and water of a run. Directions follow the sea-trial habit: wind and waves are
+/// given as the direction they come FROM, current as the direction it flows TO, all in degrees
+/// clockwise from north.
+struct EnvironmentSpec {
+  double current_speed_mps = 0.0;   ///< [m/s] 0…3
+  double current_to_deg = 0.0;      ///< [deg] direction the current flows to
+  double wind_speed_mps = 0.0;      ///< [m/s] 0…40, 10-minute mean at 10 m
+  double wind_from_deg = 0.0;       ///< [deg]
+  double hs_m = 0.0;                ///< [m] significant wave height 0…8 (0 = no waves)
+  double tp_s = 6.0;                ///< [s] spectral peak period 2…20
+  double wave_from_deg = 0.0;       ///< [deg]
+  int wave_components = 60;         ///< number of spectral components, 10…1000
+};
+
+/// A whole scenario.
+struct ScenarioSpec {
+  std::string name;         ///< identifier, e.g. "surge-steps-forward"
+  std::string description;  ///< one paragraph for humans
+  std::string source;       ///< file it was read from (for messages), empty if built in code
+  double duration_s = 60.0;     ///< [s] > 0, run length
+  double dt_s = 0.01;           ///< [s] integration step, > 0, divides every rate's period
+  double log_rate_hz = 10.0;    ///< [Hz] rate of the truth log; its period is a multiple of dt
+  double initial_heading_deg = 0.0;  ///< [deg] ψ(0)
+  double initial_surge_mps = 0.0;    ///< [m/s] u(0), with actuators trimmed to hold it
+  EnvironmentSpec environment;
+  std::vector<JoystickCommand> joystick;  ///< sorted by t_s; empty = zero demand throughout
+  /// Throws core::InputError (naming source and the bad field) if a value is out of range, the
+  /// joystick times are not increasing or lie outside [0, duration].
+  void validate() const;
+};
+
+/// Reads a scenario TOML file (schema in docs/cli.md, "Scenario files").
+/// Throws core::InputError with file, line and key for every problem.
+ScenarioSpec load_scenario(const std::filesystem::path& path);
+
+/// The names of the scenario files (stem of data/scenarios/*.toml) in `scenario_dir`, sorted.
+std::vector<std::string> list_scenarios(const std::filesystem::path& scenario_dir);
+
+/// Resolves a scenario argument: an existing .toml path, or a name in `scenario_dir`.
+/// Throws core::InputError "unknown scenario 'X'" listing the available ones.
+std::filesystem::path resolve_scenario(const std::string& name_or_path,
+                                       const std::filesystem::path& scenario_dir);
+
+}  // namespace dynpos::scenario

@@ -1,0 +1,316 @@
+#include "dynpos/io/column_map.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include <toml++/toml.h>
+
+#include "text_util.hpp"
+
+namespace dynpos::io {
+namespace {
+
+using core::InputError;
+using core::InputLocation;
+
+RoleSpec require_role(std::string_view role, const InputLocation& where) {
+  if (auto spec = find_role(role)) return *spec;
+  std::string hint;
+  if (const std::string near = closest_role(role); !near.empty()) {
+    hint = fmt::format("did you mean '{}'? ", near);
+  }
+  hint += "the roles are listed in docs/log-format.md";
+  throw InputError(where, fmt::format("unknown role '{}'", role), hint);
+}
+
+InputLocation at(const std::string& file, const toml::source_region& region) {
+  InputLocation where;
+  where.file = file;
+  if (region.begin.line > 0) where.line = region.begin.line;
+  if (region.begin.column > 0) where.column = region.begin.column;
+  return where;
+}
+
+InputLocation command_line(std::string_view option) {
+  InputLocation where;
+  where.column_name = std::string(option);
+  return where;
+}
+
+// Splits "ROLE=VALUE" at the first '='; both sides trimmed and non-empty.
+std::pair<std::string, std::string> split_assignment(std::string_view argument,
+                                                     std::string_view option,
+                                                     std::string_view value_name,
+                                                     std::string_view example) {
+  const auto eq = argument.find('=');
+  const std::string_view role = detail::trim(argument.substr(0, eq));
+  const std::string_view value =
+      eq == std::string_view::npos ? std::string_view{} : detail::trim(argument.substr(eq + 1));
+  if (eq == std::string_view::npos || role.empty() || value.empty()) {
+    throw InputError(command_line(option),
+                     fmt::format("malformed argument '{}': expected ROLE={}", argument, value_name),
+                     fmt::format("for example {} {}", option, example));
+  }
+  return {std::string(role), std::string(value)};
+}
+
+char parse_delimiter(const toml::node& node, const std::string& file) {
+  const auto text = node.value<std::string>();
+  if (text) {
+    if (*text == "," || *text == ";" || *text == "\t") return (*text)[0];
+    if (*text == "tab") return '\t';
+  }
+  throw InputError(at(file, node.source()),
+                   "csv.delimiter must be \"auto\", \",\", \";\", \"\\t\" or \"tab\"");
+}
+
+void read_csv_table(const toml::table& table, CsvFormat& format, const std::string& file) {
+  for (auto&& [key, node] : table) {
+    const std::string_view name = key.str();
+    if (name == "delimiter") {
+      if (node.value<std::string>() == std::optional<std::string>("auto")) {
+        format.delimiter.reset();
+      } else {
+        format.delimiter = parse_delimiter(node, file);
+      }
+    } else if (name == "comment") {
+      const auto text = node.value<std::string>();
+      if (!text) throw InputError(at(file, node.source()), "csv.comment must be a string");
+      format.comment_prefix = *text;
+    } else if (name == "missing") {
+      const toml::array* items = node.as_array();
+      if (items == nullptr) {
+        throw InputError(at(file, node.source()), "csv.missing must be an array of strings",
+                         "for example missing = [\"NA\", \"NaN\"]");
+      }
+      format.missing_tokens.clear();
+      for (const toml::node& item : *items) {
+        const auto text = item.value<std::string>();
+        if (!text) {
+          throw InputError(at(file, item.source()), "csv.missing must be an array of strings");
+        }
+        format.missing_tokens.push_back(*text);
+      }
+    } else {
+      throw InputError(at(file, key.source()), fmt::format("unknown key '{}' in [csv]", name),
+                       "the keys are delimiter, comment and missing");
+    }
+  }
+  try {
+    format.validate();
+  } catch (const InputError& e) {
+    throw InputError(at(file, table.source()), e.problem(), e.hint());
+  }
+}
+
+void read_role_table(const std::string& role, const toml::table& table, ColumnMap& map,
+                     const std::string& file, const toml::source_region& where) {
+  const toml::node* column = table.get("column");
+  if (column == nullptr || !column->is_string()) {
+    throw InputError(at(file, where), fmt::format("role '{}' needs column = \"NAME\"", role),
+                     fmt::format("for example {} = {{ column = \"HDG\", unit = \"deg\" }}", role));
+  }
+  map.set_column(role, *column->value<std::string>(), at(file, column->source()));
+  for (auto&& [key, node] : table) {
+    const std::string_view name = key.str();
+    if (name == "column") continue;
+    if (name == "unit") {
+      const auto unit = node.value<std::string>();
+      if (!unit) throw InputError(at(file, node.source()), "unit must be a string");
+      map.set_unit(role, *unit, at(file, node.source()));
+    } else if (name == "scale") {
+      const auto scale = node.value<double>();
+      if (!scale) throw InputError(at(file, node.source()), "scale must be a number");
+      map.set_scale(role, *scale, at(file, node.source()));
+    } else {
+      throw InputError(at(file, key.source()),
+                       fmt::format("unknown key '{}' for role '{}'", name, role),
+                       "the keys are column, unit and scale");
+    }
+  }
+}
+
+// Walks [roles]; dotted keys (thrust.port = "X", [roles.gnss1]) are joined back into role names.
+void read_roles_table(const std::string& prefix, const toml::table& table, ColumnMap& map,
+                      const std::string& file) {
+  for (auto&& [key, node] : table) {
+    const std::string role =
+        prefix.empty() ? std::string(key.str()) : prefix + "." + std::string(key.str());
+    if (const auto column = node.value<std::string>(); column && node.is_string()) {
+      require_role(role, at(file, key.source()));
+      map.set_column(role, *column, at(file, node.source()));
+    } else if (const toml::table* sub = node.as_table()) {
+      if (sub->contains("column") || find_role(role)) {
+        require_role(role, at(file, key.source()));
+        read_role_table(role, *sub, map, file, key.source());
+      } else {
+        read_roles_table(role, *sub, map, file);
+      }
+    } else {
+      throw InputError(at(file, node.source()),
+                       fmt::format("role '{}' must be a column name or a table", role),
+                       fmt::format("for example {} = \"Column name\"", role));
+    }
+  }
+}
+
+}  // namespace
+
+void CsvFormat::validate() const {
+  if (delimiter && *delimiter != ',' && *delimiter != ';' && *delimiter != '\t') {
+    throw InputError({}, fmt::format("unsupported delimiter '{}'", *delimiter),
+                     "use ',', ';' or a tab");
+  }
+  if (comment_prefix.find_first_of(",;\t\"") != std::string::npos) {
+    throw InputError(
+        {}, fmt::format("comment prefix '{}' contains a delimiter or quote", comment_prefix));
+  }
+}
+
+core::Unit unit_for_role(const RoleSpec& role, std::string_view spelling,
+                         const InputLocation& where) {
+  const auto unit = core::find_unit(spelling);
+  if (!unit) {
+    const std::string hint =
+        role.quantity
+            ? fmt::format("accepted spellings for {} ({}): {}", core::quantity_name(*role.quantity),
+                          role.name, detail::join(core::unit_spellings(*role.quantity)))
+            : std::string("the accepted spellings are listed in docs/log-format.md");
+    throw InputError(where, fmt::format("unknown unit '{}' for role '{}'", spelling, role.name),
+                     hint);
+  }
+  if (role.quantity && unit->quantity != *role.quantity) {
+    throw InputError(
+        where,
+        fmt::format("unit '{}' measures {}, but role '{}' is {}", spelling,
+                    core::quantity_name(unit->quantity), role.name,
+                    core::quantity_name(*role.quantity)),
+        fmt::format("use one of: {}", detail::join(core::unit_spellings(*role.quantity))));
+  }
+  return *unit;
+}
+
+RoleColumn& ColumnMap::entry(std::string_view role, const InputLocation& where) {
+  require_role(role, where);
+  auto it = roles_.find(role);
+  if (it == roles_.end()) it = roles_.emplace(std::string(role), RoleColumn{}).first;
+  return it->second;
+}
+
+void ColumnMap::set_column(std::string_view role, std::string_view column, InputLocation where) {
+  RoleColumn& e = entry(role, where);
+  const std::string_view name = detail::trim(column);
+  if (name.empty()) {
+    throw InputError(where, fmt::format("empty column name for role '{}'", role));
+  }
+  e.column = std::string(name);
+  e.source = std::move(where);
+}
+
+void ColumnMap::replace_column(std::string_view role, std::string_view column,
+                               InputLocation where) {
+  set_column(role, column, std::move(where));
+  RoleColumn& e = roles_.find(role)->second;
+  e.unit.reset();
+  e.scale = 1.0;
+}
+
+void ColumnMap::set_unit(std::string_view role, std::string_view unit, InputLocation where) {
+  const RoleSpec spec = require_role(role, where);
+  unit_for_role(spec, unit, where);
+  RoleColumn& e = entry(role, where);
+  e.unit = std::string(detail::trim(unit));
+  if (e.source.file.empty() && e.source.column_name.empty()) e.source = std::move(where);
+}
+
+void ColumnMap::set_scale(std::string_view role, double scale, InputLocation where) {
+  RoleColumn& e = entry(role, where);
+  if (!std::isfinite(scale) || scale == 0.0) {
+    throw InputError(
+        where, fmt::format("scale {} for role '{}' must be finite and non-zero", scale, role));
+  }
+  e.scale = scale;
+}
+
+const RoleColumn* ColumnMap::find(std::string_view role) const {
+  const auto it = roles_.find(role);
+  return it == roles_.end() ? nullptr : &it->second;
+}
+
+void ColumnMap::validate() const {
+  format_.validate();
+  for (const auto& [role, e] : roles_) {
+    if (e.column.empty()) {
+      throw InputError(
+          e.source, fmt::format("role '{}' has a unit or scale but no column", role),
+          fmt::format("map it with --col {}=COLUMN or in [roles] of the map file", role));
+    }
+  }
+  if (find("time") == nullptr) {
+    throw InputError({}, "the column map has no 'time' column",
+                     "map it with --col time=COLUMN or time = \"COLUMN\" in [roles]");
+  }
+}
+
+ColumnMap parse_column_map(std::string_view toml_text, const std::string& source_name) {
+  toml::table root;
+  try {
+    root = toml::parse(toml_text, source_name);
+  } catch (const toml::parse_error& e) {
+    throw InputError(at(source_name, e.source()),
+                     fmt::format("TOML syntax error: {}", e.description()));
+  }
+  ColumnMap map;
+  for (auto&& [key, node] : root) {
+    const std::string_view name = key.str();
+    const toml::table* table = node.as_table();
+    if ((name == "csv" || name == "roles") && table == nullptr) {
+      throw InputError(at(source_name, key.source()), fmt::format("'{}' must be a table", name),
+                       fmt::format("write it as [{}]", name));
+    }
+    if (name == "csv") {
+      read_csv_table(*table, map.format(), source_name);
+    } else if (name == "roles") {
+      read_roles_table("", *table, map, source_name);
+    } else {
+      throw InputError(at(source_name, key.source()),
+                       fmt::format("unknown table or key '{}' in the column map", name),
+                       "the tables are [csv] and [roles]");
+    }
+  }
+  return map;
+}
+
+ColumnMap load_column_map(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    InputLocation where;
+    where.file = path.string();
+    throw InputError(where, "cannot open the column map file", "check the path");
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_column_map(text.str(), path.string());
+}
+
+void apply_column_override(ColumnMap& map, std::string_view argument) {
+  auto [role, column] = split_assignment(argument, "--col", "COLUMN", "heading=HDG");
+  const InputLocation where = command_line("--col " + std::string(argument));
+  map.replace_column(role, column, where);
+}
+
+void apply_unit_override(ColumnMap& map, std::string_view argument) {
+  auto [role, unit] = split_assignment(argument, "--unit", "UNIT", "heading=deg");
+  map.set_unit(role, unit, command_line("--unit " + std::string(argument)));
+}
+
+void apply_overrides(ColumnMap& map, const std::vector<std::string>& column_arguments,
+                     const std::vector<std::string>& unit_arguments) {
+  for (const auto& argument : column_arguments) apply_column_override(map, argument);
+  for (const auto& argument : unit_arguments) apply_unit_override(map, argument);
+}
+
+}  // namespace dynpos::io

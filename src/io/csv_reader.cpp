@@ -1,0 +1,620 @@
+#include "dynpos/io/csv_reader.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "text_util.hpp"
+
+namespace dynpos::io {
+namespace {
+
+using core::InputError;
+using core::InputLocation;
+
+constexpr std::size_t kNoSlot = std::numeric_limits<std::size_t>::max();
+
+// Reads physical lines and assembles records: skips blank and comment lines, strips CR and a
+// UTF-8 byte-order mark, and joins lines while a quoted field is open.
+class LineReader {
+ public:
+  LineReader(const std::filesystem::path& path, std::string comment_prefix)
+      : path_(path.string()), comment_prefix_(std::move(comment_prefix)) {
+    in_.open(path, std::ios::binary);
+    if (!in_) {
+      InputLocation where;
+      where.file = path_;
+      throw InputError(where, fmt::format("cannot open the log: {}", std::strerror(errno)),
+                       "check the path");
+    }
+  }
+
+  const std::string& path() const noexcept { return path_; }
+
+  // The next record that is not blank or a comment; false at the end of the file.
+  bool next(std::string& record, std::size_t& record_line) {
+    while (read_physical(record)) {
+      const std::string_view text = detail::trim(record);
+      if (text.empty()) continue;
+      if (!comment_prefix_.empty() && text.substr(0, comment_prefix_.size()) == comment_prefix_) {
+        continue;
+      }
+      record_line = line_;
+      return true;
+    }
+    return false;
+  }
+
+  // Appends the next physical line to a record whose quoted field is still open.
+  bool continue_record(std::string& record) {
+    std::string more;
+    if (!read_physical(more)) return false;
+    record += '\n';
+    record += more;
+    return true;
+  }
+
+  std::size_t line() const noexcept { return line_; }
+
+ private:
+  bool read_physical(std::string& out) {
+    if (!std::getline(in_, out)) {
+      if (in_.bad()) {
+        InputLocation where;
+        where.file = path_;
+        where.line = line_;
+        throw InputError(where, fmt::format("read error: {}", std::strerror(errno)));
+      }
+      return false;
+    }
+    ++line_;
+    if (!out.empty() && out.back() == '\r') out.pop_back();
+    if (line_ == 1 && out.compare(0, 3, "\xEF\xBB\xBF") == 0) out.erase(0, 3);
+    return true;
+  }
+
+  std::ifstream in_;
+  std::string path_;
+  std::string comment_prefix_;
+  std::size_t line_ = 0;
+};
+
+// One field scanned from `pos`: its text (a view into the record, or into `buffer` when a
+// quoted field had "" escapes), the position after its delimiter (npos at the end), and
+// whether a quoted field was closed.
+struct Field {
+  std::string_view text;
+  std::size_t next = std::string_view::npos;
+  bool closed = true;
+};
+
+Field scan_field(std::string_view record, std::size_t pos, char delimiter, std::string& buffer) {
+  Field field;
+  std::size_t start = pos;
+  while (start < record.size() && (record[start] == ' ' || record[start] == '\t') &&
+         record[start] != delimiter) {
+    ++start;
+  }
+  if (start < record.size() && record[start] == '"') {
+    // Quoted: up to the closing quote; "" is a literal quote.
+    std::size_t i = start + 1;
+    bool escaped = false;
+    for (;;) {
+      const std::size_t quote = record.find('"', i);
+      if (quote == std::string_view::npos) {
+        field.closed = false;
+        return field;
+      }
+      if (quote + 1 < record.size() && record[quote + 1] == '"') {
+        escaped = true;
+        i = quote + 2;
+        continue;
+      }
+      if (escaped) {
+        buffer.clear();
+        for (std::size_t k = start + 1; k < quote; ++k) {
+          buffer += record[k];
+          if (record[k] == '"') ++k;  // skip the second quote of ""
+        }
+        field.text = buffer;
+      } else {
+        field.text = record.substr(start + 1, quote - start - 1);
+      }
+      const std::size_t end = record.find(delimiter, quote + 1);
+      field.next = end == std::string_view::npos ? end : end + 1;
+      return field;
+    }
+  }
+  const std::size_t end = record.find(delimiter, pos);
+  field.text = record.substr(pos, end == std::string_view::npos ? record.size() - pos : end - pos);
+  field.next = end == std::string_view::npos ? end : end + 1;
+  return field;
+}
+
+char detect_delimiter(std::string_view header) {
+  std::size_t counts[3] = {0, 0, 0};
+  constexpr char kCandidates[3] = {',', ';', '\t'};
+  bool quoted = false;
+  for (const char c : header) {
+    if (c == '"') quoted = !quoted;
+    if (quoted) continue;
+    for (int k = 0; k < 3; ++k) counts[k] += (c == kCandidates[k]) ? 1 : 0;
+  }
+  int best = 0;
+  for (int k = 1; k < 3; ++k) {
+    if (counts[k] > counts[best]) best = k;
+  }
+  return kCandidates[best];
+}
+
+std::string delimiter_name(char delimiter) {
+  return delimiter == '\t' ? std::string("tab") : fmt::format("'{}'", delimiter);
+}
+
+// unit.to_si(), but without adding a zero offset, which would turn -0.0 into +0.0 and break
+// exact write→read round trips.
+double to_si(const core::Unit& unit, double value) {
+  return unit.offset == 0.0 ? value * unit.scale : unit.to_si(value);
+}
+
+enum class CellKind { kNumber, kMissing, kText, kNonFinite, kOutOfRange };
+
+CellKind parse_cell(std::string_view cell, const std::vector<std::string>& missing_tokens,
+                    double& value) {
+  const std::string_view text = detail::trim(cell);
+  if (text.empty()) return CellKind::kMissing;
+  for (const auto& token : missing_tokens) {
+    if (text == token) return CellKind::kMissing;
+  }
+  std::string_view digits = text;
+  // from_chars does not take a leading '+'; loggers sometimes write one.
+  if (digits.size() > 1 && digits.front() == '+' && digits[1] != '-' && digits[1] != '+') {
+    digits.remove_prefix(1);
+  }
+  const char* end = digits.data() + digits.size();
+  const auto [ptr, ec] = std::from_chars(digits.data(), end, value);
+  if (ec == std::errc::result_out_of_range && ptr == end) return CellKind::kOutOfRange;
+  if (ec != std::errc() || ptr != end) return CellKind::kText;
+  if (!std::isfinite(value)) return CellKind::kNonFinite;
+  return CellKind::kNumber;
+}
+
+// How one column becomes a channel.
+struct ColumnPlan {
+  std::size_t field = 0;  // 0-based field index in the row
+  std::size_t slot = 0;   // index into the per-row cell array
+  std::string header;     // header text, for messages
+  std::string channel;    // channel name in the Log
+  std::string unit_symbol;
+  core::Interp interp = core::Interp::kLinear;
+  core::Unit unit;           // converts the scaled raw value to SI
+  double scale = 1.0;        // multiplies the raw value before conversion
+  bool may_be_text = false;  // read_csv_all: a text column is dropped, not an error
+  enum class State { kUnknown, kNumeric, kText } state = State::kUnknown;
+  std::vector<double> values;
+};
+
+struct Header {
+  std::vector<std::string> cells;
+  std::size_t line = 0;
+  char delimiter = ',';
+};
+
+std::vector<std::string> split_header(LineReader& reader, std::string& record, char delimiter) {
+  std::vector<std::string> cells;
+  std::string buffer;
+  std::size_t pos = 0;
+  for (;;) {
+    const Field field = scan_field(record, pos, delimiter, buffer);
+    if (!field.closed) {
+      if (reader.continue_record(record)) {
+        cells.clear();
+        pos = 0;
+        continue;
+      }
+      InputLocation where;
+      where.file = reader.path();
+      where.line = reader.line();
+      throw InputError(where, "unterminated quoted field in the header",
+                       "close the quote (\") or remove it");
+    }
+    cells.emplace_back(detail::trim(field.text));
+    if (field.next == std::string_view::npos) break;
+    pos = field.next;
+  }
+  return cells;
+}
+
+Header read_header(LineReader& reader, const CsvFormat& format) {
+  Header header;
+  std::string record;
+  if (!reader.next(record, header.line)) {
+    InputLocation where;
+    where.file = reader.path();
+    throw InputError(where, "the log is empty: no header line",
+                     "a CSV log starts with a header line naming its columns");
+  }
+  header.delimiter = format.delimiter ? *format.delimiter : detect_delimiter(record);
+  header.cells = split_header(reader, record, header.delimiter);
+  return header;
+}
+
+InputLocation cell_location(const std::string& file, std::size_t line, const ColumnPlan& plan) {
+  InputLocation where;
+  where.file = file;
+  where.line = line;
+  where.column = plan.field + 1;
+  where.column_name = plan.header;
+  return where;
+}
+
+[[noreturn]] void throw_bad_cell(CellKind kind, std::string_view cell, const InputLocation& where,
+                                 char delimiter) {
+  const std::string text(detail::trim(cell));
+  switch (kind) {
+    case CellKind::kNonFinite:
+      throw InputError(where, fmt::format("'{}' is not a finite number", text),
+                       fmt::format("leave the cell blank for missing data, or declare the token "
+                                   "as missing (missing = [\"{}\"] in [csv] of the column map)",
+                                   text));
+    case CellKind::kOutOfRange:
+      throw InputError(where, fmt::format("'{}' is out of the range of a double", text));
+    default: {
+      std::string hint =
+          "numbers use '.' as the decimal point; leave the cell blank for missing data, or "
+          "declare the token as missing in [csv] of the column map";
+      if (text.find(',') != std::string::npos && delimiter != ',') {
+        hint = "decimal commas are not supported: use '.' as the decimal point";
+      }
+      throw InputError(where, fmt::format("'{}' is not a number", text), hint);
+    }
+  }
+}
+
+// Streams the data rows after the header into the plans' vectors; returns the time axis.
+std::vector<double> stream_rows(LineReader& reader, const Header& header, const CsvFormat& format,
+                                ColumnPlan& time, std::vector<ColumnPlan>& channels,
+                                const CsvReadOptions& options) {
+  // Field index → slot in `cells` (several roles may share a column).
+  std::vector<std::size_t> slot_of_field(header.cells.size(), kNoSlot);
+  std::size_t slots = 0;
+  auto assign = [&](ColumnPlan& plan) {
+    if (slot_of_field[plan.field] == kNoSlot) slot_of_field[plan.field] = slots++;
+    plan.slot = slot_of_field[plan.field];
+  };
+  assign(time);
+  for (auto& plan : channels) assign(plan);
+  std::vector<std::string_view> cells(slots);
+  std::vector<std::string> buffers(slots);
+  std::string junk;
+
+  const double t_from = options.t_from_s.value_or(-std::numeric_limits<double>::infinity());
+  const double t_to = options.t_to_s.value_or(std::numeric_limits<double>::infinity());
+  std::vector<double> time_s;
+  double last_t = 0.0;
+  std::size_t last_line = 0;
+  std::size_t rows = 0;
+  std::optional<double> first_t;
+
+  std::string record;
+  std::size_t line = 0;
+  while (reader.next(record, line)) {
+    std::size_t field_count = 0;
+    std::size_t pos = 0;
+    for (;;) {
+      const std::size_t slot =
+          field_count < slot_of_field.size() ? slot_of_field[field_count] : kNoSlot;
+      const Field field =
+          scan_field(record, pos, header.delimiter, slot == kNoSlot ? junk : buffers[slot]);
+      if (!field.closed) {
+        if (reader.continue_record(record)) {
+          field_count = 0;
+          pos = 0;
+          continue;
+        }
+        InputLocation where;
+        where.file = reader.path();
+        where.line = line;
+        where.column = field_count + 1;
+        throw InputError(where, "unterminated quoted field", "close the quote (\") or remove it");
+      }
+      if (slot != kNoSlot) cells[slot] = field.text;
+      ++field_count;
+      if (field.next == std::string_view::npos) break;
+      pos = field.next;
+    }
+    if (field_count != header.cells.size()) {
+      InputLocation where;
+      where.file = reader.path();
+      where.line = line;
+      throw InputError(where,
+                       fmt::format("the row has {} fields but the header (line {}) has {}",
+                                   field_count, header.line, header.cells.size()),
+                       fmt::format("check the delimiter (using {}) and quoting",
+                                   delimiter_name(header.delimiter)));
+    }
+
+    double raw = 0.0;
+    const std::string_view time_cell = cells[time.slot];
+    const CellKind kind = parse_cell(time_cell, format.missing_tokens, raw);
+    if (kind == CellKind::kMissing) {
+      throw InputError(cell_location(reader.path(), line, time), "the time cell is blank",
+                       "every row needs a time; remove the row or fill in its time");
+    }
+    if (kind != CellKind::kNumber) {
+      throw_bad_cell(kind, time_cell, cell_location(reader.path(), line, time), header.delimiter);
+    }
+    const double t = to_si(time.unit, raw * time.scale);
+    if (rows > 0 && !(t > last_t)) {
+      throw InputError(cell_location(reader.path(), line, time),
+                       fmt::format("time {} s {} the previous row's {} s (line {})", t,
+                                   t == last_t ? "repeats" : "goes back from", last_t, last_line),
+                       "time must be strictly increasing; sort the log or remove duplicated rows");
+    }
+    if (!first_t) first_t = t;
+    last_t = t;
+    last_line = line;
+    ++rows;
+    if (t < t_from) continue;
+    if (t > t_to) break;
+
+    time_s.push_back(t);
+    for (auto& plan : channels) {
+      double value = core::kMissing;
+      const std::string_view cell = cells[plan.slot];
+      const CellKind cell_kind = parse_cell(cell, format.missing_tokens, raw);
+      if (cell_kind == CellKind::kNumber) {
+        value = to_si(plan.unit, raw * plan.scale);
+        if (plan.state == ColumnPlan::State::kUnknown) plan.state = ColumnPlan::State::kNumeric;
+      } else if (cell_kind != CellKind::kMissing) {
+        if (plan.may_be_text && cell_kind == CellKind::kText &&
+            plan.state != ColumnPlan::State::kNumeric) {
+          plan.state = ColumnPlan::State::kText;
+          plan.values.clear();
+          plan.values.shrink_to_fit();
+        }
+        if (plan.state != ColumnPlan::State::kText) {
+          throw_bad_cell(cell_kind, cell, cell_location(reader.path(), line, plan),
+                         header.delimiter);
+        }
+      }
+      if (plan.state != ColumnPlan::State::kText) plan.values.push_back(value);
+    }
+  }
+
+  if (time_s.empty()) {
+    InputLocation where;
+    where.file = reader.path();
+    if (rows == 0) {
+      throw InputError(where, "the log has a header but no data rows");
+    }
+    throw InputError(
+        where, fmt::format("no rows inside the window [{}, {}] s", t_from, t_to),
+        fmt::format("the log starts at {} s{}", *first_t,
+                    last_t > t_to ? std::string() : fmt::format(" and ends at {} s", last_t)));
+  }
+  return time_s;
+}
+
+// Index of the header cell for `column`: the full header text first, then the name without a
+// bracketed unit. Throws if it is absent or ambiguous.
+std::size_t find_column(const Header& header, const std::string& column, const std::string& role,
+                        const RoleColumn& entry, const std::string& file) {
+  InputLocation where;
+  where.file = file;
+  where.line = header.line;
+  where.column_name = role;
+  for (const bool by_name : {false, true}) {
+    std::vector<std::size_t> hits;
+    for (std::size_t i = 0; i < header.cells.size(); ++i) {
+      const std::string& cell = header.cells[i];
+      if ((by_name ? split_header_cell(cell).name : cell) == column) hits.push_back(i);
+    }
+    if (hits.size() == 1) return hits.front();
+    if (hits.size() > 1) {
+      throw InputError(where,
+                       fmt::format("column '{}' for role '{}' appears more than once in the "
+                                   "header (columns {} and {})",
+                                   column, role, hits[0] + 1, hits[1] + 1),
+                       "rename one of them in the file, or map the full header text");
+    }
+  }
+  std::string hint = fmt::format("the columns are: {}", detail::join(header.cells));
+  // Compare with the names without units too, so "Heading" finds "HEADING [deg]".
+  std::string near = detail::closest_match(column, header.cells);
+  if (near.empty()) {
+    std::vector<std::string> names;
+    for (const auto& cell : header.cells) names.push_back(split_header_cell(cell).name);
+    const std::string name = detail::closest_match(column, names);
+    if (!name.empty()) {
+      near = header.cells[static_cast<std::size_t>(std::find(names.begin(), names.end(), name) -
+                                                   names.begin())];
+    }
+  }
+  if (!near.empty()) hint = fmt::format("did you mean '{}'? {}", near, hint);
+  if (!entry.source.file.empty()) {
+    hint += fmt::format(" (mapped in {}{})", entry.source.file,
+                        entry.source.line ? fmt::format(":{}", *entry.source.line) : "");
+  } else if (!entry.source.column_name.empty()) {
+    hint += fmt::format(" (mapped by {})", entry.source.column_name);
+  }
+  throw InputError(
+      where, fmt::format("column '{}' for role '{}' is not in the header", column, role), hint);
+}
+
+}  // namespace
+
+void CsvReadOptions::validate() const {
+  const bool from_ok = !t_from_s || std::isfinite(*t_from_s);
+  const bool to_ok = !t_to_s || std::isfinite(*t_to_s);
+  if (!from_ok || !to_ok) throw InputError({}, "the time window bounds must be finite");
+  if (t_from_s && t_to_s && *t_from_s > *t_to_s) {
+    throw InputError({}, fmt::format("the time window [{}, {}] s is empty", *t_from_s, *t_to_s),
+                     "the start must not be after the end");
+  }
+}
+
+HeaderCell split_header_cell(std::string_view cell) {
+  const std::string_view text = detail::trim(cell);
+  HeaderCell out{std::string(text), {}};
+  if (text.size() < 3) return out;
+  const char close = text.back();
+  const char open = close == ']' ? '[' : close == ')' ? '(' : '\0';
+  if (open == '\0') return out;
+  const std::size_t at = text.rfind(open);
+  if (at == std::string_view::npos) return out;
+  const std::string_view name = detail::trim(text.substr(0, at));
+  if (name.empty()) return out;
+  out.name = std::string(name);
+  out.unit = std::string(detail::trim(text.substr(at + 1, text.size() - at - 2)));
+  return out;
+}
+
+std::vector<std::string> read_csv_header(const std::filesystem::path& path,
+                                         const CsvFormat& format) {
+  format.validate();
+  LineReader reader(path, format.comment_prefix);
+  return read_header(reader, format).cells;
+}
+
+core::Log read_csv(const std::filesystem::path& path, const ColumnMap& map,
+                   const CsvReadOptions& options) {
+  map.validate();
+  options.validate();
+  const CsvFormat& format = map.format();
+  LineReader reader(path, format.comment_prefix);
+  const Header header = read_header(reader, format);
+
+  std::vector<ColumnPlan> plans;
+  ColumnPlan time;
+  for (const auto& [role, entry] : map.roles()) {
+    const std::optional<RoleSpec> spec = find_role(role);
+    assert(spec && "ColumnMap only holds known roles");
+    ColumnPlan plan;
+    plan.field = find_column(header, entry.column, role, entry, reader.path());
+    plan.header = header.cells[plan.field];
+    plan.channel = role;
+    plan.interp = spec->interp;
+    plan.scale = entry.scale;
+    if (entry.unit) {
+      plan.unit = unit_for_role(*spec, *entry.unit, entry.source);
+    } else if (const HeaderCell cell = split_header_cell(plan.header); !cell.unit.empty()) {
+      InputLocation where;
+      where.file = reader.path();
+      where.line = header.line;
+      where.column = plan.field + 1;
+      where.column_name = plan.header;
+      try {
+        plan.unit = unit_for_role(*spec, cell.unit, where);
+      } catch (const InputError& e) {
+        throw InputError(e.where(), e.problem() + " (from the header)",
+                         e.hint() + fmt::format("; or declare the unit with --unit {}=UNIT or "
+                                                "unit = \"...\" in the column map",
+                                                role));
+      }
+    } else {
+      const auto unit = core::find_unit(spec->default_unit);
+      assert(unit && "every role default is a known unit");
+      plan.unit = *unit;
+    }
+    plan.unit_symbol = core::si_unit(plan.unit.quantity).symbol;
+    if (role == "time") {
+      time = std::move(plan);
+    } else {
+      plans.push_back(std::move(plan));
+    }
+  }
+  std::stable_sort(plans.begin(), plans.end(),
+                   [](const ColumnPlan& a, const ColumnPlan& b) { return a.field < b.field; });
+
+  std::vector<double> time_s = stream_rows(reader, header, format, time, plans, options);
+  core::Log log(std::move(time_s));
+  for (auto& plan : plans) {
+    log.add_channel(plan.channel, plan.unit_symbol, std::move(plan.values), plan.interp);
+  }
+  return log;
+}
+
+core::Log read_csv_all(const std::filesystem::path& path, const CsvReadOptions& options,
+                       const CsvFormat& format) {
+  format.validate();
+  options.validate();
+  LineReader reader(path, format.comment_prefix);
+  const Header header = read_header(reader, format);
+
+  const auto header_location = [&](std::size_t field) {
+    InputLocation where;
+    where.file = reader.path();
+    where.line = header.line;
+    where.column = field + 1;
+    where.column_name = header.cells[field];
+    return where;
+  };
+
+  ColumnPlan time;
+  std::vector<ColumnPlan> plans;
+  std::map<std::string, std::size_t> seen;
+  for (std::size_t i = 0; i < header.cells.size(); ++i) {
+    const HeaderCell cell = split_header_cell(header.cells[i]);
+    if (cell.name.empty()) {
+      throw InputError(header_location(i), "empty column name in the header",
+                       "name every column (a trailing delimiter makes an empty last column)");
+    }
+    ColumnPlan plan;
+    plan.field = i;
+    plan.header = header.cells[i];
+    plan.channel = cell.name;
+    const std::optional<core::Unit> unit = core::find_unit(cell.unit.empty() ? "1" : cell.unit);
+    if (i == 0) {
+      const std::optional<core::Unit> time_unit =
+          cell.unit.empty() ? core::si_unit(core::Quantity::kTime) : unit;
+      if (!time_unit || time_unit->quantity != core::Quantity::kTime) {
+        throw InputError(header_location(i),
+                         fmt::format("the first column is time, but its unit '{}' is not a time "
+                                     "unit",
+                                     cell.unit),
+                         fmt::format("use one of: {}",
+                                     detail::join(core::unit_spellings(core::Quantity::kTime))));
+      }
+      plan.unit = *time_unit;
+      time = std::move(plan);
+      continue;
+    }
+    if (const auto [it, inserted] = seen.emplace(cell.name, i); !inserted) {
+      throw InputError(header_location(i),
+                       fmt::format("channel '{}' appears twice (columns {} and {})", cell.name,
+                                   it->second + 1, i + 1),
+                       "give every column a distinct name");
+    }
+    if (cell.unit.empty()) {
+      plan.unit = core::Unit{"", core::Quantity::kDimensionless, 1.0, 0.0};
+      plan.unit_symbol = "";
+    } else if (unit) {
+      plan.unit = *unit;
+      plan.unit_symbol = core::si_unit(unit->quantity).symbol;
+    } else {
+      plan.unit = core::Unit{cell.unit, core::Quantity::kDimensionless, 1.0, 0.0};
+      plan.unit_symbol = cell.unit;  // unknown unit: kept as logged
+    }
+    if (const auto role = find_role(cell.name)) plan.interp = role->interp;
+    plan.may_be_text = true;
+    plans.push_back(std::move(plan));
+  }
+
+  std::vector<double> time_s = stream_rows(reader, header, format, time, plans, options);
+  core::Log log(std::move(time_s));
+  for (auto& plan : plans) {
+    if (plan.state == ColumnPlan::State::kText) continue;
+    log.add_channel(plan.channel, plan.unit_symbol, std::move(plan.values), plan.interp);
+  }
+  return log;
+}
+
+}  // namespace dynpos::io

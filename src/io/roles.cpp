@@ -1,0 +1,134 @@
+#include "dynpos/io/roles.hpp"
+
+#include <algorithm>
+#include <array>
+
+#include "text_util.hpp"
+
+namespace dynpos::io {
+namespace {
+
+using core::Interp;
+using core::Quantity;
+
+RoleSpec make(std::string name, std::optional<Quantity> quantity, std::string unit, Interp interp,
+              std::string description) {
+  return RoleSpec{std::move(name), quantity, std::move(unit), interp, std::move(description)};
+}
+
+std::vector<RoleSpec> build_catalogue() {
+  const auto cont = Interp::kLinear;
+  const auto hold = Interp::kHold;
+  return {
+      make("time", Quantity::kTime, "s", cont, "time axis, strictly increasing"),
+      make("north", Quantity::kLength, "m", cont, "position north of the local origin (NED x)"),
+      make("east", Quantity::kLength, "m", cont, "position east of the local origin (NED y)"),
+      make("down", Quantity::kLength, "m", cont, "position down (NED z)"),
+      make("lat", Quantity::kAngle, "deg", cont, "geodetic latitude"),
+      make("lon", Quantity::kAngle, "deg", cont, "geodetic longitude"),
+      make("height", Quantity::kLength, "m", cont, "height above the ellipsoid"),
+      make("heading", Quantity::kAngle, "deg", cont, "heading ψ, clockwise from north"),
+      make("roll", Quantity::kAngle, "deg", cont, "roll φ, starboard down positive"),
+      make("pitch", Quantity::kAngle, "deg", cont, "pitch θ, bow up positive"),
+      make("p", Quantity::kAngularRate, "deg/s", cont, "roll rate (BODY x)"),
+      make("q", Quantity::kAngularRate, "deg/s", cont, "pitch rate (BODY y)"),
+      make("r", Quantity::kAngularRate, "deg/s", cont, "yaw rate (BODY z)"),
+      make("u", Quantity::kSpeed, "m/s", cont, "surge speed (BODY x)"),
+      make("v", Quantity::kSpeed, "m/s", cont, "sway speed (BODY y)"),
+      make("w", Quantity::kSpeed, "m/s", cont, "heave speed (BODY z)"),
+      make("wind_speed", Quantity::kSpeed, "m/s", cont, "wind speed"),
+      make("wind_dir", Quantity::kAngle, "deg", cont, "direction the wind comes from"),
+      make("setpoint.north", Quantity::kLength, "m", hold, "DP position setpoint, north"),
+      make("setpoint.east", Quantity::kLength, "m", hold, "DP position setpoint, east"),
+      make("setpoint.heading", Quantity::kAngle, "deg", hold, "DP heading setpoint"),
+      make("input", std::nullopt, "1", hold, "generic test input (e.g. a step command)"),
+      make("output", std::nullopt, "1", cont, "generic measured response"),
+      make("trigger", std::nullopt, "1", hold, "generic event or trigger signal"),
+      make("thrust.NAME", Quantity::kForce, "kN", cont, "thrust of thruster NAME"),
+      make("power.NAME", Quantity::kPower, "kW", cont, "power of thruster NAME"),
+      make("rpm.NAME", Quantity::kShaftSpeed, "rpm", cont, "shaft speed of thruster NAME"),
+      make("rudder.NAME", Quantity::kAngle, "deg", cont, "angle of rudder NAME"),
+      make("command.NAME", Quantity::kFraction, "%", hold, "thrust or pitch command to NAME"),
+      make("gnssK.lat", Quantity::kAngle, "deg", cont, "latitude of GNSS antenna K"),
+      make("gnssK.lon", Quantity::kAngle, "deg", cont, "longitude of GNSS antenna K"),
+      make("gnssK.height", Quantity::kLength, "m", cont, "ellipsoidal height of antenna K"),
+      make("gnssK.north", Quantity::kLength, "m", cont, "antenna K position north"),
+      make("gnssK.east", Quantity::kLength, "m", cont, "antenna K position east"),
+      make("gnssK.down", Quantity::kLength, "m", cont, "antenna K position down"),
+      make("mruK.ax", Quantity::kAcceleration, "m/s^2", cont, "MRU K specific force, BODY x"),
+      make("mruK.ay", Quantity::kAcceleration, "m/s^2", cont, "MRU K specific force, BODY y"),
+      make("mruK.az", Quantity::kAcceleration, "m/s^2", cont, "MRU K specific force, BODY z"),
+  };
+}
+
+// NAME of a thruster/rudder: letters, digits, '_' or '-'.
+bool valid_name_part(std::string_view part) {
+  if (part.empty()) return false;
+  return std::all_of(part.begin(), part.end(), [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+           c == '-';
+  });
+}
+
+// K of a sensor index: a positive integer without leading zeros.
+bool valid_index_part(std::string_view part) {
+  if (part.empty() || part.front() == '0') return false;
+  return std::all_of(part.begin(), part.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+const RoleSpec* catalogue_entry(std::string_view name) {
+  const auto& all = role_catalogue();
+  const auto it =
+      std::find_if(all.begin(), all.end(), [&](const RoleSpec& r) { return r.name == name; });
+  return it == all.end() ? nullptr : &*it;
+}
+
+std::optional<RoleSpec> instantiate(std::string_view pattern, std::string_view name) {
+  const RoleSpec* entry = catalogue_entry(pattern);
+  if (entry == nullptr) return std::nullopt;
+  RoleSpec spec = *entry;
+  spec.name = std::string(name);
+  return spec;
+}
+
+}  // namespace
+
+const std::vector<RoleSpec>& role_catalogue() {
+  static const std::vector<RoleSpec> catalogue = build_catalogue();
+  return catalogue;
+}
+
+std::optional<RoleSpec> find_role(std::string_view name) {
+  if (const RoleSpec* entry = catalogue_entry(name)) {
+    // Placeholders ("thrust.NAME", "gnssK.lat") are documentation, not roles.
+    if (name.find("NAME") == std::string_view::npos && name.find("K.") == std::string_view::npos) {
+      return *entry;
+    }
+  }
+  const auto dot = name.find('.');
+  if (dot == std::string_view::npos) return std::nullopt;
+  const std::string_view prefix = name.substr(0, dot);
+  const std::string_view suffix = name.substr(dot + 1);
+
+  static constexpr std::array<std::string_view, 5> kNamed = {"thrust", "power", "rpm", "rudder",
+                                                             "command"};
+  if (std::find(kNamed.begin(), kNamed.end(), prefix) != kNamed.end()) {
+    if (!valid_name_part(suffix)) return std::nullopt;
+    return instantiate(std::string(prefix) + ".NAME", name);
+  }
+  for (const std::string_view sensor : {std::string_view("gnss"), std::string_view("mru")}) {
+    if (prefix.size() > sensor.size() && prefix.substr(0, sensor.size()) == sensor &&
+        valid_index_part(prefix.substr(sensor.size()))) {
+      return instantiate(std::string(sensor) + "K." + std::string(suffix), name);
+    }
+  }
+  return std::nullopt;
+}
+
+std::string closest_role(std::string_view name) {
+  std::vector<std::string> names;
+  for (const auto& role : role_catalogue()) names.push_back(role.name);
+  return detail::closest_match(name, names);
+}
+
+}  // namespace dynpos::io

@@ -1,0 +1,146 @@
+#include "dynpos/scenario/scenario_spec.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "dynpos/core/error.hpp"
+#include "toml_fields.hpp"
+
+namespace dynpos::scenario {
+namespace {
+
+using detail::TomlTable;
+
+core::InputLocation at(const ScenarioSpec& spec, std::string field) {
+  return {spec.source, {}, {}, std::move(field)};
+}
+
+void check_range(const ScenarioSpec& spec, const std::string& field, double value, double lo,
+                 double hi) {
+  if (!(value >= lo && value <= hi)) {
+    throw core::InputError(at(spec, field), fmt::format("value {} is out of range", value),
+                           fmt::format("expected a number in [{}, {}]", lo, hi));
+  }
+}
+
+EnvironmentSpec read_environment(const TomlTable& t) {
+  t.reject_unknown({"current_speed_mps", "current_to_deg", "wind_speed_mps", "wind_from_deg",
+                    "hs_m", "tp_s", "wave_from_deg", "wave_components"});
+  EnvironmentSpec env;
+  env.current_speed_mps = t.number_or("current_speed_mps", env.current_speed_mps, 0.0, 3.0);
+  env.current_to_deg = t.number_or("current_to_deg", env.current_to_deg, -360.0, 360.0);
+  env.wind_speed_mps = t.number_or("wind_speed_mps", env.wind_speed_mps, 0.0, 40.0);
+  env.wind_from_deg = t.number_or("wind_from_deg", env.wind_from_deg, -360.0, 360.0);
+  env.hs_m = t.number_or("hs_m", env.hs_m, 0.0, 8.0);
+  env.tp_s = t.number_or("tp_s", env.tp_s, 2.0, 20.0);
+  env.wave_from_deg = t.number_or("wave_from_deg", env.wave_from_deg, -360.0, 360.0);
+  env.wave_components =
+      static_cast<int>(t.number_or("wave_components", env.wave_components, 10, 1000));
+  return env;
+}
+
+}  // namespace
+
+void ScenarioSpec::validate() const {
+  if (name.empty()) throw core::InputError(at(*this, "name"), "scenario has no name");
+  check_range(*this, "duration_s", duration_s, 1e-6, 1e6);
+  check_range(*this, "dt_s", dt_s, 1e-5, 1.0);
+  check_range(*this, "log_rate_hz", log_rate_hz, 1e-3, 1000.0);
+  const double ticks_per_log = 1.0 / (log_rate_hz * dt_s);
+  if (std::abs(ticks_per_log - std::round(ticks_per_log)) > 1e-9 * ticks_per_log ||
+      std::round(ticks_per_log) < 1.0) {
+    throw core::InputError(at(*this, "log_rate_hz"),
+                           fmt::format("log period 1/{} s is not a multiple of dt_s = {} s",
+                                       log_rate_hz, dt_s),
+                           "choose a log rate whose period is a whole number of steps");
+  }
+  check_range(*this, "initial_surge_mps", initial_surge_mps, -4.0, 7.0);
+  double previous = -1.0;
+  for (std::size_t i = 0; i < joystick.size(); ++i) {
+    const JoystickCommand& c = joystick[i];
+    const std::string field = fmt::format("joystick[{}]", i + 1);
+    check_range(*this, field + ".t_s", c.t_s, 0.0, duration_s);
+    if (c.t_s <= previous) {
+      throw core::InputError(at(*this, field + ".t_s"),
+                             fmt::format("time {} s is not after the previous command", c.t_s),
+                             "list joystick commands in increasing time");
+    }
+    previous = c.t_s;
+    check_range(*this, field + ".surge_pct", c.surge_pct, -100.0, 100.0);
+    check_range(*this, field + ".sway_pct", c.sway_pct, -100.0, 100.0);
+    check_range(*this, field + ".yaw_pct", c.yaw_pct, -100.0, 100.0);
+  }
+}
+
+ScenarioSpec load_scenario(const std::filesystem::path& path) {
+  const std::string file = path.string();
+  const toml::table doc = TomlTable::parse_file(file);
+  const TomlTable root(doc, file, "");
+  root.reject_unknown({"name", "description", "duration_s", "dt_s", "log_rate_hz",
+                       "initial_heading_deg", "initial_surge_mps", "environment", "joystick"});
+  ScenarioSpec spec;
+  spec.source = file;
+  spec.name = root.string("name");
+  spec.description = root.string_or("description", "");
+  spec.duration_s = root.number("duration_s", 1e-6, 1e6);
+  spec.dt_s = root.number_or("dt_s", spec.dt_s, 1e-5, 1.0);
+  spec.log_rate_hz = root.number_or("log_rate_hz", spec.log_rate_hz, 1e-3, 1000.0);
+  spec.initial_heading_deg = root.number_or("initial_heading_deg", 0.0, -360.0, 360.0);
+  spec.initial_surge_mps = root.number_or("initial_surge_mps", 0.0, -4.0, 7.0);
+  if (auto env = root.optional_table("environment")) spec.environment = read_environment(*env);
+
+  if (const toml::node* node = doc.get("joystick")) {
+    const toml::array* rows = node->as_array();
+    if (rows == nullptr) {
+      throw core::InputError(root.where("joystick"), "expected an array of tables",
+                             "write each command as [[joystick]] with t_s and *_pct keys");
+    }
+    for (std::size_t i = 0; i < rows->size(); ++i) {
+      const toml::table* row = (*rows)[i].as_table();
+      if (row == nullptr) {
+        throw core::InputError(root.where("joystick"), "expected a table in [[joystick]]");
+      }
+      const TomlTable t(*row, file, fmt::format("joystick[{}]", i + 1));
+      t.reject_unknown({"t_s", "surge_pct", "sway_pct", "yaw_pct"});
+      JoystickCommand c;
+      c.t_s = t.number("t_s", 0.0, 1e6);
+      c.surge_pct = t.number_or("surge_pct", 0.0, -100.0, 100.0);
+      c.sway_pct = t.number_or("sway_pct", 0.0, -100.0, 100.0);
+      c.yaw_pct = t.number_or("yaw_pct", 0.0, -100.0, 100.0);
+      spec.joystick.push_back(c);
+    }
+  }
+  spec.validate();
+  return spec;
+}
+
+std::vector<std::string> list_scenarios(const std::filesystem::path& scenario_dir) {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(scenario_dir, ec)) {
+    if (entry.path().extension() == ".toml") names.push_back(entry.path().stem().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+std::filesystem::path resolve_scenario(const std::string& name_or_path,
+                                       const std::filesystem::path& scenario_dir) {
+  const std::filesystem::path as_path(name_or_path);
+  if (as_path.extension() == ".toml") {
+    if (std::filesystem::is_regular_file(as_path)) return as_path;
+    throw core::InputError({name_or_path, {}, {}, {}}, "scenario file not found");
+  }
+  const std::filesystem::path builtin = scenario_dir / (name_or_path + ".toml");
+  if (std::filesystem::is_regular_file(builtin)) return builtin;
+  std::string list;
+  for (const std::string& n : list_scenarios(scenario_dir)) list += (list.empty() ? "" : ", ") + n;
+  throw core::InputError({}, fmt::format("unknown scenario '{}'", name_or_path),
+                         "available: " + (list.empty() ? std::string("none found in ") +
+                                                             scenario_dir.string()
+                                                       : list));
+}
+
+}  // namespace dynpos::scenario

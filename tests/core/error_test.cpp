@@ -1,0 +1,60 @@
+#include "dynpos/core/error.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <string>
+
+namespace dynpos::core {
+namespace {
+
+using ::testing::MatchesRegex;
+
+TEST(InputError, FullLocationFormat) {
+  const InputError e({"trial/aug.csv", 12, 3, "heading"}, "'abc' is not a number",
+                     "write heading in degrees");
+  EXPECT_THAT(e.what(), MatchesRegex(R"(trial/aug\.csv:12:3 \(heading\): 'abc' is not a number; )"
+                                     R"(write heading in degrees)"));
+  // The general shape every CLI message follows: file:line:column (name): problem; hint.
+  EXPECT_THAT(e.what(), MatchesRegex(R"([^:]+:[0-9]+:[0-9]+ \([^)]+\): [^;]+; .+)"));
+}
+
+TEST(InputError, PartialLocations) {
+  EXPECT_THAT(format_input_error({"map.toml", {}, {}, ""}, "unknown role 'nrth'", ""),
+              MatchesRegex(R"(map\.toml: unknown role 'nrth')"));
+  EXPECT_THAT(format_input_error({"map.toml", 7, {}, ""}, "bad unit", "use deg or rad"),
+              MatchesRegex(R"(map\.toml:7: bad unit; use deg or rad)"));
+  EXPECT_THAT(format_input_error({"", 5, 2, "u"}, "empty field", ""),
+              MatchesRegex(R"(line 5, column 2 \(u\): empty field)"));
+  EXPECT_THAT(format_input_error({"", 5, {}, ""}, "empty field", ""),
+              MatchesRegex(R"(line 5: empty field)"));
+  EXPECT_THAT(format_input_error({"", {}, {}, "roll"}, "channel missing", "map the role"),
+              MatchesRegex(R"(\(roll\): channel missing; map the role)"));
+  EXPECT_THAT(format_input_error({}, "no input", ""), MatchesRegex("no input"));
+}
+
+TEST(InputError, NoHintMeansNoSeparator) {
+  const std::string text = format_input_error({"a.csv", 1, 1, "t"}, "time not increasing", "");
+  EXPECT_THAT(text, MatchesRegex(R"(a\.csv:1:1 \(t\): time not increasing)"));
+  EXPECT_EQ(text.find(';'), std::string::npos);
+}
+
+TEST(InputError, KeepsItsParts) {
+  try {
+    throw InputError({"log.csv", 40, 6, "n_port"}, "value out of range", "check the unit");
+  } catch (const std::runtime_error& caught) {  // the CLI catches it as a runtime_error
+    const auto* e = dynamic_cast<const InputError*>(&caught);
+    ASSERT_NE(e, nullptr);
+    EXPECT_EQ(e->where().file, "log.csv");
+    EXPECT_EQ(e->where().line, 40u);
+    EXPECT_EQ(e->where().column, 6u);
+    EXPECT_EQ(e->where().column_name, "n_port");
+    EXPECT_EQ(e->problem(), "value out of range");
+    EXPECT_EQ(e->hint(), "check the unit");
+    EXPECT_EQ(std::string(e->what()), format_input_error(e->where(), e->problem(), e->hint()));
+  }
+}
+
+}  // namespace
+}  // namespace dynpos::core

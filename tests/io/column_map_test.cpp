@@ -1,0 +1,202 @@
+#include "dynpos/io/column_map.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "io_test_util.hpp"
+
+namespace dynpos::io {
+namespace {
+
+using ::testing::ContainsRegex;
+using testing::input_error_message;
+using testing::TempDir;
+
+constexpr const char* kFullMap = R"toml(
+# Gunnerus trial logger
+[csv]
+delimiter = ";"
+comment = "%"
+missing = ["NA", "NaN"]
+
+[roles]
+time = "Time [s]"
+heading = { column = "HDG", unit = "rad" }
+thrust.port = { column = "PS thrust", unit = "kN", scale = 2.0 }
+
+[roles."rpm.stbd"]
+column = "SB rpm"
+
+[roles.gnss1]
+lat = "Lat1"
+lon = { column = "Lon1", unit = "deg" }
+)toml";
+
+TEST(ColumnMap, ParsesTheDocumentedSchema) {
+  TempDir dir;
+  const ColumnMap map = load_column_map(dir.write("map.toml", kFullMap));
+  EXPECT_EQ(map.format().delimiter, ';');
+  EXPECT_EQ(map.format().comment_prefix, "%");
+  EXPECT_EQ(map.format().missing_tokens, (std::vector<std::string>{"NA", "NaN"}));
+  ASSERT_EQ(map.roles().size(), 6u);
+
+  ASSERT_NE(map.find("time"), nullptr);
+  EXPECT_EQ(map.find("time")->column, "Time [s]");
+  EXPECT_FALSE(map.find("time")->unit.has_value());
+
+  const RoleColumn* heading = map.find("heading");
+  ASSERT_NE(heading, nullptr);
+  EXPECT_EQ(heading->column, "HDG");
+  EXPECT_EQ(heading->unit, "rad");
+  EXPECT_EQ(heading->scale, 1.0);
+  EXPECT_EQ(heading->source.line, 10u);
+
+  const RoleColumn* thrust = map.find("thrust.port");
+  ASSERT_NE(thrust, nullptr);
+  EXPECT_EQ(thrust->column, "PS thrust");
+  EXPECT_EQ(thrust->scale, 2.0);
+
+  EXPECT_EQ(map.find("rpm.stbd")->column, "SB rpm");
+  EXPECT_EQ(map.find("gnss1.lat")->column, "Lat1");
+  EXPECT_EQ(map.find("gnss1.lon")->unit, "deg");
+  EXPECT_NO_THROW(map.validate());
+}
+
+TEST(ColumnMap, DefaultsAreAutoDelimiterHashCommentsAndNoTokens) {
+  const ColumnMap map = parse_column_map("[roles]\ntime = \"t\"\n", "m.toml");
+  EXPECT_FALSE(map.format().delimiter.has_value());
+  EXPECT_EQ(map.format().comment_prefix, "#");
+  EXPECT_TRUE(map.format().missing_tokens.empty());
+  EXPECT_EQ(parse_column_map("[csv]\ndelimiter = \"tab\"\n", "m").format().delimiter, '\t');
+  EXPECT_EQ(parse_column_map("[csv]\ndelimiter = \"\\t\"\n", "m").format().delimiter, '\t');
+}
+
+TEST(ColumnMap, CommandLineWinsOverTheFile) {
+  ColumnMap map = parse_column_map(kFullMap, "map.toml");
+  apply_overrides(map, {"heading=Heading (deg)", "u = Speed"}, {"heading=deg", "u=kn"});
+  const RoleColumn* heading = map.find("heading");
+  EXPECT_EQ(heading->column, "Heading (deg)");
+  EXPECT_EQ(heading->unit, "deg");
+  EXPECT_EQ(map.find("u")->column, "Speed");
+  EXPECT_EQ(map.find("u")->unit, "kn");
+  // A new column drops the unit and scale the file declared for the old one.
+  apply_column_override(map, "thrust.port=Thrust PS");
+  EXPECT_FALSE(map.find("thrust.port")->unit.has_value());
+  EXPECT_EQ(map.find("thrust.port")->scale, 1.0);
+  // A column name may itself contain '='.
+  apply_column_override(map, "r=ROT=deg/min");
+  EXPECT_EQ(map.find("r")->column, "ROT=deg/min");
+}
+
+TEST(ColumnMap, ErrorsInTheFileNameLineAndColumn) {
+  const auto parse = [](const std::string& text) { return parse_column_map(text, "map.toml"); };
+  EXPECT_THAT(input_error_message([&] { parse("[roles]\ntime = \"t\"\nheding = \"HDG\"\n"); }),
+              ContainsRegex("^map\\.toml:3:1: unknown role 'heding'; did you mean 'heading'"));
+  EXPECT_THAT(
+      input_error_message(
+          [&] { parse("[roles]\nheading = { column = \"H\", unit = \"m/s\" }\n"); }),
+      ContainsRegex("^map\\.toml:2:[0-9]+: unit 'm/s' measures speed, but role 'heading' is "
+                    "angle; use one of: .*rad.*deg"));
+  EXPECT_THAT(input_error_message(
+                  [&] { parse("[roles]\nheading = { column = \"H\", unit = \"dgr\" }\n"); }),
+              ContainsRegex("^map\\.toml:2:[0-9]+: unknown unit 'dgr' for role 'heading'; accepted "
+                            "spellings for angle \\(heading\\): .*deg"));
+  EXPECT_THAT(input_error_message([&] { parse("[roles]\ntime = 3\n"); }),
+              ContainsRegex("^map\\.toml:2:8: role 'time' must be a column name or a table"));
+  EXPECT_THAT(input_error_message([&] { parse("[roles]\nheading = { unit = \"deg\" }\n"); }),
+              ContainsRegex("^map\\.toml:2:1: role 'heading' needs column"));
+  EXPECT_THAT(
+      input_error_message([&] { parse("[roles]\nheading = { column = \"H\", scal = 2 }\n"); }),
+      ContainsRegex("^map\\.toml:2:[0-9]+: unknown key 'scal' for role 'heading'"));
+  EXPECT_THAT(
+      input_error_message([&] { parse("[roles]\nheading = { column = \"H\", scale = 0 }\n"); }),
+      ContainsRegex("^map\\.toml:2:[0-9]+: scale 0 for role 'heading' must be finite"));
+  EXPECT_THAT(input_error_message([&] { parse("[column]\ntime = \"t\"\n"); }),
+              ContainsRegex("^map\\.toml:1:2: unknown table or key 'column'.*\\[csv\\] and "
+                            "\\[roles\\]"));
+  EXPECT_THAT(input_error_message([&] { parse("[csv]\ndelimiter = \"|\"\n"); }),
+              ContainsRegex("^map\\.toml:2:13: csv.delimiter must be"));
+  EXPECT_THAT(input_error_message([&] { parse("[roles]\ntime = \"t\n"); }),
+              ContainsRegex("^map\\.toml:2:[0-9]+: TOML syntax error"));
+}
+
+TEST(ColumnMap, MissingFileIsAnInputError) {
+  TempDir dir;
+  EXPECT_THAT(input_error_message([&] { load_column_map(dir / "absent.toml"); }),
+              ContainsRegex("absent\\.toml: cannot open the column map file"));
+}
+
+TEST(ColumnMap, ErrorsOnTheCommandLineNameTheOption) {
+  ColumnMap map;
+  EXPECT_THAT(input_error_message([&] { apply_column_override(map, "heading"); }),
+              ContainsRegex("\\(--col\\): malformed argument 'heading': expected ROLE=COLUMN"));
+  EXPECT_THAT(input_error_message([&] { apply_column_override(map, "=HDG"); }),
+              ContainsRegex("malformed argument '=HDG'"));
+  EXPECT_THAT(input_error_message([&] { apply_unit_override(map, "heading="); }),
+              ContainsRegex("\\(--unit\\): malformed argument 'heading=': expected ROLE=UNIT"));
+  EXPECT_THAT(input_error_message([&] { apply_column_override(map, "yaw=HDG"); }),
+              ContainsRegex("\\(--col yaw=HDG\\): unknown role 'yaw'"));
+  EXPECT_THAT(input_error_message([&] { apply_unit_override(map, "heading=m/s"); }),
+              ContainsRegex("\\(--unit heading=m/s\\): unit 'm/s' measures speed, but role "
+                            "'heading' is angle"));
+  EXPECT_THAT(input_error_message([&] { apply_unit_override(map, "thrust.port=kNN"); }),
+              ContainsRegex("unknown unit 'kNN' for role 'thrust.port'; accepted spellings for "
+                            "force.*kN"));
+}
+
+TEST(ColumnMap, GenericRolesAcceptAnyKnownUnit) {
+  ColumnMap map;
+  EXPECT_NO_THROW(apply_unit_override(map, "input=%"));
+  EXPECT_NO_THROW(apply_unit_override(map, "output=m/s"));
+  EXPECT_THAT(input_error_message([&] { apply_unit_override(map, "output=furlong"); }),
+              ContainsRegex("unknown unit 'furlong' for role 'output'"));
+}
+
+TEST(ColumnMap, ValidateNeedsTimeAndAColumnForEveryUnit) {
+  ColumnMap map;
+  map.set_column("heading", "HDG");
+  EXPECT_THAT(input_error_message([&] { map.validate(); }),
+              ContainsRegex("no 'time' column; map it with --col time=COLUMN"));
+  map.set_column("time", "t");
+  EXPECT_NO_THROW(map.validate());
+  apply_unit_override(map, "u=kn");
+  EXPECT_THAT(input_error_message([&] { map.validate(); }),
+              ContainsRegex("\\(--unit u=kn\\): role 'u' has a unit or scale but no column"));
+}
+
+}  // namespace
+}  // namespace dynpos::io
+
+namespace dynpos::io {
+namespace {
+
+// The example map in docs/log-format.md must stay valid.
+TEST(ColumnMap, TheDocumentedExampleParses) {
+  std::ifstream in(std::filesystem::path(DYNPOS_SOURCE_DIR) / "docs" / "log-format.md");
+  ASSERT_TRUE(in.good());
+  std::string line;
+  std::string toml;
+  bool inside = false;
+  while (std::getline(in, line)) {
+    if (line == "```toml") {
+      inside = true;
+    } else if (inside && line == "```") {
+      break;
+    } else if (inside) {
+      toml += line + "\n";
+    }
+  }
+  ASSERT_FALSE(toml.empty());
+  const ColumnMap map = parse_column_map(toml, "log-format.md");
+  EXPECT_EQ(map.format().delimiter, ';');
+  EXPECT_EQ(map.find("gnss1.height")->unit, "m");
+  EXPECT_EQ(map.find("rpm.tunnel")->scale, 0.1);
+  EXPECT_EQ(map.find("rudder.port")->scale, -1.0);
+  EXPECT_EQ(map.find("command.port")->column, "PS cmd [%]");
+  EXPECT_NO_THROW(map.validate());
+}
+
+}  // namespace
+}  // namespace dynpos::io
