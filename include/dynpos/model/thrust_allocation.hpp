@@ -1,0 +1,131 @@
+#pragma once
+/// \file
+/// Thrust allocation for R/V Gunnerus (thesis section 2.2.2): from a desired generalised force
+/// τ_d = (X, Y, N) [N, N, N·m] in BODY to shaft speed commands for the two main propellers,
+/// rudder angle commands and the tunnel thruster command.
+///
+/// Formulation (extended thrust): the variables are f = (T₁, T₂, Y₁, Y₂, T₃) of
+/// thrust_configuration.hpp, with τ = B·f. Each is normalised by its scale s_i (its largest
+/// magnitude), x_i = f_i/s_i, and the allocation solves
+///
+///     min ‖Q^{½}(B·S·x − τ_d)‖²   then, among the minimisers,   min xᵀW x
+///     s.t. box bounds  x_min ≤ x ≤ x_max          (thrust fwd/reverse, tunnel port/stb)
+///          rudder cone |Y_i| ≤ κ_i·max(T_i, 0) + c_i  (lift only with slipstream or speed)
+///          optional rate bounds |f_i − f_i,prev| ≤ ḟ_i,max·Δt
+///
+/// by the redistributed pseudo-inverse (iterative clipping): solve the weighted minimum-norm
+/// least-squares problem on the free variables with a complete orthogonal decomposition, fix
+/// the most violated variable at its bound, repeat (≤ 5 fixes), then project the rudder forces
+/// onto their cones with the final thrusts. A rudder force that hits its cone is not frozen but
+/// tied to its thrust, Y_i = ±(κ_i·T_i + c_i), so the thrust can still grow to give it room. When
+/// τ_d is attainable without any bound active this is the exact constrained optimum; with active
+/// bounds it is the usual near-optimal heuristic of DP practice (not a full QP), deterministic and
+/// allocation-free. The rudder cone is exact for the rudder model: its side force in the linear
+/// region is linear in T⁺ (rudder.hpp). Rudder drag is left out of B; it shows up in the vessel as
+/// an unmodelled surge force that the DP controller's integral action removes.
+///
+/// Shaft speeds come from the inverse bollard maps (3.17), rudder angles from the inverse
+/// linear lift at the commanded thrust, the tunnel shaft speed from its map including the
+/// speed factor.
+
+#include <array>
+#include <string>
+
+#include <Eigen/Core>
+
+#include "dynpos/model/rudder.hpp"
+#include "dynpos/model/thrust_configuration.hpp"
+#include "dynpos/model/thruster.hpp"
+#include "dynpos/model/tunnel_thruster.hpp"
+
+namespace dynpos::model {
+
+/// Options of the allocation.
+struct ThrustAllocationOptions {
+  /// Weights W on the normalised variables (T₁, T₂, Y₁, Y₂, T₃) [-], each > 0. Source:
+  /// reasoned — equal cost per fraction of capacity for thrusters; rudder force is cheap
+  /// (only drag), so 0.3; tunnel 1.5 to prefer the more efficient main propellers.
+  Eigen::Matrix<double, 5, 1> weights{1.0, 1.0, 0.3, 0.3, 1.5};
+  /// Priority Q on the normalised residual of (X, Y, N) [-], each > 0, used only when τ_d is
+  /// not attainable. Source: reasoned — heading (N) first, then sway, then surge, as in DP.
+  Eigen::Vector3d priority{1.0, 3.0, 10.0};
+  /// Normalisation of τ for the priority: force scale [N] and moment scale [N·m], > 0.
+  double force_scale = 1.0e5;
+  double moment_scale = 1.3e6;
+  /// Largest usable rudder angle for allocation [rad], in (0, π/2). Source: reasoned — keep in
+  /// the linear lift region (the rudder stall angle, 30°).
+  double max_rudder_angle = 30.0 * 3.14159265358979323846 / 180.0;
+  /// Rate limits [N/s] on (T₁, T₂, Y₁, Y₂, T₃), > 0, used only when a previous allocation and
+  /// Δt are given. Source: reasoned — full thrust in ≈ 10 s for the main propellers (the shaft
+  /// reference rate 0.3 rps/s), ≈ 4 s for the tunnel thruster; rudder force from 0 to full
+  /// in ≈ 5 s (servo 6.3°/s over 30°).
+  Eigen::Matrix<double, 5, 1> rate_limits{7.5e3, 7.5e3, 8.0e3, 8.0e3, 6.0e3};
+
+  void validate() const;
+};
+
+/// Inputs of one allocation.
+struct ThrustAllocationInput {
+  /// Desired τ_d = (X [N], Y [N], N [N·m]) in BODY.
+  Eigen::Vector3d tau_d_b = Eigen::Vector3d::Zero();
+  /// Vessel surge speed through the water u [m/s] (rudder inflow, tunnel speed factor).
+  double surge_speed = 0.0;
+  /// Previous allocated forces f (for rate limits); used only when dt > 0.
+  Eigen::Matrix<double, 5, 1> previous_forces = Eigen::Matrix<double, 5, 1>::Zero();
+  /// Time since the previous allocation Δt [s]; ≤ 0 disables rate limits.
+  double dt = 0.0;
+};
+
+/// Outcome of an allocation.
+enum class AllocationStatus {
+  kOk,           ///< τ_d met (each residual below 1e-6 of force_scale / moment_scale)
+  kSaturated,    ///< a bound prevented meeting τ_d; tau_unmet_b ≠ 0
+  kInvalidInput  ///< τ_d or the speed was not finite; all commands are zero
+};
+
+/// Result of one allocation.
+struct ThrustAllocationResult {
+  AllocationStatus status = AllocationStatus::kOk;
+  std::string message;  ///< empty when kOk; otherwise what happened
+  /// Allocated forces f = (T₁, T₂, Y₁, Y₂, T₃) [N].
+  Eigen::Matrix<double, 5, 1> forces = Eigen::Matrix<double, 5, 1>::Zero();
+  Eigen::Vector3d tau_achieved_b = Eigen::Vector3d::Zero();  ///< B·f
+  Eigen::Vector3d tau_unmet_b = Eigen::Vector3d::Zero();     ///< τ_d − B·f
+  /// Which variable ended at a bound (box, cone or rate), in the order of f.
+  std::array<bool, 5> saturated{};
+  double n_port = 0.0;         ///< port propeller shaft speed command [rps]
+  double n_stb = 0.0;          ///< starboard propeller shaft speed command [rps]
+  double rudder_port = 0.0;    ///< port rudder angle command [rad]
+  double rudder_stb = 0.0;     ///< starboard rudder angle command [rad]
+  double n_tunnel = 0.0;       ///< tunnel shaft speed command [rps]
+  double tunnel_thrust = 0.0;  ///< tunnel side force command [N]
+  int iterations = 0;          ///< least-squares solves used
+};
+
+/// The allocator: const, owns copies of the actuator models it inverts.
+class ThrustAllocator {
+ public:
+  /// Throws std::invalid_argument on invalid options or models.
+  explicit ThrustAllocator(const Thruster& propeller = Thruster{}, const Rudder& rudder = Rudder{},
+                           const TunnelThruster& tunnel = TunnelThruster{},
+                           const ThrustConfiguration& configuration = ThrustConfiguration{},
+                           const ThrustAllocationOptions& options = {});
+
+  /// Allocates τ_d (see file comment). Deterministic; never throws; no NaN out.
+  ThrustAllocationResult allocate(const ThrustAllocationInput& input) const;
+
+  /// Box bounds (lower, upper) on f [N] at surge speed u before cones and rate limits.
+  std::array<Eigen::Matrix<double, 5, 1>, 2> bounds(double surge_speed) const noexcept;
+
+  const ThrustConfiguration& configuration() const noexcept { return configuration_; }
+  const ThrustAllocationOptions& options() const noexcept { return options_; }
+
+ private:
+  Thruster propeller_;
+  Rudder rudder_;
+  TunnelThruster tunnel_;
+  ThrustConfiguration configuration_;
+  ThrustAllocationOptions options_;
+};
+
+}  // namespace dynpos::model

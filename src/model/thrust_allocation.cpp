@@ -1,0 +1,243 @@
+#include "dynpos/model/thrust_allocation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <tuple>
+#include <utility>
+
+#include <Eigen/QR>
+
+#include "actuator_checks.hpp"
+
+namespace dynpos::model {
+
+using detail::require;
+using Vector5d = Eigen::Matrix<double, 5, 1>;
+
+void ThrustAllocationOptions::validate() const {
+  constexpr const char* o = "ThrustAllocationOptions";
+  for (int i = 0; i < 5; ++i) {
+    require(weights[i] > 0.0 && std::isfinite(weights[i]), o, "weights", weights[i],
+            "finite and > 0");
+    require(rate_limits[i] > 0.0 && std::isfinite(rate_limits[i]), o, "rate_limits", rate_limits[i],
+            "finite and > 0 N/s");
+  }
+  for (int i = 0; i < 3; ++i) {
+    require(priority[i] > 0.0 && std::isfinite(priority[i]), o, "priority", priority[i],
+            "finite and > 0");
+  }
+  require(force_scale > 0.0 && std::isfinite(force_scale), o, "force_scale", force_scale,
+          "finite and > 0 N");
+  require(moment_scale > 0.0 && std::isfinite(moment_scale), o, "moment_scale", moment_scale,
+          "finite and > 0 N*m");
+  require(detail::open_range(max_rudder_angle, 0.0, detail::kPi / 2), o, "max_rudder_angle",
+          max_rudder_angle, "in (0, pi/2) rad");
+}
+
+ThrustAllocator::ThrustAllocator(const Thruster& propeller, const Rudder& rudder,
+                                 const TunnelThruster& tunnel,
+                                 const ThrustConfiguration& configuration,
+                                 const ThrustAllocationOptions& options)
+    : propeller_(propeller),
+      rudder_(rudder),
+      tunnel_(tunnel),
+      configuration_(configuration),
+      options_(options) {
+  options_.validate();
+}
+
+std::array<Vector5d, 2> ThrustAllocator::bounds(double surge_speed) const noexcept {
+  Vector5d lo;
+  Vector5d hi;
+  const double t_fwd = propeller_.max_thrust_forward();
+  const double t_rev = propeller_.max_thrust_reverse();
+  // The widest rudder side force: the cone at full ahead thrust.
+  const double rudder_angle = std::min(options_.max_rudder_angle, rudder_.params().stall_angle);
+  const double y_max = rudder_.dynamic_pressure(std::max(surge_speed, 0.0), t_fwd) *
+                       rudder_.params().area * rudder_.params().lift_slope *
+                       std::min(rudder_angle, rudder_.params().max_angle);
+  lo << -t_rev, -t_rev, -y_max, -y_max, -tunnel_.max_thrust_port(surge_speed);
+  hi << t_fwd, t_fwd, y_max, y_max, tunnel_.max_thrust_starboard(surge_speed);
+  return {lo, hi};
+}
+
+ThrustAllocationResult ThrustAllocator::allocate(const ThrustAllocationInput& input) const {
+  ThrustAllocationResult result;
+  if (!input.tau_d_b.allFinite() || !std::isfinite(input.surge_speed) || !std::isfinite(input.dt) ||
+      !input.previous_forces.allFinite()) {
+    result.status = AllocationStatus::kInvalidInput;
+    result.message = "tau_d_b, surge_speed, dt and previous_forces must be finite";
+    return result;
+  }
+  const double u = input.surge_speed;
+  const ThrustConfiguration::Matrix& B = configuration_.matrix();
+  constexpr int kT1 = ThrustConfiguration::kThrustPort;
+  constexpr int kT2 = ThrustConfiguration::kThrustStb;
+  constexpr int kY1 = ThrustConfiguration::kRudderPort;
+  constexpr int kY2 = ThrustConfiguration::kRudderStb;
+  constexpr int kT3 = ThrustConfiguration::kTunnel;
+
+  // Rudder cone |Y| ≤ κ·T⁺ + c from the rudder model's linear lift (exact, see rudder.hpp).
+  const RudderParams& rp = rudder_.params();
+  const double lift_per_q =
+      rp.area * rp.lift_slope * std::min({options_.max_rudder_angle, rp.stall_angle, rp.max_angle});
+  const double kappa = rudder_.dynamic_pressure(0.0, 1.0) * lift_per_q;
+  const double cone0 = rudder_.dynamic_pressure(std::max(u, 0.0), 0.0) * lift_per_q;
+
+  // Box bounds, tightened by the rate limits when a previous allocation is given.
+  auto [lo, hi] = bounds(u);
+  Vector5d rate_lo = Vector5d::Constant(-std::numeric_limits<double>::infinity());
+  Vector5d rate_hi = Vector5d::Constant(std::numeric_limits<double>::infinity());
+  if (input.dt > 0.0) {
+    rate_lo = input.previous_forces - options_.rate_limits * input.dt;
+    rate_hi = input.previous_forces + options_.rate_limits * input.dt;
+  }
+  for (int i = 0; i < 5; ++i) {
+    const double l = std::max(lo[i], rate_lo[i]);
+    const double h = std::min(hi[i], rate_hi[i]);
+    if (l <= h) {
+      lo[i] = l;
+      hi[i] = h;
+    } else {
+      // The box moved away from the previous value (e.g. the tunnel lost power with speed):
+      // the box wins, at the point nearest the previous value.
+      lo[i] = hi[i] = std::clamp(input.previous_forces[i], lo[i], hi[i]);
+    }
+  }
+  // Rudder bounds at thrust t: cone ∩ rate ∩ box.
+  const auto rudder_bounds = [&](int j, double t) {
+    const double cone = kappa * std::max(t, 0.0) + cone0;
+    return std::pair{std::max(-cone, lo[j]), std::min(cone, hi[j])};
+  };
+
+  // Scaling: f_i = d_i·y_i with d_i = s_i/√w_i, so ‖y‖² = Σ w_i (f_i/s_i)².
+  Vector5d scale;
+  const double t_fwd = propeller_.max_thrust_forward();
+  const double y_scale = kappa * t_fwd + cone0;
+  scale[kT1] = scale[kT2] = t_fwd;
+  scale[kY1] = scale[kY2] = y_scale;
+  scale[kT3] = std::max(tunnel_.max_thrust_starboard(u), tunnel_.max_thrust_port(u));
+  const Vector5d d = scale.cwiseQuotient(options_.weights.cwiseSqrt());
+  const Eigen::Vector3d qh(std::sqrt(options_.priority[0]) / options_.force_scale,
+                           std::sqrt(options_.priority[1]) / options_.force_scale,
+                           std::sqrt(options_.priority[2]) / options_.moment_scale);
+
+  enum class Role { kFree, kFixed, kTied };
+  std::array<Role, 5> role{};
+  role.fill(Role::kFree);
+  Vector5d fixed_value = Vector5d::Zero();
+  std::array<double, 5> tie_sign{};  // σ for a tied rudder
+  const auto thrust_of = [](int rudder) { return rudder == kY1 ? kT1 : kT2; };
+
+  Vector5d f = Vector5d::Zero();
+  // Each pass changes one role (free → tied/fixed, tied → fixed), at most 5 + 2 changes.
+  for (int iteration = 0; iteration < 10; ++iteration) {
+    // Build M·y = rhs over the free variables (tied rudders folded into their thrust column).
+    ThrustConfiguration::Matrix M = ThrustConfiguration::Matrix::Zero();
+    Eigen::Vector3d rhs = input.tau_d_b;
+    for (int j = 0; j < 5; ++j) {
+      if (role[j] == Role::kFree) M.col(j) = B.col(j) * d[j];
+      if (role[j] == Role::kFixed) rhs -= B.col(j) * fixed_value[j];
+    }
+    for (int j : {kY1, kY2}) {
+      if (role[j] != Role::kTied) continue;
+      const int t = thrust_of(j);
+      if (role[t] == Role::kFixed) {
+        rhs -= B.col(j) * tie_sign[j] * (kappa * std::max(fixed_value[t], 0.0) + cone0);
+      } else {
+        M.col(t) += B.col(j) * tie_sign[j] * kappa * d[t];
+        rhs -= B.col(j) * tie_sign[j] * cone0;
+      }
+    }
+    const ThrustConfiguration::Matrix A = qh.asDiagonal() * M;
+    const Eigen::Vector3d b = qh.cwiseProduct(rhs);
+    const Eigen::CompleteOrthogonalDecomposition<ThrustConfiguration::Matrix> cod(A);
+    const Vector5d y = cod.solve(b);  // minimum-norm least-squares solution
+    ++result.iterations;
+
+    for (int j = 0; j < 5; ++j) {
+      f[j] = role[j] == Role::kFree ? d[j] * y[j] : fixed_value[j];
+    }
+    for (int j : {kY1, kY2}) {
+      if (role[j] == Role::kTied) {
+        f[j] = tie_sign[j] * (kappa * std::max(f[thrust_of(j)], 0.0) + cone0);
+      }
+    }
+
+    // A tie Y = σ(κT + c) is only the cone for T ≥ 0; below, the cone is the constant c.
+    bool retied = false;
+    for (int j : {kY1, kY2}) {
+      if (role[j] == Role::kTied && f[thrust_of(j)] < 0.0) {
+        role[j] = Role::kFixed;
+        fixed_value[j] = tie_sign[j] * cone0;
+        retied = true;
+        break;
+      }
+    }
+    if (retied) continue;
+
+    // The most violated free variable, measured relative to its scale.
+    int worst = -1;
+    double worst_violation = 1e-9;
+    double worst_bound = 0.0;
+    for (int j = 0; j < 5; ++j) {
+      if (role[j] != Role::kFree) continue;
+      double l = lo[j];
+      double h = hi[j];
+      if (j == kY1 || j == kY2) std::tie(l, h) = rudder_bounds(j, f[thrust_of(j)]);
+      const double violation = std::max(f[j] - h, l - f[j]) / scale[j];
+      if (violation > worst_violation) {
+        worst = j;
+        worst_violation = violation;
+        worst_bound = f[j] > h ? h : l;
+      }
+    }
+    if (worst < 0) break;
+    const bool rudder = worst == kY1 || worst == kY2;
+    const double cone = rudder ? kappa * std::max(f[thrust_of(worst)], 0.0) + cone0 : 0.0;
+    if (rudder && std::abs(std::abs(worst_bound) - cone) <= 1e-12 * y_scale && cone > 0.0 &&
+        role[thrust_of(worst)] != Role::kFixed) {
+      role[worst] = Role::kTied;  // on its cone: keep it proportional to the thrust
+      tie_sign[worst] = worst_bound > 0.0 ? 1.0 : -1.0;
+    } else {
+      role[worst] = Role::kFixed;
+      fixed_value[worst] = worst_bound;
+    }
+  }
+
+  // Final projection onto the bounds (thrusts first, then rudder cones with those thrusts).
+  for (int j : {kT1, kT2, kT3}) {
+    const double c = std::clamp(f[j], lo[j], hi[j]);
+    result.saturated[j] = role[j] != Role::kFree || c != f[j];
+    f[j] = c;
+  }
+  for (int j : {kY1, kY2}) {
+    const auto [l, h] = rudder_bounds(j, f[thrust_of(j)]);
+    const double c = std::clamp(f[j], std::min(l, h), std::max(l, h));
+    result.saturated[j] = role[j] != Role::kFree || c != f[j];
+    f[j] = c;
+  }
+
+  result.forces = f;
+  result.tau_achieved_b = B * f;
+  result.tau_unmet_b = input.tau_d_b - result.tau_achieved_b;
+  const bool met = std::abs(result.tau_unmet_b[0]) <= 1e-6 * options_.force_scale &&
+                   std::abs(result.tau_unmet_b[1]) <= 1e-6 * options_.force_scale &&
+                   std::abs(result.tau_unmet_b[2]) <= 1e-6 * options_.moment_scale;
+  if (!met) {
+    result.status = AllocationStatus::kSaturated;
+    result.message = "demand not attainable within actuator limits; see tau_unmet_b";
+  }
+
+  result.n_port = propeller_.shaft_speed_for_thrust(f[kT1]);
+  result.n_stb = propeller_.shaft_speed_for_thrust(f[kT2]);
+  const double a_max = std::min(options_.max_rudder_angle, rp.max_angle);
+  result.rudder_port = detail::clamp_abs(rudder_.angle_for_side_force(f[kY1], u, f[kT1]), a_max);
+  result.rudder_stb = detail::clamp_abs(rudder_.angle_for_side_force(f[kY2], u, f[kT2]), a_max);
+  result.tunnel_thrust = f[kT3];
+  result.n_tunnel = tunnel_.shaft_speed_for_thrust(f[kT3], u);
+  return result;
+}
+
+}  // namespace dynpos::model

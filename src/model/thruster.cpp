@@ -1,0 +1,190 @@
+#include "dynpos/model/thruster.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "actuator_checks.hpp"
+#include "dynpos/model/delay_line.hpp"
+#include "dynpos/sim/rk4.hpp"
+
+namespace dynpos::model {
+
+using detail::clamp_abs;
+using detail::kPi;
+using detail::require;
+
+void ThrusterParams::validate() const {
+  constexpr const char* o = "ThrusterParams";
+  require(detail::open_range(rho, 900.0, 1100.0), o, "rho", rho, "in (900, 1100) kg/m^3");
+  require(detail::open_range(diameter, 0.0, 10.0), o, "diameter", diameter, "in (0, 10) m");
+  require(detail::open_range(kt_forward, 0.0, 1.0), o, "kt_forward", kt_forward, "in (0, 1)");
+  require(detail::open_range(kt_reverse, 0.0, 1.0), o, "kt_reverse", kt_reverse, "in (0, 1)");
+  require(detail::open_range(kq_forward, 0.0, 0.5), o, "kq_forward", kq_forward, "in (0, 0.5)");
+  require(detail::open_range(kq_reverse, 0.0, 0.5), o, "kq_reverse", kq_reverse, "in (0, 0.5)");
+  require(detail::half_open_range(kt_slope, 0.0, 1.0), o, "kt_slope", kt_slope, "in [0, 1)");
+  require(detail::half_open_range(kq_slope, 0.0, 0.5), o, "kq_slope", kq_slope, "in [0, 0.5)");
+  require(detail::open_range(max_shaft_speed, 0.0, 50.0), o, "max_shaft_speed", max_shaft_speed,
+          "in (0, 50) rps");
+  require(detail::open_range(max_power, 0.0, 1e8), o, "max_power", max_power, "in (0, 1e8) W");
+  require(detail::open_range(max_torque, 0.0, 1e7), o, "max_torque", max_torque, "in (0, 1e7) N*m");
+  require(detail::open_range(shaft_inertia, 0.0, 1e6), o, "shaft_inertia", shaft_inertia,
+          "in (0, 1e6) kg*m^2");
+  require(detail::half_open_range(friction, 0.0, 1e5), o, "friction", friction,
+          "in [0, 1e5) N*m*s/rad");
+  require(detail::open_range(motor_time_constant, 0.0, 10.0), o, "motor_time_constant",
+          motor_time_constant, "in (0, 10) s");
+  require(detail::open_range(ref_rate_limit, 0.0, 100.0), o, "ref_rate_limit", ref_rate_limit,
+          "in (0, 100) rps/s");
+  require(detail::open_range(ref_time_constant, 0.005, 10.0), o, "ref_time_constant",
+          ref_time_constant, "in (0.005, 10) s");
+  require(detail::open_range(kp, 0.0, 1e7), o, "kp", kp, "in (0, 1e7) N*m*s/rad");
+  require(detail::half_open_range(ki, 0.0, 1e8), o, "ki", ki, "in [0, 1e8) N*m/rad");
+  require(detail::half_open_range(dead_time, 0.0, 20.0), o, "dead_time", dead_time, "in [0, 20) s");
+}
+
+Thruster::Thruster(const ThrusterParams& params) : params_(params) { params_.validate(); }
+
+double Thruster::thrust_coefficient(double n) const noexcept {
+  const double kt = n >= 0.0 ? params_.kt_forward : params_.kt_reverse;
+  return params_.rho * kt * std::pow(params_.diameter, 4);
+}
+
+double Thruster::thrust(double n, double advance_speed) const noexcept {
+  // sign(n)ρD⁴n²(K_T0 − k_T·V_a/(|n|D)) = ρD⁴K_T0·n|n| − ρD³k_T·V_a·n: no division by n.
+  const double d = params_.diameter;
+  return thrust_coefficient(n) * n * std::abs(n) -
+         params_.rho * d * d * d * params_.kt_slope * advance_speed * n;
+}
+
+double Thruster::torque(double n, double advance_speed) const noexcept {
+  const double d = params_.diameter;
+  const double kq = n >= 0.0 ? params_.kq_forward : params_.kq_reverse;
+  const double d4 = d * d * d * d;
+  return params_.rho * kq * d4 * d * n * std::abs(n) -
+         params_.rho * d4 * params_.kq_slope * advance_speed * n;
+}
+
+double Thruster::power(double n, double advance_speed) const noexcept {
+  return 2.0 * kPi * n * torque(n, advance_speed);
+}
+
+double Thruster::shaft_speed_for_thrust(double thrust_n) const noexcept {
+  const double n =
+      detail::sign(thrust_n) * std::sqrt(std::abs(thrust_n) / thrust_coefficient(thrust_n));
+  return clamp_abs(n, params_.max_shaft_speed);
+}
+
+double Thruster::max_thrust_forward() const noexcept {
+  return thrust_coefficient(1.0) * params_.max_shaft_speed * params_.max_shaft_speed;
+}
+
+double Thruster::max_thrust_reverse() const noexcept {
+  return thrust_coefficient(-1.0) * params_.max_shaft_speed * params_.max_shaft_speed;
+}
+
+Thruster::State Thruster::steady_state(double n, double advance_speed) const noexcept {
+  const double nc = clamp_abs(n, params_.max_shaft_speed);
+  const double omega = 2.0 * kPi * nc;
+  State x;
+  x[kNRef] = nc;
+  x[kIntegral] = 0.0;  // the feedforward carries the whole steady torque
+  x[kMotorTorque] = torque(nc, advance_speed) + params_.friction * omega;
+  x[kOmega] = omega;
+  return x;
+}
+
+Thruster::State Thruster::derivatives(const State& x, const ThrusterInput& u) const noexcept {
+  const ThrusterParams& p = params_;
+  const double n_c = clamp_abs(u.n_command, p.max_shaft_speed);
+  const double n_ref = x[kNRef];
+  const double omega = x[kOmega];
+
+  // Reference generator: a first-order filter inside a rate limit.
+  const double n_ref_dot = clamp_abs((n_c - n_ref) / p.ref_time_constant, p.ref_rate_limit);
+  const double omega_ref = 2.0 * kPi * n_ref;
+  const double omega_ref_dot = 2.0 * kPi * n_ref_dot;
+
+  // Core PI controller on ω with friction, load and inertia feedforward (Sørensen 2012).
+  const double error = omega_ref - omega;
+  const double q_ff =
+      p.friction * omega_ref + torque(n_ref, u.advance_speed) + p.shaft_inertia * omega_ref_dot;
+  const double q_unsat = q_ff + p.kp * error + p.ki * x[kIntegral];
+  const double q_limit = std::min(p.max_torque, p.max_power / std::max(std::abs(omega), 1e-9));
+  const double q_c = clamp_abs(q_unsat, q_limit);
+  // Conditional integration: hold the integral while the error drives further into saturation.
+  const bool windup = (q_unsat != q_c) && (error * (q_unsat - q_c) > 0.0);
+
+  const double n = omega / (2.0 * kPi);
+  State dx;
+  dx[kNRef] = n_ref_dot;
+  dx[kIntegral] = windup ? 0.0 : error;
+  dx[kMotorTorque] = (q_c - x[kMotorTorque]) / p.motor_time_constant;  // (2.23), stable form
+  dx[kOmega] = (x[kMotorTorque] - torque(n, u.advance_speed) - p.friction * omega) /
+               p.shaft_inertia;  // (2.24)
+  return dx;
+}
+
+ThrusterOutput Thruster::outputs(const State& x, double advance_speed) const noexcept {
+  ThrusterOutput out;
+  out.shaft_speed = x[kOmega] / (2.0 * kPi);
+  out.thrust = thrust(out.shaft_speed, advance_speed);
+  out.load_torque = torque(out.shaft_speed, advance_speed);
+  out.power = 2.0 * kPi * out.shaft_speed * out.load_torque;
+  out.motor_torque = x[kMotorTorque];
+  return out;
+}
+
+ThrusterStepTruth thruster_step_truth(const Thruster& thruster, double n_from, double n_to,
+                                      double dt) {
+  const ThrusterParams& p = thruster.params();
+  const double from = clamp_abs(n_from, p.max_shaft_speed);
+  const double to = clamp_abs(n_to, p.max_shaft_speed);
+  // Long enough for the dead time, the ramp and ten reference/loop time constants to settle.
+  const double duration =
+      p.dead_time + std::abs(to - from) / p.ref_rate_limit + 10.0 * p.ref_time_constant + 15.0;
+  const auto steps = static_cast<std::size_t>(std::ceil(duration / dt));
+
+  DelayLine line(p.dead_time, dt, from);
+  sim::Rk4<4> rk4;
+  Thruster::State x = thruster.steady_state(from);
+  std::vector<double> t(steps + 1), n(steps + 1), thrust(steps + 1);
+  for (std::size_t k = 0; k <= steps; ++k) {
+    const double tk = static_cast<double>(k) * dt;
+    const ThrusterOutput y = thruster.outputs(x);
+    t[k] = tk;
+    n[k] = y.shaft_speed;
+    thrust[k] = y.thrust;
+    const ThrusterInput u{line.push(to), 0.0};
+    rk4.step([&](double, const Thruster::State& xs,
+                 Thruster::State& dxs) { dxs = thruster.derivatives(xs, u); },
+             tk, dt, x, x);
+  }
+  ThrusterStepTruth truth;
+  truth.shaft_speed = fopdt_two_point(t, n, 0.0).value_or(FopdtTruth{});
+  truth.thrust = fopdt_two_point(t, thrust, 0.0).value_or(FopdtTruth{});
+  return truth;
+}
+
+void FirstOrderThrusterParams::validate() const {
+  constexpr const char* o = "FirstOrderThrusterParams";
+  require(detail::open_range(time_constant, 0.005, 100.0), o, "time_constant", time_constant,
+          "in (0.005, 100) s");
+  require(detail::half_open_range(dead_time, 0.0, 20.0), o, "dead_time", dead_time, "in [0, 20) s");
+  require(detail::open_range(max_thrust_forward, 0.0, 1e8), o, "max_thrust_forward",
+          max_thrust_forward, "in (0, 1e8) N");
+  require(detail::open_range(max_thrust_reverse, 0.0, 1e8), o, "max_thrust_reverse",
+          max_thrust_reverse, "in (0, 1e8) N");
+}
+
+FirstOrderThruster::FirstOrderThruster(const FirstOrderThrusterParams& params) : params_(params) {
+  params_.validate();
+}
+
+double FirstOrderThruster::derivative(double thrust, double thrust_command) const noexcept {
+  const double tc =
+      std::clamp(thrust_command, -params_.max_thrust_reverse, params_.max_thrust_forward);
+  return (tc - thrust) / params_.time_constant;  // (2.29)
+}
+
+}  // namespace dynpos::model

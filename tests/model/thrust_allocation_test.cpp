@@ -1,0 +1,188 @@
+#include "dynpos/model/thrust_allocation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace dynpos::model {
+namespace {
+
+using Vector5d = Eigen::Matrix<double, 5, 1>;
+constexpr int kT1 = ThrustConfiguration::kThrustPort;
+constexpr int kT2 = ThrustConfiguration::kThrustStb;
+constexpr int kY1 = ThrustConfiguration::kRudderPort;
+constexpr int kY2 = ThrustConfiguration::kRudderStb;
+constexpr int kT3 = ThrustConfiguration::kTunnel;
+
+ThrustAllocationInput demand(double x, double y, double n, double u = 0.0) {
+  ThrustAllocationInput in;
+  in.tau_d_b = {x, y, n};
+  in.surge_speed = u;
+  return in;
+}
+
+// Checks every bound of the result: box, rudder cone (|Y| ≤ κT⁺ + c from the rudder model's
+// own maximum side force) and finiteness. Slack 1e-6 N covers rounding of ~1e5 N values.
+void expect_within_limits(const ThrustAllocator& alloc, const ThrustAllocationResult& r, double u) {
+  const Rudder rudder;
+  const auto [lo, hi] = alloc.bounds(u);
+  ASSERT_TRUE(r.forces.allFinite());
+  for (int j : {kT1, kT2, kT3}) {
+    EXPECT_GE(r.forces[j], lo[j] - 1e-6) << j;
+    EXPECT_LE(r.forces[j], hi[j] + 1e-6) << j;
+  }
+  EXPECT_LE(std::abs(r.forces[kY1]), rudder.max_side_force(u, r.forces[kT1]) + 1e-6);
+  EXPECT_LE(std::abs(r.forces[kY2]), rudder.max_side_force(u, r.forces[kT2]) + 1e-6);
+  EXPECT_LE(std::abs(r.rudder_port), alloc.options().max_rudder_angle + 1e-12);
+  EXPECT_LE(std::abs(r.rudder_stb), alloc.options().max_rudder_angle + 1e-12);
+}
+
+TEST(ThrustAllocator, FeasibleDemandIsMetExactly) {
+  const ThrustAllocator alloc;
+  for (const ThrustAllocationInput& in : {demand(20e3, 5e3, 50e3), demand(-10e3, -3e3, -20e3),
+                                          demand(30e3, 0, 0, 2.0), demand(5e3, 8e3, 60e3, 1.0)}) {
+    const ThrustAllocationResult r = alloc.allocate(in);
+    SCOPED_TRACE(in.tau_d_b.transpose());
+    EXPECT_EQ(r.status, AllocationStatus::kOk) << r.message;
+    // Met up to the rounding of a 3×5 complete orthogonal decomposition on O(1) normalised
+    // numbers (≈ 1e-15 relative) times the 1e5 N scale: 1e-6 N and 1e-5 N·m are ample.
+    EXPECT_NEAR(r.tau_unmet_b.x(), 0.0, 1e-6);
+    EXPECT_NEAR(r.tau_unmet_b.y(), 0.0, 1e-6);
+    EXPECT_NEAR(r.tau_unmet_b.z(), 0.0, 1e-5);
+    EXPECT_TRUE(r.tau_achieved_b.isApprox(alloc.configuration().matrix() * r.forces));
+    expect_within_limits(alloc, r, in.surge_speed);
+  }
+}
+
+TEST(ThrustAllocator, InfeasibleDemandReportsTheUnmetPart) {
+  const ThrustAllocator alloc;
+  const ThrustAllocationInput in = demand(500e3, 0.0, 0.0);
+  const ThrustAllocationResult r = alloc.allocate(in);
+  EXPECT_EQ(r.status, AllocationStatus::kSaturated);
+  EXPECT_FALSE(r.message.empty());
+  const Eigen::Vector3d unmet = in.tau_d_b - alloc.configuration().matrix() * r.forces;
+  EXPECT_TRUE(r.tau_unmet_b.isApprox(unmet, 1e-12));
+  EXPECT_GT(r.tau_unmet_b.x(), 300e3);
+  // Both propellers at full ahead thrust and flagged.
+  const Thruster propeller;
+  EXPECT_NEAR(r.forces[kT1], propeller.max_thrust_forward(), 1e-6);
+  EXPECT_NEAR(r.forces[kT2], propeller.max_thrust_forward(), 1e-6);
+  EXPECT_TRUE(r.saturated[kT1]);
+  EXPECT_TRUE(r.saturated[kT2]);
+  EXPECT_NEAR(r.n_port, propeller.params().max_shaft_speed, 1e-9);
+  expect_within_limits(alloc, r, 0.0);
+}
+
+TEST(ThrustAllocator, SaturationsRespectedOverADemandGrid) {
+  const ThrustAllocator alloc;
+  for (double u : {0.0, 1.5, 3.0}) {
+    for (double x : {-200e3, -20e3, 0.0, 40e3, 200e3}) {
+      for (double y : {-100e3, -10e3, 0.0, 10e3, 100e3}) {
+        for (double n : {-1e6, -100e3, 0.0, 100e3, 1e6}) {
+          SCOPED_TRACE(testing::Message() << u << " " << x << " " << y << " " << n);
+          expect_within_limits(alloc, alloc.allocate(demand(x, y, n, u)), u);
+        }
+      }
+    }
+  }
+}
+
+TEST(ThrustAllocator, PureYawUsesDifferentialThrustAndTunnel) {
+  const ThrustAllocator alloc;
+  const ThrustAllocationResult r = alloc.allocate(demand(0.0, 0.0, 100e3));
+  EXPECT_EQ(r.status, AllocationStatus::kOk) << r.message;
+  // N > 0 (bow to starboard): port propeller ahead, starboard astern, tunnel to starboard.
+  EXPECT_GT(r.forces[kT1], 0.0);
+  EXPECT_LT(r.forces[kT2], 0.0);
+  EXPECT_GT(r.forces[kT3], 0.0);
+  EXPECT_GT(r.n_port, 0.0);
+  EXPECT_LT(r.n_stb, 0.0);
+  EXPECT_GT(r.n_tunnel, 0.0);
+}
+
+TEST(ThrustAllocator, PureSwayUsesTunnelAndRudders) {
+  const ThrustAllocator alloc;
+  const ThrustAllocationResult r = alloc.allocate(demand(0.0, 10e3, 0.0));
+  EXPECT_EQ(r.status, AllocationStatus::kOk) << r.message;
+  EXPECT_GT(r.forces[kT3], 0.0);
+  // The tunnel's bow moment is balanced at the stern: a rudder pushes the stern to starboard
+  // (Y > 0 at x < 0), which needs ahead thrust on that propeller.
+  const double rudder_y = r.forces[kY1] + r.forces[kY2];
+  EXPECT_GT(rudder_y, 1e3);
+  const int used = r.forces[kY1] > r.forces[kY2] ? kT1 : kT2;
+  EXPECT_GT(r.forces[used], 0.0);
+  // A starboard side force at the stern needs α < 0 on the rudder that gives it.
+  EXPECT_LT(used == kT1 ? r.rudder_port : r.rudder_stb, 0.0);
+  expect_within_limits(alloc, r, 0.0);
+}
+
+TEST(ThrustAllocator, CommandsReproduceTheAllocatedForces) {
+  const ThrustAllocator alloc;
+  const double u = 1.5;
+  const ThrustAllocationResult r = alloc.allocate(demand(20e3, 6e3, 40e3, u));
+  ASSERT_EQ(r.status, AllocationStatus::kOk) << r.message;
+  const Thruster propeller;
+  const Rudder rudder;
+  const TunnelThruster tunnel;
+  // Inverse maps are exact up to sqrt/square rounding: 1e-6 N.
+  EXPECT_NEAR(propeller.thrust(r.n_port), r.forces[kT1], 1e-6);
+  EXPECT_NEAR(propeller.thrust(r.n_stb), r.forces[kT2], 1e-6);
+  EXPECT_NEAR(tunnel.thrust(r.n_tunnel, u), r.forces[kT3], 1e-6);
+  // In straight flow at speed u with the allocated thrust, the rudder model gives the
+  // allocated side force (linear region, v = 0).
+  EXPECT_NEAR(rudder.force(r.rudder_port, {u, 0.0, r.forces[kT1]}).f_b.y(), r.forces[kY1], 1e-6);
+  EXPECT_NEAR(rudder.force(r.rudder_stb, {u, 0.0, r.forces[kT2]}).f_b.y(), r.forces[kY2], 1e-6);
+}
+
+TEST(ThrustAllocator, RateLimitsBoundTheChange) {
+  const ThrustAllocator alloc;
+  ThrustAllocationInput in = demand(100e3, 20e3, 200e3);
+  in.previous_forces = Vector5d::Zero();
+  in.dt = 1.0;
+  const ThrustAllocationResult r = alloc.allocate(in);
+  const Vector5d rate = alloc.options().rate_limits;
+  for (int j = 0; j < 5; ++j) {
+    EXPECT_LE(std::abs(r.forces[j]), rate[j] * 1.0 + 1e-6) << j;  // rounding slack only
+  }
+  EXPECT_EQ(r.status, AllocationStatus::kSaturated);
+  EXPECT_TRUE(r.tau_unmet_b.isApprox(in.tau_d_b - r.tau_achieved_b));
+}
+
+TEST(ThrustAllocator, IsDeterministic) {
+  const ThrustAllocator alloc;
+  const ThrustAllocationInput in = demand(33e3, -7e3, 81e3, 0.7);
+  const ThrustAllocationResult a = alloc.allocate(in);
+  const ThrustAllocationResult b = alloc.allocate(in);
+  EXPECT_EQ(a.forces, b.forces);  // bit-identical
+  EXPECT_EQ(a.rudder_port, b.rudder_port);
+  EXPECT_EQ(a.n_tunnel, b.n_tunnel);
+}
+
+TEST(ThrustAllocator, ZeroDemandGivesZeroAndNoNaN) {
+  const ThrustAllocator alloc;
+  const ThrustAllocationResult r = alloc.allocate(demand(0.0, 0.0, 0.0));
+  EXPECT_EQ(r.status, AllocationStatus::kOk);
+  EXPECT_EQ(r.forces, Vector5d::Zero());
+  EXPECT_EQ(r.n_port, 0.0);
+  EXPECT_EQ(r.n_stb, 0.0);
+  EXPECT_EQ(r.rudder_port, 0.0);
+  EXPECT_EQ(r.rudder_stb, 0.0);
+  EXPECT_EQ(r.n_tunnel, 0.0);
+}
+
+TEST(ThrustAllocator, InvalidInputIsReportedNotThrown) {
+  const ThrustAllocator alloc;
+  const ThrustAllocationResult r =
+      alloc.allocate(demand(std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0));
+  EXPECT_EQ(r.status, AllocationStatus::kInvalidInput);
+  EXPECT_EQ(r.forces, Vector5d::Zero());
+  ThrustAllocationOptions bad;
+  bad.weights[2] = 0.0;
+  EXPECT_THROW(ThrustAllocator(Thruster{}, Rudder{}, TunnelThruster{}, ThrustConfiguration{}, bad),
+               std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace dynpos::model
