@@ -1,0 +1,113 @@
+#pragma once
+/// \file
+/// Slowly varying environment of the virtual vessel: current, wind, the Gauss–Markov bias
+/// (2.22) and scheduled step loads. Each is stepped once per simulator tick (sample and hold);
+/// the forces are then held over the RK4 step. Waves are in sea_state.hpp.
+///
+/// Directions: current flows TO current_to_rad, wind comes FROM wind_from_rad, both clockwise
+/// from north, as sea-trial reports give them.
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "dynpos/sim/noise.hpp"
+
+namespace dynpos::model {
+
+/// Current parameters.
+struct CurrentParams {
+  double speed_mps = 0.0;       ///< mean speed [m/s], [0, 3]
+  double to_rad = 0.0;          ///< direction it flows to [rad]
+  double speed_std_mps = 0.02;  ///< std of the slow speed variation [m/s], ≥ 0. Source: reasoned.
+  double dir_std_rad = 0.05;    ///< std of the slow direction variation [rad], ≥ 0. Source: reasoned.
+  double time_constant_s = 600.0;  ///< correlation time of the variations [s], > 0. Source: reasoned
+                                   ///< (tidal/wind-driven changes over tens of minutes).
+  void validate() const;
+};
+
+/// Current with slow Gauss–Markov variation of speed and direction.
+class Current {
+ public:
+  Current(const CurrentParams& params, std::uint64_t seed, double dt_s);
+  /// Advances the variations by one tick.
+  void step() noexcept;
+  /// Current velocity in NED (north, east) [m/s].
+  Eigen::Vector2d velocity_n() const noexcept;
+
+ private:
+  CurrentParams params_;
+  sim::GaussMarkov speed_;
+  sim::GaussMarkov direction_;
+};
+
+/// Wind parameters: mean, gusts and the vessel's wind-force coefficients.
+struct WindParams {
+  double speed_mps = 0.0;    ///< mean wind speed at 10 m [m/s], [0, 50]
+  double from_rad = 0.0;     ///< direction it comes from [rad]
+  double gust_std_fraction = 0.12;  ///< gust std / mean speed [-]. Source: reasoned, turbulence
+                                    ///< intensity over open sea ≈ 0.1–0.15 (thesis table 3.3:
+                                    ///< 0.5 m/s std at 3.3–4.3 m/s mean).
+  double gust_time_constant_s = 8.0;  ///< gust correlation time [s]. Source: reasoned.
+  double dir_std_rad = 0.12;          ///< std of direction fluctuations [rad]. Source: thesis table
+                                      ///< 3.3–3.4 (7–9° std).
+  double frontal_area_m2 = 90.0;    ///< A_F [m²]. Source: reasoned, 9.6 m beam × ≈ 9.5 m superstructure.
+  double lateral_area_m2 = 230.0;   ///< A_L [m²]. Source: reasoned, ≈ 31 m × 7.5 m mean height.
+  double length_m = 31.25;          ///< L_oa [m]. Source: Gunnerus main dimensions.
+  double cx = 0.6;   ///< head-wind drag coefficient [-]. Source: reasoned (Isherwood-type values).
+  double cy = 0.8;   ///< beam-wind coefficient [-]. Source: reasoned.
+  double cn = 0.08;  ///< yaw-moment coefficient [-]. Source: reasoned.
+  double rho_air = 1.226;  ///< air density [kg/m³].
+  void validate() const;
+};
+
+/// Wind with Gauss–Markov gusts; forces by smooth coefficient curves of the relative angle.
+class Wind {
+ public:
+  Wind(const WindParams& params, std::uint64_t seed, double dt_s);
+  void step() noexcept;
+  /// The true wind now: speed [m/s] and direction it comes from [rad].
+  double speed_mps() const noexcept;
+  double from_rad() const noexcept;
+  /// Wind force and moment in BODY (X, Y, N) for heading ψ [rad] and velocity over ground in
+  /// NED (north, east) [m/s]: ½ρ_a V_rw² (−c_x cos γ·A_F, c_y sin γ·A_L, c_n sin 2γ·A_L·L),
+  /// γ = the angle the relative wind comes from, relative to the bow.
+  Eigen::Vector3d force_b(double heading_rad, const Eigen::Vector2d& velocity_n) const noexcept;
+
+ private:
+  WindParams params_;
+  sim::GaussMarkov gust_;
+  sim::GaussMarkov direction_;
+};
+
+/// The bias b in NED (2.22): ḃ = −T⁻¹ b + w_b per axis (N, E, yaw moment), exactly discretised.
+struct BiasParams {
+  Eigen::Vector3d std{2.0e3, 2.0e3, 2.0e4};  ///< stationary std [N, N, N·m]. Source: reasoned —
+                                              ///< slowly varying drift and unmodelled forces.
+  Eigen::Vector3d time_constant_s{300.0, 300.0, 300.0};  ///< T per axis [s]. Source: reasoned.
+  void validate() const;
+};
+
+class Bias {
+ public:
+  Bias(const BiasParams& params, std::uint64_t seed, double dt_s);
+  void step() noexcept;
+  /// b = (force north [N], force east [N], yaw moment [N·m]).
+  Eigen::Vector3d value_n() const noexcept;
+
+ private:
+  std::vector<sim::GaussMarkov> axes_;
+};
+
+/// A scheduled load: a constant force in NED and a yaw moment switched on at t_on and off at
+/// t_off (e.g. an ice load, or a mooring line that snaps: on from 0, off at the snap).
+struct StepLoad {
+  double t_on_s = 0.0;
+  double t_off_s = 1e300;          ///< [s]; default: never switched off
+  Eigen::Vector3d force_n{0, 0, 0};  ///< (north [N], east [N], yaw moment [N·m])
+};
+
+/// Sum of the step loads active at t [s] (active on t_on ≤ t < t_off).
+Eigen::Vector3d step_loads_n(const std::vector<StepLoad>& loads, double t_s) noexcept;
+
+}  // namespace dynpos::model

@@ -1,0 +1,55 @@
+#pragma once
+/// \file
+/// VesselConfig: every parameter of a virtual vessel, as read from a vessel file
+/// (data/vessels/gunnerus.toml). Defaults are the virtual Gunnerus; the file states the
+/// values and their sources explicitly.
+
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "dynpos/model/environment.hpp"
+#include "dynpos/model/hull.hpp"
+#include "dynpos/model/sea_state.hpp"
+#include "dynpos/model/thrust_allocation.hpp"
+
+namespace dynpos::scenario {
+
+/// Joystick scaling: 100 % demand in a DOF is this force or moment.
+struct JoystickParams {
+  double max_surge_N = 146e3;  ///< Source: 2 × 73 kN ahead (ThrusterParams at n_max).
+  double max_sway_N = 45e3;    ///< Source: tunnel 25 kN + rudder lift at low speed (reasoned).
+  double max_yaw_Nm = 6.0e5;   ///< Source: differential thrust + tunnel moment (reasoned).
+  /// Allocation and joystick update rate [Hz]. Source: reasoned, typical DP cycle.
+  double control_rate_hz = 10.0;
+  void validate() const;
+};
+
+/// All parameters of one virtual vessel.
+struct VesselConfig {
+  std::string name = "Gunnerus";
+  std::string source;  ///< file it was read from, empty for built-in defaults
+  model::HullParams hull;
+  model::ThrusterParams propeller;        ///< both main propellers
+  model::RudderParams rudder;             ///< both rudders
+  model::TunnelThrusterParams tunnel;
+  model::ThrustConfigurationParams layout;
+  model::ThrustAllocationOptions allocation;
+  model::WaveResponseParams waves;
+  model::WindParams wind;     ///< only the vessel part (areas, coefficients, gust model) is used
+  model::CurrentParams current;  ///< only the variation part is used
+  model::BiasParams bias;
+  JoystickParams joystick;
+
+  /// Throws std::invalid_argument naming the bad field.
+  void validate() const;
+  /// Every parameter in file units, section by section (the layout of the vessel file).
+  nlohmann::json to_json() const;
+};
+
+/// Reads a vessel TOML file; absent keys keep the built-in value. Throws core::InputError with
+/// file, line and key for syntax errors, unknown sections or keys and out-of-range values.
+VesselConfig load_vessel_config(const std::filesystem::path& path);
+
+}  // namespace dynpos::scenario

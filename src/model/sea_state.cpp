@@ -1,0 +1,149 @@
+#include "dynpos/model/sea_state.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "dynpos/sim/random.hpp"
+
+namespace dynpos::model {
+namespace {
+
+constexpr double kG = 9.81;        // [m/s²]
+constexpr double kRho = 1025.0;    // [kg/m³]
+constexpr double kTwoPi = 2.0 * M_PI;
+
+void require(bool ok, const std::string& what) {
+  if (!ok) throw std::invalid_argument(what);
+}
+
+// Second-order resonance |H| and phase lag for a response driven quasi-statically at low ω.
+void resonance(double omega, double period_s, double zeta, double& gain, double& lag) {
+  const double ratio = omega * period_s / kTwoPi;
+  const double re = 1.0 - ratio * ratio;
+  const double im = 2.0 * zeta * ratio;
+  gain = 1.0 / std::sqrt(re * re + im * im);
+  lag = std::atan2(im, re);
+}
+
+}  // namespace
+
+void SeaStateParams::validate() const {
+  require(hs_m >= 0 && hs_m <= 15, "SeaStateParams.hs_m must be in [0, 15] m");
+  require(tp_s >= 2 && tp_s <= 25, "SeaStateParams.tp_s must be in [2, 25] s");
+  require(gamma >= 1 && gamma <= 7, "SeaStateParams.gamma must be in [1, 7]");
+  require(std::isfinite(from_rad), "SeaStateParams.from_rad must be finite");
+  require(components >= 1 && components <= 5000, "SeaStateParams.components must be in [1, 5000]");
+  require(omega_min_factor > 0 && omega_min_factor < 1,
+          "SeaStateParams.omega_min_factor must be in (0, 1)");
+  require(omega_max_factor > 1 && omega_max_factor < 20,
+          "SeaStateParams.omega_max_factor must be in (1, 20)");
+}
+
+void WaveResponseParams::validate() const {
+  require(length_m > 0 && beam_m > 0, "WaveResponseParams length_m and beam_m must be > 0");
+  require(heave_period_s > 0 && roll_period_s > 0 && pitch_period_s > 0,
+          "WaveResponseParams natural periods must be > 0");
+  require(heave_damping > 0 && roll_damping > 0 && pitch_damping > 0,
+          "WaveResponseParams damping ratios must be > 0");
+  require(yaw_factor >= 0 && drift_coefficient >= 0,
+          "WaveResponseParams yaw_factor and drift_coefficient must be >= 0");
+}
+
+double jonswap(double omega, double hs_m, double tp_s, double gamma) {
+  if (omega <= 0.0 || hs_m <= 0.0) return 0.0;
+  const double wp = kTwoPi / tp_s;
+  const double sigma = omega <= wp ? 0.07 : 0.09;
+  const double x = wp / omega;
+  // Pierson–Moskowitz shape in H_s, T_p, with the JONSWAP peak factor and the usual
+  // normalisation A_γ = 1 − 0.287·ln γ (DNV-RP-C205).
+  const double pm = 5.0 / 16.0 * hs_m * hs_m * std::pow(wp, 4) / std::pow(omega, 5) *
+                    std::exp(-1.25 * x * x * x * x);
+  const double r = std::exp(-(omega - wp) * (omega - wp) / (2.0 * sigma * sigma * wp * wp));
+  return (1.0 - 0.287 * std::log(gamma)) * pm * std::pow(gamma, r);
+}
+
+std::vector<WaveComponent> discretise(const SeaStateParams& sea, std::uint64_t seed) {
+  sea.validate();
+  std::vector<WaveComponent> out;
+  if (sea.hs_m <= 0.0) return out;
+  sim::Rng rng(seed, "waves");
+  const double wp = kTwoPi / sea.tp_s;
+  const double lo = sea.omega_min_factor * wp;
+  const double width = (sea.omega_max_factor - sea.omega_min_factor) * wp / sea.components;
+  out.reserve(static_cast<std::size_t>(sea.components));
+  for (int i = 0; i < sea.components; ++i) {
+    const double omega = lo + (i + rng.uniform()) * width;
+    const double amplitude = std::sqrt(2.0 * jonswap(omega, sea.hs_m, sea.tp_s, sea.gamma) * width);
+    out.push_back({omega, amplitude, rng.uniform(0.0, kTwoPi)});
+  }
+  return out;
+}
+
+WaveMotion::WaveMotion(const SeaStateParams& sea, const WaveResponseParams& response,
+                       std::uint64_t seed, double period_s)
+    : sea_(sea), response_(response), components_(discretise(sea, seed)) {
+  response_.validate();
+  if (!(period_s > 0.0)) throw std::invalid_argument("WaveMotion period_s must be > 0");
+  const std::size_t n = components_.size();
+  gain_.resize(n);
+  lag_.resize(n);
+  phasor_.resize(n);
+  rotor_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const WaveComponent& c = components_[i];
+    const double k = c.omega * c.omega / kG;            // deep-water wave number
+    const double lambda = kTwoPi / k;                   // wave length [m]
+    const double ratio = response_.length_m / lambda;
+    const double attenuation = 1.0 / (1.0 + ratio * ratio);  // the hull averages short waves
+    double g_heave = 0, l_heave = 0, g_roll = 0, l_roll = 0, g_pitch = 0, l_pitch = 0;
+    resonance(c.omega, response_.heave_period_s, response_.heave_damping, g_heave, l_heave);
+    resonance(c.omega, response_.roll_period_s, response_.roll_damping, g_roll, l_roll);
+    resonance(c.omega, response_.pitch_period_s, response_.pitch_damping, g_pitch, l_pitch);
+    const double slope = k * c.amplitude;  // wave slope amplitude [rad]
+    // Horizontal: the orbital motion of the water (amplitude a), heave: a through the
+    // heave resonance; angles: the wave slope through the roll/pitch resonances.
+    gain_[i] << c.amplitude * attenuation, c.amplitude * attenuation,
+        c.amplitude * attenuation * g_heave, slope * attenuation * g_roll,
+        slope * attenuation * g_pitch, slope * attenuation * response_.yaw_factor;
+    const double lags[6] = {0.0, 0.0, l_heave, l_roll, l_pitch, 0.0};
+    for (int dof = 0; dof < 6; ++dof) lag_[i][dof] = std::polar(1.0, -lags[dof]);
+    phasor_[i] = std::polar(1.0, c.phase);
+    rotor_[i] = std::polar(1.0, c.omega * period_s);
+  }
+  drift_force_scale_ =
+      0.5 * response_.drift_coefficient * kRho * kG * sea.hs_m * sea.hs_m / 16.0;
+}
+
+WaveMotion6 WaveMotion::motion(double heading_rad) const {
+  WaveMotion6 out;
+  // β: direction the waves travel to, relative to the bow (0 = following seas).
+  const double beta = sea_.from_rad + M_PI - heading_rad;
+  Eigen::Matrix<double, 6, 1> direction;
+  direction << std::cos(beta), std::sin(beta), 1.0, std::sin(beta), -std::cos(beta),
+      std::sin(2.0 * beta);
+  for (std::size_t i = 0; i < components_.size(); ++i) {
+    const double w = components_[i].omega;
+    for (int dof = 0; dof < 6; ++dof) {
+      const std::complex<double> z = phasor_[i] * lag_[i][dof];
+      const double amp = gain_[i][dof] * direction[dof];
+      // x = A cos(ωt + φ − lag), ẋ = −Aω sin(·), ẍ = −Aω² cos(·).
+      out.position[dof] += amp * z.real();
+      out.velocity[dof] -= amp * w * z.imag();
+      out.acceleration[dof] -= amp * w * w * z.real();
+    }
+  }
+  return out;
+}
+
+void WaveMotion::advance() noexcept {
+  for (std::size_t i = 0; i < phasor_.size(); ++i) phasor_[i] *= rotor_[i];
+}
+
+Eigen::Vector3d WaveMotion::drift_force_b(double heading_rad) const noexcept {
+  const double beta = sea_.from_rad + M_PI - heading_rad;
+  return {drift_force_scale_ * response_.beam_m * std::cos(beta),
+          drift_force_scale_ * response_.length_m * std::sin(beta), 0.0};
+}
+
+}  // namespace dynpos::model

@@ -1,0 +1,279 @@
+#include "dynpos/scenario/runner.hpp"
+
+#include <fmt/core.h>
+
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+#include "dynpos/core/angle.hpp"
+#include "dynpos/core/rotation.hpp"
+#include "dynpos/model/delay_line.hpp"
+#include "dynpos/model/environment.hpp"
+#include "dynpos/model/sea_state.hpp"
+#include "dynpos/model/thrust_allocation.hpp"
+#include "dynpos/scenario/vessel_plant.hpp"
+#include "dynpos/sim/simulator.hpp"
+
+namespace dynpos::scenario {
+namespace {
+
+using Plant = VesselPlant;
+using model::Hull;
+
+// Actuator commands before their dead times.
+struct Commands {
+  double n_port = 0, n_stb = 0, rudder_port = 0, rudder_stb = 0, n_tunnel = 0;
+};
+
+// The log's channels, in column order (names are roles of docs/log-format.md).
+const std::array<std::pair<const char*, const char*>, 29> kChannels{{
+    {"north", "m"},          {"east", "m"},         {"down", "m"},
+    {"heading", "rad"},      {"roll", "rad"},       {"pitch", "rad"},
+    {"u", "m/s"},            {"v", "m/s"},          {"p", "rad/s"},
+    {"q", "rad/s"},          {"r", "rad/s"},        {"rpm.port", "rps"},
+    {"rpm.stb", "rps"},      {"rpm.tunnel", "rps"}, {"thrust.port", "N"},
+    {"thrust.stb", "N"},     {"thrust.tunnel", "N"}, {"power.port", "W"},
+    {"power.stb", "W"},      {"power.tunnel", "W"}, {"rudder.port", "rad"},
+    {"rudder.stb", "rad"},   {"command.surge", "1"}, {"command.sway", "1"},
+    {"command.yaw", "1"},    {"wind_speed", "m/s"}, {"wind_dir", "rad"},
+    {"current.north", "m/s"}, {"current.east", "m/s"},
+}};
+
+nlohmann::json scenario_json(const ScenarioSpec& spec) {
+  nlohmann::json j;
+  j["name"] = spec.name;
+  j["description"] = spec.description;
+  j["duration_s"] = spec.duration_s;
+  j["dt_s"] = spec.dt_s;
+  j["log_rate_hz"] = spec.log_rate_hz;
+  j["initial_heading_deg"] = spec.initial_heading_deg;
+  j["initial_surge_mps"] = spec.initial_surge_mps;
+  const EnvironmentSpec& e = spec.environment;
+  j["environment"] = {{"current_speed_mps", e.current_speed_mps},
+                      {"current_to_deg", e.current_to_deg},
+                      {"wind_speed_mps", e.wind_speed_mps},
+                      {"wind_from_deg", e.wind_from_deg},
+                      {"hs_m", e.hs_m},
+                      {"tp_s", e.tp_s},
+                      {"wave_from_deg", e.wave_from_deg},
+                      {"wave_components", e.wave_components}};
+  return j;
+}
+
+// Largest unmet allocation demand per DOF over a run.
+struct UnmetSummary {
+  Eigen::Vector3d max = Eigen::Vector3d::Zero();
+  void add(const Eigen::Vector3d& unmet) { max = max.cwiseMax(unmet.cwiseAbs()); }
+};
+
+nlohmann::json fopdt_json(const model::FopdtTruth& f) {
+  return {{"T_s", f.time_constant}, {"delay_s", f.dead_time}};
+}
+
+}  // namespace
+
+ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel,
+                         std::uint64_t seed) {
+  spec.validate();
+  vessel.validate();
+  const double dt = spec.dt_s;
+  const Plant plant(vessel);
+  const model::ThrustAllocator allocator(plant.propeller(), plant.rudder(), plant.tunnel(),
+                                         plant.layout(), vessel.allocation);
+
+  // Environment, each source with its own seeded stream.
+  const EnvironmentSpec& env = spec.environment;
+  model::CurrentParams current_params = vessel.current;
+  current_params.speed_mps = env.current_speed_mps;
+  current_params.to_rad = core::deg_to_rad(env.current_to_deg);
+  model::WindParams wind_params = vessel.wind;
+  wind_params.speed_mps = env.wind_speed_mps;
+  wind_params.from_rad = core::deg_to_rad(env.wind_from_deg);
+  model::SeaStateParams sea;
+  sea.hs_m = env.hs_m;
+  sea.tp_s = env.tp_s;
+  sea.from_rad = core::deg_to_rad(env.wave_from_deg);
+  sea.components = env.wave_components;
+  const double log_period = 1.0 / spec.log_rate_hz;
+  model::Current current(current_params, seed, dt);
+  model::Wind wind(wind_params, seed, dt);
+  model::Bias bias(vessel.bias, seed, dt);
+  model::WaveMotion waves(sea, vessel.waves, seed, log_period);
+
+  // Operator commands and their dead times.
+  const JoystickParams& js = vessel.joystick;
+  Eigen::Vector3d demand_pct = Eigen::Vector3d::Zero();
+  Eigen::VectorXd x0 = plant.initial_state(core::deg_to_rad(spec.initial_heading_deg));
+  Commands cmd;
+  if (spec.initial_surge_mps != 0.0) {
+    const double u0 = spec.initial_surge_mps;
+    x0[Plant::kHull + Hull::kSurge] = u0;
+    const double x_needed = -plant.hull().hydrodynamic_forces({u0, 0, 0}, {u0, 0, 0}).x();
+    demand_pct.x() = 100.0 * x_needed / js.max_surge_N;
+    const double n = plant.propeller().shaft_speed_for_thrust(0.5 * x_needed);
+    x0.segment<4>(Plant::kPort) = plant.propeller().steady_state(n, u0);
+    x0.segment<4>(Plant::kStb) = plant.propeller().steady_state(n, u0);
+    cmd.n_port = cmd.n_stb = n;
+  }
+  model::DelayLine delay_port(vessel.propeller.dead_time, dt, cmd.n_port);
+  model::DelayLine delay_stb(vessel.propeller.dead_time, dt, cmd.n_stb);
+  model::DelayLine delay_rudder_port(vessel.rudder.dead_time, dt, 0.0);
+  model::DelayLine delay_rudder_stb(vessel.rudder.dead_time, dt, 0.0);
+  model::DelayLine delay_tunnel(vessel.tunnel.dead_time, dt, 0.0);
+
+  sim::SimulatorOptions options;
+  options.dt = dt;
+  options.end_time = spec.duration_s;
+  sim::Simulator simulator(plant, options);
+
+  nlohmann::json truth;
+  truth["seed"] = seed;
+  truth["scenario"] = scenario_json(spec);
+  truth["vessel"] = vessel.to_json();
+  truth["commands"] = nlohmann::json::array();
+  truth["propeller_steps"] = nlohmann::json::array();
+
+  // Control task: joystick demand → allocation, at the control rate.
+  std::size_t next_command = 0;
+  UnmetSummary unmet;
+  simulator.add_periodic_task("control", 1.0 / js.control_rate_hz, 0.0, [&](sim::TaskContext& c) {
+    bool changed = false;
+    while (next_command < spec.joystick.size() &&
+           spec.joystick[next_command].t_s <= c.time() + 1e-9) {
+      const JoystickCommand& j = spec.joystick[next_command++];
+      demand_pct = {j.surge_pct, j.sway_pct, j.yaw_pct};
+      changed = true;
+    }
+    model::ThrustAllocationInput in;
+    in.tau_d_b = {demand_pct.x() / 100.0 * js.max_surge_N, demand_pct.y() / 100.0 * js.max_sway_N,
+                  demand_pct.z() / 100.0 * js.max_yaw_Nm};
+    in.surge_speed = c.state()[Plant::kHull + Hull::kSurge];
+    const model::ThrustAllocationResult a = allocator.allocate(in);
+    const Commands before = cmd;
+    cmd = {a.n_port, a.n_stb, a.rudder_port, a.rudder_stb, a.n_tunnel};
+    unmet.add(a.tau_unmet_b);
+    if (changed) {
+      truth["commands"].push_back(
+          {{"t_s", c.time()},
+           {"surge_pct", demand_pct.x()},
+           {"sway_pct", demand_pct.y()},
+           {"yaw_pct", demand_pct.z()},
+           {"n_port_rps", cmd.n_port},
+           {"n_stb_rps", cmd.n_stb},
+           {"rudder_port_deg", core::rad_to_deg(cmd.rudder_port)},
+           {"rudder_stb_deg", core::rad_to_deg(cmd.rudder_stb)},
+           {"n_tunnel_rps", cmd.n_tunnel},
+           {"tau_unmet", {a.tau_unmet_b.x(), a.tau_unmet_b.y(), a.tau_unmet_b.z()}}});
+      if (std::abs(cmd.n_stb - before.n_stb) > 1e-3) {
+        const model::ThrusterStepTruth t =
+            model::thruster_step_truth(plant.propeller(), before.n_stb, cmd.n_stb, dt);
+        truth["propeller_steps"].push_back({{"t_s", c.time()},
+                                            {"thruster", "stb"},
+                                            {"n_from_rps", before.n_stb},
+                                            {"n_to_rps", cmd.n_stb},
+                                            {"shaft_speed", fopdt_json(t.shaft_speed)},
+                                            {"thrust", fopdt_json(t.thrust)}});
+      }
+    }
+  });
+
+  // Actuator dead times and the environment, every tick (sample and hold).
+  simulator.add_every_tick_task("actuators+environment", [&](sim::TaskContext& c) {
+    Eigen::VectorXd& u = c.mutable_input();
+    u[Plant::kCmdPort] = delay_port.push(cmd.n_port);
+    u[Plant::kCmdStb] = delay_stb.push(cmd.n_stb);
+    u[Plant::kCmdRudderPort] = delay_rudder_port.push(cmd.rudder_port);
+    u[Plant::kCmdRudderStb] = delay_rudder_stb.push(cmd.rudder_stb);
+    u[Plant::kCmdTunnel] = delay_tunnel.push(cmd.n_tunnel);
+    current.step();
+    wind.step();
+    bias.step();
+    const Eigen::VectorXd& x = c.state();
+    const double psi = x[Plant::kHull + Hull::kYaw];
+    const double cs = std::cos(psi), sn = std::sin(psi);
+    const double uu = x[Plant::kHull + Hull::kSurge], vv = x[Plant::kHull + Hull::kSway];
+    const Eigen::Vector2d velocity_n(cs * uu - sn * vv, sn * uu + cs * vv);
+    u.segment<3>(Plant::kTauEnvBody) = wind.force_b(psi, velocity_n) + waves.drift_force_b(psi);
+    u.segment<3>(Plant::kForceNed) = bias.value_n();
+    u.segment<2>(Plant::kCurrentNed) = current.velocity_n();
+  });
+
+  // Logger: low-frequency state + wave-frequency motion, at the log rate.
+  core::Log log;
+  for (const auto& [name, unit] : kChannels) log.declare_channel(name, unit);
+  const auto rows = static_cast<std::size_t>(std::floor(spec.duration_s * spec.log_rate_hz)) + 1;
+  log.reserve(rows);
+  std::array<double, kChannels.size()> row{};
+  simulator.add_periodic_task("log", log_period, 0.0, [&](sim::TaskContext& c) {
+    const Eigen::VectorXd& x = c.state();
+    const Eigen::Vector2d current_n = c.input().segment<2>(Plant::kCurrentNed);
+    const ActuatorState a = plant.actuators(x, current_n);
+    const double psi_lf = x[Plant::kHull + Hull::kYaw];
+    const model::WaveMotion6 wf = waves.motion(psi_lf);
+    waves.advance();
+    const double cs = std::cos(psi_lf), sn = std::sin(psi_lf);
+    const double roll = x[Plant::kHull + Hull::kRoll] + wf.position[3];
+    const double pitch = x[Plant::kHull + Hull::kPitch] + wf.position[4];
+    const double yaw = x[Plant::kHull + Hull::kYaw] + wf.position[5];
+    // Body angular velocity from the Euler angle rates, ω = T(Θ)⁻¹ Θ̇.
+    const Eigen::Vector3d theta_dot(x[Plant::kHull + Hull::kRollRate] + wf.velocity[3],
+                                    x[Plant::kHull + Hull::kPitchRate] + wf.velocity[4],
+                                    x[Plant::kHull + Hull::kYawRate] + wf.velocity[5]);
+    const Eigen::Vector3d omega_b = core::euler_rate_matrix_inverse(roll, pitch) * theta_dot;
+    std::size_t i = 0;
+    row[i++] = x[Plant::kHull + Hull::kNorth] + cs * wf.position[0] - sn * wf.position[1];
+    row[i++] = x[Plant::kHull + Hull::kEast] + sn * wf.position[0] + cs * wf.position[1];
+    row[i++] = wf.position[2];
+    row[i++] = core::wrap_2pi(yaw);
+    row[i++] = roll;
+    row[i++] = pitch;
+    row[i++] = x[Plant::kHull + Hull::kSurge] + wf.velocity[0];
+    row[i++] = x[Plant::kHull + Hull::kSway] + wf.velocity[1];
+    row[i++] = omega_b.x();
+    row[i++] = omega_b.y();
+    row[i++] = omega_b.z();
+    row[i++] = a.port.shaft_speed;
+    row[i++] = a.stb.shaft_speed;
+    row[i++] = a.tunnel.shaft_speed;
+    row[i++] = a.port.thrust;
+    row[i++] = a.stb.thrust;
+    row[i++] = a.tunnel.thrust;
+    row[i++] = a.port.power;
+    row[i++] = a.stb.power;
+    row[i++] = a.tunnel.power;
+    row[i++] = x[Plant::kRudderPort];
+    row[i++] = x[Plant::kRudderStb];
+    row[i++] = demand_pct.x() / 100.0;
+    row[i++] = demand_pct.y() / 100.0;
+    row[i++] = demand_pct.z() / 100.0;
+    row[i++] = wind.speed_mps();
+    row[i++] = core::wrap_2pi(wind.from_rad());
+    row[i++] = current_n.x();
+    row[i++] = current_n.y();
+    log.append_row(c.time(), row);
+  });
+
+  const sim::SimResult result = simulator.run(x0);
+  if (!result.ok()) {
+    throw std::runtime_error(fmt::format("simulation of '{}' stopped at t = {:.2f} s: {}",
+                                         spec.name, result.final_time, result.message));
+  }
+
+  // True time constants the model defines (thesis tables 3.23–3.36 are what they compare to).
+  nlohmann::json tc;
+  const double x_rudder = vessel.layout.p_port_rudder_b.x();
+  for (const double knots : {3.0, 6.0}) {
+    const Hull::Nomoto n = plant.hull().nomoto(knots * 1852.0 / 3600.0, x_rudder);
+    tc[fmt::format("nomoto_{:.0f}kn", knots)] = {
+        {"T1_s", n.t1_s}, {"T2_s", n.t2_s}, {"T3_s", n.t3_s}, {"Tr_s", n.tr_s}};
+  }
+  tc["rudder_0_to_20deg"] = fopdt_json(model::rudder_step_truth(
+      plant.rudder(), 0.0, core::deg_to_rad(20.0), dt));
+  truth["time_constants"] = tc;
+  truth["allocation_unmet_max"] = {unmet.max.x(), unmet.max.y(), unmet.max.z()};
+  truth["units"] = "SI unless a key names its unit";
+  return {std::move(log), std::move(truth)};
+}
+
+}  // namespace dynpos::scenario

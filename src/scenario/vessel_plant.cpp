@@ -1,0 +1,73 @@
+#include "dynpos/scenario/vessel_plant.hpp"
+
+#include <cmath>
+
+namespace dynpos::scenario {
+
+VesselPlant::VesselPlant(const VesselConfig& config)
+    : hull_(config.hull),
+      propeller_(config.propeller),
+      rudder_(config.rudder),
+      tunnel_(config.tunnel),
+      layout_(config.layout) {}
+
+ActuatorState VesselPlant::actuators(const sim::ConstVectorRef& x,
+                                     const Eigen::Vector2d& current_n) const {
+  const double psi = x[kHull + model::Hull::kYaw];
+  const double c = std::cos(psi), s = std::sin(psi);
+  // Velocity through the water in BODY, ν_r = ν − R(ψ)ᵀ v_c.
+  const Eigen::Vector3d nu_r(
+      x[kHull + model::Hull::kSurge] - (c * current_n.x() + s * current_n.y()),
+      x[kHull + model::Hull::kSway] - (-s * current_n.x() + c * current_n.y()),
+      x[kHull + model::Hull::kYawRate]);
+  ActuatorState a;
+  const model::Thruster::State port = x.segment<4>(kPort);
+  const model::Thruster::State stb = x.segment<4>(kStb);
+  a.port = propeller_.outputs(port, nu_r.x());
+  a.stb = propeller_.outputs(stb, nu_r.x());
+  a.tunnel = tunnel_.outputs(x[kTunnel], nu_r.x());
+  const Eigen::Vector2d v_port = model::ThrustConfiguration::velocity_at(
+      nu_r, layout_.params().p_port_rudder_b);
+  const Eigen::Vector2d v_stb = model::ThrustConfiguration::velocity_at(
+      nu_r, layout_.params().p_stb_rudder_b);
+  a.rudder_port = rudder_.force(x[kRudderPort], {v_port.x(), v_port.y(), a.port.thrust});
+  a.rudder_stb = rudder_.force(x[kRudderStb], {v_stb.x(), v_stb.y(), a.stb.thrust});
+  model::ActuatorForces f;
+  f.thrust_port = a.port.thrust;
+  f.thrust_stb = a.stb.thrust;
+  f.rudder_port_b = a.rudder_port.f_b;
+  f.rudder_stb_b = a.rudder_stb.f_b;
+  f.tunnel = a.tunnel.thrust;
+  a.tau_b = layout_.tau(f);  // (2.37)
+  return a;
+}
+
+void VesselPlant::flow(double /*t*/, const sim::ConstVectorRef& x, const sim::ConstVectorRef& u,
+                       sim::VectorRef dxdt) const {
+  const Eigen::Vector2d current_n = u.segment<2>(kCurrentNed);
+  const ActuatorState a = actuators(x, current_n);
+  const double psi = x[kHull + model::Hull::kYaw];
+  const double c = std::cos(psi), s = std::sin(psi);
+  const Eigen::Vector3d f_n = u.segment<3>(kForceNed);
+  // NED force into BODY: R(ψ)ᵀ b, as in (2.21).
+  const Eigen::Vector3d f_b(c * f_n.x() + s * f_n.y(), -s * f_n.x() + c * f_n.y(), f_n.z());
+  const Eigen::Vector3d tau_b = a.tau_b + u.segment<3>(kTauEnvBody) + f_b;
+  const model::Hull::State hull_x = x.segment<10>(kHull);
+  dxdt.segment<10>(kHull) = hull_.derivatives(hull_x, tau_b, current_n);
+  const double u_r = x[kHull + model::Hull::kSurge] - (c * current_n.x() + s * current_n.y());
+  dxdt.segment<4>(kPort) = propeller_.derivatives(x.segment<4>(kPort), {u[kCmdPort], u_r});
+  dxdt.segment<4>(kStb) = propeller_.derivatives(x.segment<4>(kStb), {u[kCmdStb], u_r});
+  dxdt[kRudderPort] = rudder_.angle_rate(x[kRudderPort], u[kCmdRudderPort]);
+  dxdt[kRudderStb] = rudder_.angle_rate(x[kRudderStb], u[kCmdRudderStb]);
+  dxdt[kTunnel] = tunnel_.shaft_acceleration(x[kTunnel], u[kCmdTunnel]);
+}
+
+Eigen::VectorXd VesselPlant::initial_state(double heading_rad) const {
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(kStateSize);
+  x[kHull + model::Hull::kYaw] = heading_rad;
+  x.segment<4>(kPort) = propeller_.steady_state(0.0);
+  x.segment<4>(kStb) = propeller_.steady_state(0.0);
+  return x;
+}
+
+}  // namespace dynpos::scenario
