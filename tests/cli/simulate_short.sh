@@ -11,7 +11,7 @@ rm -rf "$out"; mkdir -p "$out"
 cmp "$out/a/log.csv" "$out/b/log.csv"
 cmp "$out/a/truth.json" "$out/b/truth.json"
 if cmp -s "$out/a/log.csv" "$out/c/log.csv"; then echo "seeds 7 and 8 gave the same log"; exit 1; fi
-head -1 "$out/a/log.csv" | grep -q '^time \[s\],north \[m\],east \[m\],heading \[rad\]' \
+head -1 "$out/a/log.csv" | grep -q '^time \[s\],north \[m\],east \[m\],down \[m\],heading \[rad\]' \
   || { echo "unexpected header: $(head -1 "$out/a/log.csv")"; exit 1; }
 rows=$(($(wc -l < "$out/a/log.csv") - 1))
 [ "$rows" -eq 401 ] || { echo "expected 401 rows (40 s at 10 Hz, both ends), got $rows"; exit 1; }

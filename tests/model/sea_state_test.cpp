@@ -1,0 +1,92 @@
+#include "dynpos/model/sea_state.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace dynpos::model {
+namespace {
+
+TEST(Jonswap, IntegratesToHsSquaredOver16) {
+  for (const double gamma : {1.0, 3.3, 5.0}) {
+    const double hs = 2.0, tp = 7.0;
+    double sum = 0.0;
+    const double dw = 1e-4;
+    for (double w = dw; w < 20.0; w += dw) sum += jonswap(w, hs, tp, gamma) * dw;
+    // The DNV normalisation 1 − 0.287 ln γ is an approximation good to ≈ 1 % for γ ≤ 5.
+    EXPECT_NEAR(sum, hs * hs / 16.0, 0.015 * hs * hs / 16.0) << "gamma " << gamma;
+  }
+}
+
+TEST(Jonswap, PeaksAtTheePeakFrequency) {
+  const double wp = 2.0 * M_PI / 8.0;
+  EXPECT_GT(jonswap(wp, 2.0, 8.0), jonswap(0.9 * wp, 2.0, 8.0));
+  EXPECT_GT(jonswap(wp, 2.0, 8.0), jonswap(1.1 * wp, 2.0, 8.0));
+  EXPECT_EQ(jonswap(1.0, 0.0, 8.0), 0.0);
+}
+
+TEST(Discretise, ComponentVarianceMatchesTheSpectrumAndIsSeeded) {
+  SeaStateParams sea;
+  sea.hs_m = 2.0;
+  sea.tp_s = 7.0;
+  sea.components = 200;
+  const auto a = discretise(sea, 42);
+  const auto b = discretise(sea, 42);
+  const auto c = discretise(sea, 43);
+  ASSERT_EQ(a.size(), 200u);
+  double variance = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    variance += 0.5 * a[i].amplitude * a[i].amplitude;
+    EXPECT_EQ(a[i].phase, b[i].phase);
+  }
+  EXPECT_NE(a[0].phase, c[0].phase);
+  // [0.5, 3]·ω_p holds ≈ 97 % of the JONSWAP energy; random in-bin frequencies add ≈ 2 %.
+  EXPECT_NEAR(variance, 0.25, 0.06 * 0.25);
+}
+
+TEST(WaveMotion, DerivativesAreConsistentWithPosition) {
+  SeaStateParams sea;
+  sea.hs_m = 2.0;
+  sea.tp_s = 7.0;
+  const double dt = 0.01;
+  WaveMotion waves(sea, WaveResponseParams{}, 7, dt);
+  const WaveMotion6 m0 = waves.motion(0.3);
+  waves.advance();
+  const WaveMotion6 m1 = waves.motion(0.3);
+  waves.advance();
+  const WaveMotion6 m2 = waves.motion(0.3);
+  for (int dof = 0; dof < 6; ++dof) {
+    // Central differences over 2·dt: error ≈ ω²dt²/6 of the velocity amplitude (< 1e-3).
+    const double v = (m2.position[dof] - m0.position[dof]) / (2 * dt);
+    EXPECT_NEAR(v, m1.velocity[dof], 1e-3 * std::abs(m1.velocity[dof]) + 1e-9) << dof;
+    const double a = (m2.velocity[dof] - m0.velocity[dof]) / (2 * dt);
+    EXPECT_NEAR(a, m1.acceleration[dof], 1e-3 * std::abs(m1.acceleration[dof]) + 1e-9) << dof;
+  }
+}
+
+TEST(WaveMotion, HeadSeasGiveNoSwayOrRollAndDriftScalesWithHsSquared) {
+  SeaStateParams sea;
+  sea.hs_m = 2.0;
+  sea.from_rad = 0.0;  // from the north
+  WaveMotion waves(sea, WaveResponseParams{}, 1, 0.1);
+  for (int k = 0; k < 50; ++k, waves.advance()) {
+    const WaveMotion6 m = waves.motion(0.0);  // heading north: head seas
+    EXPECT_NEAR(m.position[1], 0.0, 1e-12);  // sin β = 0 up to rounding of π
+    EXPECT_NEAR(m.position[3], 0.0, 1e-12);
+  }
+  SeaStateParams twice = sea;
+  twice.hs_m = 4.0;
+  const WaveMotion big(twice, WaveResponseParams{}, 1, 0.1);
+  const double f1 = waves.drift_force_b(0.0).x();
+  EXPECT_LT(f1, 0.0);  // head seas push the vessel astern
+  EXPECT_NEAR(big.drift_force_b(0.0).x(), 4.0 * f1, 1e-9 * std::abs(f1));
+}
+
+TEST(WaveMotion, CalmSeaHasNoMotion) {
+  WaveMotion waves(SeaStateParams{}, WaveResponseParams{}, 1, 0.1);
+  EXPECT_TRUE(waves.components().empty());
+  EXPECT_EQ(waves.motion(1.0).position.norm(), 0.0);
+}
+
+}  // namespace
+}  // namespace dynpos::model
