@@ -38,8 +38,9 @@ void run_simulate(const SimulateOptions& opt) {
     return;
   }
   if (opt.scenario.empty()) {
-    throw core::InputError({}, "no scenario given", "name one, e.g. 'dynpos simulate "
-                                                    "surge-steps-forward --out DIR' (--list shows all)");
+    throw core::InputError({}, "no scenario given",
+                           "name one, e.g. 'dynpos simulate "
+                           "surge-steps-forward --out DIR' (--list shows all)");
   }
   if (opt.out_dir.empty()) {
     throw core::InputError({}, "no output folder given", "add --out DIR");
@@ -69,7 +70,8 @@ void run_simulate(const SimulateOptions& opt) {
 void register_simulate(CLI::App& app) {
   auto opt = std::make_shared<SimulateOptions>();
   CLI::App* sub = app.add_subcommand(
-      "simulate", "Run a virtual sea trial on the virtual R/V Gunnerus; write log.csv and truth.json");
+      "simulate",
+      "Run a virtual sea trial on the virtual R/V Gunnerus; write log.csv and truth.json");
   sub->add_option("scenario", opt->scenario,
                   "Scenario name in data/scenarios (e.g. surge-steps-forward) or a .toml file");
   sub->add_option("--out", opt->out_dir, "Output folder (created if needed)");

@@ -11,8 +11,10 @@ void add_planned(CLI::App& parent, const std::string& name, const std::string& d
   CLI::App* sub = parent.add_subcommand(name, description);
   sub->allow_extras();
   sub->footer("Not available in this version. Planned: " + planned);
-  sub->callback([full = parent.get_name() == "dynpos" ? name : parent.get_name() + " " + name,
-                 planned] { throw Unavailable{full, planned}; });
+  sub->callback(
+      [full = parent.get_name() == "dynpos" ? name : parent.get_name() + " " + name, planned] {
+        throw Unavailable{full, planned};
+      });
 }
 
 }  // namespace
@@ -27,7 +29,8 @@ void register_identify(CLI::App& app) {
               "63.2 % response times per thruster and direction, polar plot (figs. 3.1-3.3)");
   add_planned(*identify, "four-corner", "DP 4-corner: legs, durations, thrust and energy",
               "leg segmentation, accumulated thrust [kNs] and energy [kJ] (table 3.6)");
-  add_planned(*identify, "station-keeping", "Pure DP: position, heading, wind and thrust statistics",
+  add_planned(*identify, "station-keeping",
+              "Pure DP: position, heading, wind and thrust statistics",
               "stationkeeping statistics over a window (tables 3.11-3.22)");
 }
 

@@ -56,11 +56,10 @@ void WindParams::validate() const {
 Wind::Wind(const WindParams& params, std::uint64_t seed, double dt_s)
     : params_((params.validate(), params)),
       gust_(sim::GaussMarkov::with_stationary_std(params.gust_time_constant_s,
-                                                  params.gust_std_fraction * params.speed_mps,
-                                                  dt_s, sim::Rng(seed, "wind.gust"))),
-      direction_(sim::GaussMarkov::with_stationary_std(params.gust_time_constant_s,
-                                                       params.dir_std_rad, dt_s,
-                                                       sim::Rng(seed, "wind.dir"))) {
+                                                  params.gust_std_fraction * params.speed_mps, dt_s,
+                                                  sim::Rng(seed, "wind.gust"))),
+      direction_(sim::GaussMarkov::with_stationary_std(
+          params.gust_time_constant_s, params.dir_std_rad, dt_s, sim::Rng(seed, "wind.dir"))) {
   gust_.reset_stationary();
   direction_.reset_stationary();
 }
@@ -74,15 +73,15 @@ double Wind::speed_mps() const noexcept { return std::max(0.0, params_.speed_mps
 
 double Wind::from_rad() const noexcept { return params_.from_rad + direction_.value(); }
 
-Eigen::Vector3d Wind::force_b(double heading_rad, const Eigen::Vector2d& velocity_n) const
-    noexcept {
+Eigen::Vector3d Wind::force_b(double heading_rad,
+                              const Eigen::Vector2d& velocity_n) const noexcept {
   const double speed = speed_mps();
   const double from = from_rad();
   // Air velocity over ground (it blows towards from + π), minus the vessel's velocity.
   const Eigen::Vector2d air_n(-speed * std::cos(from), -speed * std::sin(from));
   const Eigen::Vector2d rel_n = air_n - velocity_n;
   const double c = std::cos(heading_rad), s = std::sin(heading_rad);
-  const double ux = c * rel_n.x() + s * rel_n.y();   // relative air velocity in BODY
+  const double ux = c * rel_n.x() + s * rel_n.y();  // relative air velocity in BODY
   const double uy = -s * rel_n.x() + c * rel_n.y();
   const double v2 = ux * ux + uy * uy;
   if (v2 == 0.0) return Eigen::Vector3d::Zero();

@@ -48,7 +48,7 @@ void HullParams::validate() const {
 Hull::Hull(const HullParams& params) : params_(params) {
   params_.validate();
   const HullParams& p = params_;
-  M_ << p.mass_kg + p.x_udot_kg, 0.0, 0.0,  //
+  M_ << p.mass_kg + p.x_udot_kg, 0.0, 0.0,                              //
       0.0, p.mass_kg + p.y_vdot_kg, p.mass_kg * p.xg_m + p.y_rdot_kgm,  //
       0.0, p.mass_kg * p.xg_m + p.y_rdot_kgm, p.iz_kgm2 + p.n_rdot_kgm2;
   M_inv_ = M_.inverse();
@@ -119,8 +119,7 @@ Eigen::Matrix2d Hull::sway_yaw_linear(double u0) const noexcept {
   const HullParams& p = params_;
   // N(u₀) of (2.9): linearisation of C_RB + C_A + D about (u₀, 0, 0) in (v, r).
   Eigen::Matrix2d n;
-  n << p.y_v_Ns_m + p.y_uv_Ns2_m2 * std::abs(u0),
-      (p.mass_kg + p.x_udot_kg) * u0 + p.y_ur_Ns2 * u0,
+  n << p.y_v_Ns_m + p.y_uv_Ns2_m2 * std::abs(u0), (p.mass_kg + p.x_udot_kg) * u0 + p.y_ur_Ns2 * u0,
       (p.y_vdot_kg - p.x_udot_kg) * u0 + p.n_uv_Ns2 * u0,
       (p.mass_kg * p.xg_m + p.y_rdot_kgm) * u0 + p.n_r_Nms + p.n_ur_Nms2 * std::abs(u0);
   return n;

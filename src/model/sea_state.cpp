@@ -9,8 +9,8 @@
 namespace dynpos::model {
 namespace {
 
-constexpr double kG = 9.81;        // [m/s²]
-constexpr double kRho = 1025.0;    // [kg/m³]
+constexpr double kG = 9.81;      // [m/s²]
+constexpr double kRho = 1025.0;  // [kg/m³]
 constexpr double kTwoPi = 2.0 * M_PI;
 
 void require(bool ok, const std::string& what) {
@@ -92,8 +92,8 @@ WaveMotion::WaveMotion(const SeaStateParams& sea, const WaveResponseParams& resp
   rotor_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const WaveComponent& c = components_[i];
-    const double k = c.omega * c.omega / kG;            // deep-water wave number
-    const double lambda = kTwoPi / k;                   // wave length [m]
+    const double k = c.omega * c.omega / kG;  // deep-water wave number
+    const double lambda = kTwoPi / k;         // wave length [m]
     const double ratio = response_.length_m / lambda;
     const double attenuation = 1.0 / (1.0 + ratio * ratio);  // the hull averages short waves
     double g_heave = 0, l_heave = 0, g_roll = 0, l_roll = 0, g_pitch = 0, l_pitch = 0;
@@ -111,8 +111,7 @@ WaveMotion::WaveMotion(const SeaStateParams& sea, const WaveResponseParams& resp
     phasor_[i] = std::polar(1.0, c.phase);
     rotor_[i] = std::polar(1.0, c.omega * period_s);
   }
-  drift_force_scale_ =
-      0.5 * response_.drift_coefficient * kRho * kG * sea.hs_m * sea.hs_m / 16.0;
+  drift_force_scale_ = 0.5 * response_.drift_coefficient * kRho * kG * sea.hs_m * sea.hs_m / 16.0;
 }
 
 WaveMotion6 WaveMotion::motion(double heading_rad) const {

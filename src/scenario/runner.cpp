@@ -28,16 +28,35 @@ struct Commands {
 
 // The log's channels, in column order (names are roles of docs/log-format.md).
 const std::array<std::pair<const char*, const char*>, 29> kChannels{{
-    {"north", "m"},          {"east", "m"},         {"down", "m"},
-    {"heading", "rad"},      {"roll", "rad"},       {"pitch", "rad"},
-    {"u", "m/s"},            {"v", "m/s"},          {"p", "rad/s"},
-    {"q", "rad/s"},          {"r", "rad/s"},        {"rpm.port", "rps"},
-    {"rpm.stb", "rps"},      {"rpm.tunnel", "rps"}, {"thrust.port", "N"},
-    {"thrust.stb", "N"},     {"thrust.tunnel", "N"}, {"power.port", "W"},
-    {"power.stb", "W"},      {"power.tunnel", "W"}, {"rudder.port", "rad"},
-    {"rudder.stb", "rad"},   {"command.surge", "1"}, {"command.sway", "1"},
-    {"command.yaw", "1"},    {"wind_speed", "m/s"}, {"wind_dir", "rad"},
-    {"current.north", "m/s"}, {"current.east", "m/s"},
+    {"north", "m"},
+    {"east", "m"},
+    {"down", "m"},
+    {"heading", "rad"},
+    {"roll", "rad"},
+    {"pitch", "rad"},
+    {"u", "m/s"},
+    {"v", "m/s"},
+    {"p", "rad/s"},
+    {"q", "rad/s"},
+    {"r", "rad/s"},
+    {"rpm.port", "rps"},
+    {"rpm.stb", "rps"},
+    {"rpm.tunnel", "rps"},
+    {"thrust.port", "N"},
+    {"thrust.stb", "N"},
+    {"thrust.tunnel", "N"},
+    {"power.port", "W"},
+    {"power.stb", "W"},
+    {"power.tunnel", "W"},
+    {"rudder.port", "rad"},
+    {"rudder.stb", "rad"},
+    {"command.surge", "1"},
+    {"command.sway", "1"},
+    {"command.yaw", "1"},
+    {"wind_speed", "m/s"},
+    {"wind_dir", "rad"},
+    {"current.north", "m/s"},
+    {"current.east", "m/s"},
 }};
 
 nlohmann::json scenario_json(const ScenarioSpec& spec) {
@@ -73,8 +92,7 @@ nlohmann::json fopdt_json(const model::FopdtTruth& f) {
 
 }  // namespace
 
-ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel,
-                         std::uint64_t seed) {
+ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, std::uint64_t seed) {
   spec.validate();
   vessel.validate();
   const double dt = spec.dt_s;
@@ -268,8 +286,8 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel,
     tc[fmt::format("nomoto_{:.0f}kn", knots)] = {
         {"T1_s", n.t1_s}, {"T2_s", n.t2_s}, {"T3_s", n.t3_s}, {"Tr_s", n.tr_s}};
   }
-  tc["rudder_0_to_20deg"] = fopdt_json(model::rudder_step_truth(
-      plant.rudder(), 0.0, core::deg_to_rad(20.0), dt));
+  tc["rudder_0_to_20deg"] =
+      fopdt_json(model::rudder_step_truth(plant.rudder(), 0.0, core::deg_to_rad(20.0), dt));
   truth["time_constants"] = tc;
   truth["allocation_unmet_max"] = {unmet.max.x(), unmet.max.y(), unmet.max.z()};
   truth["units"] = "SI unless a key names its unit";

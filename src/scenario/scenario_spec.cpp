@@ -51,10 +51,10 @@ void ScenarioSpec::validate() const {
   const double ticks_per_log = 1.0 / (log_rate_hz * dt_s);
   if (std::abs(ticks_per_log - std::round(ticks_per_log)) > 1e-9 * ticks_per_log ||
       std::round(ticks_per_log) < 1.0) {
-    throw core::InputError(at(*this, "log_rate_hz"),
-                           fmt::format("log period 1/{} s is not a multiple of dt_s = {} s",
-                                       log_rate_hz, dt_s),
-                           "choose a log rate whose period is a whole number of steps");
+    throw core::InputError(
+        at(*this, "log_rate_hz"),
+        fmt::format("log period 1/{} s is not a multiple of dt_s = {} s", log_rate_hz, dt_s),
+        "choose a log rate whose period is a whole number of steps");
   }
   check_range(*this, "initial_surge_mps", initial_surge_mps, -4.0, 7.0);
   double previous = -1.0;
@@ -137,10 +137,10 @@ std::filesystem::path resolve_scenario(const std::string& name_or_path,
   if (std::filesystem::is_regular_file(builtin)) return builtin;
   std::string list;
   for (const std::string& n : list_scenarios(scenario_dir)) list += (list.empty() ? "" : ", ") + n;
-  throw core::InputError({}, fmt::format("unknown scenario '{}'", name_or_path),
-                         "available: " + (list.empty() ? std::string("none found in ") +
-                                                             scenario_dir.string()
-                                                       : list));
+  throw core::InputError(
+      {}, fmt::format("unknown scenario '{}'", name_or_path),
+      "available: " +
+          (list.empty() ? std::string("none found in ") + scenario_dir.string() : list));
 }
 
 }  // namespace dynpos::scenario

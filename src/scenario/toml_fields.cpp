@@ -110,8 +110,8 @@ void TomlTable::reject_unknown(const std::set<std::string, std::less<>>& known) 
     if (known.count(key.str()) == 0) {
       std::string list;
       for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
-      throw core::InputError(location_of(node.source(), file_, key_path(key.str())),
-                             "unknown key", "known keys here: " + list);
+      throw core::InputError(location_of(node.source(), file_, key_path(key.str())), "unknown key",
+                             "known keys here: " + list);
     }
   }
 }

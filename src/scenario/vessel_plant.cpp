@@ -26,10 +26,10 @@ ActuatorState VesselPlant::actuators(const sim::ConstVectorRef& x,
   a.port = propeller_.outputs(port, nu_r.x());
   a.stb = propeller_.outputs(stb, nu_r.x());
   a.tunnel = tunnel_.outputs(x[kTunnel], nu_r.x());
-  const Eigen::Vector2d v_port = model::ThrustConfiguration::velocity_at(
-      nu_r, layout_.params().p_port_rudder_b);
-  const Eigen::Vector2d v_stb = model::ThrustConfiguration::velocity_at(
-      nu_r, layout_.params().p_stb_rudder_b);
+  const Eigen::Vector2d v_port =
+      model::ThrustConfiguration::velocity_at(nu_r, layout_.params().p_port_rudder_b);
+  const Eigen::Vector2d v_stb =
+      model::ThrustConfiguration::velocity_at(nu_r, layout_.params().p_stb_rudder_b);
   a.rudder_port = rudder_.force(x[kRudderPort], {v_port.x(), v_port.y(), a.port.thrust});
   a.rudder_stb = rudder_.force(x[kRudderStb], {v_stb.x(), v_stb.y(), a.stb.thrust});
   model::ActuatorForces f;

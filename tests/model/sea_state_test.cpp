@@ -71,7 +71,7 @@ TEST(WaveMotion, HeadSeasGiveNoSwayOrRollAndDriftScalesWithHsSquared) {
   WaveMotion waves(sea, WaveResponseParams{}, 1, 0.1);
   for (int k = 0; k < 50; ++k, waves.advance()) {
     const WaveMotion6 m = waves.motion(0.0);  // heading north: head seas
-    EXPECT_NEAR(m.position[1], 0.0, 1e-12);  // sin β = 0 up to rounding of π
+    EXPECT_NEAR(m.position[1], 0.0, 1e-12);   // sin β = 0 up to rounding of π
     EXPECT_NEAR(m.position[3], 0.0, 1e-12);
   }
   SeaStateParams twice = sea;

@@ -20,9 +20,9 @@ struct CurrentParams {
   double speed_mps = 0.0;       ///< mean speed [m/s], [0, 3]
   double to_rad = 0.0;          ///< direction it flows to [rad]
   double speed_std_mps = 0.02;  ///< std of the slow speed variation [m/s], ≥ 0. Source: reasoned.
-  double dir_std_rad = 0.05;    ///< std of the slow direction variation [rad], ≥ 0. Source: reasoned.
-  double time_constant_s = 600.0;  ///< correlation time of the variations [s], > 0. Source: reasoned
-                                   ///< (tidal/wind-driven changes over tens of minutes).
+  double dir_std_rad = 0.05;  ///< std of the slow direction variation [rad], ≥ 0. Source: reasoned.
+  double time_constant_s = 600.0;  ///< correlation time of the variations [s], > 0. Source:
+                                   ///< reasoned (tidal/wind-driven changes over tens of minutes).
   void validate() const;
 };
 
@@ -43,17 +43,18 @@ class Current {
 
 /// Wind parameters: mean, gusts and the vessel's wind-force coefficients.
 struct WindParams {
-  double speed_mps = 0.0;    ///< mean wind speed at 10 m [m/s], [0, 50]
-  double from_rad = 0.0;     ///< direction it comes from [rad]
-  double gust_std_fraction = 0.12;  ///< gust std / mean speed [-]. Source: reasoned, turbulence
-                                    ///< intensity over open sea ≈ 0.1–0.15 (thesis table 3.3:
-                                    ///< 0.5 m/s std at 3.3–4.3 m/s mean).
+  double speed_mps = 0.0;             ///< mean wind speed at 10 m [m/s], [0, 50]
+  double from_rad = 0.0;              ///< direction it comes from [rad]
+  double gust_std_fraction = 0.12;    ///< gust std / mean speed [-]. Source: reasoned, turbulence
+                                      ///< intensity over open sea ≈ 0.1–0.15 (thesis table 3.3:
+                                      ///< 0.5 m/s std at 3.3–4.3 m/s mean).
   double gust_time_constant_s = 8.0;  ///< gust correlation time [s]. Source: reasoned.
   double dir_std_rad = 0.12;          ///< std of direction fluctuations [rad]. Source: thesis table
                                       ///< 3.3–3.4 (7–9° std).
-  double frontal_area_m2 = 90.0;    ///< A_F [m²]. Source: reasoned, 9.6 m beam × ≈ 9.5 m superstructure.
-  double lateral_area_m2 = 230.0;   ///< A_L [m²]. Source: reasoned, ≈ 31 m × 7.5 m mean height.
-  double length_m = 31.25;          ///< L_oa [m]. Source: Gunnerus main dimensions.
+  double frontal_area_m2 =
+      90.0;  ///< A_F [m²]. Source: reasoned, 9.6 m beam × ≈ 9.5 m superstructure.
+  double lateral_area_m2 = 230.0;  ///< A_L [m²]. Source: reasoned, ≈ 31 m × 7.5 m mean height.
+  double length_m = 31.25;         ///< L_oa [m]. Source: Gunnerus main dimensions.
   double cx = 0.6;   ///< head-wind drag coefficient [-]. Source: reasoned (Isherwood-type values).
   double cy = 0.8;   ///< beam-wind coefficient [-]. Source: reasoned.
   double cn = 0.08;  ///< yaw-moment coefficient [-]. Source: reasoned.
@@ -83,7 +84,7 @@ class Wind {
 /// The bias b in NED (2.22): ḃ = −T⁻¹ b + w_b per axis (N, E, yaw moment), exactly discretised.
 struct BiasParams {
   Eigen::Vector3d std{2.0e3, 2.0e3, 2.0e4};  ///< stationary std [N, N, N·m]. Source: reasoned —
-                                              ///< slowly varying drift and unmodelled forces.
+                                             ///< slowly varying drift and unmodelled forces.
   Eigen::Vector3d time_constant_s{300.0, 300.0, 300.0};  ///< T per axis [s]. Source: reasoned.
   void validate() const;
 };
@@ -103,7 +104,7 @@ class Bias {
 /// t_off (e.g. an ice load, or a mooring line that snaps: on from 0, off at the snap).
 struct StepLoad {
   double t_on_s = 0.0;
-  double t_off_s = 1e300;          ///< [s]; default: never switched off
+  double t_off_s = 1e300;            ///< [s]; default: never switched off
   Eigen::Vector3d force_n{0, 0, 0};  ///< (north [N], east [N], yaw moment [N·m])
 };
 

@@ -105,8 +105,8 @@ class Hull {
 
   /// The hydrodynamic and Coriolis forces −(C_RB ν + C_A ν_r + D ν_r) for velocity ν and
   /// relative velocity ν_r (both BODY, (u, v, r)).
-  Eigen::Vector3d hydrodynamic_forces(const Eigen::Vector3d& nu, const Eigen::Vector3d& nu_r) const
-      noexcept;
+  Eigen::Vector3d hydrodynamic_forces(const Eigen::Vector3d& nu,
+                                      const Eigen::Vector3d& nu_r) const noexcept;
 
   /// Steady surge speed [m/s] under surge force X [N] in calm water: the root of
   /// X_u·u + X_|u|u·u|u| = X, (2.8) at rest.

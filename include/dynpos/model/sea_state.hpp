@@ -21,11 +21,11 @@ namespace dynpos::model {
 
 /// Sea-state parameters.
 struct SeaStateParams {
-  double hs_m = 0.0;           ///< significant wave height H_s [m], [0, 15]; 0 = calm
-  double tp_s = 8.0;           ///< peak period T_p [s], [2, 25]
-  double gamma = 3.3;          ///< JONSWAP peak enhancement γ [-], [1, 7]; 3.3 = mean JONSWAP
-  double from_rad = 0.0;       ///< direction the waves come from, clockwise from north [rad]
-  int components = 60;         ///< number of spectral components, [1, 5000]
+  double hs_m = 0.0;              ///< significant wave height H_s [m], [0, 15]; 0 = calm
+  double tp_s = 8.0;              ///< peak period T_p [s], [2, 25]
+  double gamma = 3.3;             ///< JONSWAP peak enhancement γ [-], [1, 7]; 3.3 = mean JONSWAP
+  double from_rad = 0.0;          ///< direction the waves come from, clockwise from north [rad]
+  int components = 60;            ///< number of spectral components, [1, 5000]
   double omega_min_factor = 0.5;  ///< lowest frequency as a multiple of ω_p, (0, 1)
   double omega_max_factor = 3.0;  ///< highest frequency as a multiple of ω_p, > 1
   void validate() const;
@@ -33,15 +33,15 @@ struct SeaStateParams {
 
 /// Wave-response parameters of the hull (simple RAOs). Defaults: the virtual Gunnerus.
 struct WaveResponseParams {
-  double length_m = 31.25;       ///< hull length for short-wave attenuation. Source: Gunnerus Loa.
-  double beam_m = 9.6;           ///< beam [m]. Source: Gunnerus main dimensions.
-  double heave_period_s = 4.5;   ///< heave natural period [s]. Source: reasoned, T ≈ 2.7 m draught.
-  double heave_damping = 0.3;    ///< heave damping ratio [-]. Source: reasoned (radiation damping).
-  double roll_period_s = 8.0;    ///< roll natural period [s]. Source: as HullParams.
-  double roll_damping = 0.1;     ///< roll damping ratio [-]. Source: as HullParams.
-  double pitch_period_s = 5.0;   ///< pitch natural period [s]. Source: as HullParams.
-  double pitch_damping = 0.3;    ///< pitch damping ratio [-]. Source: as HullParams.
-  double yaw_factor = 0.3;       ///< yaw amplitude per wave slope at β = 45° [-]. Source: reasoned.
+  double length_m = 31.25;      ///< hull length for short-wave attenuation. Source: Gunnerus Loa.
+  double beam_m = 9.6;          ///< beam [m]. Source: Gunnerus main dimensions.
+  double heave_period_s = 4.5;  ///< heave natural period [s]. Source: reasoned, T ≈ 2.7 m draught.
+  double heave_damping = 0.3;   ///< heave damping ratio [-]. Source: reasoned (radiation damping).
+  double roll_period_s = 8.0;   ///< roll natural period [s]. Source: as HullParams.
+  double roll_damping = 0.1;    ///< roll damping ratio [-]. Source: as HullParams.
+  double pitch_period_s = 5.0;  ///< pitch natural period [s]. Source: as HullParams.
+  double pitch_damping = 0.3;   ///< pitch damping ratio [-]. Source: as HullParams.
+  double yaw_factor = 0.3;  ///< yaw amplitude per wave slope at β = 45° [-]. Source: reasoned.
   double drift_coefficient = 0.5;  ///< mean drift reflection coefficient [-]. Source: reasoned,
                                    ///< bluff hull in waves shorter than the ship.
   void validate() const;
@@ -91,9 +91,9 @@ class WaveMotion {
   // Per component: per-DOF transfer magnitude (without direction factor), phase lag, phasor.
   std::vector<Eigen::Matrix<double, 6, 1>> gain_;
   std::vector<std::array<std::complex<double>, 6>> lag_;  // e^{−j·lag} per DOF
-  std::vector<std::complex<double>> phasor_;  // e^{j(ω t + φ)}
-  std::vector<std::complex<double>> rotor_;   // e^{jω·period}
-  double drift_force_scale_ = 0.0;            // ½·c·ρ·g·H_s²/16 [N/m]
+  std::vector<std::complex<double>> phasor_;              // e^{j(ω t + φ)}
+  std::vector<std::complex<double>> rotor_;               // e^{jω·period}
+  double drift_force_scale_ = 0.0;                        // ½·c·ρ·g·H_s²/16 [N/m]
 };
 
 }  // namespace dynpos::model

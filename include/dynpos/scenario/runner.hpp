@@ -21,7 +21,6 @@ struct ScenarioRun {
 
 /// Simulates `spec` on `vessel` with master seed `seed`. Deterministic: the same inputs give
 /// bit-identical results. Throws std::runtime_error if the simulation fails (e.g. diverges).
-ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel,
-                         std::uint64_t seed);
+ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, std::uint64_t seed);
 
 }  // namespace dynpos::scenario

@@ -24,24 +24,24 @@ struct JoystickCommand {
 /// given as the direction they come FROM, current as the direction it flows TO, all in degrees
 /// clockwise from north.
 struct EnvironmentSpec {
-  double current_speed_mps = 0.0;   ///< [m/s] 0…3
-  double current_to_deg = 0.0;      ///< [deg] direction the current flows to
-  double wind_speed_mps = 0.0;      ///< [m/s] 0…40, 10-minute mean at 10 m
-  double wind_from_deg = 0.0;       ///< [deg]
-  double hs_m = 0.0;                ///< [m] significant wave height 0…8 (0 = no waves)
-  double tp_s = 6.0;                ///< [s] spectral peak period 2…20
-  double wave_from_deg = 0.0;       ///< [deg]
-  int wave_components = 60;         ///< number of spectral components, 10…1000
+  double current_speed_mps = 0.0;  ///< [m/s] 0…3
+  double current_to_deg = 0.0;     ///< [deg] direction the current flows to
+  double wind_speed_mps = 0.0;     ///< [m/s] 0…40, 10-minute mean at 10 m
+  double wind_from_deg = 0.0;      ///< [deg]
+  double hs_m = 0.0;               ///< [m] significant wave height 0…8 (0 = no waves)
+  double tp_s = 6.0;               ///< [s] spectral peak period 2…20
+  double wave_from_deg = 0.0;      ///< [deg]
+  int wave_components = 60;        ///< number of spectral components, 10…1000
 };
 
 /// A whole scenario.
 struct ScenarioSpec {
-  std::string name;         ///< identifier, e.g. "surge-steps-forward"
-  std::string description;  ///< one paragraph for humans
-  std::string source;       ///< file it was read from (for messages), empty if built in code
-  double duration_s = 60.0;     ///< [s] > 0, run length
-  double dt_s = 0.01;           ///< [s] integration step, > 0, divides every rate's period
-  double log_rate_hz = 10.0;    ///< [Hz] rate of the truth log; its period is a multiple of dt
+  std::string name;           ///< identifier, e.g. "surge-steps-forward"
+  std::string description;    ///< one paragraph for humans
+  std::string source;         ///< file it was read from (for messages), empty if built in code
+  double duration_s = 60.0;   ///< [s] > 0, run length
+  double dt_s = 0.01;         ///< [s] integration step, > 0, divides every rate's period
+  double log_rate_hz = 10.0;  ///< [Hz] rate of the truth log; its period is a multiple of dt
   double initial_heading_deg = 0.0;  ///< [deg] ψ(0)
   double initial_surge_mps = 0.0;    ///< [m/s] u(0), with actuators trimmed to hold it
   EnvironmentSpec environment;

@@ -31,13 +31,13 @@ struct VesselConfig {
   std::string name = "Gunnerus";
   std::string source;  ///< file it was read from, empty for built-in defaults
   model::HullParams hull;
-  model::ThrusterParams propeller;        ///< both main propellers
-  model::RudderParams rudder;             ///< both rudders
+  model::ThrusterParams propeller;  ///< both main propellers
+  model::RudderParams rudder;       ///< both rudders
   model::TunnelThrusterParams tunnel;
   model::ThrustConfigurationParams layout;
   model::ThrustAllocationOptions allocation;
   model::WaveResponseParams waves;
-  model::WindParams wind;     ///< only the vessel part (areas, coefficients, gust model) is used
+  model::WindParams wind;        ///< only the vessel part (areas, coefficients, gust model) is used
   model::CurrentParams current;  ///< only the variation part is used
   model::BiasParams bias;
   JoystickParams joystick;
