@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <vector>
+
+#include "dynpos/model/delay_line.hpp"
+#include "dynpos/sim/rk4.hpp"
 
 namespace dynpos::model {
 
@@ -43,6 +47,25 @@ std::optional<FopdtTruth> fopdt_two_point(std::span<const double> t, std::span<c
   fit.time_constant = 1.5 * (t2 - t1);
   fit.dead_time = (t2 - t_step) - fit.time_constant;
   return fit;
+}
+
+FopdtTruth scalar_step_truth(const std::function<double(double, double)>& rate, double from,
+                             double to, double dead_time, double duration, double dt) {
+  const auto steps = static_cast<std::size_t>(std::ceil(duration / dt));
+  DelayLine line(dead_time, dt, from);
+  sim::Rk4<1> rk4;
+  Eigen::Matrix<double, 1, 1> x(from);
+  std::vector<double> t(steps + 1), y(steps + 1);
+  for (std::size_t k = 0; k <= steps; ++k) {
+    const double tk = static_cast<double>(k) * dt;
+    t[k] = tk;
+    y[k] = x[0];
+    const double cmd = line.push(to);
+    rk4.step([&](double, const Eigen::Matrix<double, 1, 1>& xs,
+                 Eigen::Matrix<double, 1, 1>& dxs) { dxs[0] = rate(xs[0], cmd); },
+             tk, dt, x, x);
+  }
+  return fopdt_two_point(t, y, 0.0).value_or(FopdtTruth{});
 }
 
 }  // namespace dynpos::model

@@ -136,21 +136,8 @@ FopdtTruth rudder_step_truth(const Rudder& rudder, double angle_from, double ang
   // Dead time, the rate-limited ramp and ten servo time constants, plus margin.
   const double duration =
       p.dead_time + std::abs(to - from) / p.rate_limit + 10.0 * p.servo_time_constant + 5.0;
-  const auto steps = static_cast<std::size_t>(std::ceil(duration / dt));
-  DelayLine line(p.dead_time, dt, from);
-  sim::Rk4<1> rk4;
-  Eigen::Matrix<double, 1, 1> x(from);
-  std::vector<double> t(steps + 1), a(steps + 1);
-  for (std::size_t k = 0; k <= steps; ++k) {
-    const double tk = static_cast<double>(k) * dt;
-    t[k] = tk;
-    a[k] = x[0];
-    const double cmd = line.push(to);
-    rk4.step([&](double, const Eigen::Matrix<double, 1, 1>& xs,
-                 Eigen::Matrix<double, 1, 1>& dxs) { dxs[0] = rudder.angle_rate(xs[0], cmd); },
-             tk, dt, x, x);
-  }
-  return fopdt_two_point(t, a, 0.0).value_or(FopdtTruth{});
+  return scalar_step_truth([&](double a, double cmd) { return rudder.angle_rate(a, cmd); }, from,
+                           to, p.dead_time, duration, dt);
 }
 
 }  // namespace dynpos::model

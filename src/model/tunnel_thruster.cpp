@@ -91,25 +91,12 @@ FopdtTruth tunnel_step_truth(const TunnelThruster& thruster, double n_from, doub
   const TunnelThrusterParams& p = thruster.params();
   const double from = clamp_abs(n_from, p.max_shaft_speed);
   const double to = clamp_abs(n_to, p.max_shaft_speed);
+  // Dead time, the rate-limited ramp and ten time constants, plus margin.
   const double duration =
       p.dead_time + std::abs(to - from) / p.rate_limit + 10.0 * p.time_constant + 5.0;
-  const auto steps = static_cast<std::size_t>(std::ceil(duration / dt));
-  DelayLine line(p.dead_time, dt, from);
-  sim::Rk4<1> rk4;
-  Eigen::Matrix<double, 1, 1> x(from);
-  std::vector<double> t(steps + 1), n(steps + 1);
-  for (std::size_t k = 0; k <= steps; ++k) {
-    const double tk = static_cast<double>(k) * dt;
-    t[k] = tk;
-    n[k] = x[0];
-    const double cmd = line.push(to);
-    rk4.step(
-        [&](double, const Eigen::Matrix<double, 1, 1>& xs, Eigen::Matrix<double, 1, 1>& dxs) {
-          dxs[0] = thruster.shaft_acceleration(xs[0], cmd);
-        },
-        tk, dt, x, x);
-  }
-  return fopdt_two_point(t, n, 0.0).value_or(FopdtTruth{});
+  return scalar_step_truth(
+      [&](double n, double cmd) { return thruster.shaft_acceleration(n, cmd); }, from, to,
+      p.dead_time, duration, dt);
 }
 
 }  // namespace dynpos::model

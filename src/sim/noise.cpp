@@ -1,5 +1,7 @@
 #include "dynpos/sim/noise.hpp"
 
+#include "format_number.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -10,34 +12,30 @@ namespace dynpos::sim {
 
 namespace {
 
-std::string num(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.10g", value);
-  return buffer;
-}
-
 void require(bool condition, const char* where, const std::string& message) {
   if (!condition) throw std::invalid_argument(std::string(where) + ": " + message);
 }
 
 void check_time_constant_and_dt(const char* where, double time_constant, double dt) {
   require(!std::isnan(time_constant) && time_constant > 0.0, where,
-          "time constant T = " + num(time_constant) + " s must be > 0 (+inf for a random walk)");
-  require(std::isfinite(dt) && dt > 0.0, where, "dt = " + num(dt) + " s must be finite and > 0");
+          "time constant T = " + detail::format_number(time_constant) +
+              " s must be > 0 (+inf for a random walk)");
+  require(std::isfinite(dt) && dt > 0.0, where,
+          "dt = " + detail::format_number(dt) + " s must be finite and > 0");
 }
 
 }  // namespace
 
 WhiteNoise::WhiteNoise(double std_dev, Rng rng) : std_dev_(std_dev), rng_(std::move(rng)) {
   require(std::isfinite(std_dev) && std_dev >= 0.0, "WhiteNoise",
-          "std = " + num(std_dev) + " must be finite and >= 0");
+          "std = " + detail::format_number(std_dev) + " must be finite and >= 0");
 }
 
 double discrete_std_from_psd(double psd, double dt) {
   require(std::isfinite(psd) && psd >= 0.0, "discrete_std_from_psd",
-          "psd = " + num(psd) + " must be finite and >= 0");
+          "psd = " + detail::format_number(psd) + " must be finite and >= 0");
   require(std::isfinite(dt) && dt > 0.0, "discrete_std_from_psd",
-          "dt = " + num(dt) + " s must be finite and > 0");
+          "dt = " + detail::format_number(dt) + " s must be finite and > 0");
   return std::sqrt(psd / dt);
 }
 
@@ -58,7 +56,7 @@ GaussMarkov GaussMarkov::with_stationary_std(double time_constant, double statio
   require(std::isfinite(time_constant), kWhere,
           "a random walk (T = inf) has no stationary std; use random_walk()");
   require(std::isfinite(stationary_std) && stationary_std >= 0.0, kWhere,
-          "stationary std = " + num(stationary_std) + " must be finite and >= 0");
+          "stationary std = " + detail::format_number(stationary_std) + " must be finite and >= 0");
   const double phi = std::exp(-dt / time_constant);
   // 1 − e^{−2dt/T} by expm1, accurate when dt ≪ T.
   const double step_std = stationary_std * std::sqrt(-std::expm1(-2.0 * dt / time_constant));
@@ -69,8 +67,9 @@ GaussMarkov GaussMarkov::with_noise_intensity(double time_constant, double noise
                                               double dt, Rng rng, double initial) {
   constexpr const char* kWhere = "GaussMarkov::with_noise_intensity";
   check_time_constant_and_dt(kWhere, time_constant, dt);
-  require(std::isfinite(noise_intensity) && noise_intensity >= 0.0, kWhere,
-          "noise intensity q = " + num(noise_intensity) + " must be finite and >= 0");
+  require(
+      std::isfinite(noise_intensity) && noise_intensity >= 0.0, kWhere,
+      "noise intensity q = " + detail::format_number(noise_intensity) + " must be finite and >= 0");
   if (std::isinf(time_constant)) {
     return GaussMarkov(time_constant, std::numeric_limits<double>::infinity(), 1.0,
                        noise_intensity * std::sqrt(dt), dt, std::move(rng), initial);
@@ -97,7 +96,7 @@ void GaussMarkov::reset_stationary() {
 
 double quantize(double value, double resolution) {
   require(std::isfinite(resolution) && resolution >= 0.0, "quantize",
-          "resolution = " + num(resolution) + " must be finite and >= 0");
+          "resolution = " + detail::format_number(resolution) + " must be finite and >= 0");
   if (resolution == 0.0) return value;
   return std::round(value / resolution) * resolution;
 }

@@ -1,5 +1,7 @@
 #include "dynpos/sim/simulator.hpp"
 
+#include "format_number.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -8,12 +10,6 @@
 namespace dynpos::sim {
 
 namespace {
-
-std::string num(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.10g", value);
-  return buffer;
-}
 
 void require(bool condition, const std::string& message) {
   if (!condition) throw std::invalid_argument("SimulatorOptions: " + message);
@@ -27,17 +23,19 @@ constexpr double kDwellSlackPerDt = 1e-6;
 }  // namespace
 
 void SimulatorOptions::validate() const {
-  require(std::isfinite(dt) && dt > 0.0, "dt = " + num(dt) + " s must be finite and > 0");
+  require(std::isfinite(dt) && dt > 0.0,
+          "dt = " + detail::format_number(dt) + " s must be finite and > 0");
   require(std::isfinite(end_time) && end_time >= 0.0,
-          "end_time = " + num(end_time) + " s must be finite and >= 0");
+          "end_time = " + detail::format_number(end_time) + " s must be finite and >= 0");
   // Throws if end_time is not an integer multiple of dt.
   (void)TimeGrid(dt).ticks(end_time, "SimulatorOptions: end_time");
   require(std::isfinite(dwell_time) && dwell_time >= 0.0,
-          "dwell_time = " + num(dwell_time) + " s must be finite and >= 0");
+          "dwell_time = " + detail::format_number(dwell_time) + " s must be finite and >= 0");
   require(max_jumps_per_instant >= 1,
           "max_jumps_per_instant = " + std::to_string(max_jumps_per_instant) + " must be >= 1");
   require(std::isfinite(event_time_tolerance) && event_time_tolerance > 0.0,
-          "event_time_tolerance = " + num(event_time_tolerance) + " s must be finite and > 0");
+          "event_time_tolerance = " + detail::format_number(event_time_tolerance) +
+              " s must be finite and > 0");
   require(max_events_per_step >= 1,
           "max_events_per_step = " + std::to_string(max_events_per_step) + " must be >= 1");
 }
@@ -119,7 +117,7 @@ SimResult Simulator::run(const Eigen::VectorXd& x0) {
     }
     if (!x_.allFinite()) {
       stop(result, SimStatus::kNonFinite, t,
-           "state not finite after the tasks at t = " + num(t) + " s");
+           "state not finite after the tasks at t = " + detail::format_number(t) + " s");
       return result;
     }
     // 2. Jumps and the flow-set check.
@@ -146,7 +144,7 @@ bool Simulator::jump_and_check(double t, SimResult& result) {
     if (jumps_here == options_.max_jumps_per_instant) {
       return stop(result, SimStatus::kZeno, t,
                   "Zeno behaviour: x still in the jump set D after " + std::to_string(jumps_here) +
-                      " jumps at t = " + num(t) +
+                      " jumps at t = " + detail::format_number(t) +
                       " s; a dwell_time > 0 or a jump map that leaves D avoids it");
     }
     system_.jump(t, x_, u_, x_plus_);
@@ -158,17 +156,18 @@ bool Simulator::jump_and_check(double t, SimResult& result) {
     result.jump_times.push_back(t);
     if (!x_.allFinite()) {
       return stop(result, SimStatus::kNonFinite, t,
-                  "state not finite after a jump at t = " + num(t) + " s");
+                  "state not finite after a jump at t = " + detail::format_number(t) + " s");
     }
   }
   if (options_.check_flow_set && !system_.in_flow_set(t, x_, u_)) {
-    return stop(
-        result, SimStatus::kLeftFlowSet, t,
-        dwell_blocked
-            ? "x is outside the flow set C at t = " + num(t) + " s and in D, but the dwell time " +
-                  num(options_.dwell_time) + " s since the last jump at " + num(last_jump_time_) +
-                  " s forbids a jump"
-            : "x is outside both the flow set C and the jump set D at t = " + num(t) + " s");
+    return stop(result, SimStatus::kLeftFlowSet, t,
+                dwell_blocked ? "x is outside the flow set C at t = " + detail::format_number(t) +
+                                    " s and in D, but the dwell time " +
+                                    detail::format_number(options_.dwell_time) +
+                                    " s since the last jump at " +
+                                    detail::format_number(last_jump_time_) + " s forbids a jump"
+                              : "x is outside both the flow set C and the jump set D at t = " +
+                                    detail::format_number(t) + " s");
   }
   return true;
 }
@@ -192,10 +191,11 @@ bool Simulator::flow_step(Tick k, SimResult& result) {
     int events = 0;
     while (g0 > 0.0 && g1 <= 0.0) {
       if (events == options_.max_events_per_step) {
-        return stop(result, SimStatus::kZeno, t0,
-                    "Zeno behaviour: more than " + std::to_string(events) +
-                        " located events inside the step from t = " + num(grid_.time(k)) +
-                        " s; raise dwell_time or max_events_per_step if this is intended");
+        return stop(
+            result, SimStatus::kZeno, t0,
+            "Zeno behaviour: more than " + std::to_string(events) +
+                " located events inside the step from t = " + detail::format_number(grid_.time(k)) +
+                " s; raise dwell_time or max_events_per_step if this is intended");
       }
       ++events;
       const double tau = locate_event(t0, h, g0, g1);
@@ -203,7 +203,7 @@ bool Simulator::flow_step(Tick k, SimResult& result) {
       const double t_event = t0 + tau;
       if (!x_.allFinite()) {
         return stop(result, SimStatus::kNonFinite, t_event,
-                    "state not finite at t = " + num(t_event) + " s");
+                    "state not finite at t = " + detail::format_number(t_event) + " s");
       }
       if (!jump_and_check(t_event, result)) return false;
       t0 = t_event;
@@ -221,7 +221,7 @@ bool Simulator::flow_step(Tick k, SimResult& result) {
   x_.swap(x_end_);
   if (!x_.allFinite()) {
     return stop(result, SimStatus::kNonFinite, t_end,
-                "state not finite after the step to t = " + num(t_end) + " s");
+                "state not finite after the step to t = " + detail::format_number(t_end) + " s");
   }
   return true;
 }

@@ -9,6 +9,7 @@
 /// 63.2 % of its change, T = 1.5·(t₂ − t₁), δ = t₂ − T. An identification run on the noisy log
 /// should therefore recover these numbers within its noise-induced error.
 
+#include <functional>
 #include <optional>
 #include <span>
 
@@ -26,5 +27,11 @@ struct FopdtTruth {
 /// when the response never covers 63.2 % of its change or the change is zero.
 std::optional<FopdtTruth> fopdt_two_point(std::span<const double> t, std::span<const double> y,
                                           double t_step);
+
+/// The Smith truth of a one-state actuator ẋ = rate(x, x_c) after a command step from → to at
+/// t = 0 seen through a dead time [s]: simulated by RK4 at step dt [s] for duration [s] from
+/// rest at `from`. Returns a zero FOPDT when the response does not cover 63.2 %.
+FopdtTruth scalar_step_truth(const std::function<double(double, double)>& rate, double from,
+                             double to, double dead_time, double duration, double dt);
 
 }  // namespace dynpos::model
