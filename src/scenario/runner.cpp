@@ -69,6 +69,14 @@ nlohmann::json scenario_json(const ScenarioSpec& spec) {
   j["initial_heading_deg"] = spec.initial_heading_deg;
   j["initial_surge_mps"] = spec.initial_surge_mps;
   const EnvironmentSpec& e = spec.environment;
+  j["loads"] = nlohmann::json::array();
+  for (const LoadEvent& e : spec.loads) {
+    j["loads"].push_back({{"t_on_s", e.t_on_s},
+                          {"t_off_s", e.t_off_s < 1e299 ? nlohmann::json(e.t_off_s) : nullptr},
+                          {"north_N", e.north_N},
+                          {"east_N", e.east_N},
+                          {"yaw_Nm", e.yaw_Nm}});
+  }
   j["environment"] = {{"current_speed_mps", e.current_speed_mps},
                       {"current_to_deg", e.current_to_deg},
                       {"wind_speed_mps", e.wind_speed_mps},
@@ -118,6 +126,10 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
   model::Wind wind(wind_params, seed, dt);
   model::Bias bias(vessel.bias, seed, dt);
   model::WaveMotion waves(sea, vessel.waves, seed, log_period);
+  std::vector<model::StepLoad> loads;
+  for (const LoadEvent& e : spec.loads) {
+    loads.push_back({e.t_on_s, e.t_off_s, Eigen::Vector3d(e.north_N, e.east_N, e.yaw_Nm)});
+  }
 
   // Operator commands and their dead times.
   const JoystickParams& js = vessel.joystick;
@@ -213,7 +225,7 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
     const double uu = x[Plant::kHull + Hull::kSurge], vv = x[Plant::kHull + Hull::kSway];
     const Eigen::Vector2d velocity_n(cs * uu - sn * vv, sn * uu + cs * vv);
     u.segment<3>(Plant::kTauEnvBody) = wind.force_b(psi, velocity_n) + waves.drift_force_b(psi);
-    u.segment<3>(Plant::kForceNed) = bias.value_n();
+    u.segment<3>(Plant::kForceNed) = bias.value_n() + model::step_loads_n(loads, c.time());
     u.segment<2>(Plant::kCurrentNed) = current.velocity_n();
   });
 

@@ -72,6 +72,12 @@ void ScenarioSpec::validate() const {
     check_range(*this, field + ".sway_pct", c.sway_pct, -100.0, 100.0);
     check_range(*this, field + ".yaw_pct", c.yaw_pct, -100.0, 100.0);
   }
+  for (std::size_t i = 0; i < loads.size(); ++i) {
+    if (!(loads[i].t_off_s > loads[i].t_on_s)) {
+      throw core::InputError(at(*this, fmt::format("load[{}].t_off_s", i + 1)),
+                             "a load must switch off after it switches on");
+    }
+  }
 }
 
 ScenarioSpec load_scenario(const std::filesystem::path& path) {
@@ -79,7 +85,8 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
   const toml::table doc = TomlTable::parse_file(file);
   const TomlTable root(doc, file, "");
   root.reject_unknown({"name", "description", "duration_s", "dt_s", "log_rate_hz",
-                       "initial_heading_deg", "initial_surge_mps", "environment", "joystick"});
+                       "initial_heading_deg", "initial_surge_mps", "environment", "joystick",
+                       "load"});
   ScenarioSpec spec;
   spec.source = file;
   spec.name = root.string("name");
@@ -110,6 +117,26 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
       c.sway_pct = t.number_or("sway_pct", 0.0, -100.0, 100.0);
       c.yaw_pct = t.number_or("yaw_pct", 0.0, -100.0, 100.0);
       spec.joystick.push_back(c);
+    }
+  }
+  if (const toml::node* node = doc.get("load")) {
+    const toml::array* rows = node->as_array();
+    if (rows == nullptr) {
+      throw core::InputError(root.where("load"), "expected an array of tables",
+                             "write each load as [[load]] with t_on_s and force keys");
+    }
+    for (std::size_t i = 0; i < rows->size(); ++i) {
+      const toml::table* row = (*rows)[i].as_table();
+      if (row == nullptr) throw core::InputError(root.where("load"), "expected [[load]] tables");
+      const TomlTable t(*row, file, fmt::format("load[{}]", i + 1));
+      t.reject_unknown({"t_on_s", "t_off_s", "north_N", "east_N", "yaw_Nm"});
+      LoadEvent e;
+      e.t_on_s = t.number_or("t_on_s", 0.0, 0.0, 1e6);
+      e.t_off_s = t.number_or("t_off_s", e.t_off_s, 0.0, 1e300);
+      e.north_N = t.number_or("north_N", 0.0, -1e8, 1e8);
+      e.east_N = t.number_or("east_N", 0.0, -1e8, 1e8);
+      e.yaw_Nm = t.number_or("yaw_Nm", 0.0, -1e10, 1e10);
+      spec.loads.push_back(e);
     }
   }
   spec.validate();

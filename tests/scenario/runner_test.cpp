@@ -130,6 +130,20 @@ TEST(RunScenario, SwayDemandMovesTheVesselToStarboard) {
   for (const auto& unmet : run.truth["allocation_unmet_max"]) EXPECT_LT(unmet.get<double>(), 1.0);
 }
 
+TEST(RunScenario, StepLoadPushesTheVesselOnlyWhileOn) {
+  ScenarioSpec s;
+  s.name = "ice";
+  s.duration_s = 120.0;
+  s.loads = {{10.0, 60.0, 0.0, 20e3, 0.0}};  // 20 kN towards east from 10 s to 60 s
+  const ScenarioRun run = run_scenario(s, calm_vessel(), 1);
+  const auto& east = run.log.values("east");
+  const auto& v = run.log.values("v");
+  EXPECT_EQ(east[100], 0.0);    // nothing before the load (calm, no thrust)
+  EXPECT_GT(v[600], 0.1);       // drifting east (sway at heading 0) when it switches off
+  EXPECT_LT(v.back(), v[600]);  // decelerating after it is gone
+  EXPECT_EQ(run.truth["scenario"]["loads"].size(), 1u);
+}
+
 TEST(RunScenario, CsvRoundTripIsExact) {
   const ScenarioRun run = run_scenario(rough(20.0), VesselConfig{}, 5);
   const auto dir = std::filesystem::temp_directory_path() / "dynpos_runner_test";

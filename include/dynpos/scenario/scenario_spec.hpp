@@ -20,6 +20,16 @@ struct JoystickCommand {
   double yaw_pct = 0.0;    ///< [%] −100…100 of maximum yaw moment, + bow to starboard
 };
 
+/// A scheduled load in NED, e.g. an ice load (switched on) or a mooring line that snaps (on
+/// from the start, off at the snap).
+struct LoadEvent {
+  double t_on_s = 0.0;     ///< [s] ≥ 0
+  double t_off_s = 1e300;  ///< [s] > t_on_s; default: never switched off
+  double north_N = 0.0;    ///< force towards north [N]
+  double east_N = 0.0;     ///< force towards east [N]
+  double yaw_Nm = 0.0;     ///< yaw moment, + bow to starboard [N·m]
+};
+
 /// The weather and water of a run. Directions follow the sea-trial habit: wind and waves are
 /// given as the direction they come FROM, current as the direction it flows TO, all in degrees
 /// clockwise from north.
@@ -46,6 +56,7 @@ struct ScenarioSpec {
   double initial_surge_mps = 0.0;    ///< [m/s] u(0), with actuators trimmed to hold it
   EnvironmentSpec environment;
   std::vector<JoystickCommand> joystick;  ///< sorted by t_s; empty = zero demand throughout
+  std::vector<LoadEvent> loads;           ///< scheduled step loads
   /// Throws core::InputError (naming source and the bad field) if a value is out of range, the
   /// joystick times are not increasing or lie outside [0, duration].
   void validate() const;
