@@ -2,8 +2,10 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "dynpos/core/angle.hpp"
@@ -69,6 +71,13 @@ nlohmann::json scenario_json(const ScenarioSpec& spec) {
   j["initial_heading_deg"] = spec.initial_heading_deg;
   j["initial_surge_mps"] = spec.initial_surge_mps;
   const EnvironmentSpec& e = spec.environment;
+  j["rudder"] = nlohmann::json::array();
+  for (const RudderCommand& r : spec.rudder) {
+    j["rudder"].push_back(
+        {{"t_s", r.t_s},
+         {"angle_deg", r.release ? nlohmann::json(nullptr) : nlohmann::json(r.angle_deg)},
+         {"release", r.release}});
+  }
   j["loads"] = nlohmann::json::array();
   for (const LoadEvent& e : spec.loads) {
     j["loads"].push_back({{"t_on_s", e.t_on_s},
@@ -164,8 +173,11 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
   truth["commands"] = nlohmann::json::array();
   truth["propeller_steps"] = nlohmann::json::array();
 
-  // Control task: joystick demand → allocation, at the control rate.
+  // Control task: joystick demand → allocation, at the control rate; manual rudder override.
   std::size_t next_command = 0;
+  std::size_t next_rudder = 0;
+  std::optional<double> rudder_override;  // [rad], both rudders
+  truth["rudder_steps"] = nlohmann::json::array();
   UnmetSummary unmet;
   simulator.add_periodic_task("control", 1.0 / js.control_rate_hz, 0.0, [&](sim::TaskContext& c) {
     bool changed = false;
@@ -182,6 +194,29 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
     const model::ThrustAllocationResult a = allocator.allocate(in);
     const Commands before = cmd;
     cmd = {a.n_port, a.n_stb, a.rudder_port, a.rudder_stb, a.n_tunnel};
+    while (next_rudder < spec.rudder.size() && spec.rudder[next_rudder].t_s <= c.time() + 1e-9) {
+      const RudderCommand& rc = spec.rudder[next_rudder++];
+      const double from = rudder_override.value_or(before.rudder_stb);
+      rudder_override =
+          rc.release ? std::nullopt : std::optional<double>(core::deg_to_rad(rc.angle_deg));
+      if (rudder_override) {
+        const double to =
+            std::clamp(*rudder_override, -vessel.rudder.max_angle, vessel.rudder.max_angle);
+        const double u0 = c.state()[Plant::kHull + Hull::kSurge];
+        nlohmann::json step = {
+            {"t_s", c.time()},
+            {"from_deg", core::rad_to_deg(from)},
+            {"to_deg", core::rad_to_deg(to)},
+            {"surge_mps", u0},
+            {"servo", fopdt_json(model::rudder_step_truth(plant.rudder(), from, to, dt))}};
+        if (u0 > 0.1) {
+          const Hull::Nomoto n = plant.hull().nomoto(u0, vessel.layout.p_port_rudder_b.x());
+          step["nomoto"] = {{"T1_s", n.t1_s}, {"T2_s", n.t2_s}, {"T3_s", n.t3_s}, {"Tr_s", n.tr_s}};
+        }
+        truth["rudder_steps"].push_back(step);
+      }
+    }
+    if (rudder_override) cmd.rudder_port = cmd.rudder_stb = *rudder_override;
     unmet.add(a.tau_unmet_b);
     if (changed) {
       truth["commands"].push_back(

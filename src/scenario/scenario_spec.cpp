@@ -41,6 +41,25 @@ EnvironmentSpec read_environment(const TomlTable& t) {
   return env;
 }
 
+// Calls fn for each table of the array of tables [[key]], if present.
+template <typename Fn>
+void for_each_row(const toml::table& doc, const TomlTable& root, const char* key, Fn fn) {
+  const toml::node* node = doc.get(key);
+  if (node == nullptr) return;
+  const toml::array* rows = node->as_array();
+  if (rows == nullptr) {
+    throw core::InputError(root.where(key), "expected an array of tables",
+                           fmt::format("write each entry as [[{}]]", key));
+  }
+  for (std::size_t i = 0; i < rows->size(); ++i) {
+    const toml::table* row = (*rows)[i].as_table();
+    if (row == nullptr) {
+      throw core::InputError(root.where(key), fmt::format("expected a table in [[{}]]", key));
+    }
+    fn(TomlTable(*row, root.file(), fmt::format("{}[{}]", key, i + 1)));
+  }
+}
+
 }  // namespace
 
 void ScenarioSpec::validate() const {
@@ -72,6 +91,19 @@ void ScenarioSpec::validate() const {
     check_range(*this, field + ".sway_pct", c.sway_pct, -100.0, 100.0);
     check_range(*this, field + ".yaw_pct", c.yaw_pct, -100.0, 100.0);
   }
+  previous = -1.0;
+  for (std::size_t i = 0; i < rudder.size(); ++i) {
+    const std::string field = fmt::format("rudder[{}]", i + 1);
+    check_range(*this, field + ".t_s", rudder[i].t_s, 0.0, duration_s);
+    if (rudder[i].t_s <= previous) {
+      throw core::InputError(
+          at(*this, field + ".t_s"),
+          fmt::format("time {} s is not after the previous command", rudder[i].t_s),
+          "list rudder commands in increasing time");
+    }
+    previous = rudder[i].t_s;
+    if (!rudder[i].release) check_range(*this, field + ".angle_deg", rudder[i].angle_deg, -90, 90);
+  }
   for (std::size_t i = 0; i < loads.size(); ++i) {
     if (!(loads[i].t_off_s > loads[i].t_on_s)) {
       throw core::InputError(at(*this, fmt::format("load[{}].t_off_s", i + 1)),
@@ -86,7 +118,7 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
   const TomlTable root(doc, file, "");
   root.reject_unknown({"name", "description", "duration_s", "dt_s", "log_rate_hz",
                        "initial_heading_deg", "initial_surge_mps", "environment", "joystick",
-                       "load"});
+                       "rudder", "load"});
   ScenarioSpec spec;
   spec.source = file;
   spec.name = root.string("name");
@@ -98,47 +130,33 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
   spec.initial_surge_mps = root.number_or("initial_surge_mps", 0.0, -4.0, 7.0);
   if (auto env = root.optional_table("environment")) spec.environment = read_environment(*env);
 
-  if (const toml::node* node = doc.get("joystick")) {
-    const toml::array* rows = node->as_array();
-    if (rows == nullptr) {
-      throw core::InputError(root.where("joystick"), "expected an array of tables",
-                             "write each command as [[joystick]] with t_s and *_pct keys");
-    }
-    for (std::size_t i = 0; i < rows->size(); ++i) {
-      const toml::table* row = (*rows)[i].as_table();
-      if (row == nullptr) {
-        throw core::InputError(root.where("joystick"), "expected a table in [[joystick]]");
-      }
-      const TomlTable t(*row, file, fmt::format("joystick[{}]", i + 1));
-      t.reject_unknown({"t_s", "surge_pct", "sway_pct", "yaw_pct"});
-      JoystickCommand c;
-      c.t_s = t.number("t_s", 0.0, 1e6);
-      c.surge_pct = t.number_or("surge_pct", 0.0, -100.0, 100.0);
-      c.sway_pct = t.number_or("sway_pct", 0.0, -100.0, 100.0);
-      c.yaw_pct = t.number_or("yaw_pct", 0.0, -100.0, 100.0);
-      spec.joystick.push_back(c);
-    }
-  }
-  if (const toml::node* node = doc.get("load")) {
-    const toml::array* rows = node->as_array();
-    if (rows == nullptr) {
-      throw core::InputError(root.where("load"), "expected an array of tables",
-                             "write each load as [[load]] with t_on_s and force keys");
-    }
-    for (std::size_t i = 0; i < rows->size(); ++i) {
-      const toml::table* row = (*rows)[i].as_table();
-      if (row == nullptr) throw core::InputError(root.where("load"), "expected [[load]] tables");
-      const TomlTable t(*row, file, fmt::format("load[{}]", i + 1));
-      t.reject_unknown({"t_on_s", "t_off_s", "north_N", "east_N", "yaw_Nm"});
-      LoadEvent e;
-      e.t_on_s = t.number_or("t_on_s", 0.0, 0.0, 1e6);
-      e.t_off_s = t.number_or("t_off_s", e.t_off_s, 0.0, 1e300);
-      e.north_N = t.number_or("north_N", 0.0, -1e8, 1e8);
-      e.east_N = t.number_or("east_N", 0.0, -1e8, 1e8);
-      e.yaw_Nm = t.number_or("yaw_Nm", 0.0, -1e10, 1e10);
-      spec.loads.push_back(e);
-    }
-  }
+  for_each_row(doc, root, "joystick", [&](const TomlTable& t) {
+    t.reject_unknown({"t_s", "surge_pct", "sway_pct", "yaw_pct"});
+    JoystickCommand c;
+    c.t_s = t.number("t_s", 0.0, 1e6);
+    c.surge_pct = t.number_or("surge_pct", 0.0, -100.0, 100.0);
+    c.sway_pct = t.number_or("sway_pct", 0.0, -100.0, 100.0);
+    c.yaw_pct = t.number_or("yaw_pct", 0.0, -100.0, 100.0);
+    spec.joystick.push_back(c);
+  });
+  for_each_row(doc, root, "rudder", [&](const TomlTable& t) {
+    t.reject_unknown({"t_s", "angle_deg", "release"});
+    RudderCommand c;
+    c.t_s = t.number("t_s", 0.0, 1e6);
+    c.release = t.boolean_or("release", false);
+    if (!c.release) c.angle_deg = t.number("angle_deg", -90.0, 90.0);
+    spec.rudder.push_back(c);
+  });
+  for_each_row(doc, root, "load", [&](const TomlTable& t) {
+    t.reject_unknown({"t_on_s", "t_off_s", "north_N", "east_N", "yaw_Nm"});
+    LoadEvent e;
+    e.t_on_s = t.number_or("t_on_s", 0.0, 0.0, 1e6);
+    e.t_off_s = t.number_or("t_off_s", e.t_off_s, 0.0, 1e300);
+    e.north_N = t.number_or("north_N", 0.0, -1e8, 1e8);
+    e.east_N = t.number_or("east_N", 0.0, -1e8, 1e8);
+    e.yaw_Nm = t.number_or("yaw_Nm", 0.0, -1e10, 1e10);
+    spec.loads.push_back(e);
+  });
   spec.validate();
   return spec;
 }

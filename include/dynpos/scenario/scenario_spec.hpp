@@ -20,6 +20,15 @@ struct JoystickCommand {
   double yaw_pct = 0.0;    ///< [%] −100…100 of maximum yaw moment, + bow to starboard
 };
 
+/// Manual rudder command (both rudders, as in the thesis' yaw step tests), held from t_s until
+/// the next entry; it overrides the allocation's rudder angles until an entry with release.
+struct RudderCommand {
+  double t_s = 0.0;        ///< [s] ≥ 0
+  double angle_deg = 0.0;  ///< [deg] −90…90, + trailing edge to starboard (turns to starboard);
+                           ///< the servo limits it to the rudder's maximum angle
+  bool release = false;    ///< true: hand the rudders back to the thrust allocation
+};
+
 /// A scheduled load in NED, e.g. an ice load (switched on) or a mooring line that snaps (on
 /// from the start, off at the snap).
 struct LoadEvent {
@@ -56,6 +65,7 @@ struct ScenarioSpec {
   double initial_surge_mps = 0.0;    ///< [m/s] u(0), with actuators trimmed to hold it
   EnvironmentSpec environment;
   std::vector<JoystickCommand> joystick;  ///< sorted by t_s; empty = zero demand throughout
+  std::vector<RudderCommand> rudder;      ///< sorted by t_s; manual rudder steps
   std::vector<LoadEvent> loads;           ///< scheduled step loads
   /// Throws core::InputError (naming source and the bad field) if a value is out of range, the
   /// joystick times are not increasing or lie outside [0, duration].
