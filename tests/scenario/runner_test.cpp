@@ -144,6 +144,25 @@ TEST(RunScenario, StepLoadPushesTheVesselOnlyWhileOn) {
   EXPECT_EQ(run.truth["scenario"]["loads"].size(), 1u);
 }
 
+TEST(RunScenario, StarboardRudderTurnsToStarboardWithNomotoTruth) {
+  ScenarioSpec s;
+  s.name = "rudder";
+  s.duration_s = 80.0;
+  s.initial_surge_mps = 3.0;
+  s.joystick = {{0.0, 28.0, 0.0, 0.0}};
+  s.rudder = {{10.0, 20.0, false}};
+  const ScenarioRun run = run_scenario(s, calm_vessel(), 1);
+  const auto& r = run.log.values("r");
+  EXPECT_NEAR(r[90], 0.0, 1e-6);  // before the rudder moves (command at 10 s + dead time)
+  EXPECT_GT(r.back(), 0.005);     // steady starboard turn, > 0.3 °/s
+  EXPECT_LT(run.log.values("roll").back(), 0.0);  // heeling outwards, to port
+  ASSERT_EQ(run.truth["rudder_steps"].size(), 1u);
+  const auto& step = run.truth["rudder_steps"][0];
+  EXPECT_NEAR(step["to_deg"].get<double>(), 20.0, 1e-12);
+  // Nomoto T_r at ≈ 6 kn: table 3.31 gives 2.9–3.0 s; the model's truth lies within ±0.5 s.
+  EXPECT_NEAR(step["nomoto"]["Tr_s"].get<double>(), 3.0, 0.5);
+}
+
 TEST(RunScenario, CsvRoundTripIsExact) {
   const ScenarioRun run = run_scenario(rough(20.0), VesselConfig{}, 5);
   const auto dir = std::filesystem::temp_directory_path() / "dynpos_runner_test";
