@@ -56,9 +56,4 @@ void register_compare(CLI::App& app) {
               "side-by-side tables with differences, e.g. before and after a retrofit");
 }
 
-void register_demo(CLI::App& app) {
-  add_planned(app, "demo", "Run the whole virtual Gunnerus campaign and every analysis",
-              "the campaign, every analysis and an HTML report; use 'dynpos simulate' meanwhile");
-}
-
 }  // namespace dynpos::cli

@@ -3,6 +3,11 @@
 // A registered callback throws on failure; main() maps exceptions to exit codes.
 
 #include <CLI/CLI.hpp>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "dynpos/scenario/campaign.hpp"
 
 namespace dynpos::cli {
 
@@ -19,6 +24,16 @@ struct Unavailable {
   std::string command;
   std::string planned;  ///< what the subcommand will do
 };
+
+/// The scenario name that runs every built-in scenario.
+inline constexpr const char* kCampaign = "campaign";
+
+/// Every scenario file of `scenario_dir`, loaded, in name order.
+std::vector<scenario::ScenarioSpec> load_campaign(const std::filesystem::path& scenario_dir);
+
+/// Prints one line per run and where the report is.
+void print_campaign(const std::vector<scenario::RunSummary>& runs,
+                    const std::filesystem::path& out_dir);
 
 void register_simulate(CLI::App& app);
 void register_identify(CLI::App& app);

@@ -62,6 +62,13 @@ void for_each_row(const toml::table& doc, const TomlTable& root, const char* key
 
 }  // namespace
 
+void ScenarioSpec::set_duration(double duration) {
+  duration_s = duration;
+  auto after_end = [&](const auto& c) { return c.t_s > duration; };
+  joystick.erase(std::remove_if(joystick.begin(), joystick.end(), after_end), joystick.end());
+  rudder.erase(std::remove_if(rudder.begin(), rudder.end(), after_end), rudder.end());
+}
+
 void ScenarioSpec::validate() const {
   if (name.empty()) throw core::InputError(at(*this, "name"), "scenario has no name");
   check_range(*this, "duration_s", duration_s, 1e-6, 1e6);

@@ -67,6 +67,8 @@ struct ScenarioSpec {
   std::vector<JoystickCommand> joystick;  ///< sorted by t_s; empty = zero demand throughout
   std::vector<RudderCommand> rudder;      ///< sorted by t_s; manual rudder steps
   std::vector<LoadEvent> loads;           ///< scheduled step loads
+  /// Shortens (or lengthens) the run to duration [s], dropping commands after the new end.
+  void set_duration(double duration);
   /// Throws core::InputError (naming source and the bad field) if a value is out of range, the
   /// joystick times are not increasing or lie outside [0, duration].
   void validate() const;
