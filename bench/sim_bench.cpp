@@ -5,7 +5,12 @@
 
 #include <benchmark/benchmark.h>
 
+#include <filesystem>
+#include <string>
+#include <vector>
+
 #include "dynpos/scenario/runner.hpp"
+#include "dynpos/scenario/scenario_spec.hpp"
 
 namespace {
 
@@ -47,6 +52,27 @@ void BM_FullModel(benchmark::State& state) {
       duration * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_FullModel)->Arg(600)->Arg(3600)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The whole built-in test programme (every data/scenarios file), simulated without file output.
+void BM_Campaign(benchmark::State& state) {
+  const std::filesystem::path dir = std::filesystem::path(DYNPOS_SOURCE_DIR) / "data" / "scenarios";
+  std::vector<dynpos::scenario::ScenarioSpec> specs;
+  double simulated = 0.0;
+  for (const std::string& name : dynpos::scenario::list_scenarios(dir)) {
+    specs.push_back(dynpos::scenario::load_scenario(dir / (name + ".toml")));
+    simulated += specs.back().duration_s;
+  }
+  const dynpos::scenario::VesselConfig vessel;
+  for (auto _ : state) {
+    for (const auto& spec : specs) {
+      const dynpos::scenario::ScenarioRun run = dynpos::scenario::run_scenario(spec, vessel, 1);
+      benchmark::DoNotOptimize(run.log.time().data());
+    }
+  }
+  state.counters["scenarios"] = static_cast<double>(specs.size());
+  state.counters["simulated_s"] = simulated;
+}
+BENCHMARK(BM_Campaign)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 
