@@ -1,0 +1,133 @@
+// The virtual Gunnerus against the thesis: run the built-in scenarios and check that the
+// magnitudes land in the ranges of DESIGN.md's calibration table (thesis tables 3.2, 3.23–3.36).
+// Responses are fitted with Smith's two-point method (3.8)–(3.9), timed from the command, the
+// way the thesis read them off its plots.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <span>
+
+#include "dynpos/model/fopdt_truth.hpp"
+#include "dynpos/scenario/runner.hpp"
+#include "dynpos/scenario/scenario_spec.hpp"
+
+namespace dynpos::scenario {
+namespace {
+
+const std::filesystem::path kScenarios =
+    std::filesystem::path(DYNPOS_SOURCE_DIR) / "data" / "scenarios";
+
+// Smith fit of channel y between commands i and i+1 (the response to command i).
+model::FopdtTruth fit_step(const core::Log& log, const std::vector<double>& y, double t_step,
+                           double t_next) {
+  const auto& t = log.time();
+  std::size_t first = 0;
+  while (first < t.size() && t[first] < t_step - 1e-9) ++first;
+  std::size_t last = first;
+  while (last < t.size() && t[last] < t_next - 1e-9) ++last;
+  // Final value: the mean of the last 5 s before the next command, robust to the bias noise.
+  const std::size_t tail = std::min<std::size_t>(50, last - first);
+  double final_value = 0.0;
+  for (std::size_t i = last - tail; i < last; ++i) final_value += y[i] / static_cast<double>(tail);
+  std::vector<double> tt(t.begin() + first, t.begin() + last);
+  std::vector<double> yy(y.begin() + first, y.begin() + last);
+  yy.back() = final_value;
+  const auto fit = model::fopdt_two_point(tt, yy, t_step);
+  EXPECT_TRUE(fit.has_value()) << "step at " << t_step;
+  return fit.value_or(model::FopdtTruth{});
+}
+
+TEST(Calibration, SurgeStepsForwardMatchTheThesisShape) {
+  const ScenarioSpec spec = load_scenario(kScenarios / "surge-steps-forward.toml");
+  const ScenarioRun run = run_scenario(spec, VesselConfig{}, 1);
+  const auto& u = run.log.values("u");
+  std::vector<double> t_cmd;
+  for (const auto& c : spec.joystick) t_cmd.push_back(c.t_s);
+  t_cmd.push_back(spec.duration_s);
+  // Commands: 0→5, 5→10, 10→15, 15→25, 25→40, 40→0, 0→80, 80→0 %.
+  const model::FopdtTruth step_0_5 = fit_step(run.log, u, t_cmd[0], t_cmd[1]);
+  const model::FopdtTruth step_25_40 = fit_step(run.log, u, t_cmd[4], t_cmd[5]);
+  const model::FopdtTruth step_0_80 = fit_step(run.log, u, t_cmd[6], t_cmd[7]);
+  // Table 3.24: 0–80 % T = 16.4 s, δ = 8.5 s; we accept 10–25 s and 4–12 s (one run, bias noise).
+  EXPECT_GT(step_0_80.time_constant, 10.0);
+  EXPECT_LT(step_0_80.time_constant, 25.0);
+  EXPECT_GT(step_0_80.dead_time, 4.0);
+  EXPECT_LT(step_0_80.dead_time, 12.0);
+  // Small steps are slow: 0–5 % in the thesis' 60–135 s band (± 30 % for noise).
+  EXPECT_GT(step_0_5.time_constant, 0.7 * 60.0);
+  EXPECT_LT(step_0_5.time_constant, 1.3 * 135.0);
+  // The time constant grows for small steps (table 3.24).
+  EXPECT_GT(step_0_5.time_constant, 2.0 * step_25_40.time_constant);
+  // Full speed in the range of Gunnerus (≈ 10–13 kn at 80–100 %).
+  const double u80 = u[static_cast<std::size_t>(std::round(t_cmd[7] * spec.log_rate_hz)) - 1];
+  EXPECT_GT(u80 * 3600.0 / 1852.0, 9.0);
+  EXPECT_LT(u80 * 3600.0 / 1852.0, 12.5);
+}
+
+TEST(Calibration, PropellerStepTruthsInThesisRanges) {
+  const ScenarioSpec spec = load_scenario(kScenarios / "surge-steps-forward.toml");
+  const ScenarioRun run = run_scenario(spec, VesselConfig{}, 1);
+  double largest_step_T = 0.0, smallest_step_T = 1e9;
+  for (const auto& step : run.truth["propeller_steps"]) {
+    const double tn = step["shaft_speed"]["T_s"].get<double>();
+    const double dn = step["shaft_speed"]["delay_s"].get<double>();
+    // Tables 3.23–3.29: T_n 0.5–5.5 s, δ_n 1.2–3.3 s.
+    EXPECT_GE(tn, 0.5);
+    EXPECT_LE(tn, 5.5);
+    EXPECT_GE(dn, 1.2);
+    EXPECT_LE(dn, 3.3);
+    const double dn_rps =
+        std::abs(step["n_to_rps"].get<double>() - step["n_from_rps"].get<double>());
+    if (dn_rps > 2.0) largest_step_T = std::max(largest_step_T, tn);
+    if (dn_rps < 0.5) smallest_step_T = std::min(smallest_step_T, tn);
+  }
+  EXPECT_GT(largest_step_T, 3.0 * smallest_step_T);  // larger steps slower
+}
+
+TEST(Calibration, ThrustMapBackCalculatesTable32) {
+  const ScenarioSpec spec = load_scenario(kScenarios / "surge-steps-backward.toml");
+  const ScenarioRun run = run_scenario(spec, VesselConfig{}, 1);
+  const auto& n = run.log.values("rpm.port");
+  const auto& thrust = run.log.values("thrust.port");
+  // Least squares of T = c·n|n| on the astern samples (3.17), in kN/rps².
+  double num = 0.0, den = 0.0;
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    if (n[i] < -0.3) {
+      num += thrust[i] * n[i] * std::abs(n[i]);
+      den += n[i] * n[i] * n[i] * n[i];
+    }
+  }
+  ASSERT_GT(den, 0.0);
+  // Table 3.2: c₋ = −5.8 kN/rps²; the model's map has no advance-speed loss, so it is exact
+  // to rounding.
+  EXPECT_NEAR(-num / den / 1e3, -5.8, 1e-6);
+}
+
+TEST(Calibration, YawRateTimeConstantShorterAtSixKnots) {
+  const ScenarioSpec spec = load_scenario(kScenarios / "yaw-steps.toml");
+  const ScenarioRun run = run_scenario(spec, VesselConfig{}, 1);
+  double tr_3kn = 0.0, tr_6kn = 0.0;
+  for (const auto& step : run.truth["rudder_steps"]) {
+    if (std::abs(step["to_deg"].get<double>()) != 20.0) continue;
+    const double u = step["surge_mps"].get<double>();
+    const double tr = step["nomoto"]["Tr_s"].get<double>();
+    (u < 2.3 ? tr_3kn : tr_6kn) = tr;
+    // Rudder servo 0→20°, tables 3.33–3.36: T 1.7–4.4 s, δ 0.7–1.5 s.
+    EXPECT_GE(step["servo"]["T_s"].get<double>(), 1.7);
+    EXPECT_LE(step["servo"]["T_s"].get<double>(), 4.4);
+    EXPECT_GE(step["servo"]["delay_s"].get<double>(), 0.7);
+    EXPECT_LE(step["servo"]["delay_s"].get<double>(), 1.5);
+  }
+  // Table 3.31: 4.7–5.6 s at 3 kn, 2.9–3.0 s at 6 kn; the speed at the step is what the
+  // scenario reached, so we allow ± 0.6 s around the bands.
+  EXPECT_GT(tr_3kn, 4.1);
+  EXPECT_LT(tr_3kn, 6.2);
+  EXPECT_GT(tr_6kn, 2.3);
+  EXPECT_LT(tr_6kn, 3.6);
+  EXPECT_GT(tr_3kn, tr_6kn);
+}
+
+}  // namespace
+}  // namespace dynpos::scenario
