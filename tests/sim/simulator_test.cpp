@@ -18,20 +18,9 @@
 #include "dynpos/sim/log_recorder.hpp"
 #include "dynpos/sim/noise.hpp"
 
-// Counts heap allocations so a test can show that the cost of a run does not grow per step.
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
+#include "allocation_counter.hpp"
 
-// Out of line, so that GCC does not pair an inlined malloc() or free() with operator new or
-// delete and warn about a mismatch.
-[[gnu::noinline]] void* operator new(std::size_t size) {
-  ++g_allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-[[gnu::noinline]] void operator delete(void* p) noexcept { std::free(p); }
-[[gnu::noinline]] void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+using dynpos::test::g_allocations;
 
 namespace dynpos::sim {
 namespace {
