@@ -8,6 +8,8 @@
 #include <optional>
 #include <stdexcept>
 
+#include "dynpos/control/dp_controller.hpp"
+#include "dynpos/control/reference_model.hpp"
 #include "dynpos/core/angle.hpp"
 #include "dynpos/core/rotation.hpp"
 #include "dynpos/model/delay_line.hpp"
@@ -29,7 +31,8 @@ struct Commands {
 };
 
 // The log's channels, in column order (names are roles of docs/log-format.md).
-const std::array<std::pair<const char*, const char*>, 29> kChannels{{
+// (Size deduced from the list, so a channel cannot be left unnamed.)
+constexpr std::pair<const char*, const char*> kChannels[] = {
     {"north", "m"},
     {"east", "m"},
     {"down", "m"},
@@ -59,7 +62,10 @@ const std::array<std::pair<const char*, const char*>, 29> kChannels{{
     {"wind_dir", "rad"},
     {"current.north", "m/s"},
     {"current.east", "m/s"},
-}};
+    {"setpoint.north", "m"},
+    {"setpoint.east", "m"},
+    {"setpoint.heading", "rad"},
+};
 
 nlohmann::json scenario_json(const ScenarioSpec& spec) {
   nlohmann::json j;
@@ -173,7 +179,35 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
   truth["commands"] = nlohmann::json::array();
   truth["propeller_steps"] = nlohmann::json::array();
 
-  // Control task: joystick demand → allocation, at the control rate; manual rudder override.
+  // DP mode: controller (5.35)–(5.38) on the low-frequency motion (an ideal observer), its
+  // model M from the hull and D from the hull's linear damping at rest.
+  const bool dp_mode = !spec.setpoints.empty();
+  control::DpControllerParams dp_params;
+  dp_params.M = plant.hull().mass_matrix();
+  dp_params.M(1, 2) = dp_params.M(2, 1) = 0.5 * (dp_params.M(1, 2) + dp_params.M(2, 1));
+  dp_params.D =
+      Eigen::Vector3d(vessel.hull.x_u_Ns_m, vessel.hull.y_v_Ns_m, vessel.hull.n_r_Nms).asDiagonal();
+  const control::DpController dp(dp_params);
+  control::ReferenceModel reference(control::ReferenceModelParams{},
+                                    x0.segment<3>(Plant::kHull + Hull::kNorth));
+  const control::OperatingCircle circle;
+  Eigen::Vector3d bias_hat = Eigen::Vector3d::Zero();
+  std::size_t next_setpoint = 0;
+  bool dp_active = false;
+  Eigen::Vector3d setpoint = Eigen::Vector3d::Constant(core::kMissing);
+  truth["setpoints"] = nlohmann::json::array();
+  auto apply_setpoint = [&](const SetpointCommand& sp, double t) {
+    setpoint = {sp.north_m, sp.east_m, core::deg_to_rad(sp.heading_deg)};
+    if (!truth["setpoints"].empty()) truth["setpoints"].back()["t_end_s"] = t;
+    truth["setpoints"].push_back({{"name", sp.name},
+                                  {"t_start_s", t},
+                                  {"north_m", sp.north_m},
+                                  {"east_m", sp.east_m},
+                                  {"heading_deg", sp.heading_deg}});
+    dp_active = true;
+  };
+
+  // Control task: joystick demand or DP → allocation, at the control rate; manual rudders.
   std::size_t next_command = 0;
   std::size_t next_rudder = 0;
   std::optional<double> rudder_override;  // [rad], both rudders
@@ -190,6 +224,30 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
     model::ThrustAllocationInput in;
     in.tau_d_b = {demand_pct.x() / 100.0 * js.max_surge_N, demand_pct.y() / 100.0 * js.max_sway_N,
                   demand_pct.z() / 100.0 * js.max_yaw_Nm};
+    if (dp_mode) {
+      const Eigen::Vector3d eta = c.state().segment<3>(Plant::kHull + Hull::kNorth);
+      const Eigen::Vector3d nu = c.state().segment<3>(Plant::kHull + Hull::kSurge);
+      while (next_setpoint < spec.setpoints.size()) {
+        const SetpointCommand& sp = spec.setpoints[next_setpoint];
+        const bool timed = sp.t_s >= 0.0 && sp.t_s <= c.time() + 1e-9;
+        const bool on_reach = sp.t_s < 0.0 && dp_active && circle.reached(eta, setpoint);
+        if (!timed && !on_reach) break;
+        if (on_reach) truth["setpoints"].back()["t_reached_s"] = c.time();
+        apply_setpoint(sp, c.time());
+        ++next_setpoint;
+      }
+      if (dp_active && next_setpoint == spec.setpoints.size() &&
+          !truth["setpoints"].back().contains("t_reached_s") && circle.reached(eta, setpoint)) {
+        truth["setpoints"].back()["t_reached_s"] = c.time();
+      }
+      if (dp_active) {
+        const double dt_control = 1.0 / js.control_rate_hz;
+        reference.step(setpoint, dt_control);
+        const control::DpCommand cmd_dp = dp.control(eta, nu, reference.reference(), bias_hat);
+        bias_hat = dp.advance_bias(bias_hat, eta.z(), cmd_dp.x2, dt_control);
+        in.tau_d_b = cmd_dp.tau_b;
+      }
+    }
     in.surge_speed = c.state()[Plant::kHull + Hull::kSurge];
     const model::ThrustAllocationResult a = allocator.allocate(in);
     const Commands before = cmd;
@@ -269,7 +327,7 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
   for (const auto& [name, unit] : kChannels) log.declare_channel(name, unit);
   const auto rows = static_cast<std::size_t>(std::floor(spec.duration_s * spec.log_rate_hz)) + 1;
   log.reserve(rows);
-  std::array<double, kChannels.size()> row{};
+  std::array<double, std::size(kChannels)> row{};
   simulator.add_periodic_task("log", log_period, 0.0, [&](sim::TaskContext& c) {
     const Eigen::VectorXd& x = c.state();
     const Eigen::Vector2d current_n = c.input().segment<2>(Plant::kCurrentNed);
@@ -316,6 +374,9 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
     row[i++] = core::wrap_2pi(wind.from_rad());
     row[i++] = current_n.x();
     row[i++] = current_n.y();
+    row[i++] = setpoint.x();
+    row[i++] = setpoint.y();
+    row[i++] = dp_active ? core::wrap_2pi(setpoint.z()) : core::kMissing;
     log.append_row(c.time(), row);
   });
 

@@ -67,6 +67,7 @@ void ScenarioSpec::set_duration(double duration) {
   auto after_end = [&](const auto& c) { return c.t_s > duration; };
   joystick.erase(std::remove_if(joystick.begin(), joystick.end(), after_end), joystick.end());
   rudder.erase(std::remove_if(rudder.begin(), rudder.end(), after_end), rudder.end());
+  setpoints.erase(std::remove_if(setpoints.begin(), setpoints.end(), after_end), setpoints.end());
 }
 
 void ScenarioSpec::validate() const {
@@ -98,6 +99,25 @@ void ScenarioSpec::validate() const {
     check_range(*this, field + ".sway_pct", c.sway_pct, -100.0, 100.0);
     check_range(*this, field + ".yaw_pct", c.yaw_pct, -100.0, 100.0);
   }
+  if (!setpoints.empty()) {
+    if (!joystick.empty()) {
+      throw core::InputError(at(*this, "setpoint"), "a scenario is either joystick or DP",
+                             "remove the [[joystick]] entries or the [[setpoint]] entries");
+    }
+    if (setpoints.front().t_s < 0.0) {
+      throw core::InputError(at(*this, "setpoint[1].t_s"), "the first setpoint needs a time");
+    }
+    double last = -1.0;
+    for (std::size_t i = 0; i < setpoints.size(); ++i) {
+      if (setpoints[i].t_s < 0.0) continue;
+      const std::string field = fmt::format("setpoint[{}].t_s", i + 1);
+      check_range(*this, field, setpoints[i].t_s, 0.0, duration_s);
+      if (setpoints[i].t_s <= last) {
+        throw core::InputError(at(*this, field), "setpoint times must increase");
+      }
+      last = setpoints[i].t_s;
+    }
+  }
   previous = -1.0;
   for (std::size_t i = 0; i < rudder.size(); ++i) {
     const std::string field = fmt::format("rudder[{}]", i + 1);
@@ -125,7 +145,7 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
   const TomlTable root(doc, file, "");
   root.reject_unknown({"name", "description", "duration_s", "dt_s", "log_rate_hz",
                        "initial_heading_deg", "initial_surge_mps", "environment", "joystick",
-                       "rudder", "load"});
+                       "rudder", "setpoint", "load"});
   ScenarioSpec spec;
   spec.source = file;
   spec.name = root.string("name");
@@ -153,6 +173,16 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
     c.release = t.boolean_or("release", false);
     if (!c.release) c.angle_deg = t.number("angle_deg", -90.0, 90.0);
     spec.rudder.push_back(c);
+  });
+  for_each_row(doc, root, "setpoint", [&](const TomlTable& t) {
+    t.reject_unknown({"t_s", "north_m", "east_m", "heading_deg", "name"});
+    SetpointCommand c;
+    c.t_s = t.number_or("t_s", -1.0, -1.0, 1e6);
+    c.north_m = t.number("north_m", -1e5, 1e5);
+    c.east_m = t.number("east_m", -1e5, 1e5);
+    c.heading_deg = t.number("heading_deg", -360.0, 360.0);
+    c.name = t.string_or("name", "");
+    spec.setpoints.push_back(c);
   });
   for_each_row(doc, root, "load", [&](const TomlTable& t) {
     t.reject_unknown({"t_on_s", "t_off_s", "north_N", "east_N", "yaw_Nm"});

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <span>
 
+#include "dynpos/core/circular_stats.hpp"
 #include "dynpos/model/fopdt_truth.hpp"
 #include "dynpos/scenario/runner.hpp"
 #include "dynpos/scenario/scenario_spec.hpp"
@@ -127,6 +128,66 @@ TEST(Calibration, YawRateTimeConstantShorterAtSixKnots) {
   EXPECT_GT(tr_6kn, 2.3);
   EXPECT_LT(tr_6kn, 3.6);
   EXPECT_GT(tr_3kn, tr_6kn);
+}
+
+// Standard deviation of the samples of y with t in [t0, t1).
+double window_std(const core::Log& log, const std::vector<double>& y, double t0, double t1) {
+  double sum = 0.0, sum2 = 0.0;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < y.size(); ++i) {
+    if (log.time()[i] < t0 || log.time()[i] >= t1) continue;
+    sum += y[i];
+    sum2 += y[i] * y[i];
+    ++n;
+  }
+  const double mean = sum / static_cast<double>(n);
+  return std::sqrt(std::max(0.0, sum2 / static_cast<double>(n) - mean * mean));
+}
+
+TEST(Calibration, PureDpPositionAndHeadingSpreadInHs2) {
+  const ScenarioSpec spec = load_scenario(kScenarios / "pure-dp.toml");
+  ASSERT_EQ(spec.environment.hs_m, 2.0);
+  const ScenarioRun run = run_scenario(spec, VesselConfig{}, 1);
+  for (const SetpointCommand& sp : spec.setpoints) {
+    // 5 min per heading after 130 s to turn and settle, as the thesis logged 5 min windows.
+    const double t0 = sp.t_s + 130.0, t1 = sp.t_s + 430.0;
+    const double std_n = window_std(run.log, run.log.values("north"), t0, t1);
+    const double std_e = window_std(run.log, run.log.values("east"), t0, t1);
+    // Heading on the circle (0° sits next to 360°): circular standard deviation.
+    std::vector<double> psi;
+    for (std::size_t i = 0; i < run.log.size(); ++i) {
+      if (run.log.time()[i] >= t0 && run.log.time()[i] < t1)
+        psi.push_back(run.log.values("heading")[i]);
+    }
+    const double std_psi_deg = core::circular_stats(psi).std_rad.value() * 180.0 / M_PI;
+    // DESIGN.md: pure-DP position std between 0.2 and 1.5 m in Hs ≈ 2 m (tables 3.14–3.22
+    // report 0.3–0.9 m); heading std 0.4–0.9° with one case at 2.8°, so ≤ 3°.
+    const double std_pos = std::max(std_n, std_e);
+    EXPECT_GT(std_pos, 0.2) << sp.name;
+    EXPECT_LT(std_pos, 1.5) << sp.name;
+    EXPECT_LT(std_psi_deg, 3.0) << sp.name;
+  }
+}
+
+TEST(Calibration, FourCornerCompletesEveryLeg) {
+  const ScenarioSpec spec = load_scenario(kScenarios / "four-corner.toml");
+  const ScenarioRun run = run_scenario(spec, VesselConfig{}, 1);
+  const auto& legs = run.truth["setpoints"];
+  ASSERT_EQ(legs.size(), 5u);  // the initial hold and the four legs
+  double total = 0.0;
+  for (std::size_t i = 1; i < legs.size(); ++i) {
+    ASSERT_TRUE(legs[i].contains("t_reached_s")) << legs[i]["name"];
+    const double duration =
+        legs[i]["t_reached_s"].get<double>() - legs[i]["t_start_s"].get<double>();
+    // Tables 3.6–3.10: 85–214 s per 50 m leg; we allow up to 300 s for the leg with the
+    // 90° heading change, which the thesis' fastest runs did in ≈ 200 s.
+    EXPECT_GT(duration, 85.0) << legs[i]["name"];
+    EXPECT_LT(duration, 300.0) << legs[i]["name"];
+    total += duration;
+  }
+  // Thesis total 545–624 s; ours within 450–900 s.
+  EXPECT_GT(total, 450.0);
+  EXPECT_LT(total, 900.0);
 }
 
 }  // namespace

@@ -29,6 +29,17 @@ struct RudderCommand {
   bool release = false;    ///< true: hand the rudders back to the thrust allocation
 };
 
+/// A DP setpoint (NED, relative to the start position). With a time it is applied then; without
+/// one (t_s < 0) it is applied when the vessel reaches the previous setpoint's operating circle,
+/// as in the DP 4-corner maneuver (thesis 3.5.2).
+struct SetpointCommand {
+  double t_s = -1.0;         ///< [s], or < 0 for "when the previous one is reached"
+  double north_m = 0.0;      ///< [m]
+  double east_m = 0.0;       ///< [m]
+  double heading_deg = 0.0;  ///< [deg]
+  std::string name;          ///< leg name for reports (e.g. "ahead"), may be empty
+};
+
 /// A scheduled load in NED, e.g. an ice load (switched on) or a mooring line that snaps (on
 /// from the start, off at the snap).
 struct LoadEvent {
@@ -66,7 +77,10 @@ struct ScenarioSpec {
   EnvironmentSpec environment;
   std::vector<JoystickCommand> joystick;  ///< sorted by t_s; empty = zero demand throughout
   std::vector<RudderCommand> rudder;      ///< sorted by t_s; manual rudder steps
-  std::vector<LoadEvent> loads;           ///< scheduled step loads
+  /// DP mode: when non-empty, the DP controller (with reference model) drives the allocation
+  /// from the first setpoint's time on, and joystick commands are not allowed.
+  std::vector<SetpointCommand> setpoints;
+  std::vector<LoadEvent> loads;  ///< scheduled step loads
   /// Shortens (or lengthens) the run to duration [s], dropping commands after the new end.
   void set_duration(double duration);
   /// Throws core::InputError (naming source and the bad field) if a value is out of range, the
