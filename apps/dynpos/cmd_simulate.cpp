@@ -94,13 +94,11 @@ void run_simulate(const SimulateOptions& opt) {
 
   const scenario::ScenarioRun run = scenario::run_scenario(spec, vessel, opt.seed);
 
-  std::filesystem::create_directories(opt.out_dir);
-  io::write_csv(opt.out_dir / "log.csv", run.log);
-  io::write_json((opt.out_dir / "truth.json").string(), run.truth);
+  scenario::write_scenario_run(run, opt.out_dir);
   fmt::print("simulated '{}' ({:.0f} s, seed {}): {} rows x {} channels\n", spec.name,
              spec.duration_s, opt.seed, run.log.size(), run.log.channels().size());
-  fmt::print("wrote {}\n      {}\n", (opt.out_dir / "log.csv").string(),
-             (opt.out_dir / "truth.json").string());
+  fmt::print("wrote {}\n      {}\n      {}\n", (opt.out_dir / "log.csv").string(),
+             (opt.out_dir / "truth.csv").string(), (opt.out_dir / "truth.json").string());
 }
 
 }  // namespace
@@ -109,7 +107,8 @@ void register_simulate(CLI::App& app) {
   auto opt = std::make_shared<SimulateOptions>();
   CLI::App* sub = app.add_subcommand(
       "simulate",
-      "Run a virtual sea trial on the virtual R/V Gunnerus; write log.csv and truth.json");
+      "Run a virtual sea trial on the virtual R/V Gunnerus; write log.csv, truth.csv and "
+      "truth.json");
   sub->add_option("scenario", opt->scenario,
                   "Scenario name in data/scenarios (e.g. surge-steps-forward), a .toml file, or "
                   "'campaign' for all of them (one folder each)");
@@ -124,7 +123,10 @@ void register_simulate(CLI::App& app) {
   sub->add_option("--log-rate", opt->log_rate_hz, "Override the log rate [Hz]")
       ->check(CLI::PositiveNumber);
   sub->add_flag("--list", opt->list, "List the built-in scenarios and exit");
-  sub->footer("Files: DIR/log.csv (columns in docs/log-format.md), DIR/truth.json.");
+  sub->footer(
+      "Files: DIR/log.csv (the trial logger: every sensor at its rate, blank between samples,\n"
+      "commands and setpoints), DIR/truth.csv (the true motion, SI), DIR/truth.json (parameters,\n"
+      "lever arms, command times, true time constants). Columns: docs/log-format.md.");
   sub->callback([opt] { run_simulate(*opt); });
 }
 

@@ -114,24 +114,35 @@ WaveMotion::WaveMotion(const SeaStateParams& sea, const WaveResponseParams& resp
   drift_force_scale_ = 0.5 * response_.drift_coefficient * kRho * kG * sea.hs_m * sea.hs_m / 16.0;
 }
 
-WaveMotion6 WaveMotion::motion(double heading_rad) const {
-  WaveMotion6 out;
-  // β: direction the waves travel to, relative to the bow (0 = following seas).
+WaveMotion6 WaveMotion::motion(double heading_rad, double heading_rate,
+                               double heading_accel) const {
+  // β: direction the waves travel to, relative to the bow (0 = following seas). Each DOF is
+  // d(β)·x_raw(t); β̇ = −ψ̇ and β̈ = −ψ̈ add the terms of a turning hull.
   const double beta = sea_.from_rad + M_PI - heading_rad;
-  Eigen::Matrix<double, 6, 1> direction;
-  direction << std::cos(beta), std::sin(beta), 1.0, std::sin(beta), -std::cos(beta),
-      std::sin(2.0 * beta);
+  const double beta_d = -heading_rate, beta_dd = -heading_accel;
+  const double cb = std::cos(beta), sb = std::sin(beta);
+  const double c2b = std::cos(2.0 * beta), s2b = std::sin(2.0 * beta);
+  Eigen::Matrix<double, 6, 1> d, d1, d2;  // d(β), d′(β), d″(β)
+  d << cb, sb, 1.0, sb, -cb, s2b;
+  d1 << -sb, cb, 0.0, cb, sb, 2.0 * c2b;
+  d2 << -cb, -sb, 0.0, -sb, cb, -4.0 * s2b;
+  Eigen::Matrix<double, 6, 1> x = Eigen::Matrix<double, 6, 1>::Zero(), v = x, a = x;
   for (std::size_t i = 0; i < components_.size(); ++i) {
     const double w = components_[i].omega;
     for (int dof = 0; dof < 6; ++dof) {
       const std::complex<double> z = phasor_[i] * lag_[i][dof];
-      const double amp = gain_[i][dof] * direction[dof];
+      const double amp = gain_[i][dof];
       // x = A cos(ωt + φ − lag), ẋ = −Aω sin(·), ẍ = −Aω² cos(·).
-      out.position[dof] += amp * z.real();
-      out.velocity[dof] -= amp * w * z.imag();
-      out.acceleration[dof] -= amp * w * w * z.real();
+      x[dof] += amp * z.real();
+      v[dof] -= amp * w * z.imag();
+      a[dof] -= amp * w * w * z.real();
     }
   }
+  WaveMotion6 out;
+  out.position = d.cwiseProduct(x);
+  out.velocity = d.cwiseProduct(v) + beta_d * d1.cwiseProduct(x);
+  out.acceleration = d.cwiseProduct(a) + 2.0 * beta_d * d1.cwiseProduct(v) +
+                     (beta_d * beta_d * d2 + beta_dd * d1).cwiseProduct(x);
   return out;
 }
 

@@ -21,15 +21,16 @@ RunSummary summarise(const ScenarioSpec& spec, const ScenarioRun& run, std::uint
   s.duration_s = spec.duration_s;
   s.rows = run.log.size();
   s.seed = seed;
-  const auto& t = run.log.time();
-  const auto& u = run.log.values("u");
-  const auto& v = run.log.values("v");
-  const auto& r = run.log.values("r");
-  const auto& n = run.log.values("north");
-  const auto& e = run.log.values("east");
-  const auto& pp = run.log.values("power.port");
-  const auto& ps = run.log.values("power.stb");
-  const auto& pt = run.log.values("power.tunnel");
+  const core::Log& truth = run.truth_log;  // the summary describes what truly happened
+  const auto& t = truth.time();
+  const auto& u = truth.values("u");
+  const auto& v = truth.values("v");
+  const auto& r = truth.values("r");
+  const auto& n = truth.values("north");
+  const auto& e = truth.values("east");
+  const auto& pp = truth.values("power.port");
+  const auto& ps = truth.values("power.stb");
+  const auto& pt = truth.values("power.tunnel");
   double energy_J = 0.0;
   for (std::size_t i = 0; i < t.size(); ++i) {
     s.max_speed_mps = std::max(s.max_speed_mps, std::hypot(u[i], v[i]));
@@ -56,6 +57,7 @@ nlohmann::json to_json(const RunSummary& s) {
           {"distance_m", s.distance_m},
           {"energy_kJ", s.energy_kJ},
           {"log", s.name + "/log.csv"},
+          {"truth_log", s.name + "/truth.csv"},
           {"truth", s.name + "/truth.json"}};
 }
 
@@ -112,8 +114,10 @@ std::string html_page(const std::vector<RunSummary>& runs, const VesselConfig& v
       "margin:2em;max-width:70em}}table{{border-collapse:collapse}}td,th{{border:1px solid #ccc;"
       "padding:0.3em 0.6em;text-align:right}}td:nth-child(2){{text-align:left}}</style></head>\n"
       "<body><h1>Virtual sea trial: {0}</h1>\n<p>Master seed {1}. Each scenario folder holds "
-      "<code>log.csv</code> (columns: docs/log-format.md) and <code>truth.json</code> (the true "
-      "parameters, command times and time constants).</p>\n<table><tr><th>scenario</th>"
+      "<code>log.csv</code> (the trial logger: sensors at their rates, commands; columns in "
+      "docs/log-format.md), <code>truth.csv</code> (the true motion) and <code>truth.json</code> "
+      "(the true parameters, lever arms, command times and time "
+      "constants).</p>\n<table><tr><th>scenario</th>"
       "<th>what</th><th>duration [s]</th><th>rows</th><th>max speed [kn]</th>"
       "<th>max yaw rate [deg/s]</th><th>track [m]</th><th>energy [kJ]</th><th></th></tr>\n{2}"
       "</table>\n</body></html>\n",
@@ -132,6 +136,13 @@ std::uint64_t campaign_seed(std::uint64_t master_seed, const std::string& scenar
   return sim::stream_seed(master_seed, scenario_name);
 }
 
+void write_scenario_run(const ScenarioRun& run, const std::filesystem::path& dir) {
+  std::filesystem::create_directories(dir);
+  io::write_csv(dir / "log.csv", run.log);
+  io::write_csv(dir / "truth.csv", run.truth_log);
+  io::write_json((dir / "truth.json").string(), run.truth);
+}
+
 std::vector<RunSummary> run_campaign(const std::vector<ScenarioSpec>& scenarios,
                                      const VesselConfig& vessel, std::uint64_t master_seed,
                                      const std::filesystem::path& out_dir) {
@@ -141,9 +152,7 @@ std::vector<RunSummary> run_campaign(const std::vector<ScenarioSpec>& scenarios,
     const auto start = std::chrono::steady_clock::now();
     const ScenarioRun run = run_scenario(spec, vessel, seed);
     const std::filesystem::path dir = out_dir / spec.name;
-    std::filesystem::create_directories(dir);
-    io::write_csv(dir / "log.csv", run.log);
-    io::write_json((dir / "truth.json").string(), run.truth);
+    write_scenario_run(run, dir);
     RunSummary s = summarise(spec, run, seed);
     s.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     summaries.push_back(s);

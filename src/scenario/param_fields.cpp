@@ -4,8 +4,9 @@
 
 namespace dynpos::scenario::detail {
 
-void read_fields(const TomlTable& t, const std::vector<ParamField>& fields) {
-  std::set<std::string, std::less<>> known;
+void read_fields(const TomlTable& t, const std::vector<ParamField>& fields,
+                 const std::vector<std::string>& other_keys) {
+  std::set<std::string, std::less<>> known(other_keys.begin(), other_keys.end());
   for (const ParamField& f : fields) known.insert(f.key);
   t.reject_unknown(known);
   for (const ParamField& f : fields) {

@@ -23,8 +23,10 @@ struct ParamField {
 };
 
 /// Reads every present key of `fields` from table `t` (absent keys keep their value), rejecting
-/// keys not in the list. Throws core::InputError naming file, line and key.
-void read_fields(const TomlTable& t, const std::vector<ParamField>& fields);
+/// keys not in the list or in `other_keys` (keys the caller reads itself). Throws
+/// core::InputError naming file, line and key.
+void read_fields(const TomlTable& t, const std::vector<ParamField>& fields,
+                 const std::vector<std::string>& other_keys = {});
 
 /// The fields as a JSON object in file units (the same keys the vessel file uses).
 nlohmann::json fields_to_json(const std::vector<ParamField>& fields);

@@ -18,6 +18,8 @@
 #include "dynpos/model/thrust_allocation.hpp"
 #include "dynpos/scenario/vessel_plant.hpp"
 #include "dynpos/sim/simulator.hpp"
+#include "sensor_logger.hpp"
+#include "vessel_motion.hpp"
 
 namespace dynpos::scenario {
 namespace {
@@ -30,9 +32,9 @@ struct Commands {
   double n_port = 0, n_stb = 0, rudder_port = 0, rudder_stb = 0, n_tunnel = 0;
 };
 
-// The log's channels, in column order (names are roles of docs/log-format.md).
+// The truth log's channels, in column order (names are roles of docs/log-format.md; SI).
 // (Size deduced from the list, so a channel cannot be left unnamed.)
-constexpr std::pair<const char*, const char*> kChannels[] = {
+constexpr std::pair<const char*, const char*> kTruthChannels[] = {
     {"north", "m"},
     {"east", "m"},
     {"down", "m"},
@@ -41,6 +43,7 @@ constexpr std::pair<const char*, const char*> kChannels[] = {
     {"pitch", "rad"},
     {"u", "m/s"},
     {"v", "m/s"},
+    {"w", "m/s"},
     {"p", "rad/s"},
     {"q", "rad/s"},
     {"r", "rad/s"},
@@ -65,6 +68,15 @@ constexpr std::pair<const char*, const char*> kChannels[] = {
     {"setpoint.north", "m"},
     {"setpoint.east", "m"},
     {"setpoint.heading", "rad"},
+};
+
+// The trial logger's command channels, after the sensors (logger units).
+constexpr std::pair<const char*, const char*> kCommandChannels[] = {
+    {"command.surge", "%"},         {"command.sway", "%"},         {"command.yaw", "%"},
+    {"command.rpm.port", "rpm"},    {"command.rpm.stb", "rpm"},    {"command.rpm.tunnel", "rpm"},
+    {"command.thrust.port", "kN"},  {"command.thrust.stb", "kN"},  {"command.thrust.tunnel", "kN"},
+    {"command.rudder.port", "deg"}, {"command.rudder.stb", "deg"}, {"setpoint.north", "m"},
+    {"setpoint.east", "m"},         {"setpoint.heading", "deg"},
 };
 
 nlohmann::json scenario_json(const ScenarioSpec& spec) {
@@ -178,6 +190,16 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
   truth["vessel"] = vessel.to_json();
   truth["commands"] = nlohmann::json::array();
   truth["propeller_steps"] = nlohmann::json::array();
+  truth["lever_arms"] = nlohmann::json::object();
+  for (const sensors::GnssParams& g : vessel.sensors.gnss) {
+    const Eigen::Vector3d& l = g.lever_arm_b;
+    truth["lever_arms"][g.name] = {l.x(), l.y(), l.z()};
+  }
+  for (const sensors::MruParams& m : vessel.sensors.mru) {
+    const Eigen::Vector3d& l = m.lever_arm_b;
+    truth["lever_arms"][m.name] = {l.x(), l.y(), l.z()};
+  }
+  truth["mru_acceleration"] = sensors::to_string(vessel.sensors.mru_acceleration);
 
   // DP mode: controller (5.35)–(5.38) on the low-frequency motion (an ideal observer), its
   // model M from the hull and D from the hull's linear damping at rest.
@@ -213,6 +235,7 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
   std::optional<double> rudder_override;  // [rad], both rudders
   truth["rudder_steps"] = nlohmann::json::array();
   UnmetSummary unmet;
+  std::array<double, 3> thrust_command{};  // allocated port, stb, tunnel thrust [N]
   simulator.add_periodic_task("control", 1.0 / js.control_rate_hz, 0.0, [&](sim::TaskContext& c) {
     bool changed = false;
     while (next_command < spec.joystick.size() &&
@@ -252,6 +275,7 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
     const model::ThrustAllocationResult a = allocator.allocate(in);
     const Commands before = cmd;
     cmd = {a.n_port, a.n_stb, a.rudder_port, a.rudder_stb, a.n_tunnel};
+    thrust_command = {a.forces[0], a.forces[1], a.forces[4]};
     while (next_rudder < spec.rudder.size() && spec.rudder[next_rudder].t_s <= c.time() + 1e-9) {
       const RudderCommand& rc = spec.rudder[next_rudder++];
       const double from = rudder_override.value_or(before.rudder_stb);
@@ -322,62 +346,81 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
     u.segment<2>(Plant::kCurrentNed) = current.velocity_n();
   });
 
-  // Logger: low-frequency state + wave-frequency motion, at the log rate.
+  // Loggers at the log rate: the truth (low-frequency state + wave-frequency motion) and the
+  // trial logger (sensors, commands, setpoints).
+  core::Log truth_log;
+  for (const auto& [name, unit] : kTruthChannels) truth_log.declare_channel(name, unit);
+  detail::SensorLogger sensor_logger(vessel, plant.propeller(), plant.tunnel(), spec.log_rate_hz,
+                                     seed);
   core::Log log;
-  for (const auto& [name, unit] : kChannels) log.declare_channel(name, unit);
+  sensor_logger.declare(log);
+  for (const auto& [name, unit] : kCommandChannels) log.declare_channel(name, unit);
   const auto rows = static_cast<std::size_t>(std::floor(spec.duration_s * spec.log_rate_hz)) + 1;
+  truth_log.reserve(rows);
   log.reserve(rows);
-  std::array<double, std::size(kChannels)> row{};
+  std::array<double, std::size(kTruthChannels)> row{};
+  std::vector<double> measured_row(sensor_logger.channel_count() + std::size(kCommandChannels));
+  std::size_t log_tick = 0;
+  Eigen::VectorXd dxdt(Plant::kStateSize);
   simulator.add_periodic_task("log", log_period, 0.0, [&](sim::TaskContext& c) {
     const Eigen::VectorXd& x = c.state();
     const Eigen::Vector2d current_n = c.input().segment<2>(Plant::kCurrentNed);
     const ActuatorState a = plant.actuators(x, current_n);
-    const double psi_lf = x[Plant::kHull + Hull::kYaw];
-    const model::WaveMotion6 wf = waves.motion(psi_lf);
+    plant.flow(c.time(), x, c.input(), dxdt);
+    const model::WaveMotion6 wf =
+        waves.motion(x[Plant::kHull + Hull::kYaw], dxdt[Plant::kHull + Hull::kYaw],
+                     dxdt[Plant::kHull + Hull::kYawRate]);
     waves.advance();
-    const double cs = std::cos(psi_lf), sn = std::sin(psi_lf);
-    const double roll = x[Plant::kHull + Hull::kRoll] + wf.position[3];
-    const double pitch = x[Plant::kHull + Hull::kPitch] + wf.position[4];
-    const double yaw = x[Plant::kHull + Hull::kYaw] + wf.position[5];
-    // Body angular velocity from the Euler angle rates, ω = T(Θ)⁻¹ Θ̇.
-    const Eigen::Vector3d theta_dot(x[Plant::kHull + Hull::kRollRate] + wf.velocity[3],
-                                    x[Plant::kHull + Hull::kPitchRate] + wf.velocity[4],
-                                    x[Plant::kHull + Hull::kYawRate] + wf.velocity[5]);
-    const Eigen::Vector3d omega_b = core::euler_rate_matrix_inverse(roll, pitch) * theta_dot;
+    detail::TruthSample truth_now;
+    truth_now.motion =
+        detail::compose_motion(x.segment<10>(Plant::kHull), dxdt.segment<10>(Plant::kHull), wf);
+    truth_now.shaft_speed_rps = {a.port.shaft_speed, a.stb.shaft_speed, a.tunnel.shaft_speed};
+    truth_now.power_W = {a.port.power, a.stb.power, a.tunnel.power};
+    truth_now.rudder_rad = {x[Plant::kRudderPort], x[Plant::kRudderStb]};
+    truth_now.wind_speed_mps = wind.speed_mps();
+    truth_now.wind_from_rad = core::wrap_2pi(wind.from_rad());
+    const sensors::RigidBodyMotion& m = truth_now.motion;
+    const Eigen::Vector3d v_b = m.v_b();
     std::size_t i = 0;
-    row[i++] = x[Plant::kHull + Hull::kNorth] + cs * wf.position[0] - sn * wf.position[1];
-    row[i++] = x[Plant::kHull + Hull::kEast] + sn * wf.position[0] + cs * wf.position[1];
-    row[i++] = wf.position[2];
-    row[i++] = core::wrap_2pi(yaw);
-    row[i++] = roll;
-    row[i++] = pitch;
-    row[i++] = x[Plant::kHull + Hull::kSurge] + wf.velocity[0];
-    row[i++] = x[Plant::kHull + Hull::kSway] + wf.velocity[1];
-    row[i++] = omega_b.x();
-    row[i++] = omega_b.y();
-    row[i++] = omega_b.z();
-    row[i++] = a.port.shaft_speed;
-    row[i++] = a.stb.shaft_speed;
-    row[i++] = a.tunnel.shaft_speed;
+    for (int k = 0; k < 3; ++k) row[i++] = m.p_n[k];
+    row[i++] = core::wrap_2pi(m.theta.z());
+    row[i++] = m.theta.x();
+    row[i++] = m.theta.y();
+    for (int k = 0; k < 3; ++k) row[i++] = v_b[k];
+    for (int k = 0; k < 3; ++k) row[i++] = m.omega_nb_b[k];
+    for (double n : truth_now.shaft_speed_rps) row[i++] = n;
     row[i++] = a.port.thrust;
     row[i++] = a.stb.thrust;
     row[i++] = a.tunnel.thrust;
-    row[i++] = a.port.power;
-    row[i++] = a.stb.power;
-    row[i++] = a.tunnel.power;
-    row[i++] = x[Plant::kRudderPort];
-    row[i++] = x[Plant::kRudderStb];
+    for (double p : truth_now.power_W) row[i++] = p;
+    row[i++] = truth_now.rudder_rad[0];
+    row[i++] = truth_now.rudder_rad[1];
     row[i++] = demand_pct.x() / 100.0;
     row[i++] = demand_pct.y() / 100.0;
     row[i++] = demand_pct.z() / 100.0;
-    row[i++] = wind.speed_mps();
-    row[i++] = core::wrap_2pi(wind.from_rad());
+    row[i++] = truth_now.wind_speed_mps;
+    row[i++] = truth_now.wind_from_rad;
     row[i++] = current_n.x();
     row[i++] = current_n.y();
     row[i++] = setpoint.x();
     row[i++] = setpoint.y();
     row[i++] = dp_active ? core::wrap_2pi(setpoint.z()) : core::kMissing;
-    log.append_row(c.time(), row);
+    truth_log.append_row(c.time(), row);
+
+    const std::span<double> measured(measured_row);
+    sensor_logger.record(log_tick++, truth_now, measured.first(sensor_logger.channel_count()));
+    i = sensor_logger.channel_count();
+    for (int k = 0; k < 3; ++k) measured_row[i++] = demand_pct[k];
+    measured_row[i++] = cmd.n_port * 60.0;
+    measured_row[i++] = cmd.n_stb * 60.0;
+    measured_row[i++] = cmd.n_tunnel * 60.0;
+    for (double t : thrust_command) measured_row[i++] = t * 1e-3;
+    measured_row[i++] = core::rad_to_deg(cmd.rudder_port);
+    measured_row[i++] = core::rad_to_deg(cmd.rudder_stb);
+    measured_row[i++] = setpoint.x();
+    measured_row[i++] = setpoint.y();
+    measured_row[i++] = dp_active ? core::rad_to_deg(core::wrap_2pi(setpoint.z())) : core::kMissing;
+    log.append_row(c.time(), measured_row);
   });
 
   const sim::SimResult result = simulator.run(x0);
@@ -399,7 +442,7 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
   truth["time_constants"] = tc;
   truth["allocation_unmet_max"] = {unmet.max.x(), unmet.max.y(), unmet.max.z()};
   truth["units"] = "SI unless a key names its unit";
-  return {std::move(log), std::move(truth)};
+  return {std::move(log), std::move(truth_log), std::move(truth)};
 }
 
 }  // namespace dynpos::scenario

@@ -99,6 +99,96 @@ std::vector<ParamField> joystick_fields(JoystickParams& p) {
   };
 }
 
+std::vector<ParamField> timing_fields(sensors::SensorTiming& t) {
+  return {{"rate_hz", &t.rate_hz, 0, 1000}, {"time_offset_s", &t.time_offset_s, 0, 60}};
+}
+
+void append(std::vector<ParamField>& to, std::vector<ParamField> more) {
+  for (ParamField& f : more) to.push_back(std::move(f));
+}
+
+std::vector<ParamField> origin_fields(sensors::GeodeticOrigin& o) {
+  return {
+      {"origin_lat_deg", &o.lat_deg, -90, 90},
+      {"origin_lon_deg", &o.lon_deg, -180, 180},
+      {"origin_height_m", &o.height_m, -1000, 10000},
+  };
+}
+
+std::vector<ParamField> gnss_fields(sensors::GnssParams& g) {
+  std::vector<ParamField> f = {
+      {"x_m", &g.lever_arm_b[0], -500, 500},
+      {"y_m", &g.lever_arm_b[1], -500, 500},
+      {"z_m", &g.lever_arm_b[2], -500, 500},
+  };
+  append(f, timing_fields(g.timing));
+  append(f, {
+                {"horizontal_std_m", &g.horizontal_std_m, 0, 100},
+                {"vertical_std_m", &g.vertical_std_m, 0, 100},
+                {"bias_std_m", &g.bias_std_m, 0, 100},
+                {"bias_time_constant_s", &g.bias_time_constant_s, 1e-3, 1e7},
+            });
+  return f;
+}
+
+std::vector<ParamField> mru_fields(sensors::MruParams& m) {
+  std::vector<ParamField> f = {
+      {"x_m", &m.lever_arm_b[0], -500, 500},
+      {"y_m", &m.lever_arm_b[1], -500, 500},
+      {"z_m", &m.lever_arm_b[2], -500, 500},
+  };
+  append(f, timing_fields(m.timing));
+  append(f, {
+                {"angle_std_deg", &m.angle_std_rad, 0, 10, kDegToRad},
+                {"rate_std_deg_s", &m.rate_std_rad_s, 0, 10, kDegToRad},
+                {"accel_std_mps2", &m.accel_std_mps2, 0, 10},
+                {"accel_bias_std_mps2", &m.accel_bias_std_mps2, 0, 10},
+                {"accel_bias_time_constant_s", &m.accel_bias_time_constant_s, 1e-3, 1e7},
+            });
+  return f;
+}
+
+// A channel sensor's keys: `prefix` names the channel inside a shared section ("" for a
+// section of one channel), `unit` the file unit and `to_si` its factor.
+std::vector<ParamField> channel_fields(sensors::ChannelSensorParams& c, const std::string& prefix,
+                                       const std::string& unit, double to_si, double hi,
+                                       bool with_timing = true) {
+  std::vector<ParamField> f;
+  if (with_timing) {
+    f = {{prefix + "rate_hz", &c.timing.rate_hz, 0, 1000},
+         {prefix + "time_offset_s", &c.timing.time_offset_s, 0, 60}};
+  }
+  append(f, {
+                {prefix + "std_" + unit, &c.noise.noise_std, 0, hi, to_si},
+                {prefix + "bias_std_" + unit, &c.noise.bias_std, 0, hi, to_si},
+                {prefix + "bias_time_constant_s", &c.noise.bias_time_constant_s, 1e-3, 1e7},
+                {prefix + "resolution_" + unit, &c.noise.resolution, 0, hi, to_si},
+            });
+  return f;
+}
+
+constexpr double kRpmToRps = 1.0 / 60.0;
+
+std::vector<ParamField> wind_sensor_fields(sensors::SensorSuiteParams& s) {
+  std::vector<ParamField> f = {
+      {"rate_hz", &s.wind_speed.timing.rate_hz, 0, 1000},
+      {"time_offset_s", &s.wind_speed.timing.time_offset_s, 0, 60},
+  };
+  append(f, channel_fields(s.wind_speed, "speed_", "mps", 1.0, 100, false));
+  append(f, channel_fields(s.wind_dir, "dir_", "deg", kDegToRad, 180, false));
+  return f;
+}
+
+std::vector<ParamField> feedback_fields(sensors::SensorSuiteParams& s) {
+  std::vector<ParamField> f;
+  append(f, channel_fields(s.propeller_rpm, "propeller_rpm_", "rpm", kRpmToRps, 1000));
+  append(f, channel_fields(s.propeller_power, "propeller_power_", "kW", 1e3, 1e4));
+  append(f, channel_fields(s.tunnel_rpm, "tunnel_rpm_", "rpm", kRpmToRps, 1000));
+  append(f, channel_fields(s.tunnel_power, "tunnel_power_", "kW", 1e3, 1e4));
+  append(f, channel_fields(s.rudder_angle, "rudder_", "deg", kDegToRad, 90));
+  return f;
+}
+
 // Every section of the vessel file, in file order.
 struct Section {
   const char* name;
@@ -118,8 +208,21 @@ std::vector<Section> sections(VesselConfig& c) {
       {"wind", wind_fields(c.wind)},
       {"current", current_fields(c.current)},
       {"bias", bias_fields(c.bias)},
+      {"sensors", origin_fields(c.sensors.origin)},
+      {"gnss1", gnss_fields(c.sensors.gnss.at(0))},
+      {"gnss2", gnss_fields(c.sensors.gnss.at(1))},
+      {"gnss3", gnss_fields(c.sensors.gnss.at(2))},
+      {"mru1", mru_fields(c.sensors.mru.at(0))},
+      {"mru2", mru_fields(c.sensors.mru.at(1))},
+      {"gyro", channel_fields(c.sensors.gyro, "", "deg", kDegToRad, 180)},
+      {"speed_log", channel_fields(c.sensors.speed_log, "", "mps", 1.0, 100)},
+      {"wind_sensor", wind_sensor_fields(c.sensors)},
+      {"feedback", feedback_fields(c.sensors)},
   };
 }
+
+// The [sensors] key that is not a number.
+constexpr const char* kMruAccelerationKey = "mru_acceleration";
 
 }  // namespace
 
@@ -142,6 +245,10 @@ void VesselConfig::validate() const {
   current.validate();
   bias.validate();
   joystick.validate();
+  sensors.validate();
+  if (sensors.gnss.size() != 3 || sensors.mru.size() != 2) {
+    throw std::invalid_argument("VesselConfig: the vessel file has 3 antennas and 2 MRUs");
+  }
 }
 
 nlohmann::json VesselConfig::to_json() const {
@@ -149,6 +256,7 @@ nlohmann::json VesselConfig::to_json() const {
   nlohmann::json out;
   out["name"] = name;
   for (const Section& s : sections(copy)) out[s.name] = detail::fields_to_json(s.fields);
+  out["sensors"][kMruAccelerationKey] = sensors::to_string(sensors.mru_acceleration);
   return out;
 }
 
@@ -164,7 +272,23 @@ VesselConfig load_vessel_config(const std::filesystem::path& path) {
   root.reject_unknown(known);
   config.name = root.string_or("name", config.name);
   for (const Section& s : all) {
-    if (auto table = root.optional_table(s.name)) detail::read_fields(*table, s.fields);
+    auto table = root.optional_table(s.name);
+    if (!table) continue;
+    if (std::string_view(s.name) == "sensors") {
+      detail::read_fields(*table, s.fields, {kMruAccelerationKey});
+      if (table->has(kMruAccelerationKey)) {
+        const std::string name = table->string_or(kMruAccelerationKey, "");
+        const auto c = sensors::parse_acceleration_convention(name);
+        if (!c) {
+          throw core::InputError({file, {}, {}, std::string("sensors.") + kMruAccelerationKey},
+                                 "unknown MRU acceleration convention '" + name + "'",
+                                 "use \"kinematic\" (gravity removed) or \"specific-force\"");
+        }
+        config.sensors.mru_acceleration = *c;
+      }
+    } else {
+      detail::read_fields(*table, s.fields);
+    }
   }
   try {
     config.validate();

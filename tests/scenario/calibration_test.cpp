@@ -43,14 +43,14 @@ model::FopdtTruth fit_step(const core::Log& log, const std::vector<double>& y, d
 TEST(Calibration, SurgeStepsForwardMatchTheThesisShape) {
   const ScenarioSpec spec = load_scenario(kScenarios / "surge-steps-forward.toml");
   const ScenarioRun run = run_scenario(spec, VesselConfig{}, 1);
-  const auto& u = run.log.values("u");
+  const auto& u = run.truth_log.values("u");
   std::vector<double> t_cmd;
   for (const auto& c : spec.joystick) t_cmd.push_back(c.t_s);
   t_cmd.push_back(spec.duration_s);
   // Commands: 0→5, 5→10, 10→15, 15→25, 25→40, 40→0, 0→80, 80→0 %.
-  const model::FopdtTruth step_0_5 = fit_step(run.log, u, t_cmd[0], t_cmd[1]);
-  const model::FopdtTruth step_25_40 = fit_step(run.log, u, t_cmd[4], t_cmd[5]);
-  const model::FopdtTruth step_0_80 = fit_step(run.log, u, t_cmd[6], t_cmd[7]);
+  const model::FopdtTruth step_0_5 = fit_step(run.truth_log, u, t_cmd[0], t_cmd[1]);
+  const model::FopdtTruth step_25_40 = fit_step(run.truth_log, u, t_cmd[4], t_cmd[5]);
+  const model::FopdtTruth step_0_80 = fit_step(run.truth_log, u, t_cmd[6], t_cmd[7]);
   // Table 3.24: 0–80 % T = 16.4 s, δ = 8.5 s; we accept 10–25 s and 4–12 s (one run, bias noise).
   EXPECT_GT(step_0_80.time_constant, 10.0);
   EXPECT_LT(step_0_80.time_constant, 25.0);
@@ -90,8 +90,8 @@ TEST(Calibration, PropellerStepTruthsInThesisRanges) {
 TEST(Calibration, ThrustMapBackCalculatesTable32) {
   const ScenarioSpec spec = load_scenario(kScenarios / "surge-steps-backward.toml");
   const ScenarioRun run = run_scenario(spec, VesselConfig{}, 1);
-  const auto& n = run.log.values("rpm.port");
-  const auto& thrust = run.log.values("thrust.port");
+  const auto& n = run.truth_log.values("rpm.port");
+  const auto& thrust = run.truth_log.values("thrust.port");
   // Least squares of T = c·n|n| on the astern samples (3.17), in kN/rps².
   double num = 0.0, den = 0.0;
   for (std::size_t i = 0; i < n.size(); ++i) {
@@ -151,13 +151,13 @@ TEST(Calibration, PureDpPositionAndHeadingSpreadInHs2) {
   for (const SetpointCommand& sp : spec.setpoints) {
     // 5 min per heading after 130 s to turn and settle, as the thesis logged 5 min windows.
     const double t0 = sp.t_s + 130.0, t1 = sp.t_s + 430.0;
-    const double std_n = window_std(run.log, run.log.values("north"), t0, t1);
-    const double std_e = window_std(run.log, run.log.values("east"), t0, t1);
+    const double std_n = window_std(run.truth_log, run.truth_log.values("north"), t0, t1);
+    const double std_e = window_std(run.truth_log, run.truth_log.values("east"), t0, t1);
     // Heading on the circle (0° sits next to 360°): circular standard deviation.
     std::vector<double> psi;
-    for (std::size_t i = 0; i < run.log.size(); ++i) {
-      if (run.log.time()[i] >= t0 && run.log.time()[i] < t1)
-        psi.push_back(run.log.values("heading")[i]);
+    for (std::size_t i = 0; i < run.truth_log.size(); ++i) {
+      if (run.truth_log.time()[i] >= t0 && run.truth_log.time()[i] < t1)
+        psi.push_back(run.truth_log.values("heading")[i]);
     }
     const double std_psi_deg = core::circular_stats(psi).std_rad.value() * 180.0 / M_PI;
     // DESIGN.md: pure-DP position std between 0.2 and 1.5 m in Hs ≈ 2 m (tables 3.14–3.22

@@ -67,11 +67,11 @@ TEST(RunScenario, SameSeedBitIdenticalOtherSeedDifferent) {
 
 TEST(RunScenario, LogHasOneRowPerLogPeriodIncludingBothEnds) {
   const ScenarioRun run = run_scenario(surge_step(20.0, 30.0), calm_vessel(), 1);
-  ASSERT_EQ(run.log.size(), 301u);
-  EXPECT_EQ(run.log.time().front(), 0.0);
-  EXPECT_EQ(run.log.time().back(), 30.0);  // t = k·dt by multiplication: exact
+  ASSERT_EQ(run.truth_log.size(), 301u);
+  EXPECT_EQ(run.truth_log.time().front(), 0.0);
+  EXPECT_EQ(run.truth_log.time().back(), 30.0);  // t = k·dt by multiplication: exact
   for (const char* name : {"north", "heading", "rpm.stb", "thrust.port", "power.stb", "r"}) {
-    EXPECT_TRUE(run.log.has(name)) << name;
+    EXPECT_TRUE(run.truth_log.has(name)) << name;
   }
 }
 
@@ -80,9 +80,9 @@ TEST(RunScenario, SteadySurgeMatchesThrustMapAndHullDamping) {
   // Without rudder profile drag the surge balance is exactly thrust = hull damping (2.8).
   v.rudder.drag_zero = 0.0;
   const ScenarioRun run = run_scenario(surge_step(40.0, 900.0), v, 3);
-  const auto& n = run.log.values("rpm.stb");
-  const auto& thrust = run.log.values("thrust.stb");
-  const auto& u = run.log.values("u");
+  const auto& n = run.truth_log.values("rpm.stb");
+  const auto& thrust = run.truth_log.values("thrust.stb");
+  const auto& u = run.truth_log.values("u");
   const double c_fwd = v.propeller.rho * v.propeller.kt_forward * std::pow(v.propeller.diameter, 4);
   // Simulated thrust vs the analytic map (3.17), T = c·n|n|: same formula, so to rounding.
   EXPECT_NEAR(thrust.back(), c_fwd * n.back() * n.back(), 1e-9 * thrust.back());
@@ -111,7 +111,7 @@ TEST(RunScenario, TruthRecordsCommandsAndPropellerStepTimeConstants) {
   EXPECT_GE(d_n, 1.2);
   EXPECT_LE(d_n, 3.3);
   // The logged shaft speed follows that truth: still at rest before step + dead time.
-  const auto& n = run.log.values("rpm.stb");
+  const auto& n = run.truth_log.values("rpm.stb");
   const std::size_t before = 10 * 10 + 10;  // t = 11 s < 10 s + 1.3 s dead time
   EXPECT_EQ(n[before], 0.0);
   EXPECT_GT(n.back(), 0.9 * step["n_to_rps"].get<double>());
@@ -124,8 +124,8 @@ TEST(RunScenario, SwayDemandMovesTheVesselToStarboard) {
   s.duration_s = 120.0;
   s.joystick = {{5.0, 0.0, 60.0, 0.0}};
   const ScenarioRun run = run_scenario(s, calm_vessel(), 1);
-  EXPECT_GT(run.log.values("east").back(), 2.0);
-  EXPECT_GT(run.log.values("thrust.tunnel").back(), 0.0);
+  EXPECT_GT(run.truth_log.values("east").back(), 2.0);
+  EXPECT_GT(run.truth_log.values("thrust.tunnel").back(), 0.0);
   // The allocation met the demand (no unmet force or moment) throughout.
   for (const auto& unmet : run.truth["allocation_unmet_max"]) EXPECT_LT(unmet.get<double>(), 1.0);
 }
@@ -136,8 +136,8 @@ TEST(RunScenario, StepLoadPushesTheVesselOnlyWhileOn) {
   s.duration_s = 120.0;
   s.loads = {{10.0, 60.0, 0.0, 20e3, 0.0}};  // 20 kN towards east from 10 s to 60 s
   const ScenarioRun run = run_scenario(s, calm_vessel(), 1);
-  const auto& east = run.log.values("east");
-  const auto& v = run.log.values("v");
+  const auto& east = run.truth_log.values("east");
+  const auto& v = run.truth_log.values("v");
   EXPECT_EQ(east[100], 0.0);    // nothing before the load (calm, no thrust)
   EXPECT_GT(v[600], 0.1);       // drifting east (sway at heading 0) when it switches off
   EXPECT_LT(v.back(), v[600]);  // decelerating after it is gone
@@ -152,10 +152,10 @@ TEST(RunScenario, StarboardRudderTurnsToStarboardWithNomotoTruth) {
   s.joystick = {{0.0, 28.0, 0.0, 0.0}};
   s.rudder = {{10.0, 20.0, false}};
   const ScenarioRun run = run_scenario(s, calm_vessel(), 1);
-  const auto& r = run.log.values("r");
+  const auto& r = run.truth_log.values("r");
   EXPECT_NEAR(r[90], 0.0, 1e-6);  // before the rudder moves (command at 10 s + dead time)
   EXPECT_GT(r.back(), 0.005);     // steady starboard turn, > 0.3 °/s
-  EXPECT_LT(run.log.values("roll").back(), 0.0);  // heeling outwards, to port
+  EXPECT_LT(run.truth_log.values("roll").back(), 0.0);  // heeling outwards, to port
   ASSERT_EQ(run.truth["rudder_steps"].size(), 1u);
   const auto& step = run.truth["rudder_steps"][0];
   EXPECT_NEAR(step["to_deg"].get<double>(), 20.0, 1e-12);
@@ -168,10 +168,10 @@ TEST(RunScenario, CsvRoundTripIsExact) {
   const auto dir = std::filesystem::temp_directory_path() / "dynpos_runner_test";
   std::filesystem::create_directories(dir);
   const auto file = dir / "log.csv";
-  io::write_csv(file, run.log);
+  io::write_csv(file, run.truth_log);
   const core::Log back = io::read_csv_all(file);
-  ASSERT_EQ(back.size(), run.log.size());
-  for (const core::Channel& c : run.log.channels()) {
+  ASSERT_EQ(back.size(), run.truth_log.size());
+  for (const core::Channel& c : run.truth_log.channels()) {
     ASSERT_TRUE(back.has(c.name)) << c.name;
     const auto& b = back.values(c.name);
     for (std::size_t i = 0; i < c.values.size(); ++i) {

@@ -77,7 +77,10 @@ class WaveMotion {
              double period_s);
 
   /// The motion at the current sample for heading ψ [rad] (sets the relative wave direction).
-  WaveMotion6 motion(double heading_rad) const;
+  /// With the heading's rate ψ̇ [rad/s] and acceleration ψ̈ [rad/s²], velocity and acceleration
+  /// are the exact derivatives of the position along a turning hull's path.
+  WaveMotion6 motion(double heading_rad, double heading_rate = 0.0,
+                     double heading_accel = 0.0) const;
   /// Moves to the next sample time.
   void advance() noexcept;
   /// Mean wave drift force in BODY (X, Y, N) [N, N, N·m] at heading ψ [rad].

@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "dynpos/scenario/runner.hpp"
 #include "dynpos/scenario/scenario_spec.hpp"
 #include "dynpos/scenario/vessel_config.hpp"
 
@@ -32,7 +33,11 @@ struct RunSummary {
 /// The seed a scenario runs with in a campaign: independent of which other scenarios run.
 std::uint64_t campaign_seed(std::uint64_t master_seed, const std::string& scenario_name);
 
-/// Runs each scenario and writes DIR/<name>/log.csv and truth.json, then DIR/summary.json,
+/// Writes one run into `dir` (created if needed): log.csv (the trial logger), truth.csv (the
+/// true motion) and truth.json, each atomically.
+void write_scenario_run(const ScenarioRun& run, const std::filesystem::path& dir);
+
+/// Runs each scenario and writes DIR/<name>/ (write_scenario_run), then DIR/summary.json,
 /// DIR/summary.md and DIR/index.html. Returns the summaries in order.
 std::vector<RunSummary> run_campaign(const std::vector<ScenarioSpec>& scenarios,
                                      const VesselConfig& vessel, std::uint64_t master_seed,

@@ -15,8 +15,12 @@ namespace dynpos::scenario {
 
 /// The outcome of one run.
 struct ScenarioRun {
-  core::Log log;         ///< channels named after roles (docs/log-format.md), SI units
-  nlohmann::json truth;  ///< parameters, seed, command times, true time constants
+  /// The trial logger: every sensor at its rate with noise and latency (missing between its
+  /// samples), commands and setpoints, in logger units (deg, rpm, kW, kN; docs/log-format.md).
+  core::Log log;
+  /// The true motion and actuator states at the log rate, SI units (docs/log-format.md).
+  core::Log truth_log;
+  nlohmann::json truth;  ///< parameters, seed, lever arms, command times, true time constants
 };
 
 /// Simulates `spec` on `vessel` with master seed `seed`. Deterministic: the same inputs give

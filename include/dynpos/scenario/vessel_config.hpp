@@ -13,6 +13,7 @@
 #include "dynpos/model/hull.hpp"
 #include "dynpos/model/sea_state.hpp"
 #include "dynpos/model/thrust_allocation.hpp"
+#include "dynpos/sensors/sensor_suite.hpp"
 
 namespace dynpos::scenario {
 
@@ -41,6 +42,9 @@ struct VesselConfig {
   model::CurrentParams current;  ///< only the variation part is used
   model::BiasParams bias;
   JoystickParams joystick;
+  /// GNSS antennas, MRUs, gyro, speed log, wind sensor and feedback (vessel-file sections
+  /// [sensors], [gnss1]–[gnss3], [mru1]–[mru2], [gyro], [speed_log], [wind_sensor], [feedback]).
+  sensors::SensorSuiteParams sensors;
 
   /// Throws std::invalid_argument naming the bad field.
   void validate() const;
