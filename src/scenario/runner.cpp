@@ -236,13 +236,34 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
   truth["rudder_steps"] = nlohmann::json::array();
   UnmetSummary unmet;
   std::array<double, 3> thrust_command{};  // allocated port, stb, tunnel thrust [N]
+  // Auto heading (spec.heading_hold): PID gains from the joystick's ω and ζ.
+  double operator_yaw_pct = 0.0, heading_integral_Nm = 0.0;
+  const double psi_hold = core::deg_to_rad(spec.initial_heading_deg);
+  const double inertia_z = vessel.hull.iz_kgm2 + vessel.hull.n_rdot_kgm2;
+  const double w_h = js.heading_hold_omega_rad_s;
+  const double kp_heading = inertia_z * w_h * w_h;
+  const double kd_heading =
+      std::max(0.0, 2.0 * js.heading_hold_zeta * w_h * inertia_z - vessel.hull.n_r_Nms);
+  const double ki_heading = kp_heading * w_h / 10.0;  // integral time 10/ω
   simulator.add_periodic_task("control", 1.0 / js.control_rate_hz, 0.0, [&](sim::TaskContext& c) {
     bool changed = false;
     while (next_command < spec.joystick.size() &&
            spec.joystick[next_command].t_s <= c.time() + 1e-9) {
       const JoystickCommand& j = spec.joystick[next_command++];
       demand_pct = {j.surge_pct, j.sway_pct, j.yaw_pct};
+      operator_yaw_pct = j.yaw_pct;
       changed = true;
+    }
+    if (spec.heading_hold) {
+      // Auto heading: PID on the low-frequency heading (an ideal observer), added to the
+      // operator's yaw demand within the joystick's yaw range; the integral stops while the
+      // demand is saturated (anti-windup).
+      const double psi_err = core::angle_diff(c.state()[Plant::kHull + Hull::kYaw], psi_hold);
+      const double r = c.state()[Plant::kHull + Hull::kYawRate];
+      const double yaw_Nm = -kp_heading * psi_err - kd_heading * r - heading_integral_Nm;
+      const double pct = operator_yaw_pct + 100.0 * yaw_Nm / js.max_yaw_Nm;
+      demand_pct.z() = std::clamp(pct, -100.0, 100.0);
+      if (pct == demand_pct.z()) heading_integral_Nm += ki_heading * psi_err / js.control_rate_hz;
     }
     model::ThrustAllocationInput in;
     in.tau_d_b = {demand_pct.x() / 100.0 * js.max_surge_N, demand_pct.y() / 100.0 * js.max_sway_N,

@@ -100,6 +100,10 @@ void ScenarioSpec::validate() const {
     check_range(*this, field + ".yaw_pct", c.yaw_pct, -100.0, 100.0);
   }
   if (!setpoints.empty()) {
+    if (heading_hold) {
+      throw core::InputError(at(*this, "heading_hold"), "heading_hold is a joystick mode",
+                             "DP setpoints hold the heading already; remove heading_hold");
+    }
     if (!joystick.empty()) {
       throw core::InputError(at(*this, "setpoint"), "a scenario is either joystick or DP",
                              "remove the [[joystick]] entries or the [[setpoint]] entries");
@@ -144,8 +148,8 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
   const toml::table doc = TomlTable::parse_file(file);
   const TomlTable root(doc, file, "");
   root.reject_unknown({"name", "description", "duration_s", "dt_s", "log_rate_hz",
-                       "initial_heading_deg", "initial_surge_mps", "environment", "joystick",
-                       "rudder", "setpoint", "load"});
+                       "initial_heading_deg", "initial_surge_mps", "heading_hold", "environment",
+                       "joystick", "rudder", "setpoint", "load"});
   ScenarioSpec spec;
   spec.source = file;
   spec.name = root.string("name");
@@ -155,6 +159,7 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
   spec.log_rate_hz = root.number_or("log_rate_hz", spec.log_rate_hz, 1e-3, 1000.0);
   spec.initial_heading_deg = root.number_or("initial_heading_deg", 0.0, -360.0, 360.0);
   spec.initial_surge_mps = root.number_or("initial_surge_mps", 0.0, -4.0, 7.0);
+  spec.heading_hold = root.boolean_or("heading_hold", false);
   if (auto env = root.optional_table("environment")) spec.environment = read_environment(*env);
 
   for_each_row(doc, root, "joystick", [&](const TomlTable& t) {

@@ -96,6 +96,8 @@ std::vector<ParamField> joystick_fields(JoystickParams& p) {
       {"max_sway_N", &p.max_sway_N, 1, 1e8},
       {"max_yaw_Nm", &p.max_yaw_Nm, 1, 1e10},
       {"control_rate_hz", &p.control_rate_hz, 0.01, 100},
+      {"heading_hold_omega_rad_s", &p.heading_hold_omega_rad_s, 1e-3, 10},
+      {"heading_hold_zeta", &p.heading_hold_zeta, 0.1, 5},
   };
 }
 

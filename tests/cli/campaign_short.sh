@@ -12,9 +12,13 @@ done
 count=$(ls -d "$out"/all/*/ | wc -l)
 [ "$count" -ge 7 ] || { echo "expected >= 7 scenario folders, got $count"; exit 1; }
 for d in "$out"/all/*/; do
-  [ -s "$d/log.csv" ] && [ -s "$d/truth.json" ] || { echo "incomplete $d"; exit 1; }
+  [ -s "$d/log.csv" ] && [ -s "$d/truth.csv" ] && [ -s "$d/truth.json" ] \
+    || { echo "incomplete $d"; exit 1; }
   rows=$(($(wc -l < "$d/log.csv") - 1))
-  [ "$rows" -eq 201 ] || { echo "$d: expected 201 rows (20 s at 10 Hz), got $rows"; exit 1; }
+  # 20 s at the scenario's log rate, both ends: 10 Hz, or 100 Hz for the lever-arm maneuver.
+  expected=201
+  [ "$(basename "$d")" = turning-circle ] && expected=2001
+  [ "$rows" -eq "$expected" ] || { echo "$d: expected $expected rows, got $rows"; exit 1; }
 done
 # The seed a scenario gets in the campaign is in its truth; rerunning alone reproduces the log.
 seed=$(grep -o '"seed": [0-9]*' "$out/all/yaw-steps/truth.json" | grep -o '[0-9]*$')

@@ -74,6 +74,9 @@ struct ScenarioSpec {
   double log_rate_hz = 10.0;  ///< [Hz] rate of the truth log; its period is a multiple of dt
   double initial_heading_deg = 0.0;  ///< [deg] ψ(0)
   double initial_surge_mps = 0.0;    ///< [m/s] u(0), with actuators trimmed to hold it
+  /// Joystick with auto heading: a heading controller adds its yaw demand to the joystick's,
+  /// holding ψ(0), as a DP joystick does in sway tests. Not with DP setpoints.
+  bool heading_hold = false;
   EnvironmentSpec environment;
   std::vector<JoystickCommand> joystick;  ///< sorted by t_s; empty = zero demand throughout
   std::vector<RudderCommand> rudder;      ///< sorted by t_s; manual rudder steps

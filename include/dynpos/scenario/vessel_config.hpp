@@ -24,6 +24,12 @@ struct JoystickParams {
   double max_yaw_Nm = 6.0e5;   ///< Source: differential thrust + tunnel moment (reasoned).
   /// Allocation and joystick update rate [Hz]. Source: reasoned, typical DP cycle.
   double control_rate_hz = 10.0;
+  /// Auto-heading (heading hold) natural frequency ω [rad/s] and damping ratio ζ: a PID law
+  /// N = −k_p·ψ̃ − k_d·r − k_i∫ψ̃ with k_p = (I_z − N_ṙ)ω², k_d = 2ζω(I_z − N_ṙ) − N_r and
+  /// integral time 10/ω.
+  /// Source: reasoned — slow enough not to fight waves, fast enough to hold ±2° in sway tests.
+  double heading_hold_omega_rad_s = 0.15;
+  double heading_hold_zeta = 0.9;
   void validate() const;
 };
 
