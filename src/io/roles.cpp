@@ -49,15 +49,28 @@ std::vector<RoleSpec> build_catalogue() {
       make("rpm.NAME", Quantity::kShaftSpeed, "rpm", cont, "shaft speed of thruster NAME"),
       make("rudder.NAME", Quantity::kAngle, "deg", cont, "angle of rudder NAME"),
       make("command.NAME", Quantity::kFraction, "%", hold, "thrust or pitch command to NAME"),
+      make("command.rpm.NAME", Quantity::kShaftSpeed, "rpm", hold,
+           "commanded shaft speed of thruster NAME"),
+      make("command.thrust.NAME", Quantity::kForce, "kN", hold,
+           "commanded (allocated) thrust of thruster NAME"),
+      make("command.rudder.NAME", Quantity::kAngle, "deg", hold, "commanded angle of rudder NAME"),
       make("gnssK.lat", Quantity::kAngle, "deg", cont, "latitude of GNSS antenna K"),
       make("gnssK.lon", Quantity::kAngle, "deg", cont, "longitude of GNSS antenna K"),
       make("gnssK.height", Quantity::kLength, "m", cont, "ellipsoidal height of antenna K"),
       make("gnssK.north", Quantity::kLength, "m", cont, "antenna K position north"),
       make("gnssK.east", Quantity::kLength, "m", cont, "antenna K position east"),
       make("gnssK.down", Quantity::kLength, "m", cont, "antenna K position down"),
-      make("mruK.ax", Quantity::kAcceleration, "m/s^2", cont, "MRU K specific force, BODY x"),
-      make("mruK.ay", Quantity::kAcceleration, "m/s^2", cont, "MRU K specific force, BODY y"),
-      make("mruK.az", Quantity::kAcceleration, "m/s^2", cont, "MRU K specific force, BODY z"),
+      make("mruK.ax", Quantity::kAcceleration, "m/s^2", cont,
+           "MRU K linear acceleration, BODY x (kinematic or specific force)"),
+      make("mruK.ay", Quantity::kAcceleration, "m/s^2", cont,
+           "MRU K linear acceleration, BODY y (kinematic or specific force)"),
+      make("mruK.az", Quantity::kAcceleration, "m/s^2", cont,
+           "MRU K linear acceleration, BODY z (kinematic or specific force)"),
+      make("mruK.roll", Quantity::kAngle, "deg", cont, "roll reported by MRU K"),
+      make("mruK.pitch", Quantity::kAngle, "deg", cont, "pitch reported by MRU K"),
+      make("mruK.p", Quantity::kAngularRate, "deg/s", cont, "roll rate reported by MRU K"),
+      make("mruK.q", Quantity::kAngularRate, "deg/s", cont, "pitch rate reported by MRU K"),
+      make("mruK.r", Quantity::kAngularRate, "deg/s", cont, "yaw rate reported by MRU K"),
   };
 }
 
@@ -112,6 +125,18 @@ std::optional<RoleSpec> find_role(std::string_view name) {
 
   static constexpr std::array<std::string_view, 5> kNamed = {"thrust", "power", "rpm", "rudder",
                                                              "command"};
+  if (prefix == "command") {
+    // command.rpm.NAME, command.thrust.NAME, command.rudder.NAME
+    const auto dot2 = suffix.find('.');
+    if (dot2 != std::string_view::npos) {
+      const std::string_view kind = suffix.substr(0, dot2);
+      if ((kind == "rpm" || kind == "thrust" || kind == "rudder") &&
+          valid_name_part(suffix.substr(dot2 + 1))) {
+        return instantiate("command." + std::string(kind) + ".NAME", name);
+      }
+      return std::nullopt;
+    }
+  }
   if (std::find(kNamed.begin(), kNamed.end(), prefix) != kNamed.end()) {
     if (!valid_name_part(suffix)) return std::nullopt;
     return instantiate(std::string(prefix) + ".NAME", name);

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <set>
+#include <string>
 
 namespace dynpos::io {
 namespace {
@@ -52,7 +53,18 @@ INSTANTIATE_TEST_SUITE_P(
                       FixedCase{"setpoint.heading", Quantity::kAngle, "deg", Interp::kHold},
                       FixedCase{"input", std::nullopt, "1", Interp::kHold},
                       FixedCase{"output", std::nullopt, "1", Interp::kLinear},
-                      FixedCase{"trigger", std::nullopt, "1", Interp::kHold}));
+                      FixedCase{"trigger", std::nullopt, "1", Interp::kHold},
+                      FixedCase{"command.rpm.port", Quantity::kShaftSpeed, "rpm", Interp::kHold},
+                      FixedCase{"command.thrust.tunnel", Quantity::kForce, "kN", Interp::kHold},
+                      FixedCase{"command.rudder.stb", Quantity::kAngle, "deg", Interp::kHold},
+                      FixedCase{"mru2.roll", Quantity::kAngle, "deg", Interp::kLinear},
+                      FixedCase{"mru1.q", Quantity::kAngularRate, "deg/s", Interp::kLinear}),
+    // Test names from the role name ("command.rpm.port" → "command_rpm_port").
+    [](const ::testing::TestParamInfo<FixedCase>& info) {
+      std::string name = info.param.name;
+      for (char& c : name) c = (c == '.') ? '_' : c;
+      return name;
+    });
 
 TEST(Roles, PatternRolesTakeTheirNamePart) {
   const auto thrust = find_role("thrust.port");
@@ -88,6 +100,13 @@ TEST(Roles, SensorRolesTakeAPositiveIndex) {
   EXPECT_EQ(az->default_unit, "m/s^2");
 }
 
+TEST(Roles, CommandRolesOfAKindTakeTheirNamePart) {
+  EXPECT_FALSE(find_role("command.pitch.port").has_value());  // not a command kind
+  EXPECT_FALSE(find_role("command.rpm.").has_value());
+  EXPECT_FALSE(find_role("command.rpm.a.b").has_value());
+  EXPECT_TRUE(find_role("command.surge").has_value());
+}
+
 TEST(Roles, RejectsMalformedNames) {
   for (const char* name :
        {"", "Heading", "heading ", "thrust", "thrust.", "thrust.a b", "thrust.a.b", "gnss.lat",
@@ -105,10 +124,10 @@ TEST(Roles, CatalogueListsEveryRoleOnce) {
     EXPECT_TRUE(core::find_unit(role.default_unit).has_value()) << role.name;
   }
   for (const char* expected : {"time", "u", "thrust.NAME", "command.NAME", "gnssK.north", "mruK.ay",
-                               "setpoint.north", "trigger"}) {
+                               "mruK.roll", "command.rpm.NAME", "setpoint.north", "trigger"}) {
     EXPECT_TRUE(names.contains(expected)) << expected;
   }
-  EXPECT_EQ(names.size(), 38u);
+  EXPECT_EQ(names.size(), 46u);  // the table in docs/log-format.md
 }
 
 TEST(Roles, ClosestRoleSuggestsNearNames) {

@@ -5,9 +5,12 @@
 #include <Eigen/Geometry>
 #include <GeographicLib/LocalCartesian.hpp>
 #include <cmath>
+#include <filesystem>
 
 #include "dynpos/core/angle.hpp"
 #include "dynpos/core/rotation.hpp"
+#include "dynpos/io/csv_reader.hpp"
+#include "dynpos/io/csv_writer.hpp"
 #include "dynpos/scenario/runner.hpp"
 
 namespace dynpos::scenario {
@@ -189,6 +192,37 @@ TEST(SensorLog, SpecificForceConventionSensesGravity) {
   // change cos φ cos θ by < 0.5 %.
   EXPECT_NEAR(mean_az, -sensors::kGravity_mps2, 0.1);
   EXPECT_EQ(run.truth["mru_acceleration"], "specific-force");
+}
+
+TEST(SensorLog, TrialLogReadsBackInSiWithBlanksAsMissing) {
+  const ScenarioRun run = run_scenario(turning_in_waves(5.0, 10.0), VesselConfig{}, 9);
+  const auto file = std::filesystem::temp_directory_path() / "dynpos_sensor_log_test.csv";
+  io::write_csv(file, run.log);
+  const core::Log back = io::read_csv_all(file);
+  std::filesystem::remove(file);
+  ASSERT_EQ(back.size(), run.log.size());
+  // Logger units convert to SI on reading: deg → rad, rpm → rps, kW → W, kN → N, % → 1.
+  const std::pair<const char*, double> to_si[] = {{"heading", core::deg_to_rad(1.0)},
+                                                  {"mru1.p", core::deg_to_rad(1.0)},
+                                                  {"rpm.port", 1.0 / 60.0},
+                                                  {"power.stb", 1e3},
+                                                  {"thrust.port", 1e3},
+                                                  {"command.rpm.port", 1.0 / 60.0},
+                                                  {"command.surge", 0.01},
+                                                  {"gnss1.north", 1.0}};
+  for (const auto& [name, factor] : to_si) {
+    const auto& logged = run.log.values(name);
+    const auto& read = back.values(name);
+    for (std::size_t i = 0; i < logged.size(); ++i) {
+      if (core::is_missing(logged[i])) {
+        EXPECT_TRUE(core::is_missing(read[i])) << name << " row " << i;
+      } else {
+        // Shortest round-trip text, then one multiplication: 1 ulp-level error.
+        EXPECT_NEAR(read[i], logged[i] * factor, 1e-14 * std::abs(logged[i] * factor) + 1e-300)
+            << name << " row " << i;
+      }
+    }
+  }
 }
 
 }  // namespace
