@@ -53,8 +53,11 @@ GnssReceiver::GnssReceiver(const GnssParams& params, const GeodeticOrigin& origi
 GnssFix GnssReceiver::measure(const RigidBodyMotion& m) {
   Eigen::Vector3d p_n = point_position_n(m, params_.lever_arm_b);
   for (int i = 0; i < 3; ++i) {
-    p_n[i] += noise_[i].sample() + bias_[i].value();
-    bias_[i].step();
+    if (noise_[i].std_dev() > 0.0) p_n[i] += noise_[i].sample();
+    if (params_.bias_std_m > 0.0) {
+      p_n[i] += bias_[i].value();
+      bias_[i].step();
+    }
   }
   GnssFix fix;
   fix.p_n = p_n;

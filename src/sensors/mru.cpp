@@ -54,15 +54,22 @@ Mru::Mru(const MruParams& params, AccelerationConvention convention, double peri
 MruSample Mru::measure(const RigidBodyMotion& m) {
   MruSample s;
   const MruParams& p = params_;
-  s.roll = m.theta.x() + p.angle_std_rad * rng_.normal();
-  s.pitch = m.theta.y() + p.angle_std_rad * rng_.normal();
-  for (int i = 0; i < 3; ++i) s.omega_b[i] = m.omega_nb_b[i] + p.rate_std_rad_s * rng_.normal();
+  // Zero-std parts draw nothing (noise-free runs are cheap and exact).
+  const auto noise = [this](double std_dev) {
+    return std_dev > 0.0 ? std_dev * rng_.normal() : 0.0;
+  };
+  s.roll = m.theta.x() + noise(p.angle_std_rad);
+  s.pitch = m.theta.y() + noise(p.angle_std_rad);
+  for (int i = 0; i < 3; ++i) s.omega_b[i] = m.omega_nb_b[i] + noise(p.rate_std_rad_s);
   s.accel_b = convention_ == AccelerationConvention::kKinematic
                   ? point_acceleration_b(m, p.lever_arm_b)
                   : point_specific_force_b(m, p.lever_arm_b);
   for (int i = 0; i < 3; ++i) {
-    s.accel_b[i] += accel_bias_[i].value() + p.accel_std_mps2 * rng_.normal();
-    accel_bias_[i].step();
+    s.accel_b[i] += noise(p.accel_std_mps2);
+    if (p.accel_bias_std_mps2 > 0.0) {
+      s.accel_b[i] += accel_bias_[i].value();
+      accel_bias_[i].step();
+    }
   }
   return s;
 }

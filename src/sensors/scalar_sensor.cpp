@@ -28,8 +28,13 @@ ScalarSensor::ScalarSensor(const ScalarNoiseParams& params, double period_s, sim
 }
 
 double ScalarSensor::measure(double x) {
-  const double y = x + bias_.value() + params_.noise_std * rng_.normal();
-  bias_.step();
+  // Zero-std parts draw nothing: a noiseless channel costs no random numbers.
+  double y = x;
+  if (params_.bias_std > 0.0) {
+    y += bias_.value();
+    bias_.step();
+  }
+  if (params_.noise_std > 0.0) y += params_.noise_std * rng_.normal();
   return sim::quantize(y, params_.resolution);
 }
 

@@ -95,8 +95,10 @@ void GaussMarkov::reset_stationary() {
 }
 
 double quantize(double value, double resolution) {
-  require(std::isfinite(resolution) && resolution >= 0.0, "quantize",
-          "resolution = " + detail::format_number(resolution) + " must be finite and >= 0");
+  if (!(std::isfinite(resolution) && resolution >= 0.0)) {  // message built only on failure
+    require(false, "quantize",
+            "resolution = " + detail::format_number(resolution) + " must be finite and >= 0");
+  }
   if (resolution == 0.0) return value;
   return std::round(value / resolution) * resolution;
 }
