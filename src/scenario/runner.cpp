@@ -11,6 +11,7 @@
 #include "dynpos/control/dp_controller.hpp"
 #include "dynpos/control/reference_model.hpp"
 #include "dynpos/core/angle.hpp"
+#include "dynpos/core/error.hpp"
 #include "dynpos/core/rotation.hpp"
 #include "dynpos/model/delay_line.hpp"
 #include "dynpos/model/environment.hpp"
@@ -371,8 +372,20 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
   // trial logger (sensors, commands, setpoints).
   core::Log truth_log;
   for (const auto& [name, unit] : kTruthChannels) truth_log.declare_channel(name, unit);
-  detail::SensorLogger sensor_logger(vessel, plant.propeller(), plant.tunnel(), spec.log_rate_hz,
-                                     seed);
+  // A sensor rate or latency that does not fit the log's tick grid is bad input (the vessel
+  // file together with the scenario's log rate).
+  detail::SensorLogger sensor_logger = [&] {
+    try {
+      return detail::SensorLogger(vessel, plant.propeller(), plant.tunnel(), spec.log_rate_hz,
+                                  seed);
+    } catch (const std::invalid_argument& e) {
+      throw core::InputError(
+          {vessel.source.empty() ? spec.source : vessel.source, {}, {}, {}}, e.what(),
+          fmt::format("the log rate is {} Hz: give the sensor a rate that divides it and a "
+                      "latency of whole log periods, or change the log rate (--log-rate)",
+                      spec.log_rate_hz));
+    }
+  }();
   core::Log log;
   sensor_logger.declare(log);
   for (const auto& [name, unit] : kCommandChannels) log.declare_channel(name, unit);
