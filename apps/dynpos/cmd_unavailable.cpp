@@ -45,12 +45,6 @@ void register_leverarm(CLI::App& app) {
               "MRU observer (4.80) with observability diagnostics (4.77)");
 }
 
-void register_hybrid(CLI::App& app) {
-  add_planned(app, "hybrid", "Hybrid integral action case studies (thesis ch. 5)",
-              "first-order and DP case studies with jumps of the integral state, stability "
-              "checks, comparison with a conventional design under sudden loads");
-}
-
 void register_compare(CLI::App& app) {
   add_planned(app, "compare", "Compare two results of the same analysis (A.json B.json)",
               "side-by-side tables with differences, e.g. before and after a retrofit");
