@@ -524,15 +524,7 @@ void register_hybrid(CLI::App& app) {
   });
   add_case(*hybrid, "first-order", "First-order system with hybrid integral action (5.3.1)", true);
   add_case(*hybrid, "dp", "DP vessel, backstepping with hybrid integral action (5.3.2)", false);
-  CLI::App* vessel = hybrid->add_subcommand(
-      "vessel", "Hybrid integral action on the virtual Gunnerus under sudden loads");
-  vessel->allow_extras();
-  vessel->add_option("--scenario", "ice or mooring");
-  const std::string planned =
-      "the DP controller with hybrid integral action on the virtual Gunnerus under an ice load "
-      "or a mooring line snap (--scenario ice|mooring), compared with the conventional design";
-  vessel->footer("Not available in this version. Planned: " + planned);
-  vessel->callback([planned] { throw Unavailable{"hybrid vessel", planned}; });
+  add_hybrid_vessel(*hybrid);
 }
 
 }  // namespace dynpos::cli

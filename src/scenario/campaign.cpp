@@ -98,7 +98,11 @@ std::string html_escape(const std::string& text) {
 }
 
 std::string html_page(const std::vector<RunSummary>& runs, const VesselConfig& vessel,
-                      std::uint64_t master_seed) {
+                      std::uint64_t master_seed, const std::vector<ReportSection>& sections) {
+  std::string extra;
+  for (const ReportSection& sec : sections) {
+    extra += "<h2>" + html_escape(sec.title) + "</h2>\n" + sec.html + "\n";
+  }
   std::string rows;
   for (const RunSummary& s : runs) {
     rows += fmt::format(
@@ -120,8 +124,8 @@ std::string html_page(const std::vector<RunSummary>& runs, const VesselConfig& v
       "constants).</p>\n<table><tr><th>scenario</th>"
       "<th>what</th><th>duration [s]</th><th>rows</th><th>max speed [kn]</th>"
       "<th>max yaw rate [deg/s]</th><th>track [m]</th><th>energy [kJ]</th><th></th></tr>\n{2}"
-      "</table>\n</body></html>\n",
-      html_escape(vessel.name), master_seed, rows);
+      "</table>\n{3}</body></html>\n",
+      html_escape(vessel.name), master_seed, rows, extra);
 }
 
 void write_text(const std::filesystem::path& path, const std::string& text) {
@@ -163,11 +167,18 @@ std::vector<RunSummary> run_campaign(const std::vector<ScenarioSpec>& scenarios,
   summary["scenarios"] = nlohmann::json::array();
   for (const RunSummary& s : summaries) summary["scenarios"].push_back(to_json(s));
   io::write_json((out_dir / "summary.json").string(), summary);
-  write_text(out_dir / "summary.md",
-             fmt::format("# Virtual sea trial: {}\n\nMaster seed {}.\n\n{}", vessel.name,
-                         master_seed, markdown_table(summaries)));
-  write_text(out_dir / "index.html", html_page(summaries, vessel, master_seed));
+  write_campaign_report(summaries, vessel, master_seed, out_dir, {});
   return summaries;
+}
+
+void write_campaign_report(const std::vector<RunSummary>& summaries, const VesselConfig& vessel,
+                           std::uint64_t master_seed, const std::filesystem::path& out_dir,
+                           const std::vector<ReportSection>& sections) {
+  std::string md = fmt::format("# Virtual sea trial: {}\n\nMaster seed {}.\n\n{}", vessel.name,
+                               master_seed, markdown_table(summaries));
+  for (const ReportSection& sec : sections) md += "\n## " + sec.title + "\n\n" + sec.markdown;
+  write_text(out_dir / "summary.md", md);
+  write_text(out_dir / "index.html", html_page(summaries, vessel, master_seed, sections));
 }
 
 }  // namespace dynpos::scenario

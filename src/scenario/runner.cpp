@@ -13,6 +13,7 @@
 #include "dynpos/core/angle.hpp"
 #include "dynpos/core/error.hpp"
 #include "dynpos/core/rotation.hpp"
+#include "dynpos/hybrid/integral_jump.hpp"
 #include "dynpos/model/delay_line.hpp"
 #include "dynpos/model/environment.hpp"
 #include "dynpos/model/sea_state.hpp"
@@ -69,6 +70,12 @@ constexpr std::pair<const char*, const char*> kTruthChannels[] = {
     {"setpoint.north", "m"},
     {"setpoint.east", "m"},
     {"setpoint.heading", "rad"},
+    {"bias_estimate.north", "N"},
+    {"bias_estimate.east", "N"},
+    {"bias_estimate.yaw", "N*m"},
+    {"load.north", "N"},
+    {"load.east", "N"},
+    {"load.yaw", "N*m"},
 };
 
 // The trial logger's command channels, after the sensors (logger units).
@@ -215,6 +222,19 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
                                     x0.segment<3>(Plant::kHull + Hull::kNorth));
   const control::OperatingCircle circle;
   Eigen::Vector3d bias_hat = Eigen::Vector3d::Zero();
+  // Hybrid integral action (spec.hybrid_integral): the previous x₂ sample and the last jump.
+  Eigen::Vector3d prev_x2 = Eigen::Vector3d::Zero();
+  double prev_x2_time = -1e300, last_jump_time = -1e299;
+  if (spec.hybrid_integral) {
+    const hybrid::IntegralJumpParams& hp = *spec.hybrid_integral;
+    truth["hybrid"] = {{"rule", "practical (5.64)-(5.67), b_hat += Lambda R(psi) x2"},
+                       {"lambda", {hp.lambda.x(), hp.lambda.y(), hp.lambda.z()}},
+                       {"epsilon1", hp.epsilon1},
+                       {"epsilon2", hp.epsilon2},
+                       {"sigma", hp.sigma},
+                       {"dwell_s", hp.dwell_s},
+                       {"jump_times_s", nlohmann::json::array()}};
+  }
   std::size_t next_setpoint = 0;
   bool dp_active = false;
   Eigen::Vector3d setpoint = Eigen::Vector3d::Constant(core::kMissing);
@@ -291,6 +311,28 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
         const control::DpCommand cmd_dp = dp.control(eta, nu, reference.reference(), bias_hat);
         bias_hat = dp.advance_bias(bias_hat, eta.z(), cmd_dp.x2, dt_control);
         in.tau_d_b = cmd_dp.tau_b;
+        if (spec.hybrid_integral) {
+          // Hybrid integral action, practical rule (5.64)–(5.67): ẋ₂ from the last two control
+          // samples (only if both are after the last jump), x̂₃ from the closed loop (5.44).
+          const hybrid::IntegralJumpParams& hp = *spec.hybrid_integral;
+          const double t = c.time();
+          if (prev_x2_time >= last_jump_time && t - last_jump_time >= hp.dwell_s) {
+            const Eigen::Vector3d x2_dot = (cmd_dp.x2 - prev_x2) / (t - prev_x2_time);
+            const Eigen::Vector3d x3_hat = hybrid::estimate_integral_error(
+                dp_params.M, dp_params.Kd, cmd_dp.x1, cmd_dp.x2, x2_dot, eta.z());
+            if (hybrid::in_integral_jump_set(hp, dp_params.Ki, cmd_dp.x1, cmd_dp.x2, x3_hat,
+                                             eta.z())) {
+              // (5.47), within the controller's anti-windup bound.
+              bias_hat = (bias_hat + hybrid::integral_jump(hp, cmd_dp.x2, eta.z()))
+                             .cwiseMax(-dp_params.bias_limit)
+                             .cwiseMin(dp_params.bias_limit);
+              last_jump_time = t;
+              truth["hybrid"]["jump_times_s"].push_back(t);
+            }
+          }
+          prev_x2 = cmd_dp.x2;
+          prev_x2_time = t;
+        }
       }
     }
     in.surge_speed = c.state()[Plant::kHull + Hull::kSurge];
@@ -439,6 +481,9 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
     row[i++] = setpoint.x();
     row[i++] = setpoint.y();
     row[i++] = dp_active ? core::wrap_2pi(setpoint.z()) : core::kMissing;
+    for (int k = 0; k < 3; ++k) row[i++] = dp_active ? bias_hat[k] : core::kMissing;
+    const Eigen::Vector3d load_n = model::step_loads_n(loads, c.time());
+    for (int k = 0; k < 3; ++k) row[i++] = load_n[k];
     truth_log.append_row(c.time(), row);
 
     const std::span<double> measured(measured_row);

@@ -99,6 +99,10 @@ void ScenarioSpec::validate() const {
     check_range(*this, field + ".sway_pct", c.sway_pct, -100.0, 100.0);
     check_range(*this, field + ".yaw_pct", c.yaw_pct, -100.0, 100.0);
   }
+  if (hybrid_integral && setpoints.empty()) {
+    throw core::InputError(at(*this, "hybrid"), "hybrid integral action needs DP setpoints",
+                           "add [[setpoint]] entries or remove the [hybrid] section");
+  }
   if (!setpoints.empty()) {
     if (heading_hold) {
       throw core::InputError(at(*this, "heading_hold"), "heading_hold is a joystick mode",
@@ -149,7 +153,7 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
   const TomlTable root(doc, file, "");
   root.reject_unknown({"name", "description", "duration_s", "dt_s", "log_rate_hz",
                        "initial_heading_deg", "initial_surge_mps", "heading_hold", "environment",
-                       "joystick", "rudder", "setpoint", "load"});
+                       "joystick", "hybrid", "rudder", "setpoint", "load"});
   ScenarioSpec spec;
   spec.source = file;
   spec.name = root.string("name");
@@ -199,6 +203,19 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
     e.yaw_Nm = t.number_or("yaw_Nm", 0.0, -1e10, 1e10);
     spec.loads.push_back(e);
   });
+  if (auto h = root.optional_table("hybrid")) {
+    h->reject_unknown({"enabled", "lambda_surge_Ns_m", "lambda_sway_Ns_m", "lambda_yaw_Nms_rad",
+                       "epsilon1", "epsilon2", "sigma", "dwell_s"});
+    hybrid::IntegralJumpParams p;
+    p.lambda.x() = h->number_or("lambda_surge_Ns_m", p.lambda.x(), 1e-6, 1e12);
+    p.lambda.y() = h->number_or("lambda_sway_Ns_m", p.lambda.y(), 1e-6, 1e12);
+    p.lambda.z() = h->number_or("lambda_yaw_Nms_rad", p.lambda.z(), 1e-6, 1e14);
+    p.epsilon1 = h->number_or("epsilon1", p.epsilon1, 1e-9, 1e3);
+    p.epsilon2 = h->number_or("epsilon2", p.epsilon2, 1e-9, 1e3);
+    p.sigma = h->number_or("sigma", p.sigma, 0.0, 1e6);
+    p.dwell_s = h->number_or("dwell_s", p.dwell_s, 1e-3, 1e4);
+    if (h->boolean_or("enabled", true)) spec.hybrid_integral = p;
+  }
   spec.validate();
   return spec;
 }

@@ -30,6 +30,14 @@ struct RunSummary {
   double wall_time_s = 0.0;       ///< simulation time on this machine
 };
 
+/// An analysis section of the campaign report: a title and the same content as HTML (a
+/// fragment, links relative to the report folder) and as Markdown.
+struct ReportSection {
+  std::string title;
+  std::string html;
+  std::string markdown;
+};
+
 /// The seed a scenario runs with in a campaign: independent of which other scenarios run.
 std::uint64_t campaign_seed(std::uint64_t master_seed, const std::string& scenario_name);
 
@@ -42,5 +50,10 @@ void write_scenario_run(const ScenarioRun& run, const std::filesystem::path& dir
 std::vector<RunSummary> run_campaign(const std::vector<ScenarioSpec>& scenarios,
                                      const VesselConfig& vessel, std::uint64_t master_seed,
                                      const std::filesystem::path& out_dir);
+
+/// (Re)writes DIR/summary.md and DIR/index.html: the campaign table, then `sections`.
+void write_campaign_report(const std::vector<RunSummary>& summaries, const VesselConfig& vessel,
+                           std::uint64_t master_seed, const std::filesystem::path& out_dir,
+                           const std::vector<ReportSection>& sections);
 
 }  // namespace dynpos::scenario

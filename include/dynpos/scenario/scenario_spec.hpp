@@ -6,8 +6,11 @@
 /// Angles here are in the units of the scenario file's keys (degrees); the runner converts.
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "dynpos/hybrid/integral_jump.hpp"
 
 namespace dynpos::scenario {
 
@@ -84,6 +87,10 @@ struct ScenarioSpec {
   /// from the first setpoint's time on, and joystick commands are not allowed.
   std::vector<SetpointCommand> setpoints;
   std::vector<LoadEvent> loads;  ///< scheduled step loads
+  /// DP mode with hybrid integral action (thesis ch. 5): the bias estimate jumps by the
+  /// practical rule (5.64)–(5.67) (file section [hybrid], enabled = true). Absent: the
+  /// conventional continuous integral action only.
+  std::optional<hybrid::IntegralJumpParams> hybrid_integral;
   /// Shortens (or lengthens) the run to duration [s], dropping commands after the new end.
   void set_duration(double duration);
   /// Throws core::InputError (naming source and the bad field) if a value is out of range, the
