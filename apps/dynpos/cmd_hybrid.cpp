@@ -448,6 +448,13 @@ void run_hybrid(const std::string& which, const HybridOptions& opt) {
     doc["stability"] = run.stability;
     if (run.hybrid) doc["hybrid"] = result_json(*run.hybrid, "hybrid");
     doc["conventional"] = result_json(run.conventional, "conventional");
+    // The contract's keys at the top level: the hybrid run's (the conventional one's with
+    // --no-jumps); both runs in full under "hybrid" and "conventional".
+    const nlohmann::json& primary = run.hybrid ? doc["hybrid"] : doc["conventional"];
+    doc["variant"] = primary["variant"];
+    for (const char* key : {"jumps", "settle_s", "iae", "peak_error", "v_increase_at_jumps"}) {
+      doc[key] = primary[key];
+    }
     nlohmann::json files = nlohmann::json::array();
     for (const auto& p : plots) files.push_back(p.string());
     doc["plots"] = files;
