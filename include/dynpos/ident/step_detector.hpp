@@ -1,0 +1,107 @@
+#pragma once
+/// \file
+/// Finding the steps of a step test in a logged input (a command) or in a trigger signal.
+///
+/// A step test (section 3.2) changes an input from one constant level to another. In a log the
+/// input is sampled with jitter and gaps (NaN), carries a little noise, and a rate-limited
+/// command ramps over a few seconds instead of jumping. The detector splits the input into
+/// plateaus (stretches where it stays inside a band of ±h around a level for at least
+/// `min_plateau_s`) and transitions between them; every transition between two plateaus whose
+/// levels differ by at least the step threshold is one step, up or down, from any baseline.
+///
+/// Noise level: σ̂ = 1.4826·MAD(Δu)/√2 from the first differences Δu of consecutive valid
+/// samples (robust to the few large differences at steps, and to ramps, which only shift Δu).
+/// Band: h = max(noise_factor·σ̂, min_step/4), or `band` when given.
+///
+/// Timing: the plateau before the step has level L₀, the one after L₁. For a command
+/// (StepTiming::kCommand) the samples of the transition between 10 % and 90 % of L₁ − L₀ are
+/// fitted by a straight line, and its crossings of L₀ and L₁ give the step time (start of the
+/// ramp) and the end of the ramp; with fewer than 3 such samples (an ideal step) the step time
+/// is the first sample that left the band around L₀. For a trigger (StepTiming::kTrigger, e.g.
+/// power feedback, which the thesis used to time steps when no setpoint was logged, section
+/// 3.5.4) the onset of change is wanted: the line is fitted to the transition samples between
+/// leaving the band and 30 % of the change, and extended back to L₀; this is exact for a
+/// straight onset and a little early (never late) for a concave one such as a first-order
+/// response, so dead times timed from it are not shortened.
+
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace dynpos::ident {
+
+/// How step times are read from the signal the detector runs on.
+enum class StepTiming {
+  kCommand,  ///< the signal is the input itself: step time = start of the step or ramp
+  kTrigger,  ///< the signal responds to the input (power feedback): step time = onset of change
+};
+
+/// Options for detect_steps() and step_from_window().
+struct StepDetectorOptions {
+  /// Smallest level change counted as a step [input unit], ≥ 0. 0 = set by the noise alone
+  /// (threshold 2h, h the band half-width).
+  double min_step = 0.0;
+  /// Band half-width h in noise standard deviations, > 0 (used when `band` is not given).
+  double noise_factor = 5.0;
+  /// Band half-width h [input unit], > 0; overrides the noise estimate (use for a trigger with
+  /// slow fluctuations, e.g. power in waves, that the difference-based estimate misses).
+  std::optional<double> band;
+  /// Shortest time [s] the input must stay within ±h of a level to count as a plateau, > 0.
+  /// A step is found only if the input holds its new level this long.
+  double min_plateau_s = 3.0;
+  StepTiming timing = StepTiming::kCommand;
+  /// Channel name used in error messages.
+  std::string input_name = "input";
+
+  /// Throws core::InputError naming the bad option.
+  void validate() const;
+};
+
+/// One step of a step test and the stretch of log that belongs to it.
+struct Step {
+  double t_step = 0.0;             ///< [s] step time: start of the step or ramp (or onset, trigger)
+  double t_ramp_end = 0.0;         ///< [s] end of the ramp; == t_step for an ideal step
+  double t_begin = 0.0;            ///< [s] start of the plateau before the step (window start)
+  double t_end = 0.0;              ///< [s] last sample before the next step, or end of log
+  std::optional<double> u_before;  ///< input level before the step [input unit]
+  std::optional<double> u_after;   ///< input level after the step [input unit]
+
+  /// Δu = u_after − u_before, or nullopt when either level is unknown.
+  std::optional<double> delta_u() const;
+  /// Duration [s] of the ramp, t_ramp_end − t_step.
+  double ramp_duration() const { return t_ramp_end - t_step; }
+};
+
+/// Result of detect_steps().
+struct StepDetection {
+  std::vector<Step> steps;   ///< in time order, at least one
+  double noise_sigma = 0.0;  ///< σ̂ of the input noise [input unit]
+  double band = 0.0;         ///< band half-width h used [input unit]
+  double threshold = 0.0;    ///< smallest level change counted as a step [input unit]
+};
+
+/// Finds every step in an input u(t) (see the file comment for the method).
+/// t [s] strictly increasing and finite; u same length, NaN = missing.
+/// Throws core::InputError if the lengths differ, t is not increasing, u has fewer than 3
+/// valid samples, u is constant, or no step is found.
+StepDetection detect_steps(std::span<const double> t, std::span<const double> u,
+                           const StepDetectorOptions& options = {});
+
+/// An explicit analysis window [t_from, t_to] [s], with an optional known step time [s].
+struct StepWindow {
+  double t_from = 0.0;
+  double t_to = 0.0;
+  std::optional<double> t_step;
+};
+
+/// The step in an explicit window. With window.t_step given, the levels are the medians of u
+/// before and after it (nullopt when u is empty: no input logged); without it, detect_steps()
+/// runs on the window and exactly one step must be found.
+/// Throws core::InputError if the window is empty or reversed, lies (partly) outside the log,
+/// t_step is not inside it, u is constant in it, or no or several steps are found.
+Step step_from_window(std::span<const double> t, std::span<const double> u,
+                      const StepWindow& window, const StepDetectorOptions& options = {});
+
+}  // namespace dynpos::ident

@@ -1,0 +1,333 @@
+#include "dynpos/ident/fopdt_fit.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include "dynpos/core/error.hpp"
+#include "series.hpp"
+#include "step_response.hpp"
+
+namespace dynpos::ident {
+
+using detail::fmt;
+
+double FopdtModel::operator()(double t) const {
+  const double x = t - t_step - dead_time;
+  if (x <= 0.0) return y0;
+  return y0 + amplitude * (1.0 - std::exp(-x / time_constant));  // (3.7)
+}
+
+std::optional<FopdtModel> FopdtFitResult::model() const {
+  if (status == FitStatus::kFailed || !y0 || !amplitude || !time_constant || !dead_time) {
+    return std::nullopt;
+  }
+  return FopdtModel{t_step, y0->value, amplitude->value, time_constant->value, dead_time->value};
+}
+
+void FopdtFitOptions::validate() const {
+  const auto bad = [](const std::string& what, const std::string& hint) {
+    throw core::InputError({"", {}, {}, "FOPDT options"}, what, hint);
+  };
+  if (fixed_dead_time_s && !(*fixed_dead_time_s >= 0.0 && std::isfinite(*fixed_dead_time_s))) {
+    bad("fixed dead time " + fmt(*fixed_dead_time_s) + " s", "give a finite dead time ≥ 0 s");
+  }
+  if (max_dead_time_s && !(*max_dead_time_s > 0.0 && std::isfinite(*max_dead_time_s))) {
+    bad("maximum dead time " + fmt(*max_dead_time_s) + " s", "give a finite limit > 0 s");
+  }
+  if (pre_step_s && !(*pre_step_s > 0.0)) {
+    bad("pre-step duration " + fmt(*pre_step_s) + " s", "give a duration > 0 s");
+  }
+  if (!(tail_fraction > 0.0 && tail_fraction <= 0.5)) {
+    bad("tail fraction " + fmt(tail_fraction), "give a fraction in (0, 0.5]");
+  }
+  if (!(steady_state_tolerance >= 0.0)) {
+    bad("steady-state tolerance " + fmt(steady_state_tolerance), "give a fraction ≥ 0");
+  }
+  if (!(min_r_squared >= 0.0 && min_r_squared <= 1.0)) {
+    bad("minimum R² " + fmt(min_r_squared), "give a value in [0, 1]");
+  }
+  if (min_samples < 5) bad("minimum samples " + std::to_string(min_samples), "give at least 5");
+  if (max_iterations < 1) bad("iteration limit " + std::to_string(max_iterations), "give ≥ 1");
+}
+
+namespace {
+
+// Parameters in the order y₀, A, T, δ.
+using Vec4 = Eigen::Matrix<double, 4, 1>;
+using Mat4 = Eigen::Matrix<double, 4, 4>;
+
+struct Bounds {
+  double t_min = 0.0;
+  double t_max = 0.0;
+  double delta_max = 0.0;
+  bool delta_free = true;
+};
+
+double sse_of(const detail::StepResponse& r, const Vec4& p) {
+  double sse = 0.0;
+  for (std::size_t i = 0; i < r.y.size(); ++i) {
+    const double x = r.tau[i] - p(3);
+    const double m = x > 0.0 ? p(0) + p(1) * (1.0 - std::exp(-x / p(2))) : p(0);
+    sse += (r.y[i] - m) * (r.y[i] - m);
+  }
+  return sse;
+}
+
+// Normal equations JᵀJ and Jᵀr of the residuals r = y − m(τ; p), with the model (3.7).
+void normal_equations(const detail::StepResponse& r, const Vec4& p, Mat4& jtj, Vec4& jtr,
+                      double& sse) {
+  jtj.setZero();
+  jtr.setZero();
+  sse = 0.0;
+  for (std::size_t i = 0; i < r.y.size(); ++i) {
+    const double x = r.tau[i] - p(3);
+    Vec4 j;
+    double m = p(0);
+    if (x > 0.0) {
+      const double e = std::exp(-x / p(2));
+      m = p(0) + p(1) * (1.0 - e);
+      j << 1.0, 1.0 - e, -p(1) * x * e / (p(2) * p(2)), -p(1) * e / p(2);
+    } else {
+      j << 1.0, 0.0, 0.0, 0.0;
+    }
+    const double res = r.y[i] - m;
+    sse += res * res;
+    jtj.selfadjointView<Eigen::Lower>().rankUpdate(j);
+    jtr += j * res;
+  }
+  jtj = jtj.selfadjointView<Eigen::Lower>();
+}
+
+Vec4 clamp_params(Vec4 p, const Bounds& b) {
+  p(2) = std::clamp(p(2), b.t_min, b.t_max);
+  p(3) = std::clamp(p(3), 0.0, b.delta_max);
+  return p;
+}
+
+struct LmRun {
+  Vec4 p;
+  double sse = 0.0;
+  int iterations = 0;
+  bool converged = false;
+};
+
+// Levenberg–Marquardt with Marquardt's diagonal scaling, box limits on T and δ by projection.
+LmRun levenberg_marquardt(const detail::StepResponse& r, Vec4 p, const Bounds& b,
+                          int max_iterations) {
+  LmRun run;
+  p = clamp_params(p, b);
+  Mat4 jtj;
+  Vec4 jtr;
+  double sse = 0.0;
+  normal_equations(r, p, jtj, jtr, sse);
+  double lambda = 1e-3;
+  const double scale_y = std::max(std::abs(r.delta_y), 1e-300);
+  const Vec4 scale(scale_y, scale_y, r.tau_end, r.tau_end);
+  for (int it = 0; it < max_iterations; ++it) {
+    run.iterations = it + 1;
+    if (!b.delta_free) {  // δ held: its row and column drop out
+      jtj.row(3).setZero();
+      jtj.col(3).setZero();
+      jtr(3) = 0.0;
+    }
+    bool accepted = false;
+    while (!accepted) {
+      Mat4 a = jtj;
+      for (int k = 0; k < 4; ++k) a(k, k) += lambda * std::max(jtj(k, k), 1e-12 * scale(k));
+      if (!b.delta_free) a(3, 3) = 1.0;
+      const Vec4 step = a.ldlt().solve(jtr);
+      const Vec4 trial = clamp_params(p + step, b);
+      const double trial_sse = sse_of(r, trial);
+      if (std::isfinite(trial_sse) && trial_sse <= sse) {
+        const double reduction = sse - trial_sse;
+        const double moved = ((trial - p).array() / scale.array()).abs().maxCoeff();
+        p = trial;
+        lambda = std::max(lambda / 3.0, 1e-12);
+        accepted = true;
+        normal_equations(r, p, jtj, jtr, sse);
+        if (moved < 1e-10 || reduction <= 1e-14 * (sse + 1e-300)) {
+          run.converged = true;
+        }
+      } else {
+        lambda *= 4.0;
+        if (lambda > 1e12) {  // no downhill step left: at a minimum within round-off
+          run.converged = true;
+          break;
+        }
+      }
+    }
+    if (run.converged) break;
+  }
+  run.p = p;
+  run.sse = sse;
+  return run;
+}
+
+void add_common_warnings(const FopdtFitOptions& options, const detail::StepResponse& r,
+                         double time_constant, double dead_time, double r_squared,
+                         std::vector<FitWarning>& warnings) {
+  const double seen = r.tau_end - dead_time;
+  if (seen < 3.0 * time_constant) {
+    warnings.push_back({WarningCode::kShortWindow,
+                        "step too short for the time constant: " + fmt(seen) +
+                            " s after the dead time, less than 3T = " + fmt(3.0 * time_constant) +
+                            " s (under 95 % of the response seen)"});
+  }
+  if (r_squared < options.min_r_squared) {
+    warnings.push_back({WarningCode::kPoorFit, "poor fit: R² = " + fmt(r_squared) + " is below " +
+                                                   fmt(options.min_r_squared)});
+  }
+}
+
+}  // namespace
+
+FopdtFitResult fit_fopdt(std::span<const double> t, std::span<const double> y, const Step& step,
+                         const FopdtFitOptions& options) {
+  options.validate();
+  const detail::StepResponse r = detail::prepare_step_response(
+      t, y, step,
+      {options.pre_step_s, options.tail_fraction, options.steady_state_tolerance,
+       options.min_samples, options.output_name});
+
+  FopdtFitResult result;
+  result.method = options.method;
+  result.t_step = step.t_step;
+  result.samples = r.y.size();
+  result.noise_sigma = r.noise_sigma;
+  result.delta_y = r.delta_y;
+  result.warnings = r.warnings;
+  const std::optional<double> du = step.delta_u();
+  if (du) result.gain_from_levels = r.delta_y / *du;  // (3.4)
+
+  if (r.delta_y == 0.0) {
+    result.status = FitStatus::kFailed;
+    result.message = "no response: the output level is the same before and after the step";
+    return result;
+  }
+
+  // Smith's two-point method (3.8)–(3.9) on the data; also the least-squares start.
+  const std::optional<double> t28 = detail::crossing_time(r, 1.0 - std::exp(-1.0 / 3.0));
+  const std::optional<double> t63 = detail::crossing_time(r, 1.0 - std::exp(-1.0));
+
+  if (options.method == FopdtMethod::kSmith) {
+    if (!t28 || !t63 || !(*t63 > *t28)) {
+      result.status = FitStatus::kFailed;
+      result.message = "the response does not cross 28.3 % and 63.2 % of Δy in order";
+      return result;
+    }
+    const double tc = 1.5 * (*t63 - *t28);  // (3.8)
+    const double dead = *t63 - tc;          // (3.9)
+    result.y0 = Estimate{r.y0, {}};
+    result.amplitude = Estimate{r.delta_y, {}};
+    if (du) result.gain = Estimate{r.delta_y / *du, {}};
+    result.time_constant = Estimate{tc, {}};
+    result.dead_time = Estimate{dead, {}};
+    const FopdtModel model{step.t_step, r.y0, r.delta_y, tc, dead};
+    const detail::FitQuality q = detail::fit_quality(r, model);
+    result.r_squared = q.r_squared;
+    result.rms_residual = q.rms;
+    if (dead < 0.0) {
+      result.warnings.push_back(
+          {WarningCode::kDeadTimeAtBound,
+           "negative dead time " + fmt(dead) + " s: the response starts before the step time"});
+    }
+    add_common_warnings(options, r, tc, std::max(dead, 0.0), q.r_squared, result.warnings);
+    result.status = FitStatus::kOk;
+    result.message = "Smith two-point fit";
+    return result;
+  }
+
+  Bounds bounds;
+  // Sampling period sets the smallest resolvable time constant; the window the largest.
+  bounds.t_min = std::max(1e-9 * r.tau_end, 1e-12);
+  bounds.t_max = 100.0 * r.tau_end;
+  bounds.delta_free = !options.fixed_dead_time_s.has_value();
+  bounds.delta_max = options.fixed_dead_time_s ? *options.fixed_dead_time_s
+                                               : options.max_dead_time_s.value_or(0.8 * r.tau_end);
+
+  std::vector<std::array<double, 2>> starts;  // (T, δ)
+  if (t28 && t63 && *t63 > *t28) {
+    const double tc = 1.5 * (*t63 - *t28);
+    starts.push_back({tc, *t63 - tc});
+    starts.push_back({*t63, 0.0});
+    starts.push_back({0.5 * tc, *t63 - 0.5 * tc});
+  } else if (t63) {
+    starts.push_back({std::max(*t63, 0.05 * r.tau_end), 0.0});
+  } else {
+    starts.push_back({0.2 * r.tau_end, 0.0});
+  }
+  LmRun best;
+  best.sse = std::numeric_limits<double>::infinity();
+  for (const auto& s : starts) {
+    Vec4 p0(r.y0, r.delta_y, std::max(s[0], bounds.t_min),
+            bounds.delta_free ? std::max(s[1], 0.0) : bounds.delta_max);
+    const LmRun run = levenberg_marquardt(r, p0, bounds, options.max_iterations);
+    if (run.sse < best.sse) best = run;
+  }
+  if (!std::isfinite(best.sse)) {
+    result.status = FitStatus::kFailed;
+    result.message = "least squares failed: the residuals are not finite";
+    return result;
+  }
+
+  // Covariance σ²(JᵀJ)⁻¹ at the optimum, σ² = SSE/(N − p).
+  Mat4 jtj;
+  Vec4 jtr;
+  double sse = 0.0;
+  normal_equations(r, best.p, jtj, jtr, sse);
+  const int n_par = bounds.delta_free ? 4 : 3;
+  const double dof = static_cast<double>(r.y.size()) - n_par;
+  const double s2 = dof > 0.0 ? sse / dof : std::numeric_limits<double>::quiet_NaN();
+  Vec4 sigma = Vec4::Constant(std::numeric_limits<double>::quiet_NaN());
+  {
+    const Eigen::MatrixXd info = jtj.topLeftCorner(n_par, n_par);
+    const Eigen::FullPivLU<Eigen::MatrixXd> lu(info);
+    if (lu.isInvertible()) {
+      const Eigen::MatrixXd cov = s2 * lu.inverse();
+      for (int k = 0; k < n_par; ++k) sigma(k) = std::sqrt(std::max(cov(k, k), 0.0));
+    }
+  }
+  const auto opt_sigma = [](double s) -> std::optional<double> {
+    if (std::isfinite(s)) return s;
+    return std::nullopt;
+  };
+  result.y0 = Estimate{best.p(0), opt_sigma(sigma(0))};
+  result.amplitude = Estimate{best.p(1), opt_sigma(sigma(1))};
+  result.time_constant = Estimate{best.p(2), opt_sigma(sigma(2))};
+  result.dead_time = Estimate{best.p(3), bounds.delta_free ? opt_sigma(sigma(3)) : std::nullopt};
+  if (du) {
+    result.gain = Estimate{best.p(1) / *du,
+                           result.amplitude->sigma
+                               ? std::optional<double>(*result.amplitude->sigma / std::abs(*du))
+                               : std::nullopt};
+  }
+  const FopdtModel model{step.t_step, best.p(0), best.p(1), best.p(2), best.p(3)};
+  const detail::FitQuality q = detail::fit_quality(r, model);
+  result.r_squared = q.r_squared;
+  result.rms_residual = q.rms;
+  result.iterations = best.iterations;
+  if (bounds.delta_free) {
+    const double tol = 1e-9 * r.tau_end;
+    if (best.p(3) <= tol || best.p(3) >= bounds.delta_max - tol) {
+      result.warnings.push_back({WarningCode::kDeadTimeAtBound, "dead time " + fmt(best.p(3)) +
+                                                                    " s is at its limit [0, " +
+                                                                    fmt(bounds.delta_max) + "] s"});
+    }
+  }
+  add_common_warnings(options, r, best.p(2), best.p(3), q.r_squared, result.warnings);
+  if (best.converged) {
+    result.status = FitStatus::kOk;
+    result.message =
+        "least-squares fit converged in " + std::to_string(best.iterations) + " iterations";
+  } else {
+    result.status = FitStatus::kNotConverged;
+    result.message = "least squares did not converge in " + std::to_string(options.max_iterations) +
+                     " iterations";
+  }
+  return result;
+}
+
+}  // namespace dynpos::ident
