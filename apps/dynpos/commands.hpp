@@ -59,6 +59,11 @@ std::vector<std::filesystem::path> write_hybrid_vessel_plots(const HybridVesselR
 /// Adds `vessel` to the `hybrid` subcommand.
 void add_hybrid_vessel(CLI::App& hybrid);
 
+/// Adds a subcommand of the contract that a later version fills in: it says what it will do
+/// and exits with kExitUnavailable.
+void add_planned(CLI::App& parent, const std::string& name, const std::string& description,
+                 const std::string& planned);
+
 void register_simulate(CLI::App& app);
 void register_identify(CLI::App& app);
 void register_leverarm(CLI::App& app);
