@@ -54,6 +54,23 @@ struct CaseRun {
   std::vector<std::string> step_labels;
 };
 
+// Runs the conventional design and (unless no_jumps) the hybrid one with run.jump_set, and
+// records the timing both used.
+template <typename CaseOptions, typename RunCase>
+void run_both(CaseRun& run, CaseOptions o, bool no_jumps, RunCase run_case) {
+  o.params.jump_set = hybrid::JumpSet::kNone;
+  run.conventional = run_case(o);
+  if (!no_jumps) {
+    o.params.jump_set = run.jump_set;
+    run.hybrid = run_case(o);
+  }
+  run.parameters["timing"] = {{"dt_s", o.timing.dt_s},
+                              {"end_time_s", o.timing.end_time_s},
+                              {"dwell_time_s", o.timing.dwell_time_s},
+                              {"sample_period_s", o.timing.sample_period_s},
+                              {"noise_power", o.timing.noise_power}};
+}
+
 core::InputError option_error(const std::string& option, const std::string& problem,
                               const std::string& hint = {}) {
   return core::InputError({{}, {}, {}, option}, problem, hint);
@@ -328,17 +345,7 @@ CaseRun run_first_order(const HybridOptions& opt) {
                     {"epsilon", o.params.epsilon},
                     {"sigma", o.params.sigma},
                     {"steps", steps}};
-  o.params.jump_set = hybrid::JumpSet::kNone;
-  run.conventional = hybrid::run_first_order_case(o);
-  if (!opt.no_jumps) {
-    o.params.jump_set = run.jump_set;
-    run.hybrid = hybrid::run_first_order_case(o);
-  }
-  run.parameters["timing"] = {{"dt_s", o.timing.dt_s},
-                              {"end_time_s", o.timing.end_time_s},
-                              {"dwell_time_s", o.timing.dwell_time_s},
-                              {"sample_period_s", o.timing.sample_period_s},
-                              {"noise_power", o.timing.noise_power}};
+  run_both(run, o, opt.no_jumps, hybrid::run_first_order_case);
   return run;
 }
 
@@ -393,17 +400,7 @@ CaseRun run_dp(const HybridOptions& opt) {
                     {"heading_deg", core::rad_to_deg(o.params.eta_d.z())},
                     {"jump_frame", "NED: x3+ = x3 - lambda R(psi) x2"},
                     {"steps", steps}};
-  o.params.jump_set = hybrid::JumpSet::kNone;
-  run.conventional = hybrid::run_dp_case(o);
-  if (!opt.no_jumps) {
-    o.params.jump_set = run.jump_set;
-    run.hybrid = hybrid::run_dp_case(o);
-  }
-  run.parameters["timing"] = {{"dt_s", o.timing.dt_s},
-                              {"end_time_s", o.timing.end_time_s},
-                              {"dwell_time_s", o.timing.dwell_time_s},
-                              {"sample_period_s", o.timing.sample_period_s},
-                              {"noise_power", o.timing.noise_power}};
+  run_both(run, o, opt.no_jumps, hybrid::run_dp_case);
   return run;
 }
 

@@ -37,19 +37,8 @@ void FopdtFitOptions::validate() const {
   if (max_dead_time_s && !(*max_dead_time_s > 0.0 && std::isfinite(*max_dead_time_s))) {
     bad("maximum dead time " + fmt(*max_dead_time_s) + " s", "give a finite limit > 0 s");
   }
-  if (pre_step_s && !(*pre_step_s > 0.0)) {
-    bad("pre-step duration " + fmt(*pre_step_s) + " s", "give a duration > 0 s");
-  }
-  if (!(tail_fraction > 0.0 && tail_fraction <= 0.5)) {
-    bad("tail fraction " + fmt(tail_fraction), "give a fraction in (0, 0.5]");
-  }
-  if (!(steady_state_tolerance >= 0.0)) {
-    bad("steady-state tolerance " + fmt(steady_state_tolerance), "give a fraction ≥ 0");
-  }
-  if (!(min_r_squared >= 0.0 && min_r_squared <= 1.0)) {
-    bad("minimum R² " + fmt(min_r_squared), "give a value in [0, 1]");
-  }
-  if (min_samples < 5) bad("minimum samples " + std::to_string(min_samples), "give at least 5");
+  detail::validate_window_options(pre_step_s, tail_fraction, steady_state_tolerance, min_r_squared,
+                                  min_samples, "FOPDT options");
   if (max_iterations < 1) bad("iteration limit " + std::to_string(max_iterations), "give ≥ 1");
 }
 

@@ -8,6 +8,27 @@
 
 namespace dynpos::ident::detail {
 
+void validate_window_options(const std::optional<double>& pre_step_s, double tail_fraction,
+                             double steady_state_tolerance, double min_r_squared,
+                             std::size_t min_samples, const char* owner) {
+  const auto bad = [owner](const std::string& what, const std::string& hint) {
+    throw core::InputError({"", {}, {}, owner}, what, hint);
+  };
+  if (pre_step_s && !(*pre_step_s > 0.0)) {
+    bad("pre-step duration " + fmt(*pre_step_s) + " s", "give a duration > 0 s");
+  }
+  if (!(tail_fraction > 0.0 && tail_fraction <= 0.5)) {
+    bad("tail fraction " + fmt(tail_fraction), "give a fraction in (0, 0.5]");
+  }
+  if (!(steady_state_tolerance >= 0.0)) {
+    bad("steady-state tolerance " + fmt(steady_state_tolerance), "give a fraction ≥ 0");
+  }
+  if (!(min_r_squared >= 0.0 && min_r_squared <= 1.0)) {
+    bad("minimum R² " + fmt(min_r_squared), "give a value in [0, 1]");
+  }
+  if (min_samples < 5) bad("minimum samples " + std::to_string(min_samples), "give at least 5");
+}
+
 StepResponse prepare_step_response(std::span<const double> t, std::span<const double> y,
                                    const Step& step, const LevelOptions& options) {
   const std::string& name = options.output_name;

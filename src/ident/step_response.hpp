@@ -36,6 +36,12 @@ struct StepResponse {
   std::vector<FitWarning> warnings;
 };
 
+/// Checks the options shared by the step-response fits; throws core::InputError under `owner`
+/// ("FOPDT options") naming the bad value.
+void validate_window_options(const std::optional<double>& pre_step_s, double tail_fraction,
+                             double steady_state_tolerance, double min_r_squared,
+                             std::size_t min_samples, const char* owner);
+
 /// Cuts and checks the window; throws core::InputError for the bad-input cases of fit_fopdt().
 StepResponse prepare_step_response(std::span<const double> t, std::span<const double> y,
                                    const Step& step, const LevelOptions& options);
