@@ -1,5 +1,5 @@
-// dynpos identify step|agility|four-corner|station-keeping: thesis chapter 3 on any CSV log
-// through a column map. `step` is here; the others are planned (cmd_unavailable.cpp).
+// dynpos identify step|thrust-map|agility|four-corner|station-keeping: thesis chapter 3 on any
+// CSV log through a column map. `step` is here; the others have a file each.
 
 #include <fmt/core.h>
 
@@ -284,13 +284,10 @@ void register_identify(CLI::App& app) {
       "--col input=command.rpm.stb --col output=rpm.stb");
   step->callback([opt] { run_step(*opt); });
 
-  add_planned(*identify, "agility", "Thrust agility: response time per direction and thruster",
-              "63.2 % response times per thruster and direction, polar plot (figs. 3.1-3.3)");
-  add_planned(*identify, "four-corner", "DP 4-corner: legs, durations, thrust and energy",
-              "leg segmentation, accumulated thrust [kNs] and energy [kJ] (table 3.6)");
-  add_planned(*identify, "station-keeping",
-              "Pure DP: position, heading, wind and thrust statistics",
-              "stationkeeping statistics over a window (tables 3.11-3.22)");
+  add_identify_thrust_map(*identify);
+  add_identify_agility(*identify);
+  add_identify_four_corner(*identify);
+  add_identify_station_keeping(*identify);
 }
 
 }  // namespace dynpos::cli

@@ -64,6 +64,14 @@ void add_hybrid_vessel(CLI::App& hybrid);
 void add_planned(CLI::App& parent, const std::string& name, const std::string& description,
                  const std::string& planned);
 
+// Subcommands under `identify` and `leverarm`, one file each.
+void add_identify_agility(CLI::App& identify);          // cmd_identify_agility.cpp
+void add_identify_thrust_map(CLI::App& identify);       // cmd_identify_thrust_map.cpp
+void add_identify_four_corner(CLI::App& identify);      // cmd_identify_four_corner.cpp
+void add_identify_station_keeping(CLI::App& identify);  // cmd_identify_station_keeping.cpp
+void add_leverarm_gnss(CLI::App& leverarm);             // cmd_leverarm_gnss.cpp
+void add_leverarm_mru(CLI::App& leverarm);              // cmd_leverarm_mru.cpp
+
 void register_simulate(CLI::App& app);
 void register_identify(CLI::App& app);
 void register_leverarm(CLI::App& app);
