@@ -5,7 +5,8 @@
 namespace dynpos::cli {
 
 void add_identify_station_keeping(CLI::App& identify) {
-  add_planned(identify, "station-keeping", "Pure DP: position, heading, wind and thrust statistics", "stationkeeping statistics over a window (tables 3.11-3.22)");
+  add_planned(identify, "station-keeping", "Pure DP: position, heading, wind and thrust statistics",
+              "stationkeeping statistics over a window (tables 3.11-3.22)");
 }
 
 }  // namespace dynpos::cli

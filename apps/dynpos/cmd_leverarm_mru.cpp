@@ -5,7 +5,8 @@
 namespace dynpos::cli {
 
 void add_leverarm_mru(CLI::App& leverarm) {
-  add_planned(leverarm, "mru", "MRU lever arms", "MRU observer (4.80) with observability diagnostics (4.77)");
+  add_planned(leverarm, "mru", "MRU lever arms",
+              "MRU observer (4.80) with observability diagnostics (4.77)");
 }
 
 }  // namespace dynpos::cli
