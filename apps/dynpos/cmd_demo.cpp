@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <vector>
 
 #include "commands.hpp"
 #include "data_dir.hpp"
@@ -58,7 +59,15 @@ void register_demo(CLI::App& app) {
             fmt::format("<p><img src=\"{}\" alt=\"{}\"></p>\n", rel, p.filename().string());
       }
     }
-    scenario::write_campaign_report(runs, vessel, opt->seed, opt->out_dir, {hybrid});
+    std::vector<scenario::ReportSection> sections;
+    for (auto* analysis :
+         {&step_demo_section, &agility_demo_section, &four_corner_demo_section,
+          &station_keeping_demo_section, &leverarm_gnss_demo_section, &leverarm_mru_demo_section}) {
+      scenario::ReportSection section = (*analysis)(opt->out_dir);
+      if (!section.title.empty()) sections.push_back(std::move(section));
+    }
+    sections.push_back(std::move(hybrid));
+    scenario::write_campaign_report(runs, vessel, opt->seed, opt->out_dir, sections);
     print_campaign(runs, opt->out_dir);
   });
 }

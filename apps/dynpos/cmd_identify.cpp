@@ -290,4 +290,8 @@ void register_identify(CLI::App& app) {
   add_identify_station_keeping(*identify);
 }
 
+scenario::ReportSection step_demo_section(const std::filesystem::path& /*campaign_dir*/) {
+  return {};
+}
+
 }  // namespace dynpos::cli

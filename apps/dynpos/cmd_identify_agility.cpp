@@ -9,4 +9,8 @@ void add_identify_agility(CLI::App& identify) {
               "63.2 % response times per thruster and direction, polar plot (figs. 3.1-3.3)");
 }
 
+scenario::ReportSection agility_demo_section(const std::filesystem::path& /*campaign_dir*/) {
+  return {};
+}
+
 }  // namespace dynpos::cli

@@ -9,4 +9,8 @@ void add_identify_four_corner(CLI::App& identify) {
               "leg segmentation, accumulated thrust [kNs] and energy [kJ] (table 3.6)");
 }
 
+scenario::ReportSection four_corner_demo_section(const std::filesystem::path& /*campaign_dir*/) {
+  return {};
+}
+
 }  // namespace dynpos::cli

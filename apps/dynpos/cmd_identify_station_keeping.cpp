@@ -9,4 +9,9 @@ void add_identify_station_keeping(CLI::App& identify) {
               "stationkeeping statistics over a window (tables 3.11-3.22)");
 }
 
+scenario::ReportSection station_keeping_demo_section(
+    const std::filesystem::path& /*campaign_dir*/) {
+  return {};
+}
+
 }  // namespace dynpos::cli

@@ -10,4 +10,8 @@ void add_leverarm_gnss(CLI::App& leverarm) {
               "observability and persistence-of-excitation diagnostics");
 }
 
+scenario::ReportSection leverarm_gnss_demo_section(const std::filesystem::path& /*campaign_dir*/) {
+  return {};
+}
+
 }  // namespace dynpos::cli

@@ -9,4 +9,8 @@ void add_leverarm_mru(CLI::App& leverarm) {
               "MRU observer (4.80) with observability diagnostics (4.77)");
 }
 
+scenario::ReportSection leverarm_mru_demo_section(const std::filesystem::path& /*campaign_dir*/) {
+  return {};
+}
+
 }  // namespace dynpos::cli
