@@ -1,5 +1,6 @@
 #include "step_response.hpp"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 
@@ -146,6 +147,50 @@ StepResponse prepare_step_response(std::span<const double> t, std::span<const do
   return r;
 }
 
+namespace {
+
+// Crossing of `level` by the least-squares quadratic through samples [lo, hi] of a noisy,
+// monotone-on-average response, solved on the root nearest the middle of the stretch. A
+// quadratic follows the curvature of the response around the level, so the crossing is not
+// pulled towards the flatter side as the mean of the first and last crossings is (an early
+// 28.3 % crossing on an S-shaped rise makes T too large). nullopt when the fit does not cross
+// the level inside the stretch.
+std::optional<double> quadratic_crossing(const StepResponse& r, std::size_t lo, std::size_t hi,
+                                         double level) {
+  const double tm = 0.5 * (r.tau[lo] + r.tau[hi]);
+  const double half = 0.5 * (r.tau[hi] - r.tau[lo]);
+  if (!(half > 0.0)) return std::nullopt;
+  Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d aty = Eigen::Vector3d::Zero();
+  for (std::size_t i = lo; i <= hi; ++i) {
+    const double x = (r.tau[i] - tm) / half;  // in [-1, 1]: a well-conditioned basis
+    const Eigen::Vector3d a(1.0, x, x * x);
+    ata += a * a.transpose();
+    aty += a * (r.y[i] - level);
+  }
+  const Eigen::Vector3d c = ata.ldlt().solve(aty);  // c0 + c1 x + c2 x² = y − level
+  std::optional<double> best;
+  auto consider = [&](double x) {
+    if (std::isfinite(x) && std::abs(x) <= 1.0 && (!best || std::abs(x) < std::abs(*best))) {
+      best = x;
+    }
+  };
+  if (std::abs(c[2]) < 1e-12 * (std::abs(c[1]) + std::abs(c[0]))) {
+    if (c[1] != 0.0) consider(-c[0] / c[1]);
+  } else {
+    const double disc = c[1] * c[1] - 4.0 * c[2] * c[0];
+    if (disc >= 0.0) {
+      const double q = -0.5 * (c[1] + std::copysign(std::sqrt(disc), c[1]));
+      if (q != 0.0) consider(c[0] / q);
+      consider(q / c[2]);
+    }
+  }
+  if (!best) return std::nullopt;
+  return tm + *best * half;
+}
+
+}  // namespace
+
 std::optional<double> crossing_time(const StepResponse& r, double fraction) {
   const double level = r.y0 + fraction * r.delta_y;
   const double s = r.delta_y >= 0.0 ? 1.0 : -1.0;
@@ -158,6 +203,11 @@ std::optional<double> crossing_time(const StepResponse& r, double fraction) {
   if (hi == first) return r.tau[first];
   std::size_t lo = hi;
   while (lo > first && z(lo) > -band) --lo;
+  // Noisy data: several samples in the band around the level. Fit through them.
+  constexpr std::size_t kMinQuadraticSamples = 5;
+  if (hi - lo + 1 >= kMinQuadraticSamples) {
+    if (const auto tc = quadratic_crossing(r, lo, hi, level)) return tc;
+  }
   std::optional<double> first_cross;
   double last_cross = r.tau[hi];
   for (std::size_t i = lo + 1; i <= hi; ++i) {

@@ -46,9 +46,11 @@ void validate_window_options(const std::optional<double>& pre_step_s, double tai
 StepResponse prepare_step_response(std::span<const double> t, std::span<const double> y,
                                    const Step& step, const LevelOptions& options);
 
-/// Time (relative to the step) where the output has covered `fraction` of Δy; the mean of the
-/// first and the last crossing between the last time 3σ̂ below and the first time 3σ̂ above the
-/// level. nullopt when the output never gets 3σ̂ past the level.
+/// Time (relative to the step) where the output has covered `fraction` of Δy. The samples from
+/// the last one 3σ̂ below to the first one 3σ̂ above the level are fitted by a least-squares
+/// quadratic in time whose crossing is taken (five samples or more: noisy data); with fewer, or
+/// when the quadratic does not cross inside the stretch, the mean of the first and the last
+/// linearly interpolated crossings. nullopt when the output never gets 3σ̂ past the level.
 std::optional<double> crossing_time(const StepResponse& response, double fraction);
 
 /// R² and RMS residual of a model over the response samples.

@@ -38,9 +38,10 @@ struct SensorSuiteParams {
   /// Wind sensor direction (coming from) [rad]. Source: reasoned — 2° noise, 1° resolution.
   ChannelSensorParams wind_dir{{1.0, 0.0},
                                {core::deg_to_rad(2.0), 0.0, 600.0, core::deg_to_rad(1.0)}};
-  /// Main propeller shaft speed feedback [rps]. Source: reasoned — 0.5 rpm noise, 0.1 rpm
-  /// resolution; logged at the trial logger's rate (thesis: 100 Hz in August).
-  ChannelSensorParams propeller_rpm{{100.0, 0.0}, {0.5 / 60.0, 0.0, 600.0, 0.1 / 60.0}};
+  /// Main propeller shaft speed feedback [rps]. Source: reasoned — 0.2 rpm noise (a shaft pickup
+  /// resolves about 0.1 rpm), 0.1 rpm resolution; logged at the trial logger's rate (thesis: 100 Hz
+  /// in August).
+  ChannelSensorParams propeller_rpm{{100.0, 0.0}, {0.2 / 60.0, 0.0, 600.0, 0.1 / 60.0}};
   /// Main propeller power feedback [W]. Source: reasoned — 1 kW noise, 0.1 kW resolution.
   ChannelSensorParams propeller_power{{100.0, 0.0}, {1e3, 0.0, 600.0, 100.0}};
   /// Tunnel thruster shaft speed feedback [rps], 1 Hz as on Gunnerus (DESIGN rates).

@@ -1,0 +1,113 @@
+// Step identification on the virtual sea trial, checked against its ground truth: the shaft
+// speed and thrust time constants identified from the trial logger's columns (with their noise,
+// quantisation and the tunnel/propeller feedback as logged) must lie within 15 % of the truth
+// written to truth.json. The truth is defined by Smith's two-point method on the noise-free
+// actuator response (model/fopdt_truth.hpp), so Smith's method is the one compared here.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "dynpos/ident/fopdt_fit.hpp"
+#include "dynpos/ident/step_detector.hpp"
+#include "dynpos/io/column_map.hpp"
+#include "dynpos/io/csv_reader.hpp"
+#include "dynpos/scenario/campaign.hpp"
+#include "dynpos/scenario/runner.hpp"
+#include "dynpos/scenario/scenario_spec.hpp"
+
+namespace dynpos {
+namespace {
+
+const std::filesystem::path kSource = DYNPOS_SOURCE_DIR;
+
+struct TrialRun {
+  std::filesystem::path dir;
+  nlohmann::json truth;
+};
+
+TrialRun simulate(const std::string& name, std::uint64_t seed) {
+  const scenario::ScenarioSpec spec =
+      scenario::load_scenario(kSource / "data" / "scenarios" / (name + ".toml"));
+  const scenario::VesselConfig vessel =
+      scenario::load_vessel_config(kSource / "data" / "vessels" / "gunnerus.toml");
+  TrialRun out;
+  out.dir = std::filesystem::temp_directory_path() /
+            ("dynpos_step_accuracy_" + name + "_" + std::to_string(seed));
+  scenario::write_scenario_run(scenario::run_scenario(spec, vessel, seed), out.dir);
+  std::ifstream in(out.dir / "truth.json");
+  out.truth = nlohmann::json::parse(in);
+  return out;
+}
+
+struct Identified {
+  double t_step;
+  double time_constant_s;
+};
+
+std::vector<Identified> identify(const std::filesystem::path& log, const std::string& input,
+                                 const std::string& output) {
+  io::ColumnMap map;
+  map.set_column("time", "time");
+  map.set_column("input", input);
+  map.set_column("output", output);
+  const core::Log l = io::read_csv(log, map);
+  const auto steps = ident::detect_steps(l.time(), l.values("input")).steps;
+  ident::FopdtFitOptions f;
+  f.method = ident::FopdtMethod::kSmith;
+  std::vector<Identified> out;
+  for (const ident::Step& s : steps) {
+    const auto r = ident::fit_fopdt(l.time(), l.values("output"), s, f);
+    out.push_back({s.t_step, r.time_constant ? r.time_constant->value : std::nan("")});
+  }
+  return out;
+}
+
+// For every propeller step of truth.json, the identified step nearest in time (the logger times
+// the command within one sample) and its T against the truth. Tolerance 15 % (the issue's); the
+// noise of the logged channels moves Smith's 28.3 %/63.2 % crossings by about one sample at
+// 100 Hz (1–2 % of the shortest T, 0.57 s), the quantisation of rpm (0.1 rpm) less.
+void expect_within_truth(const TrialRun& run, const std::string& thruster,
+                         const std::string& quantity, const std::string& output_column) {
+  const auto found = identify(run.dir / "log.csv", "command.rpm." + thruster, output_column);
+  int compared = 0;
+  for (const auto& step : run.truth.at("propeller_steps")) {
+    if (step.at("thruster") != thruster) continue;
+    const double t_step = step.at("t_s").get<double>();
+    const double truth = step.at(quantity).at("T_s").get<double>();
+    const Identified* nearest = nullptr;
+    for (const Identified& f : found) {
+      if (nearest == nullptr || std::abs(f.t_step - t_step) < std::abs(nearest->t_step - t_step)) {
+        nearest = &f;
+      }
+    }
+    ASSERT_NE(nearest, nullptr) << "no step found near " << t_step << " s";
+    EXPECT_NEAR(nearest->t_step, t_step, 0.5) << quantity << " step at " << t_step << " s";
+    EXPECT_NEAR(nearest->time_constant_s, truth, 0.15 * truth)
+        << thruster << " " << quantity << " step at " << t_step << " s";
+    ++compared;
+  }
+  EXPECT_GE(compared, 5) << "too few propeller steps with a truth";
+}
+
+TEST(StepAccuracy, SurgeForwardShaftSpeedAndThrustWithin15PercentOfTruth) {
+  const TrialRun run = simulate("surge-steps-forward", 1);
+  expect_within_truth(run, "stb", "shaft_speed", "rpm.stb");
+  expect_within_truth(run, "stb", "thrust", "thrust.stb");
+  std::filesystem::remove_all(run.dir);
+}
+
+TEST(StepAccuracy, SurgeBackwardShaftSpeedAndThrustWithin15PercentOfTruth) {
+  const TrialRun run = simulate("surge-steps-backward", 2);
+  expect_within_truth(run, "stb", "shaft_speed", "rpm.stb");
+  expect_within_truth(run, "stb", "thrust", "thrust.stb");
+  std::filesystem::remove_all(run.dir);
+}
+
+}  // namespace
+}  // namespace dynpos
