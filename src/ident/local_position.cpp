@@ -1,0 +1,38 @@
+#include "dynpos/ident/local_position.hpp"
+
+#include <GeographicLib/LocalCartesian.hpp>
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+#include "dynpos/core/error.hpp"
+
+namespace dynpos::ident {
+
+LocalPositions local_north_east(const std::vector<double>& lat_rad,
+                                const std::vector<double>& lon_rad) {
+  if (lat_rad.size() != lon_rad.size()) {
+    throw core::InputError({{}, {}, {}, "lat/lon"}, "latitude and longitude lengths differ");
+  }
+  constexpr double kDeg = 180.0 / std::numbers::pi;
+  LocalPositions out;
+  out.north_m.assign(lat_rad.size(), std::nan(""));
+  out.east_m.assign(lat_rad.size(), std::nan(""));
+  std::optional<GeographicLib::LocalCartesian> plane;
+  for (std::size_t i = 0; i < lat_rad.size(); ++i) {
+    if (std::isnan(lat_rad[i]) || std::isnan(lon_rad[i])) continue;
+    if (std::abs(lat_rad[i]) > std::numbers::pi / 2.0) {
+      throw core::InputError({{}, i + 1, {}, "lat"},
+                             "latitude " + std::to_string(lat_rad[i] * kDeg) + "° is outside ±90°",
+                             "check the unit of lat (deg or rad) with --unit lat=deg");
+    }
+    if (!plane) plane.emplace(lat_rad[i] * kDeg, lon_rad[i] * kDeg, 0.0);
+    double east = 0.0, north = 0.0, up = 0.0;
+    plane->Forward(lat_rad[i] * kDeg, lon_rad[i] * kDeg, 0.0, east, north, up);
+    out.north_m[i] = north;
+    out.east_m[i] = east;
+  }
+  return out;
+}
+
+}  // namespace dynpos::ident
