@@ -276,7 +276,8 @@ scenario::ReportSection station_keeping_demo_section(const std::filesystem::path
   o.per_setpoint = true;
   o.waves = "Hs 2.0 m, Tp 7 s, from 0° (simulated)";
   o.current = "0.2 m/s towards 180° (simulated)";
-  const StationKeepingRun run = analyse(o, o.input.read(wanted_role));
+  StationKeepingRun run = analyse(o, o.input.read(wanted_role));
+  run.doc["log"] = "pure-dp/log.csv";  // relative to the report, so the report is relocatable
   const std::filesystem::path dir = campaign_dir / "analysis" / "station-keeping";
   std::filesystem::create_directories(dir);
   io::write_json((dir / "pure-dp.json").string(), run.doc);
