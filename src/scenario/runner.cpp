@@ -96,6 +96,7 @@ nlohmann::json scenario_json(const ScenarioSpec& spec) {
   j["log_rate_hz"] = spec.log_rate_hz;
   j["initial_heading_deg"] = spec.initial_heading_deg;
   j["initial_surge_mps"] = spec.initial_surge_mps;
+  j["start_utc"] = spec.start_utc;
   const EnvironmentSpec& e = spec.environment;
   j["rudder"] = nlohmann::json::array();
   for (const RudderCommand& r : spec.rudder) {
@@ -521,7 +522,14 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
   truth["time_constants"] = tc;
   truth["allocation_unmet_max"] = {unmet.max.x(), unmet.max.y(), unmet.max.z()};
   truth["units"] = "SI unless a key names its unit";
-  return {std::move(log), std::move(truth_log), std::move(truth)};
+  truth["start_utc"] = spec.start_utc;
+  ScenarioRun run;
+  run.log = std::move(log);
+  run.truth_log = std::move(truth_log);
+  run.truth = std::move(truth);
+  run.start_utc = spec.start_utc;
+  run.geoid_separation_m = vessel.sensors.origin.height_m;
+  return run;
 }
 
 }  // namespace dynpos::scenario

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "dynpos/core/error.hpp"
+#include "dynpos/io/nmea.hpp"
 #include "toml_fields.hpp"
 
 namespace dynpos::scenario {
@@ -84,6 +85,20 @@ void ScenarioSpec::validate() const {
         "choose a log rate whose period is a whole number of steps");
   }
   check_range(*this, "initial_surge_mps", initial_surge_mps, -4.0, 7.0);
+  {
+    const auto bad_start = [&](const std::string& problem) {
+      throw core::InputError(at(*this, "start_utc"), problem,
+                             "write the UTC of t = 0 as \"YYYY-MM-DDTHH:MM:SS[.sss]Z\", e.g. "
+                             "\"2014-08-27T10:00:00Z\"");
+    };
+    std::optional<io::UtcTimestamp> start;
+    try {
+      start = io::parse_utc_timestamp(start_utc);
+    } catch (const core::InputError& e) {
+      bad_start(e.problem());
+    }
+    if (!start->date) bad_start(fmt::format("'{}' has no date", start_utc));
+  }
   double previous = -1.0;
   for (std::size_t i = 0; i < joystick.size(); ++i) {
     const JoystickCommand& c = joystick[i];
@@ -152,8 +167,8 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
   const toml::table doc = TomlTable::parse_file(file);
   const TomlTable root(doc, file, "");
   root.reject_unknown({"name", "description", "duration_s", "dt_s", "log_rate_hz",
-                       "initial_heading_deg", "initial_surge_mps", "heading_hold", "environment",
-                       "joystick", "hybrid", "rudder", "setpoint", "load"});
+                       "initial_heading_deg", "initial_surge_mps", "heading_hold", "start_utc",
+                       "environment", "joystick", "hybrid", "rudder", "setpoint", "load"});
   ScenarioSpec spec;
   spec.source = file;
   spec.name = root.string("name");
@@ -164,6 +179,7 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
   spec.initial_heading_deg = root.number_or("initial_heading_deg", 0.0, -360.0, 360.0);
   spec.initial_surge_mps = root.number_or("initial_surge_mps", 0.0, -4.0, 7.0);
   spec.heading_hold = root.boolean_or("heading_hold", false);
+  spec.start_utc = root.string_or("start_utc", spec.start_utc);
   if (auto env = root.optional_table("environment")) spec.environment = read_environment(*env);
 
   for_each_row(doc, root, "joystick", [&](const TomlTable& t) {

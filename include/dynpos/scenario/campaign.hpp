@@ -42,7 +42,9 @@ struct ReportSection {
 std::uint64_t campaign_seed(std::uint64_t master_seed, const std::string& scenario_name);
 
 /// Writes one run into `dir` (created if needed): log.csv (the trial logger), truth.csv (the
-/// true motion) and truth.json, each atomically.
+/// true motion), truth.json and, for each GNSS antenna K of the log, gnssK.nmea (NMEA 0183
+/// GGA, RMC, VTG, HDT at its fixes, UTC = run.start_utc + t; docs/log-format.md), each
+/// atomically.
 void write_scenario_run(const ScenarioRun& run, const std::filesystem::path& dir);
 
 /// Runs each scenario and writes DIR/<name>/ (write_scenario_run), then DIR/summary.json,

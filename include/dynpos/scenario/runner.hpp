@@ -4,6 +4,7 @@
 /// truth that goes with it.
 
 #include <cstdint>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -21,6 +22,11 @@ struct ScenarioRun {
   /// The true motion and actuator states at the log rate, SI units (docs/log-format.md).
   core::Log truth_log;
   nlohmann::json truth;  ///< parameters, seed, lever arms, command times, true time constants
+  /// UTC of t = 0, "YYYY-MM-DDTHH:MM:SS[.sss]Z" (ScenarioSpec::start_utc).
+  std::string start_utc;
+  /// [m] geoid (mean sea level) above the WGS84 ellipsoid at the GNSS origin: the origin's
+  /// ellipsoidal height, the vessel's sea level. NMEA GGA splits the height with it.
+  double geoid_separation_m = 0.0;
 };
 
 /// Simulates `spec` on `vessel` with master seed `seed`. Deterministic: the same inputs give

@@ -76,7 +76,10 @@ struct ScenarioSpec {
   double dt_s = 0.01;         ///< [s] integration step, > 0, divides every rate's period
   double log_rate_hz = 10.0;  ///< [Hz] rate of the truth log; its period is a multiple of dt
   double initial_heading_deg = 0.0;  ///< [deg] ψ(0)
-  double initial_surge_mps = 0.0;    ///< [m/s] u(0), with actuators trimmed to hold it
+  /// UTC of t = 0, "YYYY-MM-DDTHH:MM:SS[.sss]Z": the time base of the NMEA files
+  /// (gnssK.nmea). Default: a day of the Gunnerus sea trials of August 2014.
+  std::string start_utc = "2014-08-27T10:00:00Z";
+  double initial_surge_mps = 0.0;  ///< [m/s] u(0), with actuators trimmed to hold it
   /// Joystick with auto heading: a heading controller adds its yaw demand to the joystick's,
   /// holding ψ(0), as a DP joystick does in sway tests. Not with DP setpoints.
   bool heading_hold = false;
