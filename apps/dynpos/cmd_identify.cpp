@@ -3,9 +3,11 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <optional>
 #include <string>
@@ -23,6 +25,8 @@
 #include "dynpos/io/column_map.hpp"
 #include "dynpos/io/csv_reader.hpp"
 #include "dynpos/io/json_writer.hpp"
+#include "dynpos/report/svg_plot.hpp"
+#include "dynpos/report/table.hpp"
 
 namespace dynpos::cli {
 namespace {
@@ -290,8 +294,239 @@ void register_identify(CLI::App& app) {
   add_identify_station_keeping(*identify);
 }
 
-scenario::ReportSection step_demo_section(const std::filesystem::path& /*campaign_dir*/) {
-  return {};
+namespace {
+
+// One step test of the campaign, shaped like a table of thesis 3.23–3.31.
+struct StepDemoTest {
+  const char* scenario;
+  const char* id;          // file stem under analysis/steps/
+  const char* quantity;    // what the table is about
+  const char* input;       // column of the command the steps are found in
+  const char* output;      // column fitted; "" with total_speed
+  bool total_speed;        // fit √(u² + v²) (3.19) instead of `output`
+  const char* truth;       // "shaft_speed"/"thrust" (propeller_steps), "nomoto" (rudder_steps), ""
+  const char* thesis;      // the thesis' figures for comparison (DESIGN.md calibration table)
+  const char* input_unit;  // the input as the trial logger shows it ...
+  double input_scale;      // ... = SI value × this
+};
+
+constexpr StepDemoTest kStepDemoTests[] = {
+    {"surge-steps-forward", "surge-forward_rpm", "Shaft speed, starboard propeller",
+     "command.rpm.stb", "rpm.stb", false, "shaft_speed",
+     "table 3.23: T_n 0.5–5.5 s, δ_n 1.2–3.3 s; larger steps slower", "rpm", 60.0},
+    {"surge-steps-forward", "surge-forward_thrust", "Thrust, starboard propeller",
+     "command.rpm.stb", "thrust.stb", false, "thrust", "table 3.23: T 0.3–4.7 s, δ 1–5.6 s", "rpm",
+     60.0},
+    {"surge-steps-forward", "surge-forward_speed", "Surge speed u", "command.surge", "u", false, "",
+     "table 3.24: T 16 s (0–80 %), 34 s (25–40 %), 59 s (15–25 %), 60–135 s (small steps)", "%",
+     100.0},
+    {"surge-steps-backward", "surge-backward_rpm", "Shaft speed, starboard propeller",
+     "command.rpm.stb", "rpm.stb", false, "shaft_speed",
+     "table 3.25: T_n 0.5–5.5 s, δ_n 1.2–3.3 s; larger steps slower", "rpm", 60.0},
+    {"surge-steps-backward", "surge-backward_thrust", "Thrust, starboard propeller",
+     "command.rpm.stb", "thrust.stb", false, "thrust", "table 3.25: T 0.3–4.7 s, δ 1–5.6 s", "rpm",
+     60.0},
+    {"surge-steps-backward", "surge-backward_speed", "Surge speed u", "command.surge", "u", false,
+     "", "table 3.26: T 31–77 s (backward)", "%", 100.0},
+    {"sway-steps-starboard", "sway-starboard_speed", "Total speed √(u² + v²) (3.19)",
+     "command.sway", "", true, "", "table 3.28: T 9–19 s, δ 1–4 s; larger steps faster", "%",
+     100.0},
+    {"sway-steps-port", "sway-port_speed", "Total speed √(u² + v²) (3.19)", "command.sway", "",
+     true, "", "table 3.30: T 9–19 s, δ 1–4 s; larger steps faster", "%", 100.0},
+    {"yaw-steps", "yaw_rate", "Yaw rate r (MRU 1), starboard rudder steps", "command.rudder.stb",
+     "mru1.r", false, "nomoto",
+     "table 3.31 (rudder 0→20°): T 4.7–5.6 s at 3 kn, 2.9–3.0 s at 6 kn, δ ≈ 2 s", "deg",
+     57.29577951308232},
+};
+
+struct TruthValue {
+  std::optional<double> T_s, delay_s;
+};
+
+// The truth of the step at `t_step`: the nearest step of truth.json within 1 s (the command is
+// logged at the step time; 1 s is far below the shortest spacing of steps, 60 s).
+TruthValue truth_for(const nlohmann::json& truth, const StepDemoTest& test, double t_step) {
+  TruthValue out;
+  if (std::string(test.truth).empty() || truth.is_null()) return out;
+  const bool rudder = std::string(test.truth) == "nomoto";
+  const char* list = rudder ? "rudder_steps" : "propeller_steps";
+  if (!truth.contains(list)) return out;
+  for (const nlohmann::json& s : truth.at(list)) {
+    if (!rudder && s.value("thruster", "") != "stb") continue;
+    if (std::abs(s.value("t_s", -1e9) - t_step) > 1.0) continue;
+    if (rudder) {
+      // Nomoto's first-order yaw-rate time constant (truth.json "Tr_s"); the dead time of the
+      // yaw-rate response has no single truth (servo + hull), so it stays missing.
+      if (s.contains("nomoto") && s.at("nomoto").contains("Tr_s")) {
+        out.T_s = s.at("nomoto").at("Tr_s").get<double>();
+      }
+    } else if (s.contains(test.truth)) {
+      out.T_s = s.at(test.truth).at("T_s").get<double>();
+      out.delay_s = s.at(test.truth).at("delay_s").get<double>();
+    }
+    break;
+  }
+  return out;
+}
+
+std::string step_cell(const std::optional<double>& v, const char* spec) {
+  return v && std::isfinite(*v) ? fmt::format(fmt::runtime(spec), *v) : std::string("—");
+}
+
+struct StepDemoOutcome {
+  report::Table table;
+  std::string plot;  // file name under analysis/steps/, or empty
+  std::size_t steps = 0, with_truth = 0;
+  double worst_error_pct = 0.0;
+};
+
+StepDemoOutcome run_step_demo_test(const std::filesystem::path& campaign_dir,
+                                   const StepDemoTest& test, const std::filesystem::path& out_dir) {
+  const std::filesystem::path run_dir = campaign_dir / test.scenario;
+  io::ColumnMap map;
+  map.set_column("time", "time");
+  map.set_column("input", test.input);
+  if (test.total_speed) {
+    map.set_column("u", "u");
+    map.set_column("v", "v");
+  } else {
+    map.set_column("output", test.output);
+  }
+  const core::Log log = io::read_csv(run_dir / "log.csv", map);
+  const std::vector<double>& t = log.time();
+  const std::vector<double> y =
+      test.total_speed ? ident::total_speed(log.values("u"), log.values("v"))  // (3.19)
+                       : log.values("output");
+  const std::string y_unit = test.total_speed ? "m/s" : log.channel("output").unit;
+  const std::string u_unit = log.channel("input").unit;
+  nlohmann::json truth;
+  if (std::ifstream in(run_dir / "truth.json"); in) truth = nlohmann::json::parse(in);
+
+  // Smith's two-point method (3.8)-(3.9): the method that defines truth.json's time constants.
+  ident::FopdtFitOptions f;
+  f.method = ident::FopdtMethod::kSmith;
+  const std::vector<ident::Step> steps = ident::detect_steps(t, log.values("input")).steps;
+
+  const auto in_logger_unit = [&test](const std::optional<double>& v) {
+    return v ? std::optional<double>(*v * test.input_scale) : std::nullopt;
+  };
+  StepDemoOutcome out;
+  out.table.header = {"t_step [s]",  fmt::format("input [{}]", test.input_unit),
+                      "T [s]",       "δ [s]",
+                      "R²",          "T truth [s]",
+                      "δ truth [s]", "T error [%]",
+                      "status"};
+  out.table.first_numeric_column = 0;
+  nlohmann::json doc;
+  doc["analysis"] = "step";
+  doc["log"] = std::string(test.scenario) + "/log.csv";  // relative: the report is relocatable
+  doc["method"] = "smith";
+  doc["quantity"] = test.quantity;
+  doc["output_unit"] = y_unit;
+  doc["input_unit"] = u_unit;
+  doc["thesis"] = test.thesis;
+  doc["steps"] = nlohmann::json::array();
+  std::vector<double> fit_t, fit_y, markers;
+  for (const ident::Step& step : steps) {
+    const ident::FopdtFitResult r = ident::fit_fopdt(t, y, step, f);
+    const TruthValue tv = truth_for(truth, test, step.t_step);
+    const std::optional<double> T = value_of(r.time_constant), delay = value_of(r.dead_time);
+    std::optional<double> err;
+    if (T && tv.T_s && *tv.T_s > 0.0) {
+      err = 100.0 * (*T - *tv.T_s) / *tv.T_s;
+      out.worst_error_pct = std::max(out.worst_error_pct, std::abs(*err));
+      ++out.with_truth;
+    }
+    ++out.steps;
+    std::string notes(ident::fit_status_name(r.status));
+    for (const ident::FitWarning& w : r.warnings) {
+      notes += (notes.empty() ? "" : ", ") + std::string(ident::warning_code_name(w.code));
+    }
+    nlohmann::json j;
+    j["t_step"] = step.t_step;
+    j["u_before"] = opt_json(step.u_before);
+    j["u_after"] = opt_json(step.u_after);
+    j["T"] = opt_json(T);
+    j["delay"] = opt_json(delay);
+    j["K"] = r.gain ? nlohmann::json(r.gain->value) : nlohmann::json(nullptr);
+    j["r_squared"] = opt_json(r.r_squared);
+    j["status"] = std::string(ident::fit_status_name(r.status));
+    j["warnings"] = warnings_json(r.warnings);
+    j["truth"] = {{"T", opt_json(tv.T_s)}, {"delay", opt_json(tv.delay_s)}};
+    j["T_error_pct"] = opt_json(err);
+    doc["steps"].push_back(j);
+    out.table.rows.push_back({fmt::format("{:.1f}", step.t_step),
+                              step_cell(in_logger_unit(step.u_before), "{:.4g}") + " → " +
+                                  step_cell(in_logger_unit(step.u_after), "{:.4g}"),
+                              step_cell(T, "{:.2f}"), step_cell(delay, "{:.2f}"),
+                              step_cell(r.r_squared, "{:.3f}"), step_cell(tv.T_s, "{:.2f}"),
+                              step_cell(tv.delay_s, "{:.2f}"), step_cell(err, "{:+.1f}"), notes});
+    // The fitted FOPDT (3.7) over the step's window, for the plot; gaps between steps.
+    markers.push_back(step.t_step);
+    if (const auto model = r.model()) {
+      for (std::size_t i = 0; i < t.size(); ++i) {
+        if (t[i] < step.t_begin || t[i] > step.t_end) continue;
+        fit_t.push_back(t[i]);
+        fit_y.push_back((*model)(t[i]));
+      }
+      fit_t.push_back(std::nan(""));
+      fit_y.push_back(std::nan(""));
+    }
+  }
+  io::write_json((out_dir / (std::string(test.id) + ".json")).string(), doc);
+
+  report::Figure fig;
+  fig.title = fmt::format("{}: {} — data and fitted FOPDT (3.7)", test.scenario, test.quantity);
+  report::Panel panel;
+  panel.x_axis = {"Time", "s", {}, {}};
+  panel.y_axis = {test.quantity, y_unit, {}, {}};
+  panel.series.push_back({"logged", t, y, "#1f77b4", 1.0, false});
+  panel.series.push_back({"FOPDT fit (Smith)", fit_t, fit_y, "#d62728", 1.5, true});
+  panel.x_markers = markers;
+  fig.panels.push_back(std::move(panel));
+  out.plot = std::string(test.id) + ".svg";
+  report::write_svg(out_dir / out.plot, fig);
+  return out;
+}
+
+}  // namespace
+
+scenario::ReportSection step_demo_section(const std::filesystem::path& campaign_dir) {
+  const std::filesystem::path out_dir = campaign_dir / "analysis" / "steps";
+  scenario::ReportSection section;
+  std::string md, html;
+  for (const StepDemoTest& test : kStepDemoTests) {
+    if (!std::filesystem::exists(campaign_dir / test.scenario / "log.csv")) continue;
+    std::filesystem::create_directories(out_dir);
+    const StepDemoOutcome o = run_step_demo_test(campaign_dir, test, out_dir);
+    const std::string head = fmt::format("{} — {} ({} step(s)); thesis {}.", test.scenario,
+                                         test.quantity, o.steps, test.thesis);
+    std::string note;
+    if (std::string(test.truth) == "nomoto") {
+      note =
+          " T truth is Nomoto's T_r = T1 + T2 − T3 (truth.json) at the speed of each step; a "
+          "FOPDT fit from the rudder command includes the servo ramp and the speed loss in "
+          "the turn, so it is not expected to equal T_r.";
+    }
+    if (o.with_truth > 0) {
+      note += fmt::format(" Largest |T error| against truth.json: {:.1f} % over {} step(s).",
+                          o.worst_error_pct, o.with_truth);
+    }
+    const std::string rel = "analysis/steps/" + o.plot;
+    md += fmt::format("**{}**{}\n\n{}\n![{}]({})\n\n", head, note, report::render_markdown(o.table),
+                      o.plot, rel);
+    html += fmt::format("<p><b>{}</b>{}</p>\n{}<p><img src=\"{}\" alt=\"{}\"></p>\n", head, note,
+                        report::render_html(o.table), rel, o.plot);
+  }
+  if (md.empty()) return section;
+  section.title = "Step tests: time constants and dead times (thesis tables 3.23–3.31)";
+  const std::string intro =
+      "FOPDT (3.7) fitted by Smith's two-point method (3.8)-(3.9) to each step the command "
+      "columns show; the truth is the simulator's own response evaluated the same way. Data and "
+      "fits: analysis/steps/*.json and *.svg.";
+  section.markdown = intro + "\n\n" + md;
+  section.html = "<p>" + intro + "</p>\n" + html;
+  return section;
 }
 
 }  // namespace dynpos::cli
