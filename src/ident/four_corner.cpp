@@ -41,6 +41,37 @@ struct Held {
   }
 };
 
+// Centered moving average of x over [t − w/2, t + w/2], from x's valid samples, at each valid
+// sample (NaN elsewhere); angles are averaged as unit vectors. w ≤ 0 returns x.
+std::vector<double> centered_mean(const std::vector<double>& t, const std::vector<double>& x,
+                                  double w, bool angle) {
+  if (!(w > 0.0) || x.empty()) return x;
+  std::vector<std::size_t> valid;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (!std::isnan(x[i])) valid.push_back(i);
+  }
+  std::vector<double> out(x.size(), std::nan(""));
+  double sum_a = 0.0, sum_b = 0.0;
+  std::size_t lo = 0, hi = 0;  // window [lo, hi) over `valid`
+  for (std::size_t k = 0; k < valid.size(); ++k) {
+    const double tk = t[valid[k]];
+    while (hi < valid.size() && t[valid[hi]] <= tk + 0.5 * w) {
+      const double v = x[valid[hi]];
+      sum_a += angle ? std::cos(v) : v;
+      sum_b += angle ? std::sin(v) : 0.0;
+      ++hi;
+    }
+    while (t[valid[lo]] < tk - 0.5 * w) {
+      const double v = x[valid[lo]];
+      sum_a -= angle ? std::cos(v) : v;
+      sum_b -= angle ? std::sin(v) : 0.0;
+      ++lo;
+    }
+    out[valid[k]] = angle ? std::atan2(sum_b, sum_a) : sum_a / static_cast<double>(hi - lo);
+  }
+  return out;
+}
+
 std::optional<double> add(const std::optional<double>& a, const std::optional<double>& b) {
   return a && b ? std::optional<double>(*a + *b) : std::nullopt;
 }
@@ -78,8 +109,14 @@ std::vector<Leg> setpoint_legs(const FourCornerInput& in, const FourCornerOption
   std::vector<Leg> legs;
   const std::vector<double>& t = in.t_s;
   Held sn{in.setpoint_north_m}, se{in.setpoint_east_m}, sh{in.setpoint_heading_rad};
-  Held h{in.heading_rad};
+  // The circle is tested on the low-frequency motion, as a DP system's wave filter gives it.
+  const std::vector<double> north = centered_mean(t, in.north_m, o.wave_filter_s, false);
+  const std::vector<double> east = centered_mean(t, in.east_m, o.wave_filter_s, false);
+  const std::vector<double> heading_lf = centered_mean(t, in.heading_rad, o.wave_filter_s, true);
+  Held h{heading_lf};
   double n_prev = std::nan(""), e_prev = std::nan(""), h_prev = std::nan("");
+  // The last tested (filtered) position and heading.
+  double last_north = std::nan(""), last_east = std::nan(""), last_heading = std::nan("");
   Leg* open = nullptr;
   for (std::size_t i = 0; i < t.size(); ++i) {
     const double n = sn(i), e = se(i), hd = sh(i), heading = h(i);
@@ -88,7 +125,16 @@ std::vector<Leg> setpoint_legs(const FourCornerInput& in, const FourCornerOption
                          (!std::isnan(h_prev) && std::abs(wrap(hd - h_prev)) > 1e-6);
     if (changed) {
       if (open != nullptr && !open->reached) {
+        // A change with the vessel at the edge of the circle is the DP system's own "reached"
+        // (a sequence issues its next setpoint there); the filtered position may differ from
+        // the DP's estimate by decimetres, so the edge is widened by the margins.
         open->t_end_s = t[i];
+        const double dn = last_north - n_prev, de = last_east - e_prev;
+        open->reached = !std::isnan(last_north) && !std::isnan(last_heading) &&
+                        (std::isnan(n_prev) || std::isnan(e_prev) ||
+                         std::hypot(dn, de) <= o.radius_m + o.reach_margin_m) &&
+                        (std::isnan(h_prev) || std::abs(wrap(last_heading - h_prev)) <=
+                                                   o.heading_tol_rad + o.reach_margin_rad);
       }
       Leg leg;
       leg.t_start_s = t[i];
@@ -111,11 +157,16 @@ std::vector<Leg> setpoint_legs(const FourCornerInput& in, const FourCornerOption
     e_prev = e;
     h_prev = hd;
     // The operating circle, tested where the position is sampled.
-    if (open != nullptr && !open->reached && !std::isnan(at(in.north_m, i)) &&
-        !std::isnan(at(in.east_m, i)) && !std::isnan(heading)) {
-      const bool in_circle = (std::isnan(n) || std::isnan(e) ||
-                              std::hypot(in.north_m[i] - n, in.east_m[i] - e) <= o.radius_m) &&
-                             (std::isnan(hd) || std::abs(wrap(heading - hd)) <= o.heading_tol_rad);
+    if (!std::isnan(at(north, i)) && !std::isnan(at(east, i)) && !std::isnan(heading)) {
+      last_north = north[i];
+      last_east = east[i];
+      last_heading = heading;
+    }
+    if (open != nullptr && !open->reached && !std::isnan(at(north, i)) &&
+        !std::isnan(at(east, i)) && !std::isnan(heading)) {
+      const bool in_circle =
+          (std::isnan(n) || std::isnan(e) || std::hypot(north[i] - n, east[i] - e) <= o.radius_m) &&
+          (std::isnan(hd) || std::abs(wrap(heading - hd)) <= o.heading_tol_rad);
       if (in_circle) {
         open->reached = true;
         open->t_end_s = t[i];
@@ -221,6 +272,15 @@ void FourCornerOptions::validate() const {
   positive("moving_rate_rad_s", moving_rate_rad_s);
   positive("smoothing_s", smoothing_s);
   positive("min_leg_s", min_leg_s);
+  if (!(reach_margin_m >= 0.0) || !std::isfinite(reach_margin_m)) {
+    throw option_error("reach_margin_m", reach_margin_m, "finite and >= 0");
+  }
+  if (!(reach_margin_rad >= 0.0) || !std::isfinite(reach_margin_rad)) {
+    throw option_error("reach_margin_rad", reach_margin_rad, "finite and >= 0");
+  }
+  if (!(wave_filter_s >= 0.0) || !std::isfinite(wave_filter_s)) {
+    throw option_error("wave_filter_s", wave_filter_s, "finite and >= 0");
+  }
   positive("corner_tolerance_m", corner_tolerance_m);
   positive("min_move_m", min_move_m);
   positive("min_turn_rad", min_turn_rad);
@@ -253,6 +313,10 @@ std::string leg_name(double forward_m, double starboard_m, double heading_change
   return name;
 }
 
+namespace {
+FourCornerResult analyse_at_origin(const FourCornerInput& in, const FourCornerOptions& o);
+}  // namespace
+
 FourCornerResult analyse_four_corner(const FourCornerInput& in, const FourCornerOptions& o) {
   o.validate();
   if (in.t_s.size() < 2) {
@@ -274,6 +338,29 @@ FourCornerResult analyse_four_corner(const FourCornerInput& in, const FourCorner
                            "map setpoint.north, setpoint.east, setpoint.heading, or segment "
                            "from the track");
   }
+  if (!std::isfinite(in.arm_x_m) || !std::isfinite(in.arm_y_m)) {
+    throw core::InputError({{}, {}, {}, "arm"}, "the antenna lever arm is not finite");
+  }
+  const FourCornerInput at_origin = in.arm_x_m == 0.0 && in.arm_y_m == 0.0 ? in : [&] {
+    // p_CO = p − R(ψ)·l with the heading held from its last valid sample.
+    FourCornerInput moved = in;
+    Held h{in.heading_rad};
+    for (std::size_t i = 0; i < in.t_s.size(); ++i) {
+      const double psi = h(i);
+      if (i >= moved.north_m.size() || i >= moved.east_m.size()) break;
+      moved.north_m[i] -= std::cos(psi) * in.arm_x_m - std::sin(psi) * in.arm_y_m;
+      moved.east_m[i] -= std::sin(psi) * in.arm_x_m + std::cos(psi) * in.arm_y_m;
+    }
+    return moved;
+  }();
+  return analyse_at_origin(at_origin, o);
+}
+
+namespace {
+
+FourCornerResult analyse_at_origin(const FourCornerInput& in, const FourCornerOptions& o) {
+  const bool have_setpoints =
+      logged(in.setpoint_north_m) || logged(in.setpoint_east_m) || logged(in.setpoint_heading_rad);
   FourCornerResult r;
   if (o.segmentation != LegSegmentation::kTrack && have_setpoints) {
     r.legs = setpoint_legs(in, o);
@@ -335,4 +422,5 @@ FourCornerResult analyse_four_corner(const FourCornerInput& in, const FourCorner
   return r;
 }
 
+}  // namespace
 }  // namespace dynpos::ident

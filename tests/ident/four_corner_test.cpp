@@ -74,11 +74,13 @@ TEST(FourCorner, LegsFromSetpointsEndInTheOperatingCircle) {
   EXPECT_EQ(r.segmentation, "setpoints");
   ASSERT_EQ(r.legs.size(), 4u);
   // Each leg starts at its setpoint change. It ends at the first 1 Hz position sample inside
-  // the 2.25 m circle with the heading within 2°: 2.25 m before the corner at 0.5 m/s is 4.5 s
-  // early, so the epoch 4 s before; the third leg's heading reaches −88° at 440 − 2/0.9 =
-  // 437.8 s, after the position is inside the circle (436 s), so it ends at the epoch 438 s.
+  // the 2.25 m circle with the heading within 2°, both averaged over ±5 s (the wave filter;
+  // linear motion is unchanged by it until the window reaches the corner). 2.25 m before the
+  // corner at 0.5 m/s is 4.5 s early: the epoch 4 s before (at 156 s the average over 151–161 s
+  // is 47.95 m north, inside). The third leg ends on its heading: at 439 s the average over
+  // 434–444 s is −88.4° (inside), at 438 s −87.8° (not yet).
   const double starts[] = {60.0, 200.0, 340.0, 480.0};
-  const double ends[] = {156.0, 296.0, 438.0, 576.0};
+  const double ends[] = {156.0, 296.0, 439.0, 576.0};
   for (std::size_t k = 0; k < 4; ++k) {
     SCOPED_TRACE(k);
     EXPECT_NEAR(r.legs[k].t_start_s, starts[k], 1e-9);
@@ -101,7 +103,7 @@ TEST(FourCorner, LegsFromSetpointsEndInTheOperatingCircle) {
   EXPECT_NEAR(*leg.total_accumulated_thrust_Ns, 14e3 * 96.0, 1e-6);
   EXPECT_FALSE(leg.total_energy_J);  // a thruster's energy is missing, so is the total
   // Total: the sum of the legs (the 40 s waits are not legs).
-  const double sum = 96.0 + 96.0 + 98.0 + 96.0;
+  const double sum = 96.0 + 96.0 + 99.0 + 96.0;
   EXPECT_NEAR(r.total.duration_s, sum, 1e-9);
   EXPECT_NEAR(r.total.t_start_s, 60.0, 1e-9);
   EXPECT_NEAR(r.total.t_end_s, 576.0, 1e-9);
@@ -110,6 +112,57 @@ TEST(FourCorner, LegsFromSetpointsEndInTheOperatingCircle) {
   EXPECT_NEAR(*r.total.thrusters[0].mean_abs_thrust_N, 10e3, 1e-9);
   EXPECT_FALSE(r.total.thrusters[1].energy_J);
   EXPECT_FALSE(r.total.total_energy_J);
+}
+
+TEST(FourCorner, TheWaveFilterKeepsTheCircleTestOnTheLowFrequencyMotion) {
+  // Wave-frequency motion of 0.8 m amplitude and 6 s period on the position: a 10 s mean leaves
+  // 0.8·|sin(πW/P)|/(πW/P) ≈ 0.13 m, a shift of ≈ 0.3 s at 0.5 m/s, so each leg still ends at
+  // the epoch of the calm case; without the filter the 0.8 m moves some crossings by seconds.
+  FourCornerInput in = box();
+  for (std::size_t i = 0; i < in.t_s.size(); ++i) {
+    const double wave = 0.8 * std::sin(2.0 * kPi * in.t_s[i] / 6.0 + 0.3);
+    if (!std::isnan(in.north_m[i])) in.north_m[i] += wave;
+    if (!std::isnan(in.east_m[i])) in.east_m[i] += wave;
+  }
+  const FourCornerResult calm = analyse_four_corner(box(), circle());
+  const FourCornerResult filtered = analyse_four_corner(in, circle());
+  FourCornerOptions raw = circle();
+  raw.wave_filter_s = 0.0;
+  const FourCornerResult unfiltered = analyse_four_corner(in, raw);
+  ASSERT_EQ(filtered.legs.size(), 4u);
+  ASSERT_EQ(unfiltered.legs.size(), 4u);
+  double worst_unfiltered = 0.0;
+  for (std::size_t k = 0; k < 4; ++k) {
+    EXPECT_NEAR(filtered.legs[k].t_end_s, calm.legs[k].t_end_s, 1e-9) << k;
+    worst_unfiltered =
+        std::max(worst_unfiltered, std::abs(unfiltered.legs[k].t_end_s - calm.legs[k].t_end_s));
+  }
+  EXPECT_GE(worst_unfiltered, 1.0);
+}
+
+TEST(FourCorner, AnAntennaPositionIsMovedToTheControlOrigin) {
+  // The box logged by an antenna 0.2 m forward and 0.6 m to port: p = p_CO + R(ψ)·l. With the
+  // arm given, the legs are those of the control origin exactly (up to rounding).
+  FourCornerInput in = box();
+  const double x = 0.2, y = -0.6;
+  for (std::size_t i = 0; i < in.t_s.size(); ++i) {
+    const double psi = in.heading_rad[i];
+    if (std::isnan(in.north_m[i])) continue;
+    in.north_m[i] += std::cos(psi) * x - std::sin(psi) * y;
+    in.east_m[i] += std::sin(psi) * x + std::cos(psi) * y;
+  }
+  const FourCornerResult calm = analyse_four_corner(box(), circle());
+  const FourCornerResult at_antenna = analyse_four_corner(in, circle());
+  in.arm_x_m = x;
+  in.arm_y_m = y;
+  const FourCornerResult moved = analyse_four_corner(in, circle());
+  ASSERT_EQ(moved.legs.size(), 4u);
+  bool antenna_differs = false;
+  for (std::size_t k = 0; k < 4; ++k) {
+    EXPECT_NEAR(moved.legs[k].t_end_s, calm.legs[k].t_end_s, 1e-9) << k;
+    antenna_differs = antenna_differs || at_antenna.legs[k].t_end_s != calm.legs[k].t_end_s;
+  }
+  EXPECT_TRUE(antenna_differs);  // the crab to port reaches its circle 1 s early at the antenna
 }
 
 TEST(FourCorner, ALegNotReachedEndsAtTheNextSetpoint) {

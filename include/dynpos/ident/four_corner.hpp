@@ -8,8 +8,12 @@
 /// - from the DP setpoints when they are logged: every change of the setpoint starts a leg; the
 ///   leg ends when the vessel is first inside the operating circle of its setpoint (position
 ///   within `radius_m`, heading within `heading_tol_rad`), or at the next change if it never
-///   gets there (then `reached` is false). A leg is named by its move in the frame of the
-///   previous setpoint heading: "ahead 50 m", "crab to port 50 m", "astern 50 m, heading −90°".
+///   gets there (then `reached` is false unless the change finds it within the reach margins).
+///   Position and heading are first averaged over a centered window of `wave_filter_s` (unit
+///   vectors for the heading): the DP system decides on its wave-filtered estimate, and a 1–2 m sea
+///   moves a high GNSS antenna by decimetres, which would otherwise let the crossing of the circle
+///   jump by many seconds. A leg is named by its move in the frame of the previous setpoint
+///   heading: "ahead 50 m", "crab to port 50 m", "astern 50 m, heading −90°".
 /// - otherwise from the track and heading: the vessel is moving when its speed over ground
 ///   exceeds `moving_speed_mps` or its turn rate `moving_rate_rad_s` (both from differences over
 ///   ±`smoothing_s`); stretches of motion, with pauses shorter than `min_pause_s` bridged, are
@@ -18,8 +22,9 @@
 ///   segment is a leg. Legs shorter than `min_leg_s`, or that neither move `min_move_m` nor turn
 ///   `min_turn_rad` (the vessel swaying in waves), are dropped. A leg is named by its
 ///   displacement in the frame of its start heading.
-/// The position may be that of a GNSS antenna; the operating circle is then tested at the
-/// antenna, which differs from the control origin by the horizontal lever arm.
+/// The position may be that of a GNSS antenna: with its lever arm given, it is moved to the
+/// control origin, where a DP system tests its operating circle; without, the circle is tested
+/// at the antenna (a 0.6 m arm moves a slow final approach's crossing by several seconds).
 
 #include <optional>
 #include <string>
@@ -36,6 +41,10 @@ struct FourCornerInput {
   std::vector<double> north_m, east_m, heading_rad;
   std::vector<double> setpoint_north_m, setpoint_east_m, setpoint_heading_rad;
   std::vector<ThrusterChannels> thrusters;
+  /// Horizontal lever arm (x forward, y starboard) [m] of the point whose position is logged
+  /// (e.g. a GNSS antenna); the position is moved to the control origin, p_CO = p − R(ψ)·l,
+  /// before the analysis. Zero when the logged position is already the control origin's.
+  double arm_x_m = 0.0, arm_y_m = 0.0;
 };
 
 /// How the legs are found.
@@ -47,8 +56,16 @@ enum class LegSegmentation {
 
 struct FourCornerOptions {
   LegSegmentation segmentation = LegSegmentation::kAuto;
-  double radius_m = 2.0;             ///< operating circle [m], > 0
-  double heading_tol_rad = 0.035;    ///< ≈ 2°, > 0
+  double radius_m = 2.0;           ///< operating circle [m], > 0
+  double heading_tol_rad = 0.035;  ///< ≈ 2°, > 0
+  /// Width of the centered moving average of position and heading before the circle test [s];
+  /// 0 = none. 10 s spans one to two wave periods (Tp 6–8 s).
+  double wave_filter_s = 10.0;
+  /// A setpoint change that finds the vessel within radius + reach_margin_m and heading_tol +
+  /// reach_margin_rad counts as reaching the old setpoint: a DP sequence issues its next
+  /// setpoint on reaching, and the filtered position differs from the DP's by decimetres.
+  double reach_margin_m = 0.5;
+  double reach_margin_rad = 0.009;   ///< ≈ 0.5°
   double moving_speed_mps = 0.1;     ///< track segmentation: moving above this speed [m/s]
   double moving_rate_rad_s = 0.005;  ///< … or above this turn rate [rad/s] (≈ 0.3°/s)
   double smoothing_s = 5.0;          ///< half-width of the difference for speed and rate [s]
