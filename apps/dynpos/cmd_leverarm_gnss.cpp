@@ -40,6 +40,8 @@ struct GnssCliOptions {
   std::string utc_at_zero;
   std::vector<std::string> initial;   // gnssK=x,y,z
   std::string w1, w2, gamma, l_gain;  // x,y,z
+  std::string init_p0;                // n,e,d
+  double adaptive_rate = 0.1;
   int lag = 10;
   std::optional<double> time_offset_s;
   bool estimate_time_offset = false;
@@ -270,6 +272,7 @@ nlohmann::json result_json(const calib::GnssArmResult& r) {
       {"predicted_arm_std_m", vec_json(e.predicted_arm_std_m)},
       {"verdict", verdict},
       {"advice", e.advice}};
+  if (r.method == calib::GnssArmMethod::kAdaptive) j["adaptive_gamma"] = vec_json(r.adaptive_gamma);
   j["time_offset_s"] = r.time_offset_s;
   j["time_offset_estimated"] = r.time_offset_estimated;
   j["time_offset_std_s"] = io::json_number(r.time_offset_std_s);
@@ -293,8 +296,13 @@ calib::GnssArmOptions library_options(const GnssCliOptions& o, std::size_t anten
   };
   positive(lo.luenberger_w_p0, "--w1");
   positive(lo.luenberger_w_arm, "--w2");
-  positive(lo.adaptive_gamma, "--gamma");
+  if (lo.adaptive_gamma) positive(*lo.adaptive_gamma, "--gamma");
   positive(lo.adaptive_l, "--L");
+  if (!(o.adaptive_rate > 0.0) || !std::isfinite(o.adaptive_rate))
+    throw core::InputError({{}, {}, {}, "--adaptive-rate"}, "the rate must be > 0",
+                           "for example 0.1 [1/s]");
+  lo.adaptive_rate_per_s = o.adaptive_rate;
+  if (!o.init_p0.empty()) lo.initial_p0_n_m = parse_vec3(o.init_p0, "--init-p0");
   if (!o.initial.empty()) {
     lo.initial_arms_b_m.assign(antennas, Vec3::Zero());
     for (const std::string& s : o.initial) {
@@ -540,10 +548,17 @@ void add_leverarm_gnss(CLI::App& leverarm) {
                   "UTC of the log's t = 0, HH:MM:SS[.sss] or YYYY-MM-DDTHH:MM:SS[.sss]Z (for "
                   "--nmea)");
   sub->add_option("--init", o->initial, "gnssK=X,Y,Z: initial arm of an observer [m]");
-  sub->add_option("--w1", o->w1, "Luenberger W1 on P0, X,Y,Z [1/s] (default 0.005,0.005,20)");
-  sub->add_option("--w2", o->w2, "Luenberger W2 on each arm, X,Y,Z [1/s] (default 0.02,0.02,20)");
-  sub->add_option("--gamma", o->gamma, "Adaptive Γ, X,Y,Z (default 10,10,50)");
+  sub->add_option("--w1", o->w1, "Luenberger W1 on P0, X,Y,Z [1/s] (default 0.001,0.001,0.001)");
+  sub->add_option("--w2", o->w2, "Luenberger W2 on each arm, X,Y,Z [1/s] (default 30,30,30)");
+  sub->add_option("--gamma", o->gamma,
+                  "Adaptive Γ, X,Y,Z (default: rate·L/E|ω|², see --adaptive-rate)");
   sub->add_option("--L", o->l_gain, "Adaptive L, X,Y,Z [1/s] (default 1,1,1)");
+  sub->add_option("--adaptive-rate", o->adaptive_rate,
+                  "Adaptive: convergence rate that sets Γ when --gamma is not given [1/s]")
+      ->capture_default_str();
+  sub->add_option("--init-p0", o->init_p0,
+                  "N,E,D: initial P0 of the Luenberger observer in the fixes' local NED frame "
+                  "(origin at the first fix) [m]; default from the first fixes and --init");
   sub->add_option("--lag", o->lag, "lsq: difference fixes this many epochs apart")
       ->capture_default_str();
   sub->add_option("--time-offset", o->time_offset_s,
@@ -564,9 +579,13 @@ void add_leverarm_gnss(CLI::App& leverarm) {
   sub->footer(
       "Arms in BODY (x fwd, y stb, z down) from the point whose velocity u, v, w is logged. "
       "lsq (default) reports the estimator's own 1σ; the observers report mean and std over "
-      "the converged interval (thesis tables 4.2–4.5). Example on a virtual trial: dynpos "
-      "leverarm gnss DIR/log.csv --col roll=mru1.roll --col pitch=mru1.pitch --col p=mru1.p "
-      "--col q=mru1.q --col r=mru1.r --estimate-time-offset");
+      "the converged interval (thesis tables 4.2–4.5). The velocity must carry the "
+      "wave-frequency motion (heave w included) for the absolute arms; the baselines between "
+      "antennas need none. Example on a virtual trial, motion from the 100 Hz reference: dynpos "
+      "leverarm gnss DIR/truth.csv --gnss-log gnss1=DIR/log.csv --gnss-log gnss2=DIR/log.csv "
+      "--estimate-time-offset; from the logger's MRU and speed log: dynpos leverarm gnss "
+      "DIR/log.csv --col roll=mru1.roll --col pitch=mru1.pitch --col p=mru1.p --col q=mru1.q "
+      "--col r=mru1.r");
   sub->callback([o] { run_gnss(*o); });
 }
 

@@ -1,5 +1,6 @@
 #include "dynpos/calib/gnss_lever_arm.hpp"
 
+#include <fmt/format.h>
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <GeographicLib/LocalCartesian.hpp>
@@ -280,7 +281,14 @@ void run_luenberger(const std::vector<Epoch>& ep, const GnssArmOptions& o, std::
   const double wmax = std::max(o.luenberger_w_p0.maxCoeff(), o.luenberger_w_arm.maxCoeff());
   const int nsub = std::max(1, static_cast<int>(std::ceil(dt * wmax * double(m + 1) / 0.2)));
   Vec3 p0 = Vec3::Zero();
-  {
+  if (o.initial_p0_n_m) {
+    p0 = *o.initial_p0_n_m;
+  } else {
+    res.notes.push_back(
+        "luenberger: P0 started from the first fixes and the initial arms; its start error "
+        "R(0)·(l − l̂(0)) is invisible to the fixes at t = 0 and W1 removes it slowly, so the "
+        "arms are only as good as the initial arms unless the maneuver is long. Give the "
+        "initial P0 (--init-p0) when it is known, or use lsq");
     int c = 0;
     for (std::size_t k = 0; k < m; ++k)
       if (ep[0].has[k]) {
@@ -317,9 +325,24 @@ void run_adaptive(const std::vector<Epoch>& ep, const GnssArmOptions& o, std::ve
                   GnssArmResult& res) {
   const std::size_t m = arms.size();
   const double dt = median_spacing(ep);
-  double wmax2 = 0.0;
-  for (const Epoch& e : ep) wmax2 = std::max(wmax2, e.omega.squaredNorm());
-  const double rate = std::max(o.adaptive_l.maxCoeff(), o.adaptive_gamma.maxCoeff() * wmax2);
+  double wmax2 = 0.0, wmean2 = 0.0;
+  for (const Epoch& e : ep) {
+    wmax2 = std::max(wmax2, e.omega.squaredNorm());
+    wmean2 += e.omega.squaredNorm() / static_cast<double>(ep.size());
+  }
+  Vec3 gamma;
+  if (o.adaptive_gamma) {
+    gamma = *o.adaptive_gamma;
+  } else {
+    // Arm error rate ≈ Γ·E|ω|²/L: pick Γ for the requested rate (floor: 1e-6 rad²/s², a
+    // vessel at rest, where nothing is observable anyway).
+    gamma = o.adaptive_rate_per_s * o.adaptive_l / std::max(wmean2, 1e-6);
+    res.notes.push_back(fmt::format(
+        "adaptive gain Γ = {:.4g}, {:.4g}, {:.4g} from E|ω|² = {:.3g} rad²/s² and rate {} 1/s",
+        gamma(0), gamma(1), gamma(2), wmean2, o.adaptive_rate_per_s));
+  }
+  res.adaptive_gamma = gamma;
+  const double rate = std::max(o.adaptive_l.maxCoeff(), gamma.maxCoeff() * wmax2);
   const int nsub = std::max(1, static_cast<int>(std::ceil(dt * rate / 0.2)));
   std::vector<Vec3> xhat(m, Vec3::Constant(kNaN));
   for (std::size_t i = 0; i < ep.size(); ++i) {
@@ -339,7 +362,7 @@ void run_adaptive(const std::vector<Epoch>& ep, const GnssArmOptions& o, std::ve
         if (!e.has[k] || !std::isfinite(xhat[k](0))) continue;
         const Vec3 xt = e.p[k] - xhat[k];  // x̃ with C = I (4.39)
         xhat[k] += h * o.adaptive_l.cwiseProduct(xt);
-        arms[k] += h * o.adaptive_gamma.cwiseProduct(omega.transpose() * xt);  // (4.48)
+        arms[k] += h * gamma.cwiseProduct(omega.transpose() * xt);  // (4.48)
       }
     }
     Vec3 p0 = Vec3::Zero();
@@ -373,8 +396,10 @@ void GnssArmOptions::validate() const {
   auto pos = [](const Vec3& v) { return (v.array() > 0.0).all() && v.allFinite(); };
   if (!pos(luenberger_w_p0) || !pos(luenberger_w_arm))
     throw std::invalid_argument("GnssArmOptions: Luenberger gains W1, W2 must be > 0");
-  if (!pos(adaptive_l) || !pos(adaptive_gamma))
+  if (!pos(adaptive_l) || (adaptive_gamma && !pos(*adaptive_gamma)))
     throw std::invalid_argument("GnssArmOptions: adaptive gains L, Gamma must be > 0");
+  if (!(adaptive_rate_per_s > 0.0) || !std::isfinite(adaptive_rate_per_s))
+    throw std::invalid_argument("GnssArmOptions: adaptive_rate_per_s must be > 0");
   if (lag_epochs < 1) throw std::invalid_argument("GnssArmOptions: lag_epochs must be >= 1");
   if (!std::isfinite(time_offset_s))
     throw std::invalid_argument("GnssArmOptions: time_offset_s must be finite");

@@ -110,10 +110,46 @@ TEST(GnssLeverArm, LuenbergerNoiseFreeMatchesThesisTable42) {
   GnssArmOptions o;
   o.method = GnssArmMethod::kLuenberger;
   o.initial_arms_b_m = initial_guess(3);
+  o.initial_p0_n_m = s.p0(0.0);  // as the thesis' case study 1: P̂₀ starts at the true P₀
   const GnssArmResult r = estimate_gnss_arms(s.motion(600, 100), s.gnss(600, 1, 3), o);
   ASSERT_TRUE(r.ok) << r.message;
   // Thesis table 4.2: the observer reached ≈ 0.2 mm on noise-free data; we must do as well.
   EXPECT_LT(max_error(r, 3), 2e-4);
+}
+
+TEST(GnssLeverArm, LuenbergerFromAWrongP0IsOnlyAsGoodAsItsStart) {
+  // With P̂₀ started from the fixes and arms 0.6 m off, the start error R(0)·(l − l̂) sits in
+  // the direction the fixes cannot see at t = 0; W₁ ≪ W₂ removes it only slowly. The result
+  // must say so rather than look converged: the error stays above 1 cm here.
+  const Synthetic s;
+  GnssArmOptions o;
+  o.method = GnssArmMethod::kLuenberger;
+  o.initial_arms_b_m = initial_guess(3);
+  const GnssArmResult r = estimate_gnss_arms(s.motion(300, 100), s.gnss(300, 1, 3), o);
+  ASSERT_TRUE(r.ok) << r.message;
+  EXPECT_GT(max_error(r, 3), 0.01);
+  bool noted = false;
+  for (const std::string& n : r.notes) noted = noted || n.find("P0") != std::string::npos;
+  EXPECT_TRUE(noted) << "a note should name the P0 start";
+}
+
+TEST(GnssLeverArm, AdaptiveGainFollowsTheExcitation) {
+  // Γ = rate·L/E|ω|²: doubling the motion's angular rates quarters Γ.
+  const Synthetic calm;
+  Synthetic rough;
+  rough.roll_amp *= 2;
+  rough.pitch_amp *= 2;
+  rough.yaw_rate *= 2;
+  GnssArmOptions o;
+  o.method = GnssArmMethod::kAdaptive;
+  const GnssArmResult a = estimate_gnss_arms(calm.motion(200, 100), calm.gnss(200, 1, 1), o);
+  const GnssArmResult b = estimate_gnss_arms(rough.motion(200, 100), rough.gnss(200, 1, 1), o);
+  ASSERT_TRUE(a.ok && b.ok);
+  // E|ω|² over the fix epochs: the ratio is 4 up to the sampling of the oscillations (±5 %).
+  EXPECT_NEAR(a.adaptive_gamma(0) / b.adaptive_gamma(0), 4.0, 0.2);
+  o.adaptive_gamma = Vec3(5, 6, 7);
+  const GnssArmResult c = estimate_gnss_arms(calm.motion(200, 100), calm.gnss(200, 1, 1), o);
+  EXPECT_EQ(c.adaptive_gamma, Vec3(5, 6, 7));
 }
 
 TEST(GnssLeverArm, AdaptiveNoiseFreeMatchesThesisTable43) {
@@ -178,6 +214,12 @@ TEST(GnssLeverArm, BadOptionsThrow) {
   EXPECT_THROW(o.validate(), std::invalid_argument);
   o = {};
   o.converged_from_fraction = 1.0;
+  EXPECT_THROW(o.validate(), std::invalid_argument);
+  o = {};
+  o.adaptive_gamma = Vec3(1, -1, 1);
+  EXPECT_THROW(o.validate(), std::invalid_argument);
+  o = {};
+  o.adaptive_rate_per_s = 0.0;
   EXPECT_THROW(o.validate(), std::invalid_argument);
 }
 

@@ -3,12 +3,12 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <numbers>
-#include <regex>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -65,12 +65,27 @@ bool balanced(const std::string& svg) {
   return stack.empty();
 }
 
+// The text between `open` and the next `close` after position `from`, or npos when absent.
+std::string between(const std::string& s, std::size_t& from, const std::string& open,
+                    const std::string& close) {
+  const std::size_t a = s.find(open, from);
+  if (a == std::string::npos) {
+    from = std::string::npos;
+    return {};
+  }
+  const std::size_t b = s.find(close, a + open.size());
+  from = b;
+  return s.substr(a + open.size(), b - a - open.size());
+}
+
 std::vector<std::pair<double, double>> markers(const std::string& svg) {
   std::vector<std::pair<double, double>> out;
-  const std::regex re("class=\"marker\" cx=\"([-0-9.]+)\" cy=\"([-0-9.]+)\"");
-  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), re); it != std::sregex_iterator();
-       ++it) {
-    out.emplace_back(std::stod((*it)[1]), std::stod((*it)[2]));
+  const std::string tag = "class=\"marker\" cx=\"";
+  for (std::size_t at = svg.find(tag); at != std::string::npos; at = svg.find(tag, at + 1)) {
+    std::size_t from = at;
+    const std::string cx = between(svg, from, "cx=\"", "\"");
+    const std::string cy = between(svg, from, "cy=\"", "\"");
+    out.emplace_back(std::stod(cx), std::stod(cy));
   }
   return out;
 }
@@ -123,11 +138,11 @@ TEST(PolarPlot, APointLandsWhereTrigonometrySays) {
 TEST(PolarPlot, GapsSplitTheLineAndClosedSeriesWrap) {
   const std::string svg = render_polar_svg(agility_like());
   // Port is closed: one polyline of 9 points (first repeated). Tunnel: two runs of 3 points.
-  const std::regex re("<polyline[^>]*points=\"([^\"]*)\"");
   std::vector<std::size_t> sizes;
-  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), re); it != std::sregex_iterator();
-       ++it) {
-    const std::string pts = (*it)[1];
+  for (std::size_t at = svg.find("<polyline"); at != std::string::npos;
+       at = svg.find("<polyline", at + 1)) {
+    std::size_t from = at;
+    const std::string pts = between(svg, from, "points=\"", "\"");
     sizes.push_back(static_cast<std::size_t>(std::count(pts.begin(), pts.end(), ' ')) + 1);
   }
   EXPECT_THAT(sizes, ::testing::ElementsAre(9u, 3u, 3u));

@@ -18,6 +18,8 @@
 /// estimated by minimising the least-squares residual over δ.
 
 #include <Eigen/Core>
+#include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,13 +45,24 @@ struct GnssArmOptions {
   GnssArmMethod method = GnssArmMethod::kLsq;
   /// Initial arm guesses [m] for the observers, one per antenna; empty: all zero.
   std::vector<Eigen::Vector3d> initial_arms_b_m;
+  /// Luenberger: initial P̂₀ in the fixes' NED frame [m] when known (thesis case study 1 starts
+  /// from the true P₀). Unset: the mean over the first epoch's antennas of Pₖ − R·l̂ₖ(0).
+  std::optional<Eigen::Vector3d> initial_p0_n_m;
   /// Luenberger (4.26): W₁ on P₀ and W₂ on each arm (diagonals) [1/s]. Each fix is applied as
-  /// the continuous correction held over the fix interval.
-  Eigen::Vector3d luenberger_w_p0 = Eigen::Vector3d(0.005, 0.005, 20.0);
-  Eigen::Vector3d luenberger_w_arm = Eigen::Vector3d(0.02, 0.02, 20.0);
+  /// the continuous correction held over the fix interval. P₀ is dead-reckoned from the
+  /// velocity (4.6), so it needs little correction (W₁ ≪ W₂): the fix residual then goes to the
+  /// arms, whose error decays at about W₂·|ỹ| while the P₀ error left over is W₁/W₂ of the arm
+  /// error per unit time. W₁/W₂ = 1/30 000 reached 0.2 mm on the noise-free turning circle from
+  /// a known P₀ (the thesis' case study 1); a larger W₁ follows a drifting velocity better.
+  Eigen::Vector3d luenberger_w_p0 = Eigen::Vector3d::Constant(0.001);
+  Eigen::Vector3d luenberger_w_arm = Eigen::Vector3d::Constant(30.0);
   /// Adaptive (4.42), (4.48): L on the antenna positions [1/s] and Γ on the arms (diagonals).
+  /// The arm error decays at about Γ·E|ω|²/L, so when Γ is unset it is chosen from the data
+  /// as Γ = adaptive_rate_per_s·L/E|ω|² (E|ω|² the mean squared angular rate of the motion):
+  /// the same convergence rate on a calm or a rough maneuver.
   Eigen::Vector3d adaptive_l = Eigen::Vector3d::Constant(1.0);
-  Eigen::Vector3d adaptive_gamma = Eigen::Vector3d(10.0, 10.0, 50.0);
+  std::optional<Eigen::Vector3d> adaptive_gamma;
+  double adaptive_rate_per_s = 0.1;
   /// Least squares: fixes differenced this many epochs apart, ≥ 1. The arm shows in a
   /// difference only through the rotation ΔR over the lag: at a turning rate of 0.03 rad/s
   /// and 1 Hz fixes, one epoch turns a 1 m arm by 3 cm, the order of the RTK noise of the
@@ -88,7 +101,8 @@ struct GnssArmResult {
   double converged_to_s = 0.0;
   std::vector<Eigen::Vector3d> interval_mean_b_m;  ///< per antenna, over that interval
   std::vector<Eigen::Vector3d> interval_std_b_m;
-  double time_offset_s = 0.0;  ///< δ used
+  Eigen::Vector3d adaptive_gamma = Eigen::Vector3d::Constant(std::nan(""));  ///< Γ used (adaptive)
+  double time_offset_s = 0.0;                                                ///< δ used
   bool time_offset_estimated = false;
   double time_offset_std_s = 0.0;  ///< from the residual's curvature; NaN if not estimated
   std::vector<double> offset_scan_s, offset_scan_cost;         ///< the δ search (empty if none)
