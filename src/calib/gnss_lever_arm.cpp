@@ -613,13 +613,16 @@ GnssArmResult estimate_gnss_arms(const MotionSeries& motion,
   }
   Vec3 ss = Vec3::Zero();
   int nres = 0;
-  for (std::size_t i = 0; i < ep.size(); ++i)
+  for (std::size_t i = 0; i < ep.size(); ++i) {
+    // An observer's start transient is not a model residual: its interval only.
+    if (options.method != GnssArmMethod::kLsq && ep[i].t_s < res.converged_from_s) continue;
     for (std::size_t k = 0; k < m; ++k)
       if (ep[i].has[k] && res.p0_n_m[i].allFinite()) {
         const Vec3 e = ep[i].p[k] - res.p0_n_m[i] - ep[i].R * res.arms[k].l_b_m;
         ss += e.cwiseProduct(e);
         ++nres;
       }
+  }
   res.residual_rms_n_m = (ss / std::max(nres, 1)).cwiseSqrt();
   if (m == 1)
     res.notes.emplace_back(

@@ -105,8 +105,9 @@ struct GnssArmResult {
   double time_offset_s = 0.0;                                                ///< δ used
   bool time_offset_estimated = false;
   double time_offset_std_s = 0.0;  ///< from the residual's curvature; NaN if not estimated
-  std::vector<double> offset_scan_s, offset_scan_cost;         ///< the δ search (empty if none)
-  Eigen::Vector3d residual_rms_n_m = Eigen::Vector3d::Zero();  ///< of P_k − P̂₀ − R·l̂ₖ
+  std::vector<double> offset_scan_s, offset_scan_cost;  ///< the δ search (empty if none)
+  Eigen::Vector3d residual_rms_n_m =
+      Eigen::Vector3d::Zero();  ///< of P_k − P̂₀ − R·l̂ₖ; observers: over the interval
   std::size_t epochs_used = 0;
   ExcitationDiagnostics excitation;
   std::vector<std::string> notes;
