@@ -105,13 +105,19 @@ TEST(GnssLeverArm, LeastSquaresNoiseFreeIsExact) {
   for (const ArmEstimate& a : r.arms) EXPECT_LT(a.std_m.maxCoeff(), 1e-4);
 }
 
-TEST(GnssLeverArm, LuenbergerNoiseFreeMatchesThesisTable42) {
+// An observer on the noise-free synthetic maneuver with three antennas, started from arms
+// 0.6 m off and, if `true_p0`, from the true P₀ (as the thesis' case study 1).
+GnssArmResult observe(GnssArmMethod method, double duration_s, bool true_p0) {
   const Synthetic s;
   GnssArmOptions o;
-  o.method = GnssArmMethod::kLuenberger;
+  o.method = method;
   o.initial_arms_b_m = initial_guess(3);
-  o.initial_p0_n_m = s.p0(0.0);  // as the thesis' case study 1: P̂₀ starts at the true P₀
-  const GnssArmResult r = estimate_gnss_arms(s.motion(600, 100), s.gnss(600, 1, 3), o);
+  if (true_p0) o.initial_p0_n_m = s.p0(0.0);
+  return estimate_gnss_arms(s.motion(duration_s, 100), s.gnss(duration_s, 1, 3), o);
+}
+
+TEST(GnssLeverArm, LuenbergerNoiseFreeMatchesThesisTable42) {
+  const GnssArmResult r = observe(GnssArmMethod::kLuenberger, 600, true);
   ASSERT_TRUE(r.ok) << r.message;
   // Thesis table 4.2: the observer reached ≈ 0.2 mm on noise-free data; we must do as well.
   EXPECT_LT(max_error(r, 3), 2e-4);
@@ -121,11 +127,7 @@ TEST(GnssLeverArm, LuenbergerFromAWrongP0IsOnlyAsGoodAsItsStart) {
   // With P̂₀ started from the fixes and arms 0.6 m off, the start error R(0)·(l − l̂) sits in
   // the direction the fixes cannot see at t = 0; W₁ ≪ W₂ removes it only slowly. The result
   // must say so rather than look converged: the error stays above 1 cm here.
-  const Synthetic s;
-  GnssArmOptions o;
-  o.method = GnssArmMethod::kLuenberger;
-  o.initial_arms_b_m = initial_guess(3);
-  const GnssArmResult r = estimate_gnss_arms(s.motion(300, 100), s.gnss(300, 1, 3), o);
+  const GnssArmResult r = observe(GnssArmMethod::kLuenberger, 300, false);
   ASSERT_TRUE(r.ok) << r.message;
   EXPECT_GT(max_error(r, 3), 0.01);
   bool noted = false;
@@ -153,11 +155,7 @@ TEST(GnssLeverArm, AdaptiveGainFollowsTheExcitation) {
 }
 
 TEST(GnssLeverArm, AdaptiveNoiseFreeMatchesThesisTable43) {
-  const Synthetic s;
-  GnssArmOptions o;
-  o.method = GnssArmMethod::kAdaptive;
-  o.initial_arms_b_m = initial_guess(3);
-  const GnssArmResult r = estimate_gnss_arms(s.motion(600, 100), s.gnss(600, 1, 3), o);
+  const GnssArmResult r = observe(GnssArmMethod::kAdaptive, 600, false);
   ASSERT_TRUE(r.ok) << r.message;
   // Thesis table 4.3: the adaptive observer reached ≈ 1 cm on noise-free data.
   EXPECT_LT(max_error(r, 3), 0.01);

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -138,57 +139,59 @@ calib::GnssArmOptions thesis_start(const Inputs& in, const std::vector<Eigen::Ve
   return o;
 }
 
+// A turning circle with three antennas and their true arms.
+struct ArmCase {
+  scenario::ScenarioRun run;
+  Inputs in;
+  std::vector<Eigen::Vector3d> truth;
+};
+
+ArmCase three_antennas(bool gnss_noise) {
+  ArmCase c{turning_circle(0.0, 3, gnss_noise), {}, {}};
+  const std::vector<std::string> names = {"gnss1", "gnss2", "gnss3"};
+  c.in = inputs(c.run, names);
+  for (const std::string& n : names) c.truth.push_back(true_arm(c.run, n));
+  return c;
+}
+
+// Per axis, the worst error of `method` started as `o`; infinite if the estimator failed.
+Eigen::Vector3d error_of(const ArmCase& c, calib::GnssArmOptions o, calib::GnssArmMethod method) {
+  o.method = method;
+  const calib::GnssArmResult r = calib::estimate_gnss_arms(c.in.motion.motion, c.in.gnss, o);
+  EXPECT_TRUE(r.ok) << r.message;
+  if (!r.ok) return Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  return worst_error(r, c.truth);
+}
+
 // The thesis' case study 1 on our turning circle: noise-free fixes (which fall on motion
 // samples, so P₀ from the first fix is exact), started as thesis_start(). Thesis table 4.2 reached
 // ≈ 0.2 mm (Luenberger), table 4.3 ≈ 1 cm (adaptive): those are the bounds. Measured (seed 3):
 // Luenberger 0.06 mm, adaptive 0.06 mm, least squares 0.01 mm. With the earlier gains (W₁ = 0.005,
 // W₂ = 0.02; Γ = 10) the observers were off by 0.1–0.7 m on this maneuver, so the bounds can fail.
 TEST(LeverarmGnss, TurningCircleNoiseFreeAllEstimatorsMatchTheThesis) {
-  const scenario::ScenarioRun run = turning_circle(0.0, 3, false);
-  const std::vector<std::string> names = {"gnss1", "gnss2", "gnss3"};
-  const Inputs in = inputs(run, names);
-  std::vector<Eigen::Vector3d> truth;
-  for (const std::string& n : names) truth.push_back(true_arm(run, n));
-
-  calib::GnssArmOptions o = thesis_start(in, truth);
-
-  o.method = calib::GnssArmMethod::kLuenberger;
-  const calib::GnssArmResult luen = calib::estimate_gnss_arms(in.motion.motion, in.gnss, o);
-  ASSERT_TRUE(luen.ok) << luen.message;
-  EXPECT_LT(worst_error(luen, truth).maxCoeff(), 2e-4) << worst_error(luen, truth).transpose();
-
-  o.method = calib::GnssArmMethod::kAdaptive;
-  const calib::GnssArmResult adap = calib::estimate_gnss_arms(in.motion.motion, in.gnss, o);
-  ASSERT_TRUE(adap.ok) << adap.message;
-  EXPECT_LT(worst_error(adap, truth).maxCoeff(), 0.01) << worst_error(adap, truth).transpose();
-
-  o.method = calib::GnssArmMethod::kLsq;
-  const calib::GnssArmResult lsq = calib::estimate_gnss_arms(in.motion.motion, in.gnss, o);
-  ASSERT_TRUE(lsq.ok) << lsq.message;
-  EXPECT_LT(worst_error(lsq, truth).maxCoeff(), 2e-4) << worst_error(lsq, truth).transpose();
+  const ArmCase c = three_antennas(false);
+  const calib::GnssArmOptions o = thesis_start(c.in, c.truth);
+  const Eigen::Vector3d luen = error_of(c, o, calib::GnssArmMethod::kLuenberger);
+  EXPECT_LT(luen.maxCoeff(), 2e-4) << luen.transpose();
+  const Eigen::Vector3d adap = error_of(c, o, calib::GnssArmMethod::kAdaptive);
+  EXPECT_LT(adap.maxCoeff(), 0.01) << adap.transpose();
+  const Eigen::Vector3d lsq = error_of(c, o, calib::GnssArmMethod::kLsq);
+  EXPECT_LT(lsq.maxCoeff(), 2e-4) << lsq.transpose();
 }
 
-// The observers on RTK noise (1 cm horizontal, 2 cm vertical), same start as above. They follow
-// the fix noise through their gains, so they are less precise than the least squares (2.6 mm):
-// measured on seed 3, Luenberger 10 mm, adaptive 66 mm (mean over the second half). Bounds:
-// Luenberger 2 cm (the target for the best estimator), adaptive 10 cm (the thesis'
-// adaptive observer kept 1–2 cm of standard deviation without noise).
+// The observers on RTK noise (1 cm horizontal, 2 cm vertical), same start as above (P₀ from the
+// first fix, which now carries 1–2 cm of noise that the observer removes). They follow the fix
+// noise through their gains, so they are less precise than the least squares (2.6 mm): measured
+// on seed 3, Luenberger 10 mm, adaptive 66 mm (mean over the second half). Bounds: Luenberger
+// 2 cm (the target for the best estimator), adaptive 10 cm (the thesis' adaptive
+// observer kept 1–2 cm of standard deviation without noise).
 TEST(LeverarmGnss, TurningCircleObserversOnRtkNoise) {
-  const scenario::ScenarioRun run = turning_circle(0.0, 3);
-  const std::vector<std::string> names = {"gnss1", "gnss2", "gnss3"};
-  const Inputs in = inputs(run, names);
-  std::vector<Eigen::Vector3d> truth;
-  for (const std::string& n : names) truth.push_back(true_arm(run, n));
-  // P₀ from the first fix, which carries 1–2 cm of noise: the observer removes it.
-  calib::GnssArmOptions o = thesis_start(in, truth);
-  o.method = calib::GnssArmMethod::kLuenberger;
-  const calib::GnssArmResult luen = calib::estimate_gnss_arms(in.motion.motion, in.gnss, o);
-  ASSERT_TRUE(luen.ok) << luen.message;
-  EXPECT_LT(worst_error(luen, truth).maxCoeff(), 0.02) << worst_error(luen, truth).transpose();
-  o.method = calib::GnssArmMethod::kAdaptive;
-  const calib::GnssArmResult adap = calib::estimate_gnss_arms(in.motion.motion, in.gnss, o);
-  ASSERT_TRUE(adap.ok) << adap.message;
-  EXPECT_LT(worst_error(adap, truth).maxCoeff(), 0.10) << worst_error(adap, truth).transpose();
+  const ArmCase c = three_antennas(true);
+  const calib::GnssArmOptions o = thesis_start(c.in, c.truth);
+  const Eigen::Vector3d luen = error_of(c, o, calib::GnssArmMethod::kLuenberger);
+  EXPECT_LT(luen.maxCoeff(), 0.02) << luen.transpose();
+  const Eigen::Vector3d adap = error_of(c, o, calib::GnssArmMethod::kAdaptive);
+  EXPECT_LT(adap.maxCoeff(), 0.10) << adap.transpose();
 }
 
 }  // namespace
