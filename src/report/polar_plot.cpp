@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "dynpos/io/atomic_file.hpp"
+#include "dynpos/io/markup.hpp"
 #include "dynpos/report/axis_ticks.hpp"
 
 namespace dynpos::report {
@@ -32,33 +33,6 @@ constexpr std::array<const char*, 8> kPalette = {"#1f77b4", "#d62728", "#ff7f0e"
 
 void require(bool ok, const std::string& what) {
   if (!ok) throw std::invalid_argument("PolarFigure: " + what);
-}
-
-std::string escape(const std::string& text) {
-  std::string out;
-  out.reserve(text.size());
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&apos;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
 }
 
 std::string px(double v) { return fmt::format("{:.2f}", std::clamp(v, -kMaxPixel, kMaxPixel)); }
@@ -136,14 +110,14 @@ void render_panel(std::string& out, const PolarFigure& f, std::size_t index) {
   if (!p.title.empty()) {
     out += fmt::format(
         "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\" font-weight=\"bold\">{}</text>\n", px(l.cx),
-        px(y_title), escape(p.title));
+        px(y_title), io::escape_markup(p.title));
   }
   const std::string axis =
       p.radial_unit.empty() ? p.radial_label : p.radial_label + " [" + p.radial_unit + "]";
   if (!axis.empty()) {
     out += fmt::format(
         "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\" fill=\"#444\">radius: {}</text>\n",
-        px(l.cx), px(y_title + kAxisLabelHeight), escape(axis));
+        px(l.cx), px(y_title + kAxisLabelHeight), io::escape_markup(axis));
   }
 
   // Rings with labels along the 0° spoke, then the spokes with angle labels.
@@ -162,7 +136,8 @@ void render_panel(std::string& out, const PolarFigure& f, std::size_t index) {
   out += "</g>\n<g class=\"ring-labels\" fill=\"#555\">\n";
   for (const double r : l.rings) {
     out += fmt::format("<text x=\"{}\" y=\"{}\" class=\"ring-label\">{}</text>\n", px(l.cx + 3.0),
-                       px(l.cy - r * l.scale - 3.0), escape(format_tick(r, ticks.decimals)));
+                       px(l.cy - r * l.scale - 3.0),
+                       io::escape_markup(format_tick(r, ticks.decimals)));
   }
   out += "</g>\n<g class=\"angle-labels\" text-anchor=\"middle\">\n";
   for (int k = 0; k < n_spokes; ++k) {
@@ -175,7 +150,7 @@ void render_panel(std::string& out, const PolarFigure& f, std::size_t index) {
             ? p.angle_names[k]
             : angle_text(a);
     out += fmt::format("<text x=\"{}\" y=\"{}\" class=\"angle-label\">{}</text>\n", px(x), px(y),
-                       escape(name));
+                       io::escape_markup(name));
   }
   out += "</g>\n";
 
@@ -214,13 +189,13 @@ void render_panel(std::string& out, const PolarFigure& f, std::size_t index) {
       if (run.size() < 2) continue;
       out += fmt::format(
           "<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"{} points=\"{}\"/>\n",
-          escape(color), px(s.width_px), s.dashed ? " stroke-dasharray=\"6,4\"" : "",
+          io::escape_markup(color), px(s.width_px), s.dashed ? " stroke-dasharray=\"6,4\"" : "",
           points_attr(run));
     }
     if (s.markers) {
       for (const Point& q : markers) {
         out += fmt::format("<circle class=\"marker\" cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{}\"/>\n",
-                           px(q.x), px(q.y), px(kMarkerRadius), escape(color));
+                           px(q.x), px(q.y), px(kMarkerRadius), io::escape_markup(color));
       }
     }
     out += "</g>\n";
@@ -240,13 +215,13 @@ void render_panel(std::string& out, const PolarFigure& f, std::size_t index) {
     out += fmt::format(
         "<g class=\"arrow\" stroke=\"{0}\" fill=\"{0}\">\n<line x1=\"{1}\" y1=\"{2}\" x2=\"{3}\" "
         "y2=\"{4}\" stroke-width=\"2.5\"/>\n<polygon points=\"{5}\"/>\n",
-        escape(a.color), px(l.cx), px(l.cy), px(base.x), px(base.y),
+        io::escape_markup(a.color), px(l.cx), px(l.cy), px(base.x), px(base.y),
         points_attr({tip, left, right}));
     if (!a.label.empty()) {
       const double d = len + 12.0;
-      out +=
-          fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\" stroke=\"none\">{}</text>\n",
-                      px(l.cx + d * s), px(l.cy - d * c + kFontSize / 3.0), escape(a.label));
+      out += fmt::format(
+          "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\" stroke=\"none\">{}</text>\n",
+          px(l.cx + d * s), px(l.cy - d * c + kFontSize / 3.0), io::escape_markup(a.label));
     }
     out += "</g>\n";
   }
@@ -261,10 +236,10 @@ void render_panel(std::string& out, const PolarFigure& f, std::size_t index) {
       const std::string color = s.color.empty() ? kPalette[si % kPalette.size()] : s.color;
       out += fmt::format(
           "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{}\" stroke-width=\"2\"{}/>\n",
-          px(x0 + 20.0), px(y), px(x0 + 44.0), px(y), escape(color),
+          px(x0 + 20.0), px(y), px(x0 + 44.0), px(y), io::escape_markup(color),
           s.dashed ? " stroke-dasharray=\"6,4\"" : "");
       out += fmt::format("<text x=\"{}\" y=\"{}\">{}</text>\n", px(x0 + 50.0),
-                         px(y + kFontSize / 3.0), escape(s.label));
+                         px(y + kFontSize / 3.0), io::escape_markup(s.label));
       y += kLegendRow;
     }
     out += "</g>\n";
@@ -330,7 +305,7 @@ std::string render_polar_svg(const PolarFigure& figure) {
     out += fmt::format(
         "<text x=\"{}\" y=\"22\" text-anchor=\"middle\" font-size=\"15\" "
         "font-weight=\"bold\">{}</text>\n",
-        px(0.5 * width), escape(figure.title));
+        px(0.5 * width), io::escape_markup(figure.title));
   }
   for (std::size_t i = 0; i < figure.panels.size(); ++i) render_panel(out, figure, i);
   out += "</svg>\n";

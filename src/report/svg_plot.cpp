@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "dynpos/io/atomic_file.hpp"
+#include "dynpos/io/markup.hpp"
 #include "dynpos/report/axis_ticks.hpp"
 #include "dynpos/report/decimate.hpp"
 
@@ -35,33 +36,6 @@ constexpr std::array<const char*, 8> kPalette = {"#1f77b4", "#d62728", "#2ca02c"
 
 void require(bool ok, const std::string& what) {
   if (!ok) throw std::invalid_argument("Figure: " + what);
-}
-
-std::string escape(const std::string& text) {
-  std::string out;
-  out.reserve(text.size());
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&apos;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
 }
 
 // A pixel coordinate with two decimals, clamped.
@@ -130,7 +104,7 @@ class Writer {
     out_ += fmt::format(
         "<text x=\"{}\" y=\"22\" text-anchor=\"middle\" font-size=\"15\" "
         "font-weight=\"bold\">{}</text>\n",
-        px(figure_.width_px / 2.0), escape(figure_.title));
+        px(figure_.width_px / 2.0), io::escape_markup(figure_.title));
     double top = kFigureTitleHeight;
     for (const Panel& panel : figure_.panels) {
       const auto [x_lo, x_hi] = x_data_range(panel);
@@ -178,7 +152,7 @@ class Writer {
     out_ += fmt::format("<g class=\"panel\" id=\"panel{}\">\n", id);
     out_ +=
         fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\" font-size=\"13\">{}</text>\n",
-                    px((left + right) / 2.0), px(top + 17.0), escape(title));
+                    px((left + right) / 2.0), px(top + 17.0), io::escape_markup(title));
     out_ += fmt::format(
         "<clipPath id=\"clip{}\"><rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/></clipPath>\n",
         id, px(left), px(plot_top), px(right - left), px(bottom - plot_top));
@@ -190,7 +164,7 @@ class Writer {
           "stroke-width=\"1\"/>\n",
           px(xp), px(plot_top), px(bottom));
       out_ += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n", px(xp),
-                          px(bottom + 16.0), escape(format_tick(v, x_ticks.decimals)));
+                          px(bottom + 16.0), io::escape_markup(format_tick(v, x_ticks.decimals)));
     }
     for (const double v : y_ticks.values) {
       const double yp = Y(v);
@@ -199,7 +173,7 @@ class Writer {
           "stroke-width=\"1\"/>\n",
           px(left), px(yp), px(right));
       out_ += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"end\">{}</text>\n", px(left - 6.0),
-                          px(yp + 4.0), escape(format_tick(v, y_ticks.decimals)));
+                          px(yp + 4.0), io::escape_markup(format_tick(v, y_ticks.decimals)));
     }
     // Zoom band.
     if (is_main && panel.zoom) {
@@ -252,7 +226,7 @@ class Writer {
       out_ += fmt::format(
           "<path class=\"series\" clip-path=\"url(#clip{})\" fill=\"none\" stroke=\"{}\" "
           "stroke-width=\"{}\" stroke-linejoin=\"round\" stroke-linecap=\"round\"{} d=\"{}\"/>\n",
-          id, escape(color), fmt::format("{:.2f}", s.width_px),
+          id, io::escape_markup(color), fmt::format("{:.2f}", s.width_px),
           s.dashed ? " stroke-dasharray=\"6,4\"" : "", d);
     }
     // Frame and axis labels.
@@ -261,12 +235,13 @@ class Writer {
         "stroke-width=\"1\"/>\n",
         px(left), px(plot_top), px(right - left), px(bottom - plot_top));
     out_ += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n",
-                        px((left + right) / 2.0), px(bottom + 34.0), escape(panel.x_axis.text()));
+                        px((left + right) / 2.0), px(bottom + 34.0),
+                        io::escape_markup(panel.x_axis.text()));
     const double y_mid = (plot_top + bottom) / 2.0;
     out_ += fmt::format(
         "<text x=\"{0}\" y=\"{1}\" text-anchor=\"middle\" transform=\"rotate(-90 {0} {1})\">{2}"
         "</text>\n",
-        px(left - 56.0), px(y_mid), escape(y_axis.text()));
+        px(left - 56.0), px(y_mid), io::escape_markup(y_axis.text()));
     // Legend, top right inside the plot area.
     if (panel.legend && !legend.empty()) {
       std::size_t longest = 0;
@@ -284,10 +259,10 @@ class Writer {
         const Series& s = *legend[k].second;
         out_ += fmt::format(
             "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{}\" stroke-width=\"2\"{}/>\n",
-            px(x0 + 6.0), px(yk - 4.0), px(x0 + 26.0), px(yk - 4.0), escape(legend[k].first),
-            s.dashed ? " stroke-dasharray=\"6,4\"" : "");
+            px(x0 + 6.0), px(yk - 4.0), px(x0 + 26.0), px(yk - 4.0),
+            io::escape_markup(legend[k].first), s.dashed ? " stroke-dasharray=\"6,4\"" : "");
         out_ += fmt::format("<text x=\"{}\" y=\"{}\">{}</text>\n", px(x0 + 31.0), px(yk),
-                            escape(s.label));
+                            io::escape_markup(s.label));
       }
       out_ += "</g>\n";
     }

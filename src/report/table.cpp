@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "dynpos/io/markup.hpp"
+
 namespace dynpos::report {
 namespace {
 
@@ -10,29 +12,6 @@ std::size_t display_width(const std::string& s) {
   // Code points: every byte that is not a UTF-8 continuation byte.
   return static_cast<std::size_t>(
       std::count_if(s.begin(), s.end(), [](char c) { return (c & 0xC0) != 0x80; }));
-}
-
-std::string escape_html(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
 }
 
 std::string escape_markdown(const std::string& s) {
@@ -114,7 +93,7 @@ std::string render_html(const Table& t) {
   std::string out = "<table>\n<thead><tr>";
   for (const auto& h : t.header) {
     out += "<th>";
-    out += escape_html(h);
+    out += io::escape_markup(h);
     out += "</th>";
   }
   out += "</tr></thead>\n<tbody>\n";
@@ -122,7 +101,7 @@ std::string render_html(const Table& t) {
     out += "<tr>";
     for (std::size_t c = 0; c < row.size(); ++c) {
       out += c >= t.first_numeric_column ? "<td style=\"text-align:right\">" : "<td>";
-      out += escape_html(row[c]);
+      out += io::escape_markup(row[c]);
       out += "</td>";
     }
     out += "</tr>\n";

@@ -10,6 +10,7 @@
 #include "dynpos/io/atomic_file.hpp"
 #include "dynpos/io/csv_writer.hpp"
 #include "dynpos/io/json_writer.hpp"
+#include "dynpos/io/markup.hpp"
 #include "dynpos/io/nmea.hpp"
 #include "dynpos/io/nmea_writer.hpp"
 #include "dynpos/scenario/runner.hpp"
@@ -78,34 +79,11 @@ std::string markdown_table(const std::vector<RunSummary>& runs) {
   return md;
 }
 
-std::string html_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '&':
-        out += "&amp;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
 std::string html_page(const std::vector<RunSummary>& runs, const VesselConfig& vessel,
                       std::uint64_t master_seed, const std::vector<ReportSection>& sections) {
   std::string extra;
   for (const ReportSection& sec : sections) {
-    extra += "<h2>" + html_escape(sec.title) + "</h2>\n" + sec.html + "\n";
+    extra += "<h2>" + io::escape_markup(sec.title) + "</h2>\n" + sec.html + "\n";
   }
   std::string rows;
   for (const RunSummary& s : runs) {
@@ -113,7 +91,7 @@ std::string html_page(const std::vector<RunSummary>& runs, const VesselConfig& v
         "<tr><td><a href=\"{0}/log.csv\">{0}</a></td><td>{1}</td><td>{2:.0f}</td><td>{3}</td>"
         "<td>{4:.2f}</td><td>{5:.2f}</td><td>{6:.0f}</td><td>{7:.0f}</td>"
         "<td><a href=\"{0}/truth.json\">truth</a></td></tr>\n",
-        html_escape(s.name), html_escape(s.description), s.duration_s, s.rows,
+        io::escape_markup(s.name), io::escape_markup(s.description), s.duration_s, s.rows,
         s.max_speed_mps * 3600.0 / 1852.0, s.max_yaw_rate_dps, s.distance_m, s.energy_kJ);
   }
   return fmt::format(
@@ -129,7 +107,7 @@ std::string html_page(const std::vector<RunSummary>& runs, const VesselConfig& v
       "<th>what</th><th>duration [s]</th><th>rows</th><th>max speed [kn]</th>"
       "<th>max yaw rate [deg/s]</th><th>track [m]</th><th>energy [kJ]</th><th></th></tr>\n{2}"
       "</table>\n{3}</body></html>\n",
-      html_escape(vessel.name), master_seed, rows, extra);
+      io::escape_markup(vessel.name), master_seed, rows, extra);
 }
 
 void write_text(const std::filesystem::path& path, const std::string& text) {
