@@ -198,8 +198,11 @@ StepDetection detect_steps(std::span<const double> t, std::span<const double> u,
         }
       }
     }
-    // The plateau may begin on the last ±2h of the previous ramp; the window starts after it.
-    if (!out.steps.empty()) step.t_begin = std::max(step.t_begin, out.steps.back().t_ramp_end);
+    // The plateau may begin on the last ±2h of the previous ramp; the window starts after it,
+    // but never after this step (a slow drift can end the previous ramp late).
+    if (!out.steps.empty()) {
+      step.t_begin = std::min(std::max(step.t_begin, out.steps.back().t_ramp_end), step.t_step);
+    }
     out.steps.push_back(step);
   }
   // Each window runs to the last log sample before the next step, the last one to the end.

@@ -33,6 +33,8 @@ void ThrustAllocationOptions::validate() const {
           "finite and > 0 N*m");
   require(detail::open_range(max_rudder_angle, 0.0, detail::kPi / 2), o, "max_rudder_angle",
           max_rudder_angle, "in (0, pi/2) rad");
+  require(detail::closed_range(rudder_drag_compensation, 0.0, 1.0), o, "rudder_drag_compensation",
+          rudder_drag_compensation, "in [0, 1]");
 }
 
 ThrustAllocator::ThrustAllocator(const Thruster& propeller, const Rudder& rudder,
@@ -63,6 +65,62 @@ std::array<Vector5d, 2> ThrustAllocator::bounds(double surge_speed) const noexce
 }
 
 ThrustAllocationResult ThrustAllocator::allocate(const ThrustAllocationInput& input) const {
+  ThrustAllocationResult result = solve(input);
+  if (result.status == AllocationStatus::kInvalidInput ||
+      options_.rudder_drag_compensation <= 0.0) {
+    return result;
+  }
+  // Fixed point on the rudder drag (file comment): solve for τ_d − τ_drag(f) until the drag
+  // settles to the allocation's own tolerance (1e-6 of the force and moment scales). Each pass
+  // scales the change by about C_D/C_L ≤ 0.3, so a few passes suffice; 20 is a safe cap.
+  constexpr int kMaxPasses = 20;
+  const double tol_force = 1e-6 * options_.force_scale;
+  const double tol_moment = 1e-6 * options_.moment_scale;
+  Eigen::Vector3d drag = rudder_drag(result);
+  int iterations = result.iterations;
+  for (int pass = 0; pass < kMaxPasses; ++pass) {
+    ThrustAllocationInput corrected = input;
+    corrected.tau_d_b = input.tau_d_b - drag;
+    result = solve(corrected);
+    iterations += result.iterations;
+    const Eigen::Vector3d next = rudder_drag(result);
+    const bool settled = std::abs(next.x() - drag.x()) <= 0.5 * tol_force &&
+                         std::abs(next.z() - drag.z()) <= 0.5 * tol_moment;
+    drag = next;
+    if (settled) break;
+  }
+  result.iterations = iterations;
+  result.tau_rudder_drag_b = drag;
+  result.tau_achieved_b = configuration_.matrix() * result.forces + drag;
+  result.tau_unmet_b = input.tau_d_b - result.tau_achieved_b;
+  const bool met = std::abs(result.tau_unmet_b[0]) <= tol_force &&
+                   std::abs(result.tau_unmet_b[1]) <= tol_force &&
+                   std::abs(result.tau_unmet_b[2]) <= tol_moment;
+  result.status = met ? AllocationStatus::kOk : AllocationStatus::kSaturated;
+  result.message =
+      met ? std::string{} : "demand not attainable within actuator limits; see tau_unmet_b";
+  return result;
+}
+
+Eigen::Vector3d ThrustAllocator::rudder_drag(const ThrustAllocationResult& r) const {
+  // The drag the deflection adds in the propeller's slipstream at zero ship speed: at DP and
+  // joystick speeds (< 1 m/s) the slipstream (3–6 m/s) dominates the inflow, and a prediction
+  // that does not follow the ship's speed keeps a joystick step a step. The profile drag at
+  // zero angle is left out: it is part of the hull's resistance as the surge steps see it.
+  // The surge component of the rudder force is its drag; its moment is −y·D_x (2.37).
+  const auto induced = [&](double angle, double thrust) {
+    return rudder_.force(angle, {0.0, 0.0, thrust}).f_b.x() -
+           rudder_.force(0.0, {0.0, 0.0, thrust}).f_b.x();
+  };
+  const double dx_port = induced(r.rudder_port, r.forces[0]);
+  const double dx_stb = induced(r.rudder_stb, r.forces[1]);
+  const ThrustConfigurationParams& p = configuration_.params();
+  const double c = options_.rudder_drag_compensation;
+  return c * Eigen::Vector3d(dx_port + dx_stb, 0.0,
+                             -p.p_port_rudder_b.y() * dx_port - p.p_stb_rudder_b.y() * dx_stb);
+}
+
+ThrustAllocationResult ThrustAllocator::solve(const ThrustAllocationInput& input) const {
   ThrustAllocationResult result;
   if (!input.tau_d_b.allFinite() || !std::isfinite(input.surge_speed) || !std::isfinite(input.dt) ||
       !input.previous_forces.allFinite()) {

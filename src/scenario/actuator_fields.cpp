@@ -100,6 +100,7 @@ std::vector<ParamField> allocation_fields(model::ThrustAllocationOptions& p) {
       {"rate_rudder_port_N_per_s", &p.rate_limits[2], 1, 1e8},
       {"rate_rudder_stb_N_per_s", &p.rate_limits[3], 1, 1e8},
       {"rate_tunnel_N_per_s", &p.rate_limits[4], 1, 1e8},
+      {"rudder_drag_compensation", &p.rudder_drag_compensation, 0, 1},
   };
 }
 

@@ -288,6 +288,7 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
       if (pct == demand_pct.z()) heading_integral_Nm += ki_heading * psi_err / js.control_rate_hz;
     }
     model::ThrustAllocationInput in;
+    std::optional<Eigen::Vector3d> dp_x2;  // x₂ of this DP step, for the integral action
     in.tau_d_b = {demand_pct.x() / 100.0 * js.max_surge_N, demand_pct.y() / 100.0 * js.max_sway_N,
                   demand_pct.z() / 100.0 * js.max_yaw_Nm};
     if (dp_mode) {
@@ -310,7 +311,7 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
         const double dt_control = 1.0 / js.control_rate_hz;
         reference.step(setpoint, dt_control);
         const control::DpCommand cmd_dp = dp.control(eta, nu, reference.reference(), bias_hat);
-        bias_hat = dp.advance_bias(bias_hat, eta.z(), cmd_dp.x2, dt_control);
+        dp_x2 = cmd_dp.x2;
         in.tau_d_b = cmd_dp.tau_b;
         if (spec.hybrid_integral) {
           // Hybrid integral action, practical rule (5.64)–(5.67): ẋ₂ from the last two control
@@ -338,6 +339,13 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
     }
     in.surge_speed = c.state()[Plant::kHull + Hull::kSurge];
     const model::ThrustAllocationResult a = allocator.allocate(in);
+    if (dp_x2 && a.status == model::AllocationStatus::kOk) {
+      // Integral action (5.36) with conditional integration: frozen while the allocation
+      // cannot meet τ_d, so saturated thrust (a large setpoint change, a squall) does not wind
+      // up the bias estimate.
+      bias_hat = dp.advance_bias(bias_hat, c.state()[Plant::kHull + Hull::kYaw], *dp_x2,
+                                 1.0 / js.control_rate_hz);
+    }
     const Commands before = cmd;
     cmd = {a.n_port, a.n_stb, a.rudder_port, a.rudder_stb, a.n_tunnel};
     thrust_command = {a.forces[0], a.forces[1], a.forces[4]};

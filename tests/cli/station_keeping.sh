@@ -17,12 +17,15 @@ for key in position_std_m heading_deg wind_speed_mps wind_dir_deg thrust_kN ener
   jq -e ".windows[0] | has(\"$key\")" "$out/log.json" > /dev/null || { echo "no $key"; exit 1; }
 done
 # Logger vs truth, per window:
-# - total energy within 1 % and total mean thrust within 1 %: the logger adds 1 kW / 0.2 rpm
-#   white noise (averages out) and samples the tunnel at 1 Hz instead of 10 Hz;
+# - total energy within 1 % plus 5 % of the tunnel's share, and total mean thrust within 1 %: the
+#   logger adds 1 kW / 0.2 rpm white noise (averages out) and samples the tunnel at 1 Hz instead
+#   of 10 Hz, while the tunnel's power follows the DP demand within seconds (3 % measured on the
+#   tunnel's energy in a light-weather window, where it is a third of the total);
 # - heading mean within 0.3° and std within 0.15°: gyro noise 0.1° white on a ~1° spread.
 jq -e -n --slurpfile a "$out/log.json" --slurpfile b "$out/truth.json" '
   [range(0; $a[0].windows | length) as $i | $a[0].windows[$i] as $l | $b[0].windows[$i] as $t |
-   (($l.energy_kJ.total / $t.energy_kJ.total - 1) | fabs) < 0.01 and
+   (($l.energy_kJ.total - $t.energy_kJ.total) | fabs) <
+     0.01 * $t.energy_kJ.total + 0.05 * $t.energy_kJ.tunnel and
    (($l.thrust_kN.total / $t.thrust_kN.total - 1) | fabs) < 0.01 and
    (($l.heading_deg.mean - $t.heading_deg.mean) | fabs) < 0.3 and
    (($l.heading_deg.std - $t.heading_deg.std) | fabs) < 0.15] | all' > /dev/null \

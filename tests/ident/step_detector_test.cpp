@@ -110,6 +110,25 @@ TEST(StepDetector, ExactOnANoiseFreeCommand) {
   EXPECT_EQ(found.noise_sigma, 0.0);
 }
 
+TEST(StepDetector, WindowsContainTheirStepOnADriftingCommand) {
+  // A noise-free command that creeps after its step (an allocation re-solving as the vessel
+  // gathers way): the band is round-off, so the creep may be cut into small steps whose ramps
+  // meet. Every window must still begin at or before its step and end after it, or the fit
+  // rejects the step with "step time not inside the window".
+  const std::vector<double> t = time_axis(0.0, 0.1, 1001);
+  const std::vector<double> u = sample(t, [](double x) {
+    if (x < 20.0) return 0.0;
+    return x < 38.0 ? 40.0 : 40.0 + 2e-4 * (x - 38.0) * (x - 38.0);
+  });
+  const StepDetection found = detect_steps(t, u);
+  ASSERT_GE(found.steps.size(), 2u);
+  EXPECT_NEAR(found.steps.front().t_step, 20.0, 0.1);
+  for (const Step& s : found.steps) {
+    EXPECT_LE(s.t_begin, s.t_step);
+    EXPECT_LT(s.t_step, s.t_end);
+  }
+}
+
 TEST(StepDetector, TriggerGivesTheOnsetOfAFirstOrderResponse) {
   // Power feedback with no command logged: P = 100 kW + 400 kW·(1 − e^{−(t − 30)/τ}), τ = 1 s,
   // noise σ = 2 kW, 50 Hz. The onset line through the samples up to 30 % of the change is

@@ -39,8 +39,15 @@ void expect_within_limits(const ThrustAllocator& alloc, const ThrustAllocationRe
   EXPECT_LE(std::abs(r.rudder_stb), alloc.options().max_rudder_angle + 1e-12);
 }
 
+// The linear allocation alone (rudder drag not compensated): τ_achieved = B·f exactly.
+ThrustAllocator linear_allocator() {
+  ThrustAllocationOptions o;
+  o.rudder_drag_compensation = 0.0;
+  return ThrustAllocator(Thruster{}, Rudder{}, TunnelThruster{}, ThrustConfiguration{}, o);
+}
+
 TEST(ThrustAllocator, FeasibleDemandIsMetExactly) {
-  const ThrustAllocator alloc;
+  const ThrustAllocator alloc = linear_allocator();
   for (const ThrustAllocationInput& in : {demand(20e3, 5e3, 50e3), demand(-10e3, -3e3, -20e3),
                                           demand(30e3, 0, 0, 2.0), demand(5e3, 8e3, 60e3, 1.0)}) {
     const ThrustAllocationResult r = alloc.allocate(in);
@@ -54,6 +61,47 @@ TEST(ThrustAllocator, FeasibleDemandIsMetExactly) {
     EXPECT_TRUE(r.tau_achieved_b.isApprox(alloc.configuration().matrix() * r.forces));
     expect_within_limits(alloc, r, in.surge_speed);
   }
+}
+
+TEST(ThrustAllocator, RudderDragIsCompensated) {
+  const ThrustAllocator alloc;  // default: rudder_drag_compensation = 1
+  const ThrustAllocator linear = linear_allocator();
+  const Rudder rudder;
+  const double force_tol = 1e-6 * alloc.options().force_scale;  // the allocation's "met"
+  const double moment_tol = 1e-6 * alloc.options().moment_scale;
+  for (const ThrustAllocationInput& in :
+       {demand(0.0, 15e3, 0.0), demand(5e3, 8e3, 60e3), demand(20e3, -6e3, -40e3, 1.0)}) {
+    SCOPED_TRACE(in.tau_d_b.transpose());
+    const ThrustAllocationResult r = alloc.allocate(in);
+    ASSERT_EQ(r.status, AllocationStatus::kOk) << r.message;
+    // The prediction is the rudder model's added drag in the slipstream at zero speed.
+    const auto added = [&](double angle, double thrust) {
+      return rudder.force(angle, {0.0, 0.0, thrust}).f_b.x() -
+             rudder.force(0.0, {0.0, 0.0, thrust}).f_b.x();
+    };
+    const double dx = added(r.rudder_port, r.forces[kT1]) + added(r.rudder_stb, r.forces[kT2]);
+    EXPECT_NEAR(r.tau_rudder_drag_b.x(), dx, 1e-9 * std::max(1.0, std::abs(dx)));
+    // Deflected rudders: drag astern, far above the 0.1 N tolerance (so the checks below bite).
+    EXPECT_LT(r.tau_rudder_drag_b.x(), -50.0);
+    EXPECT_EQ(r.tau_rudder_drag_b.y(), 0.0);
+    // Forces plus drag meet the demand within the allocation's tolerance.
+    const Eigen::Vector3d total = alloc.configuration().matrix() * r.forces + r.tau_rudder_drag_b;
+    EXPECT_TRUE(total.isApprox(r.tau_achieved_b, 1e-12));
+    EXPECT_LE(std::abs(r.tau_unmet_b.x()), force_tol);
+    EXPECT_LE(std::abs(r.tau_unmet_b.y()), force_tol);
+    EXPECT_LE(std::abs(r.tau_unmet_b.z()), moment_tol);
+    // Without compensation the same demand leaves the drag as an unmet surge force.
+    const ThrustAllocationResult r0 = linear.allocate(in);
+    const Eigen::Vector3d with_drag =
+        alloc.configuration().matrix() * r0.forces +
+        Eigen::Vector3d(
+            added(r0.rudder_port, r0.forces[kT1]) + added(r0.rudder_stb, r0.forces[kT2]), 0.0, 0.0);
+    EXPECT_GT(std::abs(in.tau_d_b.x() - with_drag.x()), 50.0);
+  }
+  // Rudders amidships add no drag: a pure surge demand is unchanged by the compensation.
+  const ThrustAllocationResult ahead = alloc.allocate(demand(30e3, 0.0, 0.0));
+  EXPECT_EQ(ahead.tau_rudder_drag_b, Eigen::Vector3d::Zero());
+  EXPECT_EQ(ahead.forces, linear.allocate(demand(30e3, 0.0, 0.0)).forces);
 }
 
 TEST(ThrustAllocator, InfeasibleDemandReportsTheUnmetPart) {

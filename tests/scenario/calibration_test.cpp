@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <span>
 
@@ -91,7 +93,7 @@ TEST(Calibration, SwayStepsHoldHeadingAndGrowWithTheStep) {
   // Joystick sway steps with auto heading (thesis 3.5, tables 3.27–3.30). What holds: the
   // heading stays within a few degrees, and the through-water sway speed at the end of each
   // step is to starboard and grows with the step. The total-speed time constants (3.19) are
-  // longer than the thesis' 9–19 s (docs/virtual-gunnerus.md); they are printed, not checked.
+  // checked over several seeds in SwayTotalSpeedTimeConstantsInThesisRange.
   const ScenarioSpec spec = load_scenario(kScenarios / "sway-steps-starboard.toml");
   ASSERT_TRUE(spec.heading_hold);
   const ScenarioRun run = run_scenario(spec, VesselConfig{}, 1);
@@ -130,6 +132,51 @@ TEST(Calibration, SwayStepsHoldHeadingAndGrowWithTheStep) {
     EXPECT_GT(v_end, previous) << "step " << cmds[k]["sway_pct"];
     previous = v_end;
   }
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+TEST(Calibration, SwayTotalSpeedTimeConstantsInThesisRange) {
+  // Tables 3.28 and 3.30: total speed (3.19) T = 9–19 s for 0–25 … 0–100 % sway steps, larger
+  // steps faster; the thesis calls the values of "lower quality" (surge drift, no clear steady
+  // state). One run is at the mercy of the current and gusts: a 25 % step to starboard first
+  // stops the vessel's drift with the current (0.2 m/s), so its total speed dips before it
+  // rises. Checked: over seeds 1–3 and both sides, the median T of the 0–50 % … 0–100 % steps
+  // lies in 9–19 s. Not reproduced, so not checked: "larger steps faster" (the medians at 50 %
+  // and 100 % are within the seed-to-seed scatter of each other; docs/virtual-gunnerus.md).
+  std::vector<double> t_all, t_50, t_100;
+  for (const char* name : {"sway-steps-starboard.toml", "sway-steps-port.toml"}) {
+    const ScenarioSpec spec = load_scenario(kScenarios / name);
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+      const ScenarioRun run = run_scenario(spec, VesselConfig{}, seed);
+      const core::Log& log = run.truth_log;
+      std::vector<double> total(log.size());
+      for (std::size_t i = 0; i < log.size(); ++i) {
+        total[i] = std::hypot(log.values("u")[i], log.values("v")[i]);  // (3.19)
+      }
+      const auto& js = spec.joystick;
+      for (std::size_t k = 0; k + 1 < js.size(); ++k) {
+        const double from = k == 0 ? 0.0 : std::abs(js[k - 1].sway_pct);
+        const double to = std::abs(js[k].sway_pct);
+        if (from != 0.0 || to < 50.0) continue;
+        const model::FopdtTruth f = fit_step(log, total, js[k].t_s, js[k + 1].t_s);
+        std::printf("%s seed %llu, 0-%.0f %%: total speed T %.1f s, delay %.1f s\n", name,
+                    static_cast<unsigned long long>(seed), to, f.time_constant, f.dead_time);
+        t_all.push_back(f.time_constant);
+        if (to == 50.0) t_50.push_back(f.time_constant);
+        if (to == 100.0) t_100.push_back(f.time_constant);
+      }
+    }
+  }
+  ASSERT_EQ(t_all.size(), 15u);  // (3 + 2 steps) × 3 seeds: 0–75 % is run to starboard only
+  const double m = median(t_all);
+  std::printf("median T %.1f s (50 %%: %.1f s, 100 %%: %.1f s)\n", m, median(t_50), median(t_100));
+  EXPECT_GE(m, 9.0);
+  EXPECT_LE(m, 19.0);
 }
 
 TEST(Calibration, ThrustMapBackCalculatesTable32) {
@@ -211,6 +258,21 @@ TEST(Calibration, PureDpPositionAndHeadingSpreadInHs2) {
     EXPECT_GT(std_pos, 0.2) << sp.name;
     EXPECT_LT(std_pos, 1.5) << sp.name;
     EXPECT_LT(std_psi_deg, 3.0) << sp.name;
+    // Mean thrust, the sum of the thrusters' mean |T|: tables 3.14–3.22 give 2–45 kN in total.
+    double thrust_sum = 0.0;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < run.truth_log.size(); ++i) {
+      if (run.truth_log.time()[i] < t0 || run.truth_log.time()[i] >= t1) continue;
+      for (const char* c : {"thrust.port", "thrust.stb", "thrust.tunnel"}) {
+        thrust_sum += std::abs(run.truth_log.values(c)[i]);
+      }
+      ++n;
+    }
+    const double mean_thrust_kN = thrust_sum / static_cast<double>(n) / 1e3;
+    std::printf("pure DP %s: position std %.2f m, heading std %.2f deg, mean thrust %.1f kN\n",
+                sp.name.c_str(), std_pos, std_psi_deg, mean_thrust_kN);
+    EXPECT_GT(mean_thrust_kN, 1.0) << sp.name;
+    EXPECT_LT(mean_thrust_kN, 45.0) << sp.name;
   }
 }
 
@@ -224,15 +286,16 @@ TEST(Calibration, FourCornerCompletesEveryLeg) {
     ASSERT_TRUE(legs[i].contains("t_reached_s")) << legs[i]["name"];
     const double duration =
         legs[i]["t_reached_s"].get<double>() - legs[i]["t_start_s"].get<double>();
-    // Tables 3.6–3.10: 85–214 s per 50 m leg; we allow up to 300 s for the leg with the
-    // 90° heading change, which the thesis' fastest runs did in ≈ 200 s.
+    // Tables 3.6–3.10: 85–214 s per 50 m leg.
     EXPECT_GT(duration, 85.0) << legs[i]["name"];
-    EXPECT_LT(duration, 300.0) << legs[i]["name"];
+    EXPECT_LT(duration, 214.0) << legs[i]["name"];
     total += duration;
   }
-  // Thesis total 545–624 s; ours within 450–900 s.
-  EXPECT_GT(total, 450.0);
-  EXPECT_LT(total, 900.0);
+  // Thesis total 545–624 s. This run (seed 1) gives 600 s; seeds 1–5 give 600–686 s, as one
+  // leg in two runs needs 210–215 s to settle its heading within 2°, so the upper bound is the
+  // thesis' 624 s plus 10 % for the weather of one run.
+  EXPECT_GT(total, 545.0);
+  EXPECT_LT(total, 1.1 * 624.0);
 }
 
 }  // namespace

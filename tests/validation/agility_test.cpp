@@ -117,9 +117,11 @@ TEST(AgilityValidation, ResponseTimesMatchTheNoiseFreeTruth) {
   const ident::AgilityResult t = ident::analyse_agility(truth.time(), windows, ch_true, speed_true);
   ASSERT_EQ(t.steps.size(), r.steps.size());
 
-  // Tolerances from the sampling of the logged channels (the thrust noise is far below the
-  // change, so it moves a crossing by well under one sample):
-  //  - propellers at 10 Hz: linear interpolation between samples 0.1 s apart, one sample, 0.1 s;
+  // Tolerances from the sampling and the noise of the logged channels:
+  //  - propellers at 10 Hz: linear interpolation between samples 0.1 s apart, one sample, 0.1 s,
+  //    plus 3σ/slope for the feedback noise σ (logged minus true thrust over the log) where the
+  //    crossing falls on a slow part of the response (a joystick demand held while the vessel
+  //    gathers way re-allocates slowly, so some responses creep to their level);
   //  - the tunnel at 1 Hz (as in the thesis): the chord between samples 1 s apart and the phase
   //    of the 1 Hz grid relative to the step, one sample, 1.0 s;
   //  - the speed log at 1 Hz with σ = 0.02 m/s noise and 0.01 m/s steps: the crossing is read
@@ -127,6 +129,23 @@ TEST(AgilityValidation, ResponseTimesMatchTheNoiseFreeTruth) {
   //    speed at the crossing; the vessel is slow (the speed is still rising at the end of the
   //    40 s step), so this is seconds. Tolerance max(1 s, 3σ/slope), the slope taken from the
   //    true speed ±1 s around its crossing.
+  // Feedback noise of each logged thrust [kN]: RMS of logged minus true over the whole log.
+  std::vector<double> feedback_sigma(kThrusters.size(), 0.0);
+  for (std::size_t j = 0; j < kThrusters.size(); ++j) {
+    if (kThrusters[j] == "tunnel") continue;
+    const std::vector<double>& y = log.values("thrust." + kThrusters[j]);
+    const std::vector<double>& y_true = truth.values("thrust." + kThrusters[j]);
+    double sum2 = 0.0;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < y.size(); ++i) {
+      if (std::isnan(y[i]) || log.time()[i] <= truth.time().front()) continue;
+      const double e = y[i] - interpolate(truth.time(), y_true, log.time()[i]);
+      sum2 += e * e;
+      ++n;
+    }
+    ASSERT_GT(n, 0u);
+    feedback_sigma[j] = std::sqrt(sum2 / static_cast<double>(n));
+  }
   int compared = 0, nulls = 0, speeds = 0;
   double max_prop = 0.0, max_tunnel = 0.0, max_speed = 0.0;  // largest deviations [s]
   for (std::size_t k = 0; k < r.steps.size(); ++k) {
@@ -134,7 +153,14 @@ TEST(AgilityValidation, ResponseTimesMatchTheNoiseFreeTruth) {
     for (std::size_t j = 0; j < kThrusters.size(); ++j) {
       const auto& got = s.thrusters[j].response_s;
       const auto& want = t.steps[k].thrusters[j].response_s;
-      const double tol = kThrusters[j] == "tunnel" ? 1.0 : 0.1;
+      double tol = 1.0;  // tunnel
+      if (kThrusters[j] != "tunnel") {
+        const std::vector<double>& y_true = truth.values("thrust." + kThrusters[j]);
+        const double tc = s.t_step + *want;
+        const double slope = std::abs(interpolate(truth.time(), y_true, tc + 0.5) -
+                                      interpolate(truth.time(), y_true, tc - 0.5));
+        tol = 0.1 + 3.0 * feedback_sigma[j] / slope;
+      }
       if (!got || !want) {
         // "No response" must agree, except for a change right at the 5 % threshold.
         EXPECT_EQ(got.has_value(), want.has_value())

@@ -21,8 +21,17 @@
 /// τ_d is attainable without any bound active this is the exact constrained optimum; with active
 /// bounds it is the usual near-optimal heuristic of DP practice (not a full QP), deterministic and
 /// allocation-free. The rudder cone is exact for the rudder model: its side force in the linear
-/// region is linear in T⁺ (rudder.hpp). Rudder drag is left out of B; it shows up in the vessel as
-/// an unmodelled surge force that the DP controller's integral action removes.
+/// region is linear in T⁺ (rudder.hpp).
+///
+/// Rudder drag is not linear in f and is left out of B. With rudder_drag_compensation > 0 the
+/// allocation accounts for it by a fixed point: it predicts the drag the deflection of the
+/// allocated rudders adds in their propellers' slipstream (the rudder model at zero ship speed;
+/// surge force D_x,i and its moment −y_i·D_x,i, from (2.37)), solves again for τ_d − τ_drag, and
+/// repeats until the prediction changes by less than half the tolerance of "met" (1e-6 of the
+/// force and moment scales). The drag is small beside the lift (C_D/C_L ≈ 0.2–0.3 at 30°), so a
+/// few passes converge. Without it, a joystick sway demand met with rudder lift leaves ≈ 13 % of
+/// the sway force as an unmet astern force and the vessel drifts astern (thesis section 3.5:
+/// sway steps).
 ///
 /// Shaft speeds come from the inverse bollard maps (3.17), rudder angles from the inverse
 /// linear lift at the commanded thrust, the tunnel shaft speed from its map including the
@@ -60,6 +69,10 @@ struct ThrustAllocationOptions {
   /// reference rate 0.3 rps/s), ≈ 4 s for the tunnel thruster; rudder force from 0 to full
   /// in ≈ 5 s (servo 6.3°/s over 30°).
   Eigen::Matrix<double, 5, 1> rate_limits{7.5e3, 7.5e3, 8.0e3, 8.0e3, 6.0e3};
+  /// Fraction of the predicted rudder drag the allocation compensates [-], in [0, 1]; 0 leaves
+  /// drag out (τ_achieved = B·f). Source: reasoned — 1, the rudder model is the plant's own;
+  /// calibrated against the sway steps (tables 3.28, 3.30), whose surge drift it removes.
+  double rudder_drag_compensation = 1.0;
 
   void validate() const;
 };
@@ -89,8 +102,12 @@ struct ThrustAllocationResult {
   std::string message;  ///< empty when kOk; otherwise what happened
   /// Allocated forces f = (T₁, T₂, Y₁, Y₂, T₃) [N].
   Eigen::Matrix<double, 5, 1> forces = Eigen::Matrix<double, 5, 1>::Zero();
-  Eigen::Vector3d tau_achieved_b = Eigen::Vector3d::Zero();  ///< B·f
-  Eigen::Vector3d tau_unmet_b = Eigen::Vector3d::Zero();     ///< τ_d − B·f
+  /// B·f plus the predicted rudder drag tau_rudder_drag_b.
+  Eigen::Vector3d tau_achieved_b = Eigen::Vector3d::Zero();
+  /// Rudder drag (X [N], 0, N [N·m]) the allocation predicts at its commands and compensates;
+  /// zero when rudder_drag_compensation is 0.
+  Eigen::Vector3d tau_rudder_drag_b = Eigen::Vector3d::Zero();
+  Eigen::Vector3d tau_unmet_b = Eigen::Vector3d::Zero();  ///< τ_d − B·f
   /// Which variable ended at a bound (box, cone or rate), in the order of f.
   std::array<bool, 5> saturated{};
   double n_port = 0.0;         ///< port propeller shaft speed command [rps]
@@ -121,6 +138,12 @@ class ThrustAllocator {
   const ThrustAllocationOptions& options() const noexcept { return options_; }
 
  private:
+  // One allocation of τ_d without rudder drag: τ_achieved = B·f.
+  ThrustAllocationResult solve(const ThrustAllocationInput& input) const;
+  // The rudder drag (X, 0, N) the rudder model predicts for the commands of r, scaled by the
+  // compensation fraction.
+  Eigen::Vector3d rudder_drag(const ThrustAllocationResult& r) const;
+
   Thruster propeller_;
   Rudder rudder_;
   TunnelThruster tunnel_;
