@@ -71,35 +71,45 @@ ThrustAllocationResult ThrustAllocator::allocate(const ThrustAllocationInput& in
     return result;
   }
   // Fixed point on the rudder drag (file comment): solve for τ_d − τ_drag(f) until the drag
-  // settles to the allocation's own tolerance (1e-6 of the force and moment scales). Each pass
-  // scales the change by about C_D/C_L ≤ 0.3, so a few passes suffice; 20 is a safe cap.
+  // predicted at the commands settles to half the tolerance of "met" (1e-6 of the force and
+  // moment scales). Each pass scales the change by about C_D/C_L ≤ 0.3, so a few passes
+  // suffice; 20 is a safe cap. Without rudder deflection the first solve already settles.
   constexpr int kMaxPasses = 20;
   const double tol_force = 1e-6 * options_.force_scale;
   const double tol_moment = 1e-6 * options_.moment_scale;
-  Eigen::Vector3d drag = rudder_drag(result);
+  ThrustAllocationInput corrected = input;
+  Eigen::Vector3d drag = Eigen::Vector3d::Zero();   // the drag `result` was solved for
+  Eigen::Vector3d predicted = rudder_drag(result);  // the drag at the commands of `result`
   int iterations = result.iterations;
   for (int pass = 0; pass < kMaxPasses; ++pass) {
-    ThrustAllocationInput corrected = input;
+    const bool settled = std::abs(predicted.x() - drag.x()) <= 0.5 * tol_force &&
+                         std::abs(predicted.z() - drag.z()) <= 0.5 * tol_moment;
+    if (settled) break;
+    drag = predicted;
     corrected.tau_d_b = input.tau_d_b - drag;
     result = solve(corrected);
     iterations += result.iterations;
-    const Eigen::Vector3d next = rudder_drag(result);
-    const bool settled = std::abs(next.x() - drag.x()) <= 0.5 * tol_force &&
-                         std::abs(next.z() - drag.z()) <= 0.5 * tol_moment;
-    drag = next;
-    if (settled) break;
+    predicted = rudder_drag(result);
   }
   result.iterations = iterations;
-  result.tau_rudder_drag_b = drag;
-  result.tau_achieved_b = configuration_.matrix() * result.forces + drag;
+  result.tau_rudder_drag_b = predicted;
+  result.tau_achieved_b = configuration_.matrix() * result.forces + predicted;
   result.tau_unmet_b = input.tau_d_b - result.tau_achieved_b;
-  const bool met = std::abs(result.tau_unmet_b[0]) <= tol_force &&
-                   std::abs(result.tau_unmet_b[1]) <= tol_force &&
-                   std::abs(result.tau_unmet_b[2]) <= tol_moment;
-  result.status = met ? AllocationStatus::kOk : AllocationStatus::kSaturated;
-  result.message =
-      met ? std::string{} : "demand not attainable within actuator limits; see tau_unmet_b";
+  result.status = AllocationStatus::kOk;
+  result.message.clear();
+  set_met_status(result);
   return result;
+}
+
+void ThrustAllocator::set_met_status(ThrustAllocationResult& r) const {
+  // "Met": every component of τ_unmet within 1e-6 of its force or moment scale.
+  const bool met = std::abs(r.tau_unmet_b[0]) <= 1e-6 * options_.force_scale &&
+                   std::abs(r.tau_unmet_b[1]) <= 1e-6 * options_.force_scale &&
+                   std::abs(r.tau_unmet_b[2]) <= 1e-6 * options_.moment_scale;
+  if (!met) {
+    r.status = AllocationStatus::kSaturated;
+    r.message = "demand not attainable within actuator limits; see tau_unmet_b";
+  }
 }
 
 Eigen::Vector3d ThrustAllocator::rudder_drag(const ThrustAllocationResult& r) const {
@@ -280,13 +290,7 @@ ThrustAllocationResult ThrustAllocator::solve(const ThrustAllocationInput& input
   result.forces = f;
   result.tau_achieved_b = B * f;
   result.tau_unmet_b = input.tau_d_b - result.tau_achieved_b;
-  const bool met = std::abs(result.tau_unmet_b[0]) <= 1e-6 * options_.force_scale &&
-                   std::abs(result.tau_unmet_b[1]) <= 1e-6 * options_.force_scale &&
-                   std::abs(result.tau_unmet_b[2]) <= 1e-6 * options_.moment_scale;
-  if (!met) {
-    result.status = AllocationStatus::kSaturated;
-    result.message = "demand not attainable within actuator limits; see tau_unmet_b";
-  }
+  set_met_status(result);
 
   result.n_port = propeller_.shaft_speed_for_thrust(f[kT1]);
   result.n_stb = propeller_.shaft_speed_for_thrust(f[kT2]);

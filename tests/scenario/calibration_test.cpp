@@ -154,10 +154,10 @@ TEST(Calibration, SwayTotalSpeedTimeConstantsInThesisRange) {
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {
       const ScenarioRun run = run_scenario(spec, VesselConfig{}, seed);
       const core::Log& log = run.truth_log;
+      const std::vector<double>& u = log.values("u");
+      const std::vector<double>& v = log.values("v");
       std::vector<double> total(log.size());
-      for (std::size_t i = 0; i < log.size(); ++i) {
-        total[i] = std::hypot(log.values("u")[i], log.values("v")[i]);  // (3.19)
-      }
+      for (std::size_t i = 0; i < log.size(); ++i) total[i] = std::hypot(u[i], v[i]);  // (3.19)
       const auto& js = spec.joystick;
       for (std::size_t k = 0; k + 1 < js.size(); ++k) {
         const double from = k == 0 ? 0.0 : std::abs(js[k - 1].sway_pct);
@@ -261,11 +261,13 @@ TEST(Calibration, PureDpPositionAndHeadingSpreadInHs2) {
     // Mean thrust, the sum of the thrusters' mean |T|: tables 3.14–3.22 give 2–45 kN in total.
     double thrust_sum = 0.0;
     std::size_t n = 0;
-    for (std::size_t i = 0; i < run.truth_log.size(); ++i) {
-      if (run.truth_log.time()[i] < t0 || run.truth_log.time()[i] >= t1) continue;
-      for (const char* c : {"thrust.port", "thrust.stb", "thrust.tunnel"}) {
-        thrust_sum += std::abs(run.truth_log.values(c)[i]);
-      }
+    const std::vector<double>& time = run.truth_log.time();
+    const std::vector<double>& t_port = run.truth_log.values("thrust.port");
+    const std::vector<double>& t_stb = run.truth_log.values("thrust.stb");
+    const std::vector<double>& t_tunnel = run.truth_log.values("thrust.tunnel");
+    for (std::size_t i = 0; i < time.size(); ++i) {
+      if (time[i] < t0 || time[i] >= t1) continue;
+      thrust_sum += std::abs(t_port[i]) + std::abs(t_stb[i]) + std::abs(t_tunnel[i]);
       ++n;
     }
     const double mean_thrust_kN = thrust_sum / static_cast<double>(n) / 1e3;

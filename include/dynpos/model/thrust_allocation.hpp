@@ -107,7 +107,7 @@ struct ThrustAllocationResult {
   /// Rudder drag (X [N], 0, N [N·m]) the allocation predicts at its commands and compensates;
   /// zero when rudder_drag_compensation is 0.
   Eigen::Vector3d tau_rudder_drag_b = Eigen::Vector3d::Zero();
-  Eigen::Vector3d tau_unmet_b = Eigen::Vector3d::Zero();  ///< τ_d − B·f
+  Eigen::Vector3d tau_unmet_b = Eigen::Vector3d::Zero();  ///< τ_d − tau_achieved_b
   /// Which variable ended at a bound (box, cone or rate), in the order of f.
   std::array<bool, 5> saturated{};
   double n_port = 0.0;         ///< port propeller shaft speed command [rps]
@@ -143,6 +143,8 @@ class ThrustAllocator {
   // The rudder drag (X, 0, N) the rudder model predicts for the commands of r, scaled by the
   // compensation fraction.
   Eigen::Vector3d rudder_drag(const ThrustAllocationResult& r) const;
+  // Marks r saturated, with a message, when τ_unmet is not within the tolerance of "met".
+  void set_met_status(ThrustAllocationResult& r) const;
 
   Thruster propeller_;
   Rudder rudder_;
