@@ -162,9 +162,33 @@ TEST(AgilityValidation, ResponseTimesMatchTheNoiseFreeTruth) {
         tol = 0.1 + 3.0 * feedback_sigma[j] / slope;
       }
       if (!got || !want) {
-        // "No response" must agree, except for a change right at the 5 % threshold.
-        EXPECT_EQ(got.has_value(), want.has_value())
-            << kThrusters[j] << " at " << s.direction_deg << "° t = " << s.t_step;
+        // "No response" must agree, except for a change right at the 5 % threshold: the two
+        // final levels (means over the window's tail) then straddle it, and may differ by the
+        // error of the logged tail mean. The tunnel logs at 1 Hz, so that error is up to half a
+        // sample period times the steepest true slope in the tail (the allocation can swing the
+        // tunnel through its range there when the heading moves during a yaw step).
+        if (got.has_value() != want.has_value()) {
+          const auto& g = s.thrusters[j];
+          const auto& w = t.steps[k].thrusters[j];
+          ASSERT_TRUE(g.y0 && g.y_final && w.y0 && w.y_final)
+              << kThrusters[j] << " t = " << s.t_step;
+          const double dy_got = std::abs(*g.y_final - *g.y0);
+          const double dy_want = std::abs(*w.y_final - *w.y0);
+          const std::span<const double> y_true = ch_true[j].values;
+          const double t_tail = s.t_end - 0.2 * (s.t_end - s.t_step);  // tail_fraction 0.2
+          double max_slope = 0.0;
+          for (std::size_t i = 1; i < truth.time().size(); ++i) {
+            const double ti = truth.time()[i];
+            if (ti < t_tail || ti > s.t_end) continue;
+            max_slope = std::max(max_slope,
+                                 std::abs(y_true[i] - y_true[i - 1]) / (ti - truth.time()[i - 1]));
+          }
+          const double period = kThrusters[j] == "tunnel" ? 1.0 : 0.1;
+          EXPECT_LE(std::abs(dy_got - dy_want), 0.5 * period * max_slope)
+              << kThrusters[j] << " at " << s.direction_deg << "° t = " << s.t_step
+              << ": null disagrees beyond the threshold (|Δy| " << dy_got << " vs " << dy_want
+              << ")";
+        }
         ++nulls;
         continue;
       }

@@ -65,8 +65,11 @@ struct HullParams {
   double n_r_Nms = 2.0e6;
   /// Speed-proportional yaw damping −N_ur [N·m·s²/(rad·m)]. Source: calibrated, see n_r_Nms.
   double n_ur_Nms2 = 3.7e6;
-  /// Quadratic yaw damping −N_|r|r [N·m·s²/rad²]. Source: reasoned — cross-flow drag moment.
-  double n_rr_Nms2 = 4.0e8;
+  /// Quadratic yaw damping −N_|r|r [N·m·s²/rad²]. Source: reasoned — cross-flow drag moment
+  /// ½ρ·C_D·T·∫|x|³dx = ½ρ·C_D·T·(L/2)⁴/2 with the C_D ≈ 0.6 of y_vv, T = 2.7 m and L between
+  /// Lpp 28.9 m and Loa 31.25 m: 1.8–2.5e7. Checked against table 3.31: 0→20° yaw-rate fits
+  /// from the log, seeds 1–3, give T 3.4–5.6 s at 3 kn (thesis 4.7–5.6 s); 4e8 gave 1.2–1.5 s.
+  double n_rr_Nms2 = 2.0e7;
   /// Roll natural period [s]. Source: reasoned — GM ≈ 1.2 m and B = 9.6 m give ≈ 8 s.
   double roll_period_s = 8.0;
   /// Roll damping ratio ζ_φ [-]. Source: reasoned — bilge keels, ≈ 0.1.
