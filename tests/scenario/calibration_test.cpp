@@ -198,7 +198,11 @@ TEST(Calibration, ThrustMapBackCalculatesTable32) {
   EXPECT_NEAR(-num / den / 1e3, -5.8, 1e-6);
 }
 
-TEST(Calibration, YawRateTimeConstantShorterAtSixKnots) {
+// Yaw steps (table 3.31), two ways: the truth.json Nomoto T_r of the linearised hull, and the
+// thesis' own measure, Smith fits of the yaw rate after the 0→±20° rudder steps (the reference
+// log's r, timed from the rudder command). T_r does not see the quadratic yaw damping, which
+// shortens the response once the vessel turns; the fits do.
+TEST(Calibration, YawRateResponseMatchesTable331) {
   const ScenarioSpec spec = load_scenario(kScenarios / "yaw-steps.toml");
   const ScenarioRun run = run_scenario(spec, VesselConfig{}, 1);
   double tr_3kn = 0.0, tr_6kn = 0.0;
@@ -220,33 +224,26 @@ TEST(Calibration, YawRateTimeConstantShorterAtSixKnots) {
   EXPECT_GT(tr_6kn, 2.3);
   EXPECT_LT(tr_6kn, 3.6);
   EXPECT_GT(tr_3kn, tr_6kn);
-}
 
-// The thesis' own measure: Smith fits of the yaw rate after the 0→±20° rudder steps (here the
-// reference log's r, timed from the rudder command). The linearised Nomoto T_r above does not
-// see the quadratic yaw damping, which shortens the response once the vessel turns; this fit
-// does. Single fits trade T against δ (seeds 1–5 at 3 kn: T 2.3–5.5 s with δ 3.6–2.0 s), so the
-// band is on the time to 63 %, T + δ, whose side-averaged value spreads by only ±0.4 s (3 kn)
-// and ±0.15 s (6 kn) over seeds 1–5; T itself is checked for its trend with speed.
-TEST(Calibration, FittedYawRateResponseNearTable331) {
-  const ScenarioSpec spec = load_scenario(kScenarios / "yaw-steps.toml");
-  const ScenarioRun run = run_scenario(spec, VesselConfig{}, 1);
+  // Fitted from the log. Single fits trade T against δ (seeds 1–5 at 3 kn: T 2.3–5.5 s with δ
+  // 3.6–2.0 s), so the band is on the time to 63 %, T + δ, whose side-averaged value spreads by
+  // only ±0.4 s (3 kn) and ±0.15 s (6 kn) over seeds 1–5; T is checked for its trend with speed.
+  ASSERT_EQ(spec.joystick.size(), 2u);  // 3 kn, then 6 kn from the second surge demand on
+  const double t_6kn = spec.joystick[1].t_s;
   const auto& r = run.truth_log.values("r");
   std::vector<model::FopdtTruth> fits_3kn, fits_6kn;
   for (std::size_t k = 0; k + 1 < spec.rudder.size(); ++k) {
     if (std::abs(spec.rudder[k].angle_deg) != 20.0) continue;
-    const model::FopdtTruth fit =
-        fit_step(run.truth_log, r, spec.rudder[k].t_s, spec.rudder[k + 1].t_s);
-    // The surge demand changes from 3 to 6 kn at 480 s.
-    (spec.rudder[k].t_s < 480.0 ? fits_3kn : fits_6kn).push_back(fit);
+    (spec.rudder[k].t_s < t_6kn ? fits_3kn : fits_6kn)
+        .push_back(fit_step(run.truth_log, r, spec.rudder[k].t_s, spec.rudder[k + 1].t_s));
   }
   ASSERT_EQ(fits_3kn.size(), 2u);  // starboard and port
   ASSERT_EQ(fits_6kn.size(), 2u);
   const auto mean_T = [](const std::vector<model::FopdtTruth>& f) {
     return 0.5 * (f[0].time_constant + f[1].time_constant);
   };
-  const auto mean_t63 = [](const std::vector<model::FopdtTruth>& f) {
-    return 0.5 * (f[0].time_constant + f[0].dead_time + f[1].time_constant + f[1].dead_time);
+  const auto mean_t63 = [&](const std::vector<model::FopdtTruth>& f) {
+    return mean_T(f) + 0.5 * (f[0].dead_time + f[1].dead_time);
   };
   // Table 3.31, T + δ: 6.8–7.6 s at 3 kn, 4.9 s at 6 kn; DESIGN.md asks for the thesis'
   // magnitudes "roughly", taken here as ±25 % of its range. (Quadratic yaw damping 4e8 gave

@@ -23,6 +23,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -70,6 +71,17 @@ double interpolate(const std::vector<double>& t, const std::vector<double>& y, d
   const auto it = std::lower_bound(t.begin(), t.end(), x);
   const std::size_t i = static_cast<std::size_t>(std::max<std::ptrdiff_t>(it - t.begin(), 1));
   return y[i - 1] + (y[i] - y[i - 1]) * (x - t[i - 1]) / (t[i] - t[i - 1]);
+}
+
+// Steepest |dy/dt| between consecutive samples of (t, y) with t in [t0, t1].
+double max_abs_slope(const std::vector<double>& t, std::span<const double> y, double t0,
+                     double t1) {
+  double m = 0.0;
+  for (std::size_t i = 1; i < t.size(); ++i) {
+    if (t[i] < t0 || t[i] > t1) continue;
+    m = std::max(m, std::abs(y[i] - y[i - 1]) / (t[i] - t[i - 1]));
+  }
+  return m;
 }
 
 std::vector<double> pct(std::vector<double> v) {
@@ -174,15 +186,9 @@ TEST(AgilityValidation, ResponseTimesMatchTheNoiseFreeTruth) {
               << kThrusters[j] << " t = " << s.t_step;
           const double dy_got = std::abs(*g.y_final - *g.y0);
           const double dy_want = std::abs(*w.y_final - *w.y0);
-          const std::span<const double> y_true = ch_true[j].values;
-          const double t_tail = s.t_end - 0.2 * (s.t_end - s.t_step);  // tail_fraction 0.2
-          double max_slope = 0.0;
-          for (std::size_t i = 1; i < truth.time().size(); ++i) {
-            const double ti = truth.time()[i];
-            if (ti < t_tail || ti > s.t_end) continue;
-            max_slope = std::max(max_slope,
-                                 std::abs(y_true[i] - y_true[i - 1]) / (ti - truth.time()[i - 1]));
-          }
+          const double t_tail =
+              s.t_end - ident::AgilityOptions{}.tail_fraction * (s.t_end - s.t_step);
+          const double max_slope = max_abs_slope(truth.time(), ch_true[j].values, t_tail, s.t_end);
           const double period = kThrusters[j] == "tunnel" ? 1.0 : 0.1;
           EXPECT_LE(std::abs(dy_got - dy_want), 0.5 * period * max_slope)
               << kThrusters[j] << " at " << s.direction_deg << "° t = " << s.t_step
