@@ -61,6 +61,10 @@ DpReference ReferenceModel::reference() const {
   return ref;
 }
 
+bool ReferenceModel::at_rest(double fraction) const noexcept {
+  return (v_.array().abs() <= fraction * params_.max_rate.array()).all();
+}
+
 bool OperatingCircle::reached(const Eigen::Vector3d& eta, const Eigen::Vector3d& setpoint) const {
   const double distance = std::hypot(eta.x() - setpoint.x(), eta.y() - setpoint.y());
   return distance <= radius_m && std::abs(core::wrap_pi(eta.z() - setpoint.z())) <= heading_tol_rad;

@@ -35,6 +35,8 @@ void ThrustAllocationOptions::validate() const {
           max_rudder_angle, "in (0, pi/2) rad");
   require(detail::closed_range(rudder_drag_compensation, 0.0, 1.0), o, "rudder_drag_compensation",
           rudder_drag_compensation, "in [0, 1]");
+  require(hold_weight >= 0.0 && std::isfinite(hold_weight), o, "hold_weight", hold_weight,
+          "finite and >= 0");
 }
 
 ThrustAllocator::ThrustAllocator(const Thruster& propeller, const Rudder& rudder,
@@ -65,7 +67,42 @@ std::array<Vector5d, 2> ThrustAllocator::bounds(double surge_speed) const noexce
 }
 
 ThrustAllocationResult ThrustAllocator::allocate(const ThrustAllocationInput& input) const {
-  ThrustAllocationResult result = solve(input);
+  ThrustAllocationResult plain = allocate_with_drag(input, false);
+  if (!input.hold_forces || options_.hold_weight <= 0.0 ||
+      plain.status == AllocationStatus::kInvalidInput) {
+    return plain;
+  }
+  ThrustAllocationResult held = allocate_with_drag(input, true);
+  if (held.status == AllocationStatus::kInvalidInput) return plain;
+  const auto unmet = [&](const ThrustAllocationResult& r) {
+    const Eigen::Vector3d scaled(r.tau_unmet_b.x() / options_.force_scale,
+                                 r.tau_unmet_b.y() / options_.force_scale,
+                                 r.tau_unmet_b.z() / options_.moment_scale);
+    return scaled.cwiseProduct(scaled).dot(options_.priority);
+  };
+  // Saturated, the held split must leave no more of the demand unmet than the plain one
+  // (in the priority-weighted norm the least squares minimise).
+  const bool meets_as_well = held.status == AllocationStatus::kOk ||
+                             (plain.status != AllocationStatus::kOk && unmet(held) <= unmet(plain));
+  if (!meets_as_well) return plain;
+  // And it is kept only when it lies nearer the held forces than the plain split (file
+  // comment): the clipping can land the pulled solve on another active set, and then it would
+  // move the thrusters more, not less.
+  const auto [lo, hi] = bounds(input.surge_speed);
+  const auto distance = [&](const Vector5d& f) {
+    double sum = 0.0;
+    for (int i = 0; i < 5; ++i) {
+      const double s = std::max({std::abs(lo[i]), std::abs(hi[i]), 1.0});
+      sum += options_.weights[i] * std::pow((f[i] - (*input.hold_forces)[i]) / s, 2);
+    }
+    return sum;
+  };
+  return distance(held.forces) <= distance(plain.forces) ? held : plain;
+}
+
+ThrustAllocationResult ThrustAllocator::allocate_with_drag(const ThrustAllocationInput& input,
+                                                           bool hold) const {
+  ThrustAllocationResult result = solve(input, hold);
   if (result.status == AllocationStatus::kInvalidInput ||
       options_.rudder_drag_compensation <= 0.0) {
     return result;
@@ -87,7 +124,7 @@ ThrustAllocationResult ThrustAllocator::allocate(const ThrustAllocationInput& in
     if (settled) break;
     drag = predicted;
     corrected.tau_d_b = input.tau_d_b - drag;
-    result = solve(corrected);
+    result = solve(corrected, hold);
     iterations += result.iterations;
     predicted = rudder_drag(result);
   }
@@ -130,12 +167,13 @@ Eigen::Vector3d ThrustAllocator::rudder_drag(const ThrustAllocationResult& r) co
                              -p.p_port_rudder_b.y() * dx_port - p.p_stb_rudder_b.y() * dx_stb);
 }
 
-ThrustAllocationResult ThrustAllocator::solve(const ThrustAllocationInput& input) const {
+ThrustAllocationResult ThrustAllocator::solve(const ThrustAllocationInput& input, bool hold) const {
   ThrustAllocationResult result;
   if (!input.tau_d_b.allFinite() || !std::isfinite(input.surge_speed) || !std::isfinite(input.dt) ||
-      !input.previous_forces.allFinite()) {
+      !input.previous_forces.allFinite() ||
+      (input.hold_forces && !input.hold_forces->allFinite())) {
     result.status = AllocationStatus::kInvalidInput;
-    result.message = "tau_d_b, surge_speed, dt and previous_forces must be finite";
+    result.message = "tau_d_b, surge_speed, dt, previous_forces and hold_forces must be finite";
     return result;
   }
   const double u = input.surge_speed;
@@ -221,7 +259,16 @@ ThrustAllocationResult ThrustAllocator::solve(const ThrustAllocationInput& input
     const ThrustConfiguration::Matrix A = qh.asDiagonal() * M;
     const Eigen::Vector3d b = qh.cwiseProduct(rhs);
     const Eigen::CompleteOrthogonalDecomposition<ThrustConfiguration::Matrix> cod(A);
-    const Vector5d y = cod.solve(b);  // minimum-norm least-squares solution
+    // Minimum-norm least-squares solution; when holding, min ‖y‖² + μ‖y − y_h‖² is the
+    // minimum-norm shift from c = y_h·μ/(1+μ) (file comment), on the free variables only.
+    Vector5d c = Vector5d::Zero();
+    if (hold) {
+      const double mu = options_.hold_weight;
+      for (int j = 0; j < 5; ++j) {
+        if (role[j] == Role::kFree) c[j] = mu / (1.0 + mu) * (*input.hold_forces)[j] / d[j];
+      }
+    }
+    const Vector5d y = c + cod.solve(b - A * c);
     ++result.iterations;
 
     for (int j = 0; j < 5; ++j) {

@@ -101,6 +101,7 @@ std::vector<ParamField> allocation_fields(model::ThrustAllocationOptions& p) {
       {"rate_rudder_stb_N_per_s", &p.rate_limits[3], 1, 1e8},
       {"rate_tunnel_N_per_s", &p.rate_limits[4], 1, 1e8},
       {"rudder_drag_compensation", &p.rudder_drag_compensation, 0, 1},
+      {"hold_weight", &p.hold_weight, 0, 1e3},
   };
 }
 

@@ -258,6 +258,7 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
   truth["rudder_steps"] = nlohmann::json::array();
   UnmetSummary unmet;
   std::array<double, 3> thrust_command{};  // allocated port, stb, tunnel thrust [N]
+  Eigen::Matrix<double, 5, 1> last_forces = Eigen::Matrix<double, 5, 1>::Zero();  // f [N]
   // Auto heading (spec.heading_hold): PID gains from the joystick's ω and ζ.
   double operator_yaw_pct = 0.0, heading_integral_Nm = 0.0;
   const double psi_hold = core::deg_to_rad(spec.initial_heading_deg);
@@ -313,6 +314,11 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
         const control::DpCommand cmd_dp = dp.control(eta, nu, reference.reference(), bias_hat);
         dp_x2 = cmd_dp.x2;
         in.tau_d_b = cmd_dp.tau_b;
+        // Stationkeeping (reference within 1 % of its rate limits of rest): hold the thrusters'
+        // split (allocation hold_weight), so the allocation does not switch between its two
+        // ways of making a yaw moment faster than the propellers follow. During a setpoint
+        // change the split is free, as the 4-corner legs need.
+        if (reference.at_rest(0.01)) in.hold_forces = last_forces;
         if (spec.hybrid_integral) {
           // Hybrid integral action, practical rule (5.64)–(5.67): ẋ₂ from the last two control
           // samples (only if both are after the last jump), x̂₃ from the closed loop (5.44).
@@ -349,6 +355,7 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
     const Commands before = cmd;
     cmd = {a.n_port, a.n_stb, a.rudder_port, a.rudder_stb, a.n_tunnel};
     thrust_command = {a.forces[0], a.forces[1], a.forces[4]};
+    last_forces = a.forces;
     while (next_rudder < spec.rudder.size() && spec.rudder[next_rudder].t_s <= c.time() + 1e-9) {
       const RudderCommand& rc = spec.rudder[next_rudder++];
       const double from = rudder_override.value_or(before.rudder_stb);

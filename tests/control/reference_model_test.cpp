@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 namespace dynpos::control {
 namespace {
@@ -24,6 +25,31 @@ TEST(ReferenceModel, StepConvergesWithoutOvershootAndRespectsTheSpeedLimit) {
   EXPECT_LE(max_north, 50.0 + 1e-3);
   EXPECT_LE(max_speed, 0.5 + 1e-12);
   EXPECT_GT(max_speed, 0.45);  // a 50 m change is sailed at (nearly) the limit
+}
+
+TEST(ReferenceModel, AtRestOnlyWhileNoSetpointChangeIsUnderWay) {
+  ReferenceModel model(ReferenceModelParams{}, Eigen::Vector3d::Zero());
+  EXPECT_TRUE(model.at_rest(0.01));               // starts at rest
+  const Eigen::Vector3d setpoint(0.0, 0.0, 0.5);  // a 29° heading change
+  int first_rest = -1;
+  for (int k = 1; k <= 3000; ++k) {  // 300 s at 10 Hz
+    model.step(setpoint, 0.1);
+    const bool rest = model.at_rest(0.01);
+    if (k >= 20 && k <= 150) {
+      // Under way: the third-order filter starts with zero rate and acceleration, so |ψ̇_d|
+      // passes 1 % of its limit after ≈ √(2·0.01·0.035/(ω³·0.5)) = 1.65 s.
+      EXPECT_FALSE(rest) << k;
+    }
+    if (k > 20 && rest && first_rest < 0) first_rest = k;
+    if (first_rest > 0) {
+      EXPECT_TRUE(rest) << k;  // critically damped: stays at rest once there
+    }
+    // At rest means |ψ̇_d| within 1 % of the 0.035 rad/s limit.
+    EXPECT_EQ(rest, std::abs(model.reference().eta_d_dot.z()) <= 0.01 * 0.035) << k;
+  }
+  ASSERT_GT(first_rest, 0);
+  std::printf("at rest after %.1f s\n", first_rest * 0.1);
+  EXPECT_GT(first_rest, 150);  // the change takes well over 15 s at 2 deg/s
 }
 
 TEST(ReferenceModel, HeadingTakesTheShortWayRound) {

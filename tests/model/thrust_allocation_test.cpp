@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 
@@ -198,6 +200,128 @@ TEST(ThrustAllocator, RateLimitsBoundTheChange) {
   EXPECT_TRUE(r.tau_unmet_b.isApprox(in.tau_d_b - r.tau_achieved_b));
 }
 
+// Linear allocator with the given hold weight μ.
+ThrustAllocator holding_allocator(double mu) {
+  ThrustAllocationOptions o;
+  o.rudder_drag_compensation = 0.0;
+  o.hold_weight = mu;
+  return ThrustAllocator(Thruster{}, Rudder{}, TunnelThruster{}, ThrustConfiguration{}, o);
+}
+
+TEST(ThrustAllocator, HoldingMovesTheSplitWithinTheNullSpace) {
+  // When the held split f_h itself meets τ_d and no bound is active, the minimiser of
+  // ‖x‖² + μ‖x − x_h‖² on {B f = τ_d} is (μ f_h + f_plain)/(1 + μ) exactly: write x = x_h + z
+  // with z in the null space; the plain split is x_h − P x_h, the held one x_h − P x_h/(1+μ).
+  // The identity is linear in f, so it holds whatever the allocator's internal scaling.
+  for (double mu : {0.5, 4.0, 20.0}) {
+    const ThrustAllocator alloc = holding_allocator(mu);
+    Vector5d f_h;
+    f_h << 30e3, 18e3, 2e3, -1.5e3, 3e3;  // both propellers ahead: rudder cones open
+    ThrustAllocationInput in;
+    in.tau_d_b = alloc.configuration().matrix() * f_h;
+    const ThrustAllocationResult plain = alloc.allocate(in);
+    ASSERT_EQ(plain.status, AllocationStatus::kOk);
+    ASSERT_TRUE(
+        std::none_of(plain.saturated.begin(), plain.saturated.end(), [](bool b) { return b; }));
+    ASSERT_GT((plain.forces - f_h).norm(), 1e3);  // f_h is not the minimum-norm split
+    in.hold_forces = f_h;
+    const ThrustAllocationResult held = alloc.allocate(in);
+    SCOPED_TRACE(mu);
+    EXPECT_EQ(held.status, AllocationStatus::kOk) << held.message;
+    // Same demand met (rounding of a 3×5 solve on 1e5 N scales, as above).
+    EXPECT_NEAR(held.tau_unmet_b.x(), 0.0, 1e-6);
+    EXPECT_NEAR(held.tau_unmet_b.y(), 0.0, 1e-6);
+    EXPECT_NEAR(held.tau_unmet_b.z(), 0.0, 1e-5);
+    const Vector5d expected = (mu * f_h + plain.forces) / (1.0 + mu);
+    for (int j = 0; j < 5; ++j) EXPECT_NEAR(held.forces[j], expected[j], 1e-6) << j;
+    expect_within_limits(alloc, held, 0.0);
+  }
+}
+
+TEST(ThrustAllocator, HoldingNeverCostsDemandOrMovesMoreThanPlain) {
+  const ThrustAllocator alloc = holding_allocator(4.0);
+  const ThrustAllocator no_hold = holding_allocator(0.0);
+  // Over a grid of demands (some beyond the thrusters' limits) and held splits (some far
+  // outside the bounds): the result meets the demand whenever the plain allocation does, leaves
+  // no more unmet when it does not, and lies at least as near the held split (weighted by
+  // 1/bound² as the allocator measures it).
+  const auto [lo, hi] = alloc.bounds(0.0);
+  const auto distance = [&](const Vector5d& f, const Vector5d& h) {
+    double sum = 0.0;
+    for (int i = 0; i < 5; ++i) {
+      const double s = std::max(std::abs(lo[i]), std::abs(hi[i]));
+      sum += alloc.options().weights[i] * std::pow((f[i] - h[i]) / s, 2);
+    }
+    return sum;
+  };
+  const Eigen::Vector3d q = alloc.options().priority;
+  const auto unmet = [&](const ThrustAllocationResult& r) {
+    const Eigen::Vector3d e(r.tau_unmet_b.x() / alloc.options().force_scale,
+                            r.tau_unmet_b.y() / alloc.options().force_scale,
+                            r.tau_unmet_b.z() / alloc.options().moment_scale);
+    return e.cwiseProduct(e).dot(q);
+  };
+  int held_differs = 0, saturated = 0;
+  for (double x : {-40e3, 0.0, 60e3, -110e3}) {
+    for (double n : {-150e3, -20e3, 0.0, 90e3}) {
+      for (double t1 : {-50e3, 0.0, 40e3, 1e6}) {
+        Vector5d h;
+        h << t1, -t1 / 2, 0.0, 0.0, 5e3;
+        ThrustAllocationInput in = demand(x, 5e3, n);
+        const ThrustAllocationResult plain = alloc.allocate(in);
+        in.hold_forces = h;
+        const ThrustAllocationResult r = alloc.allocate(in);
+        SCOPED_TRACE(testing::Message() << x << " " << n << " " << t1);
+        if (plain.status == AllocationStatus::kOk) {
+          EXPECT_EQ(r.status, AllocationStatus::kOk);
+        } else {
+          ++saturated;
+          EXPECT_LE(unmet(r), unmet(plain)) << "saturated: the held split leaves more unmet";
+        }
+        EXPECT_LE(distance(r.forces, h), distance(plain.forces, h) + 1e-12);
+        expect_within_limits(alloc, r, 0.0);
+        // μ = 0 ignores the held split.
+        EXPECT_EQ(no_hold.allocate(in).forces, plain.forces);
+        if ((r.forces - plain.forces).norm() > 1.0) ++held_differs;
+      }
+    }
+  }
+  EXPECT_GT(held_differs, 10);  // the hold acts on a good part of the grid
+  EXPECT_GT(saturated, 5);      // and the grid reaches past the thrusters' limits
+}
+
+TEST(ThrustAllocator, HoldingKeepsTheBranchWhenTheDemandWavers) {
+  // Astern and to port at rest, τ_d = (−10 kN, −10 kN, N): the plain allocation changes its
+  // active set near N ≈ 4.75 kN·m, and a jump of ≈ 41 kN in one force separates two splits
+  // that both meet the demand (found by a sweep of N). A demand wavering across that point,
+  // as the DP loop's does in waves, makes the plain split swap at each crossing — faster than
+  // the propellers follow (dead time 1.3 s). Holding the last split must keep one branch.
+  const ThrustAllocator alloc(Thruster{}, Rudder{}, TunnelThruster{}, ThrustConfiguration{}, {});
+  double plain_max_step = 0.0, held_max_step = 0.0;
+  Vector5d plain_prev = Vector5d::Zero(), held_prev = Vector5d::Zero();
+  for (int k = 0; k < 200; ++k) {
+    const double n = 4.75e3 + 3e3 * std::sin(0.3 * k) + 1e3 * std::sin(1.7 * k);
+    ThrustAllocationInput in = demand(-10e3, -10e3, n);
+    const ThrustAllocationResult plain = alloc.allocate(in);
+    ASSERT_EQ(plain.status, AllocationStatus::kOk) << k;
+    in.hold_forces = held_prev;
+    const ThrustAllocationResult held = alloc.allocate(in);
+    ASSERT_EQ(held.status, AllocationStatus::kOk) << k;
+    if (k > 0) {
+      plain_max_step = std::max(plain_max_step, (plain.forces - plain_prev).cwiseAbs().maxCoeff());
+      held_max_step = std::max(held_max_step, (held.forces - held_prev).cwiseAbs().maxCoeff());
+    }
+    plain_prev = plain.forces;
+    held_prev = held.forces;
+  }
+  std::printf("largest change of one force between allocations: plain %.1f kN, held %.1f kN\n",
+              plain_max_step / 1e3, held_max_step / 1e3);
+  // The demand itself moves by at most 1.2 kN·m per step, a few kN of force; a branch swap
+  // moves tens of kN.
+  EXPECT_GT(plain_max_step, 30e3);
+  EXPECT_LT(held_max_step, 10e3);
+}
+
 TEST(ThrustAllocator, IsDeterministic) {
   const ThrustAllocator alloc;
   const ThrustAllocationInput in = demand(33e3, -7e3, 81e3, 0.7);
@@ -226,10 +350,18 @@ TEST(ThrustAllocator, InvalidInputIsReportedNotThrown) {
       alloc.allocate(demand(std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0));
   EXPECT_EQ(r.status, AllocationStatus::kInvalidInput);
   EXPECT_EQ(r.forces, Vector5d::Zero());
+  ThrustAllocationInput held = demand(1e3, 0.0, 0.0);
+  held.hold_forces = Vector5d::Constant(std::numeric_limits<double>::infinity());
+  EXPECT_EQ(alloc.allocate(held).status, AllocationStatus::kInvalidInput);
   ThrustAllocationOptions bad;
   bad.weights[2] = 0.0;
   EXPECT_THROW(ThrustAllocator(Thruster{}, Rudder{}, TunnelThruster{}, ThrustConfiguration{}, bad),
                std::invalid_argument);
+  ThrustAllocationOptions negative_hold;
+  negative_hold.hold_weight = -1.0;
+  EXPECT_THROW(
+      ThrustAllocator(Thruster{}, Rudder{}, TunnelThruster{}, ThrustConfiguration{}, negative_hold),
+      std::invalid_argument);
 }
 
 }  // namespace

@@ -31,6 +31,9 @@ class ReferenceModel {
   /// Resets to rest at η.
   void reset(const Eigen::Vector3d& eta);
   DpReference reference() const;
+  /// At rest: every |ẋ_d| within `fraction` of its max_rate (e.g. 0.01), i.e. the reference has
+  /// finished a setpoint change and the DP loop is stationkeeping.
+  bool at_rest(double fraction) const noexcept;
 
  private:
   ReferenceModelParams params_;

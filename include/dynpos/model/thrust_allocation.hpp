@@ -33,11 +33,25 @@
 /// the sway force as an unmet astern force and the vessel drifts astern (thesis section 3.5:
 /// sway steps).
 ///
+/// Holding the previous split (hold_weight μ > 0, input hold_forces given): B has a
+/// two-dimensional null space, so one τ_d has many splits between the thrusters, and the
+/// minimum-norm split can jump from one branch to another (e.g. port ahead/starboard astern for a
+/// yaw moment, or the reverse) between two allocations. With hold_forces f_h the allocation
+/// instead minimises ‖x‖² + μ‖x − x_h‖² (scaled as W above) among the minimisers of the
+/// residual, i.e. it solves for the shift from x_h·μ/(1+μ): the demand is met exactly as
+/// before and only the split moves towards f_h. The held split is kept only when it meets τ_d
+/// as well as the plain one (status kOk, or, when the plain one is saturated too, no larger
+/// Q-weighted unmet part) and is nearer f_h than the plain split (in the weighted norm, each
+/// force over its box bound); otherwise the plain allocation is returned. So holding never
+/// costs demand, and a pulled solve that the clipping lands on another active set never moves
+/// the thrusters more than the plain one would.
+///
 /// Shaft speeds come from the inverse bollard maps (3.17), rudder angles from the inverse
 /// linear lift at the commanded thrust, the tunnel shaft speed from its map including the
 /// speed factor.
 
 #include <array>
+#include <optional>
 #include <string>
 
 #include <Eigen/Core>
@@ -73,6 +87,12 @@ struct ThrustAllocationOptions {
   /// drag out (τ_achieved = B·f). Source: reasoned — 1, the rudder model is the plant's own;
   /// calibrated against the sway steps (tables 3.28, 3.30), whose surge drift it removes.
   double rudder_drag_compensation = 1.0;
+  /// Weight μ of the pull towards hold_forces [-], ≥ 0; 0 disables it (file comment). Each
+  /// allocation moves μ/(1+μ) of the way to the held split, so μ = 4 keeps 80 % of the last
+  /// split per step: at 10 Hz a split change is spread over ≈ 0.5 s, about the propellers'
+  /// dead time. Source: reasoned, and measured with the weather from astern (pure DP at
+  /// 180°, docs/virtual-gunnerus.md).
+  double hold_weight = 4.0;
 
   void validate() const;
 };
@@ -87,6 +107,9 @@ struct ThrustAllocationInput {
   Eigen::Matrix<double, 5, 1> previous_forces = Eigen::Matrix<double, 5, 1>::Zero();
   /// Time since the previous allocation Δt [s]; ≤ 0 disables rate limits.
   double dt = 0.0;
+  /// Split to hold (forces f [N]) within the null space of the demand, weighted by
+  /// hold_weight; empty or hold_weight 0: the minimum-norm split (file comment).
+  std::optional<Eigen::Matrix<double, 5, 1>> hold_forces;
 };
 
 /// Outcome of an allocation.
@@ -138,8 +161,10 @@ class ThrustAllocator {
   const ThrustAllocationOptions& options() const noexcept { return options_; }
 
  private:
+  // One allocation with the rudder-drag fixed point; `hold` applies input.hold_forces.
+  ThrustAllocationResult allocate_with_drag(const ThrustAllocationInput& input, bool hold) const;
   // One allocation of τ_d without rudder drag: τ_achieved = B·f.
-  ThrustAllocationResult solve(const ThrustAllocationInput& input) const;
+  ThrustAllocationResult solve(const ThrustAllocationInput& input, bool hold) const;
   // The rudder drag (X, 0, N) the rudder model predicts for the commands of r, scaled by the
   // compensation fraction.
   Eigen::Vector3d rudder_drag(const ThrustAllocationResult& r) const;
