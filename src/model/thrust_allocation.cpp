@@ -75,10 +75,8 @@ ThrustAllocationResult ThrustAllocator::allocate(const ThrustAllocationInput& in
   ThrustAllocationResult held = allocate_with_drag(input, true);
   if (held.status == AllocationStatus::kInvalidInput) return plain;
   const auto unmet = [&](const ThrustAllocationResult& r) {
-    const Eigen::Vector3d scaled(r.tau_unmet_b.x() / options_.force_scale,
-                                 r.tau_unmet_b.y() / options_.force_scale,
-                                 r.tau_unmet_b.z() / options_.moment_scale);
-    return scaled.cwiseProduct(scaled).dot(options_.priority);
+    const Eigen::Vector3d e = normalised_unmet(r);
+    return e.cwiseProduct(e).dot(options_.priority);
   };
   // Saturated, the held split must leave no more of the demand unmet than the plain one
   // (in the priority-weighted norm the least squares minimise).
@@ -140,13 +138,16 @@ ThrustAllocationResult ThrustAllocator::allocate_with_drag(const ThrustAllocatio
 
 void ThrustAllocator::set_met_status(ThrustAllocationResult& r) const {
   // "Met": every component of τ_unmet within 1e-6 of its force or moment scale.
-  const bool met = std::abs(r.tau_unmet_b[0]) <= 1e-6 * options_.force_scale &&
-                   std::abs(r.tau_unmet_b[1]) <= 1e-6 * options_.force_scale &&
-                   std::abs(r.tau_unmet_b[2]) <= 1e-6 * options_.moment_scale;
-  if (!met) {
+  // (Written as "not all within", so a NaN would count as not met.)
+  if (!(normalised_unmet(r).array().abs() <= 1e-6).all()) {
     r.status = AllocationStatus::kSaturated;
     r.message = "demand not attainable within actuator limits; see tau_unmet_b";
   }
+}
+
+Eigen::Vector3d ThrustAllocator::normalised_unmet(const ThrustAllocationResult& r) const {
+  return {r.tau_unmet_b.x() / options_.force_scale, r.tau_unmet_b.y() / options_.force_scale,
+          r.tau_unmet_b.z() / options_.moment_scale};
 }
 
 Eigen::Vector3d ThrustAllocator::rudder_drag(const ThrustAllocationResult& r) const {

@@ -257,8 +257,8 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
   std::optional<double> rudder_override;  // [rad], both rudders
   truth["rudder_steps"] = nlohmann::json::array();
   UnmetSummary unmet;
-  std::array<double, 3> thrust_command{};  // allocated port, stb, tunnel thrust [N]
-  Eigen::Matrix<double, 5, 1> last_forces = Eigen::Matrix<double, 5, 1>::Zero();  // f [N]
+  // The last allocated forces f = (T₁, T₂, Y₁, Y₂, T₃) [N]: logged, and held in DP.
+  Eigen::Matrix<double, 5, 1> last_forces = Eigen::Matrix<double, 5, 1>::Zero();
   // Auto heading (spec.heading_hold): PID gains from the joystick's ω and ζ.
   double operator_yaw_pct = 0.0, heading_integral_Nm = 0.0;
   const double psi_hold = core::deg_to_rad(spec.initial_heading_deg);
@@ -354,7 +354,6 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
     }
     const Commands before = cmd;
     cmd = {a.n_port, a.n_stb, a.rudder_port, a.rudder_stb, a.n_tunnel};
-    thrust_command = {a.forces[0], a.forces[1], a.forces[4]};
     last_forces = a.forces;
     while (next_rudder < spec.rudder.size() && spec.rudder[next_rudder].t_s <= c.time() + 1e-9) {
       const RudderCommand& rc = spec.rudder[next_rudder++];
@@ -509,7 +508,10 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
     measured_row[i++] = cmd.n_port * 60.0;
     measured_row[i++] = cmd.n_stb * 60.0;
     measured_row[i++] = cmd.n_tunnel * 60.0;
-    for (double t : thrust_command) measured_row[i++] = t * 1e-3;
+    for (int j : {model::ThrustConfiguration::kThrustPort, model::ThrustConfiguration::kThrustStb,
+                  model::ThrustConfiguration::kTunnel}) {
+      measured_row[i++] = last_forces[j] * 1e-3;
+    }
     measured_row[i++] = core::rad_to_deg(cmd.rudder_port);
     measured_row[i++] = core::rad_to_deg(cmd.rudder_stb);
     measured_row[i++] = setpoint.x();

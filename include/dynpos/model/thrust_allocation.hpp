@@ -168,6 +168,8 @@ class ThrustAllocator {
   // The rudder drag (X, 0, N) the rudder model predicts for the commands of r, scaled by the
   // compensation fraction.
   Eigen::Vector3d rudder_drag(const ThrustAllocationResult& r) const;
+  // τ_unmet over the force and moment scales (X, Y, N) [-].
+  Eigen::Vector3d normalised_unmet(const ThrustAllocationResult& r) const;
   // Marks r saturated, with a message, when τ_unmet is not within the tolerance of "met".
   void set_met_status(ThrustAllocationResult& r) const;
 
