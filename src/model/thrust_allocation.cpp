@@ -67,40 +67,70 @@ std::array<Vector5d, 2> ThrustAllocator::bounds(double surge_speed) const noexce
 }
 
 ThrustAllocationResult ThrustAllocator::allocate(const ThrustAllocationInput& input) const {
-  ThrustAllocationResult plain = allocate_with_drag(input, false);
+  ThrustAllocationResult plain = allocate_with_drag(input, {0, 0}, false);
   if (!input.hold_forces || options_.hold_weight <= 0.0 ||
       plain.status == AllocationStatus::kInvalidInput) {
     return plain;
   }
-  ThrustAllocationResult held = allocate_with_drag(input, true);
-  if (held.status == AllocationStatus::kInvalidInput) return plain;
-  const auto unmet = [&](const ThrustAllocationResult& r) {
-    const Eigen::Vector3d e = normalised_unmet(r);
-    return e.cwiseProduct(e).dot(options_.priority);
-  };
-  // Saturated, the held split must leave no more of the demand unmet than the plain one
-  // (in the priority-weighted norm the least squares minimise).
-  const bool meets_as_well = held.status == AllocationStatus::kOk ||
-                             (plain.status != AllocationStatus::kOk && unmet(held) <= unmet(plain));
-  if (!meets_as_well) return plain;
-  // And it is kept only when it lies nearer the held forces than the plain split (file
-  // comment): the clipping can land the pulled solve on another active set, and then it would
-  // move the thrusters more, not less.
+  // Holding (file comment): the candidates are the plain solve, the solve within each sign
+  // region of the two main propellers, and the pulled solve over both signs and within the
+  // region of the held thrusts. The plain one comes first and wins ties.
+  const Vector5d& h = *input.hold_forces;
+  const SignRegion held_region{h[0] >= 0.0 ? 1 : -1, h[1] >= 0.0 ? 1 : -1};
+  constexpr std::size_t kCount = 7;
+  std::array<ThrustAllocationResult, kCount> candidates{
+      std::move(plain),
+      allocate_with_drag(input, {1, 1}, false),
+      allocate_with_drag(input, {1, -1}, false),
+      allocate_with_drag(input, {-1, 1}, false),
+      allocate_with_drag(input, {-1, -1}, false),
+      allocate_with_drag(input, {0, 0}, true),
+      allocate_with_drag(input, held_region, true)};
+  // Demand first: eligible are the candidates that meet τ_d or, when none does, those whose
+  // priority-weighted unmet part is within 5 % of the least, so that two saturated branches
+  // whose unmet parts cross do not alternate on the waves' noise.
+  bool any_met = false;
+  double least_unmet = std::numeric_limits<double>::infinity();
+  std::array<double, kCount> unmet{};
+  for (std::size_t i = 0; i < kCount; ++i) {
+    any_met = any_met || candidates[i].status == AllocationStatus::kOk;
+    unmet[i] = weighted_unmet(candidates[i]);
+    least_unmet = std::min(least_unmet, unmet[i]);
+  }
+  // Then the eligible split nearest the held forces, in the weighted norm with each force over
+  // its box bound.
   const auto [lo, hi] = bounds(input.surge_speed);
   const auto distance = [&](const Vector5d& f) {
     double sum = 0.0;
     for (int i = 0; i < 5; ++i) {
       const double s = std::max({std::abs(lo[i]), std::abs(hi[i]), 1.0});
-      sum += options_.weights[i] * std::pow((f[i] - (*input.hold_forces)[i]) / s, 2);
+      sum += options_.weights[i] * std::pow((f[i] - h[i]) / s, 2);
     }
     return sum;
   };
-  return distance(held.forces) <= distance(plain.forces) ? held : plain;
+  std::size_t best = 0;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < kCount; ++i) {
+    const bool eligible = any_met ? candidates[i].status == AllocationStatus::kOk
+                                  : unmet[i] <= 1.05 * least_unmet + 1e-12;
+    if (!eligible) continue;
+    const double d = distance(candidates[i].forces);
+    if (d < best_distance) {
+      best = i;
+      best_distance = d;
+    }
+  }
+  return std::move(candidates[best]);
+}
+
+double ThrustAllocator::weighted_unmet(const ThrustAllocationResult& r) const {
+  const Eigen::Vector3d e = normalised_unmet(r);
+  return e.cwiseProduct(e).dot(options_.priority);
 }
 
 ThrustAllocationResult ThrustAllocator::allocate_with_drag(const ThrustAllocationInput& input,
-                                                           bool hold) const {
-  ThrustAllocationResult result = solve(input, hold);
+                                                           SignRegion region, bool hold) const {
+  ThrustAllocationResult result = solve(input, region, hold);
   if (result.status == AllocationStatus::kInvalidInput ||
       options_.rudder_drag_compensation <= 0.0) {
     return result;
@@ -122,7 +152,7 @@ ThrustAllocationResult ThrustAllocator::allocate_with_drag(const ThrustAllocatio
     if (settled) break;
     drag = predicted;
     corrected.tau_d_b = input.tau_d_b - drag;
-    result = solve(corrected, hold);
+    result = solve(corrected, region, hold);
     iterations += result.iterations;
     predicted = rudder_drag(result);
   }
@@ -168,7 +198,8 @@ Eigen::Vector3d ThrustAllocator::rudder_drag(const ThrustAllocationResult& r) co
                              -p.p_port_rudder_b.y() * dx_port - p.p_stb_rudder_b.y() * dx_stb);
 }
 
-ThrustAllocationResult ThrustAllocator::solve(const ThrustAllocationInput& input, bool hold) const {
+ThrustAllocationResult ThrustAllocator::solve(const ThrustAllocationInput& input, SignRegion region,
+                                              bool hold) const {
   ThrustAllocationResult result;
   if (!input.tau_d_b.allFinite() || !std::isfinite(input.surge_speed) || !std::isfinite(input.dt) ||
       !input.previous_forces.allFinite() ||
@@ -211,6 +242,12 @@ ThrustAllocationResult ThrustAllocator::solve(const ThrustAllocationInput& input
       // the box wins, at the point nearest the previous value.
       lo[i] = hi[i] = std::clamp(input.previous_forces[i], lo[i], hi[i]);
     }
+  }
+  // The sign region of the main propellers (file comment).
+  for (int k : {0, 1}) {
+    const int j = k == 0 ? kT1 : kT2;
+    if (region[k] > 0) lo[j] = std::min(std::max(lo[j], 0.0), hi[j]);
+    if (region[k] < 0) hi[j] = std::max(std::min(hi[j], 0.0), lo[j]);
   }
   // Rudder bounds at thrust t: cone ∩ rate ∩ box.
   const auto rudder_bounds = [&](int j, double t) {

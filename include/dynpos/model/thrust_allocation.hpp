@@ -39,12 +39,18 @@
 /// yaw moment, or the reverse) between two allocations. With hold_forces f_h the allocation
 /// instead minimises ‖x‖² + μ‖x − x_h‖² (scaled as W above) among the minimisers of the
 /// residual, i.e. it solves for the shift from x_h·μ/(1+μ): the demand is met exactly as
-/// before and only the split moves towards f_h. The held split is kept only when it meets τ_d
-/// as well as the plain one (status kOk, or, when the plain one is saturated too, no larger
-/// Q-weighted unmet part) and is nearer f_h than the plain split (in the weighted norm, each
-/// force over its box bound); otherwise the plain allocation is returned. So holding never
-/// costs demand, and a pulled solve that the clipping lands on another active set never moves
-/// the thrusters more than the plain one would.
+/// before and only the split moves towards f_h. Holding also corrects the clipping's branch:
+/// the rudder cone is not convex across T_i = 0 but is within each sign region of (T₁, T₂), and
+/// one bound fixed at a time can end on a branch that misses a demand another branch meets
+/// (port full astern with starboard ahead instead of starboard astern, with the weather from
+/// astern). The candidates are the plain solve, the plain solve within each of the four sign
+/// regions, and the pulled solve over both signs and within the region of f_h. Eligible are
+/// those that meet τ_d, or, if none does, those whose Q-weighted unmet part is within 5 % of
+/// the least (a band, so two saturated branches whose unmet parts cross do not alternate);
+/// the result is the eligible candidate nearest f_h (in the weighted norm, each force over its
+/// box bound), the plain one on ties. So holding never costs demand beyond that band, and
+/// never moves the thrusters more than the plain split when that meets τ_d as well. Without
+/// hold_forces the allocation is the plain solve alone.
 ///
 /// Shaft speeds come from the inverse bollard maps (3.17), rudder angles from the inverse
 /// linear lift at the commanded thrust, the tunnel shaft speed from its map including the
@@ -161,10 +167,17 @@ class ThrustAllocator {
   const ThrustAllocationOptions& options() const noexcept { return options_; }
 
  private:
+  // Sign region of the main propellers' thrusts (T₁, T₂): 0 either sign, +1 ahead (T ≥ 0),
+  // −1 astern (T ≤ 0). Within one region the rudder cones are convex (file comment).
+  using SignRegion = std::array<int, 2>;
   // One allocation with the rudder-drag fixed point; `hold` applies input.hold_forces.
-  ThrustAllocationResult allocate_with_drag(const ThrustAllocationInput& input, bool hold) const;
+  ThrustAllocationResult allocate_with_drag(const ThrustAllocationInput& input, SignRegion region,
+                                            bool hold) const;
   // One allocation of τ_d without rudder drag: τ_achieved = B·f.
-  ThrustAllocationResult solve(const ThrustAllocationInput& input, bool hold) const;
+  ThrustAllocationResult solve(const ThrustAllocationInput& input, SignRegion region,
+                               bool hold) const;
+  // Priority-weighted squared unmet demand Σ Q_i (τ_unmet,i / scale_i)² [-].
+  double weighted_unmet(const ThrustAllocationResult& r) const;
   // The rudder drag (X, 0, N) the rudder model predicts for the commands of r, scaled by the
   // compensation fraction.
   Eigen::Vector3d rudder_drag(const ThrustAllocationResult& r) const;
