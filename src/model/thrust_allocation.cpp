@@ -88,9 +88,11 @@ ThrustAllocationResult ThrustAllocator::allocate(const ThrustAllocationInput& in
       allocate_with_drag(input, held_region, true)};
   // Demand first: eligible are the candidates that meet τ_d or, when none does, those whose
   // priority-weighted unmet part is within 5 % of the least, so that two saturated branches
-  // whose unmet parts cross do not alternate on the waves' noise.
+  // whose unmet parts cross do not alternate on the waves' noise, and no larger than the plain
+  // one's, so that holding never costs demand.
   bool any_met = false;
   double least_unmet = std::numeric_limits<double>::infinity();
+  const double plain_unmet = weighted_unmet(candidates[0]);
   std::array<double, kCount> unmet{};
   for (std::size_t i = 0; i < kCount; ++i) {
     any_met = any_met || candidates[i].status == AllocationStatus::kOk;
@@ -112,7 +114,7 @@ ThrustAllocationResult ThrustAllocator::allocate(const ThrustAllocationInput& in
   double best_distance = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < kCount; ++i) {
     const bool eligible = any_met ? candidates[i].status == AllocationStatus::kOk
-                                  : unmet[i] <= 1.05 * least_unmet + 1e-12;
+                                  : unmet[i] <= std::min(1.05 * least_unmet, plain_unmet);
     if (!eligible) continue;
     const double d = distance(candidates[i].forces);
     if (d < best_distance) {

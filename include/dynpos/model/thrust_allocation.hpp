@@ -46,10 +46,11 @@
 /// astern). The candidates are the plain solve, the plain solve within each of the four sign
 /// regions, and the pulled solve over both signs and within the region of f_h. Eligible are
 /// those that meet τ_d, or, if none does, those whose Q-weighted unmet part is within 5 % of
-/// the least (a band, so two saturated branches whose unmet parts cross do not alternate);
-/// the result is the eligible candidate nearest f_h (in the weighted norm, each force over its
-/// box bound), the plain one on ties. So holding never costs demand beyond that band, and
-/// never moves the thrusters more than the plain split when that meets τ_d as well. Without
+/// the least (a band, so two saturated branches whose unmet parts cross do not alternate) and
+/// no larger than the plain one's; the result is the eligible candidate nearest f_h (in the
+/// weighted norm, each force over its box bound), the plain one on ties. So holding never
+/// costs demand, and never moves the thrusters more than the plain split when that meets τ_d
+/// as well. Without
 /// hold_forces the allocation is the plain solve alone.
 ///
 /// Shaft speeds come from the inverse bollard maps (3.17), rudder angles from the inverse
