@@ -227,6 +227,7 @@ AgilityResponse response_time_632(std::span<const double> t, std::span<const dou
     return r;
   }
   r.response_s = 0.5 * (*t_first + *t_last) - t_step;
+  r.crossing_span_s = *t_last - *t_first;
 
   // Notes on the shape after the crossing.
   double p_min = std::numeric_limits<double>::infinity();

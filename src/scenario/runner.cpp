@@ -18,6 +18,7 @@
 #include "dynpos/model/environment.hpp"
 #include "dynpos/model/sea_state.hpp"
 #include "dynpos/model/thrust_allocation.hpp"
+#include "dynpos/scenario/joystick_lever.hpp"
 #include "dynpos/scenario/vessel_plant.hpp"
 #include "dynpos/sim/simulator.hpp"
 #include "sensor_logger.hpp"
@@ -63,6 +64,9 @@ constexpr std::pair<const char*, const char*> kTruthChannels[] = {
     {"command.surge", "1"},
     {"command.sway", "1"},
     {"command.yaw", "1"},
+    {"lever.surge", "1"},
+    {"lever.sway", "1"},
+    {"lever.yaw", "1"},
     {"wind_speed", "m/s"},
     {"wind_dir", "rad"},
     {"current.north", "m/s"},
@@ -81,6 +85,7 @@ constexpr std::pair<const char*, const char*> kTruthChannels[] = {
 // The trial logger's command channels, after the sensors (logger units).
 constexpr std::pair<const char*, const char*> kCommandChannels[] = {
     {"command.surge", "%"},         {"command.sway", "%"},         {"command.yaw", "%"},
+    {"lever.surge", "%"},           {"lever.sway", "%"},           {"lever.yaw", "%"},
     {"command.rpm.port", "rpm"},    {"command.rpm.stb", "rpm"},    {"command.rpm.tunnel", "rpm"},
     {"command.thrust.port", "kN"},  {"command.thrust.stb", "kN"},  {"command.thrust.tunnel", "kN"},
     {"command.rudder.port", "deg"}, {"command.rudder.stb", "deg"}, {"setpoint.north", "m"},
@@ -169,6 +174,10 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
 
   // Operator commands and their dead times.
   const JoystickParams& js = vessel.joystick;
+  // The lever (surge, sway, yaw) in % of full deflection as the operator set it, and the demand
+  // it makes through the lever curve (with auto heading, including the heading controller's
+  // moment), in % of the joystick maxima: what the allocation gets and the log's command.*.
+  Eigen::Vector3d lever_pct = Eigen::Vector3d::Zero();
   Eigen::Vector3d demand_pct = Eigen::Vector3d::Zero();
   Eigen::VectorXd x0 = plant.initial_state(core::deg_to_rad(spec.initial_heading_deg));
   Commands cmd;
@@ -177,6 +186,7 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
     x0[Plant::kHull + Hull::kSurge] = u0;
     const double x_needed = -plant.hull().hydrodynamic_forces({u0, 0, 0}, {u0, 0, 0}).x();
     demand_pct.x() = 100.0 * x_needed / js.max_surge_N;
+    lever_pct.x() = lever_pct_for_fraction(x_needed / js.max_surge_N, js.lever_exponent);
     const double n = plant.propeller().shaft_speed_for_thrust(0.5 * x_needed);
     x0.segment<4>(Plant::kPort) = plant.propeller().steady_state(n, u0);
     x0.segment<4>(Plant::kStb) = plant.propeller().steady_state(n, u0);
@@ -260,7 +270,7 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
   // The last allocated forces f = (T₁, T₂, Y₁, Y₂, T₃) [N]: logged, and held in DP.
   Eigen::Matrix<double, 5, 1> last_forces = Eigen::Matrix<double, 5, 1>::Zero();
   // Auto heading (spec.heading_hold): PID gains from the joystick's ω and ζ.
-  double operator_yaw_pct = 0.0, heading_integral_Nm = 0.0;
+  double heading_integral_Nm = 0.0;
   const double psi_hold = core::deg_to_rad(spec.initial_heading_deg);
   const double inertia_z = vessel.hull.iz_kgm2 + vessel.hull.n_rdot_kgm2;
   const double w_h = js.heading_hold_omega_rad_s;
@@ -273,10 +283,10 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
     while (next_command < spec.joystick.size() &&
            spec.joystick[next_command].t_s <= c.time() + 1e-9) {
       const JoystickCommand& j = spec.joystick[next_command++];
-      demand_pct = {j.surge_pct, j.sway_pct, j.yaw_pct};
-      operator_yaw_pct = j.yaw_pct;
+      lever_pct = {j.surge_pct, j.sway_pct, j.yaw_pct};
       changed = true;
     }
+    demand_pct = 100.0 * lever_to_demand_fraction(lever_pct, js.lever_exponent);
     if (spec.heading_hold) {
       // Auto heading: PID on the low-frequency heading (an ideal observer), added to the
       // operator's yaw demand within the joystick's yaw range; the integral stops while the
@@ -284,14 +294,17 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
       const double psi_err = core::angle_diff(c.state()[Plant::kHull + Hull::kYaw], psi_hold);
       const double r = c.state()[Plant::kHull + Hull::kYawRate];
       const double yaw_Nm = -kp_heading * psi_err - kd_heading * r - heading_integral_Nm;
-      const double pct = operator_yaw_pct + 100.0 * yaw_Nm / js.max_yaw_Nm;
-      demand_pct.z() = std::clamp(pct, -100.0, 100.0);
-      if (pct == demand_pct.z()) heading_integral_Nm += ki_heading * psi_err / js.control_rate_hz;
+      const double fraction = demand_pct.z() / 100.0 + yaw_Nm / js.max_yaw_Nm;
+      const double clamped = std::clamp(fraction, -1.0, 1.0);
+      demand_pct.z() = 100.0 * clamped;
+      if (fraction == clamped) heading_integral_Nm += ki_heading * psi_err / js.control_rate_hz;
     }
     model::ThrustAllocationInput in;
     std::optional<Eigen::Vector3d> dp_x2;  // x₂ of this DP step, for the integral action
-    in.tau_d_b = {demand_pct.x() / 100.0 * js.max_surge_N, demand_pct.y() / 100.0 * js.max_sway_N,
-                  demand_pct.z() / 100.0 * js.max_yaw_Nm};
+    const Eigen::Vector3d joystick_tau_b =
+        (demand_pct / 100.0)
+            .cwiseProduct(Eigen::Vector3d(js.max_surge_N, js.max_sway_N, js.max_yaw_Nm));
+    in.tau_d_b = joystick_tau_b;
     if (dp_mode) {
       const Eigen::Vector3d eta = c.state().segment<3>(Plant::kHull + Hull::kNorth);
       const Eigen::Vector3d nu = c.state().segment<3>(Plant::kHull + Hull::kSurge);
@@ -382,9 +395,12 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
     if (changed) {
       truth["commands"].push_back(
           {{"t_s", c.time()},
-           {"surge_pct", demand_pct.x()},
-           {"sway_pct", demand_pct.y()},
-           {"yaw_pct", demand_pct.z()},
+           {"surge_pct", lever_pct.x()},
+           {"sway_pct", lever_pct.y()},
+           {"yaw_pct", lever_pct.z()},
+           {"demand_surge_N", joystick_tau_b.x()},
+           {"demand_sway_N", joystick_tau_b.y()},
+           {"demand_yaw_Nm", joystick_tau_b.z()},
            {"n_port_rps", cmd.n_port},
            {"n_stb_rps", cmd.n_stb},
            {"rudder_port_deg", core::rad_to_deg(cmd.rudder_port)},
@@ -489,6 +505,7 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
     row[i++] = demand_pct.x() / 100.0;
     row[i++] = demand_pct.y() / 100.0;
     row[i++] = demand_pct.z() / 100.0;
+    for (int k = 0; k < 3; ++k) row[i++] = lever_pct[k] / 100.0;
     row[i++] = truth_now.wind_speed_mps;
     row[i++] = truth_now.wind_from_rad;
     row[i++] = current_n.x();
@@ -505,6 +522,7 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
     sensor_logger.record(log_tick++, truth_now, measured.first(sensor_logger.channel_count()));
     i = sensor_logger.channel_count();
     for (int k = 0; k < 3; ++k) measured_row[i++] = demand_pct[k];
+    for (int k = 0; k < 3; ++k) measured_row[i++] = lever_pct[k];
     measured_row[i++] = cmd.n_port * 60.0;
     measured_row[i++] = cmd.n_stb * 60.0;
     measured_row[i++] = cmd.n_tunnel * 60.0;

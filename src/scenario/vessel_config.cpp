@@ -95,6 +95,7 @@ std::vector<ParamField> joystick_fields(JoystickParams& p) {
       {"max_surge_N", &p.max_surge_N, 1, 1e8},
       {"max_sway_N", &p.max_sway_N, 1, 1e8},
       {"max_yaw_Nm", &p.max_yaw_Nm, 1, 1e10},
+      {"lever_exponent", &p.lever_exponent, 1, 3},
       {"control_rate_hz", &p.control_rate_hz, 0.01, 100},
       {"heading_hold_omega_rad_s", &p.heading_hold_omega_rad_s, 1e-3, 10},
       {"heading_hold_zeta", &p.heading_hold_zeta, 0.1, 5},
@@ -233,6 +234,9 @@ void JoystickParams::validate() const {
     throw std::invalid_argument("JoystickParams maxima must be > 0");
   }
   if (!(control_rate_hz > 0)) throw std::invalid_argument("JoystickParams.control_rate_hz > 0");
+  if (!(lever_exponent >= 1.0 && lever_exponent <= 3.0)) {
+    throw std::invalid_argument("JoystickParams.lever_exponent must be in [1, 3]");
+  }
 }
 
 void VesselConfig::validate() const {

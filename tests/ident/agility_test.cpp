@@ -125,6 +125,7 @@ TEST(Agility, ResponseTimesMatchAnalyticFopdtAndRamp) {
     ASSERT_TRUE(s.thrusters[1].response_s);
     EXPECT_NEAR(*s.thrusters[1].response_s, 1.0 + 0.632 * 6.0, 1e-6);
     EXPECT_TRUE(s.thrusters[1].notes.empty());
+    EXPECT_EQ(s.thrusters[1].crossing_span_s, 0.0);  // monotone: one crossing
     ASSERT_TRUE(s.speed && s.speed->response_s);
     EXPECT_NEAR(*s.speed->response_s, fopdt_t63(0.0, 5.0, 31.92, 39.9), 0.01);
   }
@@ -163,6 +164,29 @@ TEST(Agility, WindowsGiveTheSameAnswer) {
   EXPECT_DOUBLE_EQ(r.steps[0].t_step, 20.0);  // sorted by time
   EXPECT_NEAR(*r.steps[0].thrusters[0].response_s, 4.792, 1e-6);
   EXPECT_NEAR(*r.steps[1].thrusters[0].response_s, 4.792, 1e-6);
+}
+
+TEST(Agility, SwingingResponseGivesTheMidpointAndSpanOfItsCrossings) {
+  // 1 Hz, step at 0: 0 before; 0.5/0.7 alternating for 1–31 s (through the 63.2 % level at
+  // every rise), then 0.9/1.1 alternating (mean 1.0 over the tail, 32–39 s). The first
+  // crossing from below is at 1 + 0.132/0.2 = 1.66 s, the last at 31 + 0.132/0.4 = 31.33 s;
+  // the swings keep the response under the clearing level 0.632 + 3σ (σ ≈ 0.21 from the
+  // ±0.2 differences), so every rise counts.
+  std::vector<double> t, y;
+  for (int k = -5; k <= 39; ++k) {
+    t.push_back(k);
+    if (k <= 0) {
+      y.push_back(0.0);
+    } else if (k <= 31) {
+      y.push_back(k % 2 == 1 ? 0.5 : 0.7);
+    } else {
+      y.push_back(k % 2 == 0 ? 0.9 : 1.1);
+    }
+  }
+  const AgilityResponse r = response_time_632(t, y, 0.0, 39.0, 0.1, AgilityOptions{}, "a");
+  ASSERT_TRUE(r.response_s);
+  EXPECT_NEAR(r.crossing_span_s, 31.33 - 1.66, 1e-9);
+  EXPECT_NEAR(*r.response_s, 0.5 * (1.66 + 31.33), 1e-9);
 }
 
 TEST(Agility, NotesAReversingResponse) {

@@ -42,31 +42,54 @@ model::FopdtTruth fit_step(const core::Log& log, const std::vector<double>& y, d
   return fit.value_or(model::FopdtTruth{});
 }
 
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
 TEST(Calibration, SurgeStepsForwardMatchTheThesisShape) {
+  // Table 3.24: T = 16.4 s (δ 8.5 s) for 0–80 %, 34.2 s for 25–40 %, 59.2 s for 15–25 %: the
+  // time constant grows as the steps get smaller. One run is at the mercy of the current
+  // (0.2 m/s, varying) and the heading's drift without auto heading, so the mid-size steps are
+  // checked on the median over seeds 1–3 (measured 30.8/35.1/31.8 s and 45.7/65.5/20.7 s).
+  // The steps below 15 % (a 5 % lever is 0.25 % of full thrust through the lever curve, the
+  // size of the 3.3 m/s wind's surge force) move the vessel by less than the current and are
+  // not checked (docs/virtual-gunnerus.md).
   const ScenarioSpec spec = load_scenario(kScenarios / "surge-steps-forward.toml");
-  const ScenarioRun run = run_scenario(spec, VesselConfig{}, 1);
-  const auto& u = run.truth_log.values("u");
   std::vector<double> t_cmd;
   for (const auto& c : spec.joystick) t_cmd.push_back(c.t_s);
   t_cmd.push_back(spec.duration_s);
   // Commands: 0→5, 5→10, 10→15, 15→25, 25→40, 40→0, 0→80, 80→0 %.
-  const model::FopdtTruth step_0_5 = fit_step(run.truth_log, u, t_cmd[0], t_cmd[1]);
-  const model::FopdtTruth step_25_40 = fit_step(run.truth_log, u, t_cmd[4], t_cmd[5]);
-  const model::FopdtTruth step_0_80 = fit_step(run.truth_log, u, t_cmd[6], t_cmd[7]);
-  // Table 3.24: 0–80 % T = 16.4 s, δ = 8.5 s; we accept 10–25 s and 4–12 s (one run, bias noise).
-  EXPECT_GT(step_0_80.time_constant, 10.0);
-  EXPECT_LT(step_0_80.time_constant, 25.0);
-  EXPECT_GT(step_0_80.dead_time, 4.0);
-  EXPECT_LT(step_0_80.dead_time, 12.0);
-  // Small steps are slow: 0–5 % in the thesis' 60–135 s band (± 30 % for noise).
-  EXPECT_GT(step_0_5.time_constant, 0.7 * 60.0);
-  EXPECT_LT(step_0_5.time_constant, 1.3 * 135.0);
-  // The time constant grows for small steps (table 3.24).
-  EXPECT_GT(step_0_5.time_constant, 2.0 * step_25_40.time_constant);
-  // Full speed in the range of Gunnerus (≈ 10–13 kn at 80–100 %).
-  const double u80 = u[static_cast<std::size_t>(std::round(t_cmd[7] * spec.log_rate_hz)) - 1];
-  EXPECT_GT(u80 * 3600.0 / 1852.0, 9.0);
-  EXPECT_LT(u80 * 3600.0 / 1852.0, 12.5);
+  std::vector<double> t_15_25, t_25_40, t_0_80;
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    const ScenarioRun run = run_scenario(spec, VesselConfig{}, seed);
+    const auto& u = run.truth_log.values("u");
+    const model::FopdtTruth step_15_25 = fit_step(run.truth_log, u, t_cmd[3], t_cmd[4]);
+    const model::FopdtTruth step_25_40 = fit_step(run.truth_log, u, t_cmd[4], t_cmd[5]);
+    const model::FopdtTruth step_0_80 = fit_step(run.truth_log, u, t_cmd[6], t_cmd[7]);
+    std::printf("seed %llu: T 15-25 %% %.1f s, 25-40 %% %.1f s, 0-80 %% %.1f s (delay %.1f s)\n",
+                static_cast<unsigned long long>(seed), step_15_25.time_constant,
+                step_25_40.time_constant, step_0_80.time_constant, step_0_80.dead_time);
+    t_15_25.push_back(step_15_25.time_constant);
+    t_25_40.push_back(step_25_40.time_constant);
+    t_0_80.push_back(step_0_80.time_constant);
+    // 0–80 %: we accept 10–25 s and 4–12 s in every run (bias noise).
+    EXPECT_GT(step_0_80.time_constant, 10.0);
+    EXPECT_LT(step_0_80.time_constant, 25.0);
+    EXPECT_GT(step_0_80.dead_time, 4.0);
+    EXPECT_LT(step_0_80.dead_time, 12.0);
+    // The 0–80 % step reached ≈ 10 kn on the trial (section 3.5.4).
+    const double u80 = u[static_cast<std::size_t>(std::round(t_cmd[7] * spec.log_rate_hz)) - 1];
+    EXPECT_GT(u80 * 3600.0 / 1852.0, 9.0);
+    EXPECT_LT(u80 * 3600.0 / 1852.0, 12.5);
+  }
+  // 25–40 % within ±30 % of the thesis' 34.2 s, and the growth for smaller steps: the 15–25 %
+  // step slower than the 25–40 % one, which is slower than 1.5 × the 0–80 % one (thesis: 2.1).
+  EXPECT_GT(median(t_25_40), 0.7 * 34.2);
+  EXPECT_LT(median(t_25_40), 1.3 * 34.2);
+  EXPECT_GT(median(t_15_25), median(t_25_40));
+  EXPECT_GT(median(t_25_40), 1.5 * median(t_0_80));
 }
 
 TEST(Calibration, PropellerStepTruthsInThesisRanges) {
@@ -134,20 +157,15 @@ TEST(Calibration, SwayStepsHoldHeadingAndGrowWithTheStep) {
   }
 }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 TEST(Calibration, SwayTotalSpeedTimeConstantsInThesisRange) {
   // Tables 3.28 and 3.30: total speed (3.19) T = 9–19 s for 0–25 … 0–100 % sway steps, larger
   // steps faster; the thesis calls the values of "lower quality" (surge drift, no clear steady
   // state). One run is at the mercy of the current and gusts: a 25 % step to starboard first
   // stops the vessel's drift with the current (0.2 m/s), so its total speed dips before it
   // rises. Checked: over seeds 1–3 and both sides, the median T of the 0–50 % … 0–100 % steps
-  // lies in 9–19 s. Not reproduced, so not checked: "larger steps faster" (the medians at 50 %
-  // and 100 % are within the seed-to-seed scatter of each other; docs/virtual-gunnerus.md).
+  // lies in 9–19 s, and larger steps are faster: the median at 100 % is below the one at 50 %
+  // (seeds 1–3: 13.1 s against 21.4 s; checked on seeds 4–6 as well: 12.0 s against 25.7 s).
+  // Single fits scatter from 5 s to 150 s at 50 %, so the trend is only checked on medians.
   std::vector<double> t_all, t_50, t_100;
   for (const char* name : {"sway-steps-starboard.toml", "sway-steps-port.toml"}) {
     const ScenarioSpec spec = load_scenario(kScenarios / name);
@@ -177,6 +195,7 @@ TEST(Calibration, SwayTotalSpeedTimeConstantsInThesisRange) {
   std::printf("median T %.1f s (50 %%: %.1f s, 100 %%: %.1f s)\n", m, median(t_50), median(t_100));
   EXPECT_GE(m, 9.0);
   EXPECT_LE(m, 19.0);
+  EXPECT_LT(median(t_100), median(t_50));
 }
 
 TEST(Calibration, ThrustMapBackCalculatesTable32) {

@@ -86,8 +86,10 @@ TEST(RunScenario, SteadySurgeMatchesThrustMapAndHullDamping) {
   const double c_fwd = v.propeller.rho * v.propeller.kt_forward * std::pow(v.propeller.diameter, 4);
   // Simulated thrust vs the analytic map (3.17), T = c·n|n|: same formula, so to rounding.
   EXPECT_NEAR(thrust.back(), c_fwd * n.back() * n.back(), 1e-9 * thrust.back());
-  // Allocation of 40 % surge: each propeller gives 20 % of max_surge_N, reached in steady state.
-  EXPECT_NEAR(thrust.back(), 0.2 * v.joystick.max_surge_N, 1e-3 * thrust.back());
+  // A 40 % surge lever demands 0.4^e of max_surge_N (the lever curve); each propeller gives
+  // half of it, reached in steady state.
+  const double demand_N = std::pow(0.4, v.joystick.lever_exponent) * v.joystick.max_surge_N;
+  EXPECT_NEAR(thrust.back(), 0.5 * demand_N, 1e-3 * thrust.back());
   // In still air the superstructure meets a head wind of −u: the speed solves (2.8) with the
   // air drag ½ρ_a·c_x·A_F·u² added to the quadratic damping. 890 s after the step is > 30
   // linearised time constants (≈ 25 s at this speed), so the transient is below 1e-6.
@@ -149,7 +151,7 @@ TEST(RunScenario, StarboardRudderTurnsToStarboardWithNomotoTruth) {
   s.name = "rudder";
   s.duration_s = 80.0;
   s.initial_surge_mps = 3.0;
-  s.joystick = {{0.0, 28.0, 0.0, 0.0}};
+  s.joystick = {{0.0, 51.0, 0.0, 0.0}};  // 26 % of full thrust (lever curve): ≈ 3 m/s
   s.rudder = {{10.0, 20.0, false}};
   const ScenarioRun run = run_scenario(s, calm_vessel(), 1);
   const auto& r = run.truth_log.values("r");

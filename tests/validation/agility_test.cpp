@@ -198,6 +198,11 @@ TEST(AgilityValidation, ResponseTimesMatchTheNoiseFreeTruth) {
         ++nulls;
         continue;
       }
+      // Where the thrust swings back through the 63.2 % level (the tunnel follows the
+      // allocation's sway and yaw split), response_s is the midpoint of the crossings and a
+      // small change of the final level moves it by up to half their spread.
+      tol +=
+          0.5 * std::max(s.thrusters[j].crossing_span_s, t.steps[k].thrusters[j].crossing_span_s);
       (kThrusters[j] == "tunnel" ? max_tunnel : max_prop) =
           std::max(kThrusters[j] == "tunnel" ? max_tunnel : max_prop, std::abs(*got - *want));
       EXPECT_NEAR(*got, *want, tol)

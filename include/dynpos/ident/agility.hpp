@@ -92,9 +92,14 @@ struct AgilityOptions {
 struct AgilityResponse {
   std::string name;                  ///< thruster name, or "speed"
   std::optional<double> response_s;  ///< time to 63.2 % from the step [s]; absent: no response
-  std::optional<double> y0;          ///< level before [signal unit]
-  std::optional<double> y_final;     ///< level at the end of the window [signal unit]
-  std::vector<std::string> notes;    ///< "no response", "reverses", "not settled", …
+  /// Spread of the 63.2 % crossings from below before the response clears the level [s]: 0 for
+  /// a single crossing. response_s is the midpoint of the first and the last; where the signal
+  /// swings back through the level, a small change of the final level moves response_s by up
+  /// to half this spread.
+  double crossing_span_s = 0.0;
+  std::optional<double> y0;        ///< level before [signal unit]
+  std::optional<double> y_final;   ///< level at the end of the window [signal unit]
+  std::vector<std::string> notes;  ///< "no response", "reverses", "not settled", …
 };
 
 /// One agility step and its responses.

@@ -42,8 +42,9 @@ struct HullParams {
   /// constants ≈ 60–100 s for small thrust steps at low speed (thesis table 3.24).
   double x_u_Ns_m = 5.0e3;
   /// Quadratic surge damping −X_|u|u [N·s²/m²]. Source: calibrated — full thrust 2×73 kN gives
-  /// ≈ 12.5 kn, Gunnerus' service speed range.
-  double x_uu_Ns2_m2 = 2.8e3;
+  /// ≈ 12.5 kn (Gunnerus' top speed 12.6 kn), and the 0–80 % joystick step (64 % thrust with the
+  /// lever curve) ≈ 10 kn as on the trial (thesis section 3.5.4).
+  double x_uu_Ns2_m2 = 2.6e3;
   /// Linear sway damping at rest −Y_v0 [N·s/m]. Source: calibrated to sway total-speed time
   /// constants 9–19 s (tables 3.28, 3.30).
   double y_v_Ns_m = 25e3;

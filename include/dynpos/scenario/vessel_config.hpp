@@ -22,6 +22,13 @@ struct JoystickParams {
   double max_surge_N = 146e3;  ///< Source: 2 × 73 kN ahead (ThrusterParams at n_max).
   double max_sway_N = 45e3;    ///< Source: tunnel 25 kN + rudder lift at low speed (reasoned).
   double max_yaw_Nm = 6.0e5;   ///< Source: differential thrust + tunnel moment (reasoned).
+  /// Lever curve exponent e ≥ 1 (joystick_lever.hpp): a lever at p % along an axis demands
+  /// |p/100|^e of the maximum; 1 is a linear lever. Source: calibrated to table 3.24. With e = 2
+  /// a surge lever at p % runs the main propellers at p % of n_max, and the speed change of
+  /// each mid-size step, Δu ≈ T·ΔF/(m − X_u̇), is the same across the 15–25 %, 25–40 % and
+  /// 0–80 % steps (Δu ∝ Δp), which is what the thesis' time constants 59, 34 and 16 s imply;
+  /// with e = 1 the 25–40 % step's T came out at 16–19 s.
+  double lever_exponent = 2.0;
   /// Allocation and joystick update rate [Hz]. Source: reasoned, typical DP cycle.
   double control_rate_hz = 10.0;
   /// Auto-heading (heading hold) natural frequency ω [rad/s] and damping ratio ζ: a PID law
