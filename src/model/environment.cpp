@@ -95,6 +95,23 @@ Eigen::Vector3d Wind::force_b(double heading_rad,
 void BiasParams::validate() const {
   require((std.array() >= 0).all() && std.allFinite(), "BiasParams.std must be >= 0");
   require((time_constant_s.array() > 0).all(), "BiasParams.time_constant_s must be > 0");
+  require(reference_hs_m > 0 && reference_hs_m < 20,
+          "BiasParams.reference_hs_m must be in (0, 20) m");
+  require(calm_fraction >= 0 && calm_fraction <= 1, "BiasParams.calm_fraction must be in [0, 1]");
+}
+
+double BiasParams::sea_state_factor(double hs_m) const noexcept {
+  const double h = hs_m / reference_hs_m;
+  const double c2 = calm_fraction * calm_fraction;
+  return std::sqrt(c2 + (1.0 - c2) * (h * h) * (h * h));
+}
+
+BiasParams bias_for_sea_state(const BiasParams& params, double hs_m) {
+  params.validate();
+  require(hs_m >= 0 && std::isfinite(hs_m), "bias_for_sea_state: Hs must be finite and >= 0");
+  BiasParams scaled = params;
+  scaled.std *= params.sea_state_factor(hs_m);
+  return scaled;
 }
 
 Bias::Bias(const BiasParams& params, std::uint64_t seed, double dt_s) {

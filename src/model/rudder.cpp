@@ -31,6 +31,8 @@ void RudderParams::validate() const {
           "in (0, pi/2) rad");
   require(detail::closed_range(post_stall_lift_fraction, 0.0, 1.0), o, "post_stall_lift_fraction",
           post_stall_lift_fraction, "in [0, 1]");
+  require(post_stall_width > 0.0 && post_stall_width <= kPi / 2, o, "post_stall_width",
+          post_stall_width, "in (0, pi/2] rad");
   require(detail::half_open_range(drag_zero, 0.0, 1.0), o, "drag_zero", drag_zero, "in [0, 1)");
   require(detail::half_open_range(drag_angle, 0.0, 3.0), o, "drag_angle", drag_angle, "in [0, 3)");
   require(detail::closed_range(slipstream_fraction, 0.0, 1.0), o, "slipstream_fraction",
@@ -56,7 +58,7 @@ double Rudder::lift_coefficient(double a) const noexcept {
   const double mag = std::abs(a);
   if (mag <= p.stall_angle) return p.lift_slope * a;
   const double peak = p.lift_slope * p.stall_angle;
-  const double frac = std::clamp((mag - p.stall_angle) / (kPi / 2 - p.stall_angle), 0.0, 1.0);
+  const double frac = std::clamp((mag - p.stall_angle) / p.post_stall_width, 0.0, 1.0);
   return detail::sign(a) * peak * (1.0 - (1.0 - p.post_stall_lift_fraction) * frac);
 }
 

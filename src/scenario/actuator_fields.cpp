@@ -40,6 +40,7 @@ std::vector<ParamField> rudder_fields(model::RudderParams& p) {
       {"lift_slope_per_rad", &p.lift_slope, 0.1, 10},
       {"stall_angle_deg", &p.stall_angle, 1, 60, kDegToRad},
       {"post_stall_lift_fraction", &p.post_stall_lift_fraction, 0, 1},
+      {"post_stall_width_deg", &p.post_stall_width, 0.1, 90, kDegToRad},
       {"drag_zero", &p.drag_zero, 0, 1},
       {"drag_angle", &p.drag_angle, 0, 5},
       {"slipstream_fraction", &p.slipstream_fraction, 0, 1},

@@ -165,7 +165,7 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
   const double log_period = 1.0 / spec.log_rate_hz;
   model::Current current(current_params, seed, dt);
   model::Wind wind(wind_params, seed, dt);
-  model::Bias bias(vessel.bias, seed, dt);
+  model::Bias bias(model::bias_for_sea_state(vessel.bias, env.hs_m), seed, dt);
   model::WaveMotion waves(sea, vessel.waves, seed, log_period);
   std::vector<model::StepLoad> loads;
   for (const LoadEvent& e : spec.loads) {

@@ -87,6 +87,8 @@ std::vector<ParamField> bias_fields(model::BiasParams& p) {
       {"time_constant_north_s", &p.time_constant_s[0], 1, 1e6},
       {"time_constant_east_s", &p.time_constant_s[1], 1, 1e6},
       {"time_constant_yaw_s", &p.time_constant_s[2], 1, 1e6},
+      {"reference_hs_m", &p.reference_hs_m, 0.01, 19.99},
+      {"calm_fraction", &p.calm_fraction, 0, 1},
   };
 }
 

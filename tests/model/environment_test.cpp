@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 
 namespace dynpos::model {
 namespace {
@@ -78,6 +79,44 @@ TEST(Bias, SameSeedSameSequenceOtherSeedOther) {
   }
   EXPECT_EQ(a.value_n(), b.value_n());
   EXPECT_NE(a.value_n(), c.value_n());
+}
+
+TEST(Bias, SeaStateFactorIsOneAtTheReferenceAndTheCalmFractionInCalmWater) {
+  BiasParams p;  // H_ref = 2 m, c = 0.25
+  EXPECT_DOUBLE_EQ(p.sea_state_factor(2.0), 1.0);
+  EXPECT_DOUBLE_EQ(p.sea_state_factor(0.0), 0.25);
+  // k(1 m) = √(c² + (1 − c²)/16) by hand: √(0.0625 + 0.05859375) = 0.348010...
+  EXPECT_NEAR(p.sea_state_factor(1.0), std::sqrt(0.0625 + 0.9375 / 16.0), 1e-15);
+  // Far above the reference the wave part dominates: k → √(1 − c²)·(H_s/H_ref)², the drift
+  // force law (at 4·H_ref the calm part adds 1.4·10⁻⁴ of it).
+  EXPECT_NEAR(p.sea_state_factor(8.0) / 16.0, std::sqrt(0.9375), 1e-3);
+  double previous = 0.0;
+  for (double hs = 0.0; hs <= 6.0; hs += 0.25) {
+    const double k = p.sea_state_factor(hs);
+    EXPECT_GE(k, previous) << "Hs " << hs;
+    previous = k;
+  }
+  p.calm_fraction = 1.0;  // scaling off
+  EXPECT_DOUBLE_EQ(p.sea_state_factor(0.0), 1.0);
+  EXPECT_DOUBLE_EQ(p.sea_state_factor(2.0), 1.0);
+}
+
+TEST(Bias, ScaledForTheSeaStateIsTheSameSequenceTimesTheFactor) {
+  const BiasParams p;
+  const BiasParams calm = bias_for_sea_state(p, 0.1);
+  EXPECT_EQ(calm.time_constant_s, p.time_constant_s);
+  Bias full(p, 9, 0.01), scaled(calm, 9, 0.01);
+  const double k = p.sea_state_factor(0.1);
+  for (int i = 0; i < 1000; ++i) {
+    full.step();
+    scaled.step();
+  }
+  // Same seed, same white noise: the Gauss–Markov state is linear in its std.
+  EXPECT_LT((scaled.value_n() - k * full.value_n()).norm(), 1e-9 * full.value_n().norm());
+  EXPECT_THROW(bias_for_sea_state(p, -1.0), std::invalid_argument);
+  BiasParams bad = p;
+  bad.calm_fraction = 1.5;
+  EXPECT_THROW(bias_for_sea_state(bad, 1.0), std::invalid_argument);
 }
 
 TEST(StepLoads, SwitchOnAndOffAtTheirTimes) {

@@ -117,6 +117,25 @@ TEST(Rudder, LiftCurveIsLinearOddAndContinuousAtStall) {
               p.post_stall_lift_fraction * p.lift_slope * p.stall_angle, 1e-12);
 }
 
+TEST(Rudder, LiftFallsOverThePostStallWidthAndStaysFlat) {
+  RudderParams p;
+  p.stall_angle = 30 * kDeg;
+  p.post_stall_width = 10 * kDeg;
+  p.post_stall_lift_fraction = 0.6;
+  const Rudder rudder(p);
+  const double peak = p.lift_slope * p.stall_angle;
+  // Halfway through the fall: 1 − 0.4/2 of the peak; at its end and beyond: 0.6 of it.
+  EXPECT_NEAR(rudder.lift_coefficient(35 * kDeg), 0.8 * peak, 1e-12);
+  EXPECT_NEAR(rudder.lift_coefficient(40 * kDeg), 0.6 * peak, 1e-12);
+  EXPECT_NEAR(rudder.lift_coefficient(47 * kDeg), 0.6 * peak, 1e-12);
+  EXPECT_NEAR(rudder.lift_coefficient(-89 * kDeg), -0.6 * peak, 1e-12);
+  // Width and fraction are validated.
+  p.post_stall_width = 0.0;
+  EXPECT_THROW(Rudder{p}, std::invalid_argument);
+  p.post_stall_width = 91 * kDeg;
+  EXPECT_THROW(Rudder{p}, std::invalid_argument);
+}
+
 TEST(Rudder, SideForceInversionRoundTrips) {
   const Rudder rudder;
   for (double u : {0.0, 1.5, 3.0}) {

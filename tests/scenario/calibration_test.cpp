@@ -52,25 +52,34 @@ TEST(Calibration, SurgeStepsForwardMatchTheThesisShape) {
   // Table 3.24: T = 16.4 s (δ 8.5 s) for 0–80 %, 34.2 s for 25–40 %, 59.2 s for 15–25 %: the
   // time constant grows as the steps get smaller. One run is at the mercy of the current
   // (0.2 m/s, varying) and the heading's drift without auto heading, so the mid-size steps are
-  // checked on the median over seeds 1–3 (measured 30.8/35.1/31.8 s and 45.7/65.5/20.7 s).
-  // The steps below 15 % (a 5 % lever is 0.25 % of full thrust through the lever curve, the
-  // size of the 3.3 m/s wind's surge force) move the vessel by less than the current and are
-  // not checked (docs/virtual-gunnerus.md).
+  // checked on the median over seeds 1–3 (measured 31.5/31.9/31.8 s and 52.3/38.4/61.8 s).
+  // The small steps 5–10 and 10–15 % (0.75 and 1.25 % of full thrust through the lever curve,
+  // 1.1 and 1.8 kN) are the thesis' 63.3 and 135 s; with the calm-water bias (500 N) they are
+  // fitted at 29.0/70.1/97.0 s and 64.7/57.2/74.9 s. The 0–5 % step (0.37 kN) moves the
+  // vessel by less than the current and the bias do and is not checked
+  // (docs/virtual-gunnerus.md).
   const ScenarioSpec spec = load_scenario(kScenarios / "surge-steps-forward.toml");
   std::vector<double> t_cmd;
   for (const auto& c : spec.joystick) t_cmd.push_back(c.t_s);
   t_cmd.push_back(spec.duration_s);
   // Commands: 0→5, 5→10, 10→15, 15→25, 25→40, 40→0, 0→80, 80→0 %.
-  std::vector<double> t_15_25, t_25_40, t_0_80;
+  std::vector<double> t_5_10, t_10_15, t_15_25, t_25_40, t_0_80;
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
     const ScenarioRun run = run_scenario(spec, VesselConfig{}, seed);
     const auto& u = run.truth_log.values("u");
+    const model::FopdtTruth step_5_10 = fit_step(run.truth_log, u, t_cmd[1], t_cmd[2]);
+    const model::FopdtTruth step_10_15 = fit_step(run.truth_log, u, t_cmd[2], t_cmd[3]);
     const model::FopdtTruth step_15_25 = fit_step(run.truth_log, u, t_cmd[3], t_cmd[4]);
     const model::FopdtTruth step_25_40 = fit_step(run.truth_log, u, t_cmd[4], t_cmd[5]);
     const model::FopdtTruth step_0_80 = fit_step(run.truth_log, u, t_cmd[6], t_cmd[7]);
-    std::printf("seed %llu: T 15-25 %% %.1f s, 25-40 %% %.1f s, 0-80 %% %.1f s (delay %.1f s)\n",
-                static_cast<unsigned long long>(seed), step_15_25.time_constant,
-                step_25_40.time_constant, step_0_80.time_constant, step_0_80.dead_time);
+    std::printf(
+        "seed %llu: T 5-10 %% %.1f s, 10-15 %% %.1f s, 15-25 %% %.1f s, 25-40 %% %.1f s, 0-80 %% "
+        "%.1f s (delay %.1f s)\n",
+        static_cast<unsigned long long>(seed), step_5_10.time_constant, step_10_15.time_constant,
+        step_15_25.time_constant, step_25_40.time_constant, step_0_80.time_constant,
+        step_0_80.dead_time);
+    t_5_10.push_back(step_5_10.time_constant);
+    t_10_15.push_back(step_10_15.time_constant);
     t_15_25.push_back(step_15_25.time_constant);
     t_25_40.push_back(step_25_40.time_constant);
     t_0_80.push_back(step_0_80.time_constant);
@@ -90,6 +99,13 @@ TEST(Calibration, SurgeStepsForwardMatchTheThesisShape) {
   EXPECT_LT(median(t_25_40), 1.3 * 34.2);
   EXPECT_GT(median(t_15_25), median(t_25_40));
   EXPECT_GT(median(t_25_40), 1.5 * median(t_0_80));
+  // Small steps: each median within the thesis' 63–135 s widened by a third (42–180 s), and
+  // slower than the 25–40 % step.
+  for (const auto* small : {&t_5_10, &t_10_15}) {
+    EXPECT_GT(median(*small), 42.0);
+    EXPECT_LT(median(*small), 180.0);
+    EXPECT_GT(median(*small), median(t_25_40));
+  }
 }
 
 TEST(Calibration, PropellerStepTruthsInThesisRanges) {
@@ -114,7 +130,7 @@ TEST(Calibration, PropellerStepTruthsInThesisRanges) {
 
 TEST(Calibration, SwayStepsHoldHeadingAndGrowWithTheStep) {
   // Joystick sway steps with auto heading (thesis 3.5, tables 3.27–3.30). What holds: the
-  // heading stays within a few degrees, and the through-water sway speed at the end of each
+  // heading is held once a step has settled, and the through-water sway speed at the end of each
   // step is to starboard and grows with the step. The total-speed time constants (3.19) are
   // checked over several seeds in SwayTotalSpeedTimeConstantsInThesisRange.
   const ScenarioSpec spec = load_scenario(kScenarios / "sway-steps-starboard.toml");
@@ -134,9 +150,29 @@ TEST(Calibration, SwayStepsHoldHeadingAndGrowWithTheStep) {
   for (double psi : log.values("heading")) {
     max_heading_dev = std::max(max_heading_dev, std::abs(core::wrap_pi(psi)));
   }
-  // ω = 0.15 rad/s auto heading against wind, current and the yaw moment of each step.
-  EXPECT_LT(max_heading_dev, core::deg_to_rad(4.0));
+  // Auto heading (ω = 0.15 rad/s) against wind, current and the yaw moment of each step. At the
+  // onset of a large step the tunnel's force arrives seconds before the stern's side force,
+  // which waits for propeller thrust (dead time 1.3 s, 7.5 kN/s), and the bow swings off:
+  // peaks of 3.8–7.4° over seeds 1–6 and both sides (seed 1 here: 4.4°). Once the step has
+  // settled, the heading is held: the mean over the last 30 s of every step is within
+  // 0.3–0.7° of the set heading over the same runs.
+  EXPECT_LT(max_heading_dev, core::deg_to_rad(8.0));
   const auto& cmds = run.truth["commands"];
+  for (std::size_t k = 0; k < cmds.size(); ++k) {
+    const double t0 = cmds[k]["t_s"].get<double>();
+    const double t1 =
+        k + 1 < cmds.size() ? cmds[k + 1]["t_s"].get<double>() : t.back() + 1.0 / spec.log_rate_hz;
+    double sum = 0.0;
+    int n = 0;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      if (t[i] >= t1 - 30.0 && t[i] < t1) {
+        sum += core::wrap_pi(log.values("heading")[i]);
+        ++n;
+      }
+    }
+    ASSERT_GT(n, 0) << "step at " << t0 << " s";
+    EXPECT_LT(std::abs(sum / n), core::deg_to_rad(1.0)) << "held heading, step at " << t0 << " s";
+  }
   double previous = 0.0;
   for (std::size_t k = 0; k + 1 < cmds.size(); k += 2) {  // 0–25, 0–50, 0–75, 0–100 %
     const double t0 = cmds[k]["t_s"].get<double>(), t1 = cmds[k + 1]["t_s"].get<double>();
@@ -274,6 +310,54 @@ TEST(Calibration, YawRateResponseMatchesTable331) {
   // Shorter at 6 kn, in T and in T + δ (table 3.31: 4.7–5.6 s against 2.9–3.0 s).
   EXPECT_GT(mean_T(fits_3kn), mean_T(fits_6kn));
   EXPECT_GT(mean_t63(fits_3kn), mean_t63(fits_6kn));
+
+  // 47°→0 (table 3.32): T + δ 12.6–16.1 s at 3 kn and 10.7–10.8 s at 6 kn, ±25 % as above
+  // (measured over seeds 1–5: 11.5–13.0 s and 9.8–10.7 s; seed 1: 11.6 s and 10.1 s).
+  std::vector<model::FopdtTruth> back_3kn, back_6kn;
+  // 20°→47° (section 3.5, figures 3.15–3.18): "an initial pulse in yaw rate, but does not
+  // significantly change the steady state yaw rate". The ratio of the mean rate over the last
+  // 5 s before the next command, after and before the step, averaged over the four steps, is
+  // taken within 1 ± 0.3 (measured 1.10 on this seed, 1.03–1.41 for single steps over seeds
+  // 1–5; a rudder whose lift fell over 60° after stall gave 1.7–1.95, which fails).
+  const auto tail_mean = [&](double t_next) {
+    double sum = 0.0;
+    int n = 0;
+    const auto& t = run.truth_log.time();
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      if (t[i] >= t_next - 5.0 && t[i] < t_next) {
+        sum += r[i];
+        ++n;
+      }
+    }
+    return sum / n;
+  };
+  double ratio_sum = 0.0;
+  int ratios = 0;
+  for (std::size_t k = 1; k < spec.rudder.size(); ++k) {
+    const double angle = spec.rudder[k].angle_deg;
+    const double t_step = spec.rudder[k].t_s;
+    const double t_next = k + 1 < spec.rudder.size() ? spec.rudder[k + 1].t_s : spec.duration_s;
+    if (std::abs(angle) == 47.0 && std::abs(spec.rudder[k - 1].angle_deg) == 20.0) {
+      ratio_sum += tail_mean(t_next) / tail_mean(t_step);
+      ++ratios;
+    }
+    if (angle == 0.0 && std::abs(spec.rudder[k - 1].angle_deg) == 47.0) {
+      (t_step < t_6kn ? back_3kn : back_6kn).push_back(fit_step(run.truth_log, r, t_step, t_next));
+    }
+  }
+  ASSERT_EQ(ratios, 4);
+  std::printf(
+      "20->47 deg: steady rate ratio %.2f; 47->0 deg: T + delay %.1f s (3 kn), %.1f s "
+      "(6 kn)\n",
+      ratio_sum / ratios, mean_t63(back_3kn), mean_t63(back_6kn));
+  EXPECT_GT(ratio_sum / ratios, 0.7);
+  EXPECT_LT(ratio_sum / ratios, 1.3);
+  ASSERT_EQ(back_3kn.size(), 2u);
+  ASSERT_EQ(back_6kn.size(), 2u);
+  EXPECT_GT(mean_t63(back_3kn), 0.75 * 12.6);
+  EXPECT_LT(mean_t63(back_3kn), 1.25 * 16.1);
+  EXPECT_GT(mean_t63(back_6kn), 0.75 * 10.7);
+  EXPECT_LT(mean_t63(back_6kn), 1.25 * 10.8);
 }
 
 // Standard deviation of the samples of y with t in [t0, t1).

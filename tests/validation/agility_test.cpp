@@ -140,7 +140,7 @@ TEST(AgilityValidation, ResponseTimesMatchTheNoiseFreeTruth) {
   //    off single noisy samples, so its time error is about σ divided by the slope of the true
   //    speed at the crossing; the vessel is slow (the speed is still rising at the end of the
   //    40 s step), so this is seconds. Tolerance max(1 s, 3σ/slope), the slope taken from the
-  //    true speed ±1 s around its crossing.
+  //    true speed ±1 s around its crossing, plus half the spread of the crossings (below).
   // Feedback noise of each logged thrust [kN]: RMS of logged minus true over the whole log.
   std::vector<double> feedback_sigma(kThrusters.size(), 0.0);
   for (std::size_t j = 0; j < kThrusters.size(); ++j) {
@@ -217,7 +217,12 @@ TEST(AgilityValidation, ResponseTimesMatchTheNoiseFreeTruth) {
       const double slope = std::abs(interpolate(truth.time(), speed_true, tc + 1.0) -
                                     interpolate(truth.time(), speed_true, tc - 1.0)) /
                            2.0;
-      const double tol = std::max(1.0, 3.0 * 0.02 / slope);
+      // As for the thrusts: where the speed swings back through its 63.2 % level (steps that
+      // start with the vessel still moving from the previous one), the noise of one sample
+      // decides which crossing comes first, and the midpoint moves by up to half the spread.
+      const double tol =
+          std::max(1.0, 3.0 * 0.02 / slope) +
+          0.5 * std::max(s.speed->crossing_span_s, t.steps[k].speed->crossing_span_s);
       EXPECT_NEAR(*s.speed->response_s, *t.steps[k].speed->response_s, tol)
           << "speed at " << s.direction_deg << "° t = " << s.t_step;
       max_speed =

@@ -53,12 +53,19 @@ struct RudderParams {
   /// 2πΛ/(Λ + 2) ≈ 2.8 for Λ = 1.64.
   double lift_slope = 2.8;
   /// Stall angle of attack α_stall [rad], range (0, π/2). Source: reasoned — 30°; rudders in a
-  /// slipstream stall late. Consistent with the thesis yaw tests: 20°→47° gave only a pulse in
-  /// yaw rate, not a larger steady turn.
+  /// slipstream stall late.
   double stall_angle = 30.0 * 3.14159265358979323846 / 180.0;
-  /// Lift retained at 90° relative to the stall peak [-], range [0, 1]. Source: reasoned —
-  /// post-stall lift falls linearly from C_Lα·α_stall at α_stall to this fraction at 90°.
+  /// Lift retained after stall relative to the stall peak [-], range [0, 1]. Source: reasoned —
+  /// post-stall lift falls linearly from C_Lα·α_stall at α_stall to this fraction at
+  /// α_stall + post_stall_width and stays there up to 90°.
   double post_stall_lift_fraction = 0.6;
+  /// Angle over which the lift falls from its stall peak to the post-stall fraction [rad], range
+  /// (0, π/2]. Source: calibrated to the thesis yaw tests (section 3.5, figures 3.15–3.18): the
+  /// rudder step 20°→47° gives "an initial pulse in yaw rate, but does not significantly change
+  /// the steady state". 10°, an abrupt stall as for a thick low-aspect-ratio section, raises the
+  /// steady rate by 16–20 % there (60° spread the fall up to 90° and raised it by 70–95 %); the
+  /// pulse is the lift peak at α_stall passed on the way.
+  double post_stall_width = 10.0 * 3.14159265358979323846 / 180.0;
   /// Zero-lift drag coefficient C_D0 [-], range [0, 1). Source: reasoned — NACA-type section.
   double drag_zero = 0.013;
   /// Angle-dependent drag C_D = C_D0 + k_D·sin²α_e, k_D [-], range [0, 3). Source: reasoned —
@@ -118,7 +125,7 @@ class Rudder {
   RudderForce force(double angle, const RudderInflow& inflow) const noexcept;
 
   /// Lift coefficient C_L(α_e): linear to stall, then falling linearly to the post-stall
-  /// fraction at 90°; odd in α_e; |α_e| ≤ π/2 expected.
+  /// fraction over the post-stall width and flat beyond; odd in α_e; |α_e| ≤ π/2 expected.
   double lift_coefficient(double angle_of_attack) const noexcept;
   /// Drag coefficient C_D(α_e) = C_D0 + k_D·sin²α_e.
   double drag_coefficient(double angle_of_attack) const noexcept;
