@@ -1,0 +1,2 @@
+// The translation unit that builds the shared precompiled header of the libraries and the
+// command-line tool (cmake/DynposModule.cmake).
