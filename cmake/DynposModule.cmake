@@ -8,13 +8,6 @@ if(DYNPOS_SANITIZE)
   target_link_options(dynpos_warnings INTERFACE -fsanitize=address,undefined)
 endif()
 
-# One precompiled header shared by the libraries and the command-line tool: Eigen and the
-# standard library, which no project macro changes, are most of their parse time.
-add_library(dynpos_pch OBJECT ${PROJECT_SOURCE_DIR}/cmake/pch_anchor.cpp)
-target_link_libraries(dynpos_pch PRIVATE Eigen3::Eigen dynpos_warnings)
-target_precompile_headers(dynpos_pch PRIVATE <Eigen/Dense> <algorithm> <cmath> <map> <optional>
-  <span> <stdexcept> <string> <vector>)
-
 # dynpos_add_module(NAME DEPS targets...)
 # One static library per module from src/NAME/*.cpp, public headers in include/dynpos/NAME.
 # A module links only to the modules it names, so a wrong include fails to build.
@@ -34,7 +27,6 @@ function(dynpos_add_module name)
     PUBLIC $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include>
     PRIVATE ${PROJECT_SOURCE_DIR}/src/${name})
   target_link_libraries(dynpos_${name} PUBLIC ${ARG_DEPS} PRIVATE dynpos_warnings)
-  target_precompile_headers(dynpos_${name} REUSE_FROM dynpos_pch)
 endfunction()
 
 # dynpos_add_test(NAME SOURCE LIBS...): one GoogleTest executable registered with CTest.
