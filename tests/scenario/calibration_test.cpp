@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <span>
 
 #include "dynpos/core/circular_stats.hpp"
@@ -40,6 +41,18 @@ model::FopdtTruth fit_step(const core::Log& log, const std::vector<double>& y, d
   const auto fit = model::fopdt_two_point(tt, yy, t_step);
   EXPECT_TRUE(fit.has_value()) << "step at " << t_step;
   return fit.value_or(model::FopdtTruth{});
+}
+
+// Mean of the samples of y with t in [t0, t1); NaN (failing every comparison) if there are none.
+double window_mean(const core::Log& log, const std::vector<double>& y, double t0, double t1) {
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < y.size(); ++i) {
+    if (log.time()[i] < t0 || log.time()[i] >= t1) continue;
+    sum += y[i];
+    ++n;
+  }
+  return n > 0 ? sum / static_cast<double>(n) : std::numeric_limits<double>::quiet_NaN();
 }
 
 double median(std::vector<double> v) {
@@ -147,13 +160,15 @@ TEST(Calibration, SwayStepsHoldHeadingAndGrowWithTheStep) {
     total[i] = std::hypot(log.values("u")[i], log.values("v")[i]);  // (3.19)
   }
   double max_heading_dev = 0.0;
+  std::vector<double> heading_wrapped;
   for (double psi : log.values("heading")) {
-    max_heading_dev = std::max(max_heading_dev, std::abs(core::wrap_pi(psi)));
+    heading_wrapped.push_back(core::wrap_pi(psi));
+    max_heading_dev = std::max(max_heading_dev, std::abs(heading_wrapped.back()));
   }
   // Auto heading (ω = 0.15 rad/s) against wind, current and the yaw moment of each step. At the
   // onset of a large step the tunnel's force arrives seconds before the stern's side force,
   // which waits for propeller thrust (dead time 1.3 s, 7.5 kN/s), and the bow swings off:
-  // peaks of 3.8–7.4° over seeds 1–6 and both sides (seed 1 here: 4.4°). Once the step has
+  // peaks of 3.7–7.4° over seeds 1–6 and both sides (seed 1 here: 4.4°). Once the step has
   // settled, the heading is held: the mean over the last 30 s of every step is within
   // 0.3–0.7° of the set heading over the same runs.
   EXPECT_LT(max_heading_dev, core::deg_to_rad(8.0));
@@ -162,29 +177,13 @@ TEST(Calibration, SwayStepsHoldHeadingAndGrowWithTheStep) {
     const double t0 = cmds[k]["t_s"].get<double>();
     const double t1 =
         k + 1 < cmds.size() ? cmds[k + 1]["t_s"].get<double>() : t.back() + 1.0 / spec.log_rate_hz;
-    double sum = 0.0;
-    int n = 0;
-    for (std::size_t i = 0; i < t.size(); ++i) {
-      if (t[i] >= t1 - 30.0 && t[i] < t1) {
-        sum += core::wrap_pi(log.values("heading")[i]);
-        ++n;
-      }
-    }
-    ASSERT_GT(n, 0) << "step at " << t0 << " s";
-    EXPECT_LT(std::abs(sum / n), core::deg_to_rad(1.0)) << "held heading, step at " << t0 << " s";
+    EXPECT_LT(std::abs(window_mean(log, heading_wrapped, t1 - 30.0, t1)), core::deg_to_rad(1.0))
+        << "held heading, step at " << t0 << " s";
   }
   double previous = 0.0;
   for (std::size_t k = 0; k + 1 < cmds.size(); k += 2) {  // 0–25, 0–50, 0–75, 0–100 %
     const double t0 = cmds[k]["t_s"].get<double>(), t1 = cmds[k + 1]["t_s"].get<double>();
-    double v_end = 0.0;
-    int n = 0;
-    for (std::size_t i = 0; i < t.size(); ++i) {
-      if (t[i] >= t1 - 30.0 && t[i] < t1) {
-        v_end += v_water[i];
-        ++n;
-      }
-    }
-    v_end /= n;
+    const double v_end = window_mean(log, v_water, t1 - 30.0, t1);
     const model::FopdtTruth f = fit_step(log, total, t0, t1);
     std::printf("sway 0-%.0f %%: v through water %.2f m/s; total speed T %.1f s, delay %.1f s\n",
                 cmds[k]["sway_pct"].get<double>(), v_end, f.time_constant, f.dead_time);
@@ -321,16 +320,7 @@ TEST(Calibration, YawRateResponseMatchesTable331) {
   // taken within 1 ± 0.3 (measured 1.10 on this seed, 1.03–1.41 for single steps over seeds
   // 1–5; a rudder whose lift fell over 60° after stall gave 1.7–1.95, which fails).
   const auto tail_mean = [&](double t_next) {
-    double sum = 0.0;
-    int n = 0;
-    const auto& t = run.truth_log.time();
-    for (std::size_t i = 0; i < t.size(); ++i) {
-      if (t[i] >= t_next - 5.0 && t[i] < t_next) {
-        sum += r[i];
-        ++n;
-      }
-    }
-    return sum / n;
+    return window_mean(run.truth_log, r, t_next - 5.0, t_next);
   };
   double ratio_sum = 0.0;
   int ratios = 0;

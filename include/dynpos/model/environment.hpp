@@ -99,7 +99,7 @@ struct BiasParams {
   double reference_hs_m = 2.0;
   /// Calm-water fraction c of the std [-], range [0, 1]; 1 disables the sea-state scaling.
   /// Source: calibrated — with the full 2 kN in calm water the 0.4–3.3 kN of the small surge
-  /// steps (thesis table 3.24) drown in it; with 0.25 (500 N) they are fitted at 30–100 s.
+  /// steps (thesis table 3.24) drown in it; with 0.25 (500 N) they are fitted at 29–97 s.
   double calm_fraction = 0.25;
   void validate() const;
   /// k(H_s) above, for significant wave height H_s [m] ≥ 0.
