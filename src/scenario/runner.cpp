@@ -20,6 +20,7 @@
 #include "dynpos/model/thrust_allocation.hpp"
 #include "dynpos/scenario/joystick_lever.hpp"
 #include "dynpos/scenario/vessel_plant.hpp"
+#include "dynpos/sim/sim_time.hpp"
 #include "dynpos/sim/simulator.hpp"
 #include "sensor_logger.hpp"
 #include "vessel_motion.hpp"
@@ -101,6 +102,7 @@ nlohmann::json scenario_json(const ScenarioSpec& spec) {
   j["log_rate_hz"] = spec.log_rate_hz;
   j["initial_heading_deg"] = spec.initial_heading_deg;
   j["initial_surge_mps"] = spec.initial_surge_mps;
+  j["settle_s"] = spec.settle_s;
   j["start_utc"] = spec.start_utc;
   const EnvironmentSpec& e = spec.environment;
   j["rudder"] = nlohmann::json::array();
@@ -200,7 +202,15 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
 
   sim::SimulatorOptions options;
   options.dt = dt;
-  options.end_time = spec.duration_s;
+  // The simulation runs settle_s before the scenario's t = 0; every task works in scenario
+  // time t = (k − k_settle)·dt, exact on the grid like the simulator's own, and the loggers
+  // record from t = 0 on.
+  const sim::TimeGrid grid(dt);
+  const sim::Tick settle_ticks = grid.ticks(spec.settle_s, "settle_s");
+  const auto scenario_time = [&](const sim::TaskContext& c) {
+    return grid.time(c.tick() - settle_ticks);
+  };
+  options.end_time = spec.settle_s + spec.duration_s;
   sim::Simulator simulator(plant, options);
 
   nlohmann::json truth;
@@ -279,9 +289,9 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
       std::max(0.0, 2.0 * js.heading_hold_zeta * w_h * inertia_z - vessel.hull.n_r_Nms);
   const double ki_heading = kp_heading * w_h / 10.0;  // integral time 10/ω
   simulator.add_periodic_task("control", 1.0 / js.control_rate_hz, 0.0, [&](sim::TaskContext& c) {
+    const double t = scenario_time(c);
     bool changed = false;
-    while (next_command < spec.joystick.size() &&
-           spec.joystick[next_command].t_s <= c.time() + 1e-9) {
+    while (next_command < spec.joystick.size() && spec.joystick[next_command].t_s <= t + 1e-9) {
       const JoystickCommand& j = spec.joystick[next_command++];
       lever_pct = {j.surge_pct, j.sway_pct, j.yaw_pct};
       changed = true;
@@ -310,16 +320,16 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
       const Eigen::Vector3d nu = c.state().segment<3>(Plant::kHull + Hull::kSurge);
       while (next_setpoint < spec.setpoints.size()) {
         const SetpointCommand& sp = spec.setpoints[next_setpoint];
-        const bool timed = sp.t_s >= 0.0 && sp.t_s <= c.time() + 1e-9;
+        const bool timed = sp.t_s >= 0.0 && sp.t_s <= t + 1e-9;
         const bool on_reach = sp.t_s < 0.0 && dp_active && circle.reached(eta, setpoint);
         if (!timed && !on_reach) break;
-        if (on_reach) truth["setpoints"].back()["t_reached_s"] = c.time();
-        apply_setpoint(sp, c.time());
+        if (on_reach) truth["setpoints"].back()["t_reached_s"] = t;
+        apply_setpoint(sp, t);
         ++next_setpoint;
       }
       if (dp_active && next_setpoint == spec.setpoints.size() &&
           !truth["setpoints"].back().contains("t_reached_s") && circle.reached(eta, setpoint)) {
-        truth["setpoints"].back()["t_reached_s"] = c.time();
+        truth["setpoints"].back()["t_reached_s"] = t;
       }
       if (dp_active) {
         const double dt_control = 1.0 / js.control_rate_hz;
@@ -336,7 +346,6 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
           // Hybrid integral action, practical rule (5.64)–(5.67): ẋ₂ from the last two control
           // samples (only if both are after the last jump), x̂₃ from the closed loop (5.44).
           const hybrid::IntegralJumpParams& hp = *spec.hybrid_integral;
-          const double t = c.time();
           if (prev_x2_time >= last_jump_time && t - last_jump_time >= hp.dwell_s) {
             const Eigen::Vector3d x2_dot = (cmd_dp.x2 - prev_x2) / (t - prev_x2_time);
             const Eigen::Vector3d x3_hat = hybrid::estimate_integral_error(
@@ -368,7 +377,7 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
     const Commands before = cmd;
     cmd = {a.n_port, a.n_stb, a.rudder_port, a.rudder_stb, a.n_tunnel};
     last_forces = a.forces;
-    while (next_rudder < spec.rudder.size() && spec.rudder[next_rudder].t_s <= c.time() + 1e-9) {
+    while (next_rudder < spec.rudder.size() && spec.rudder[next_rudder].t_s <= t + 1e-9) {
       const RudderCommand& rc = spec.rudder[next_rudder++];
       const double from = rudder_override.value_or(before.rudder_stb);
       rudder_override =
@@ -378,7 +387,7 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
             std::clamp(*rudder_override, -vessel.rudder.max_angle, vessel.rudder.max_angle);
         const double u0 = c.state()[Plant::kHull + Hull::kSurge];
         nlohmann::json step = {
-            {"t_s", c.time()},
+            {"t_s", t},
             {"from_deg", core::rad_to_deg(from)},
             {"to_deg", core::rad_to_deg(to)},
             {"surge_mps", u0},
@@ -394,7 +403,7 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
     unmet.add(a.tau_unmet_b);
     if (changed) {
       truth["commands"].push_back(
-          {{"t_s", c.time()},
+          {{"t_s", t},
            {"surge_pct", lever_pct.x()},
            {"sway_pct", lever_pct.y()},
            {"yaw_pct", lever_pct.z()},
@@ -408,14 +417,14 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
            {"n_tunnel_rps", cmd.n_tunnel},
            {"tau_unmet", {a.tau_unmet_b.x(), a.tau_unmet_b.y(), a.tau_unmet_b.z()}}});
       if (std::abs(cmd.n_stb - before.n_stb) > 1e-3) {
-        const model::ThrusterStepTruth t =
+        const model::ThrusterStepTruth step =
             model::thruster_step_truth(plant.propeller(), before.n_stb, cmd.n_stb, dt);
-        truth["propeller_steps"].push_back({{"t_s", c.time()},
+        truth["propeller_steps"].push_back({{"t_s", t},
                                             {"thruster", "stb"},
                                             {"n_from_rps", before.n_stb},
                                             {"n_to_rps", cmd.n_stb},
-                                            {"shaft_speed", fopdt_json(t.shaft_speed)},
-                                            {"thrust", fopdt_json(t.thrust)}});
+                                            {"shaft_speed", fopdt_json(step.shaft_speed)},
+                                            {"thrust", fopdt_json(step.thrust)}});
       }
     }
   });
@@ -437,7 +446,7 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
     const double uu = x[Plant::kHull + Hull::kSurge], vv = x[Plant::kHull + Hull::kSway];
     const Eigen::Vector2d velocity_n(cs * uu - sn * vv, sn * uu + cs * vv);
     u.segment<3>(Plant::kTauEnvBody) = wind.force_b(psi, velocity_n) + waves.drift_force_b(psi);
-    u.segment<3>(Plant::kForceNed) = bias.value_n() + model::step_loads_n(loads, c.time());
+    u.segment<3>(Plant::kForceNed) = bias.value_n() + model::step_loads_n(loads, scenario_time(c));
     u.segment<2>(Plant::kCurrentNed) = current.velocity_n();
   });
 
@@ -470,10 +479,12 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
   std::size_t log_tick = 0;
   Eigen::VectorXd dxdt(Plant::kStateSize);
   simulator.add_periodic_task("log", log_period, 0.0, [&](sim::TaskContext& c) {
+    const double t = scenario_time(c);
+    if (t < -0.5 * dt) return;  // settling: nothing is logged
     const Eigen::VectorXd& x = c.state();
     const Eigen::Vector2d current_n = c.input().segment<2>(Plant::kCurrentNed);
     const ActuatorState a = plant.actuators(x, current_n);
-    plant.flow(c.time(), x, c.input(), dxdt);
+    plant.flow(t, x, c.input(), dxdt);
     const model::WaveMotion6 wf =
         waves.motion(x[Plant::kHull + Hull::kYaw], dxdt[Plant::kHull + Hull::kYaw],
                      dxdt[Plant::kHull + Hull::kYawRate]);
@@ -514,9 +525,9 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
     row[i++] = setpoint.y();
     row[i++] = dp_active ? core::wrap_2pi(setpoint.z()) : core::kMissing;
     for (int k = 0; k < 3; ++k) row[i++] = dp_active ? bias_hat[k] : core::kMissing;
-    const Eigen::Vector3d load_n = model::step_loads_n(loads, c.time());
+    const Eigen::Vector3d load_n = model::step_loads_n(loads, t);
     for (int k = 0; k < 3; ++k) row[i++] = load_n[k];
-    truth_log.append_row(c.time(), row);
+    truth_log.append_row(t, row);
 
     const std::span<double> measured(measured_row);
     sensor_logger.record(log_tick++, truth_now, measured.first(sensor_logger.channel_count()));
@@ -535,7 +546,7 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
     measured_row[i++] = setpoint.x();
     measured_row[i++] = setpoint.y();
     measured_row[i++] = dp_active ? core::rad_to_deg(core::wrap_2pi(setpoint.z())) : core::kMissing;
-    log.append_row(c.time(), measured_row);
+    log.append_row(t, measured_row);
   });
 
   const sim::SimResult result = simulator.run(x0);

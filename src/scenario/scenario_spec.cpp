@@ -85,6 +85,13 @@ void ScenarioSpec::validate() const {
         "choose a log rate whose period is a whole number of steps");
   }
   check_range(*this, "initial_surge_mps", initial_surge_mps, -4.0, 7.0);
+  check_range(*this, "settle_s", settle_s, 0.0, 3600.0);
+  if (settle_s != std::round(settle_s)) {
+    throw core::InputError(at(*this, "settle_s"),
+                           fmt::format("{} s is not a whole number of seconds", settle_s),
+                           "give the settling time in whole seconds, so every task's grid keeps "
+                           "its phase at t = 0");
+  }
   {
     const auto bad_start = [&](const std::string& problem) {
       throw core::InputError(at(*this, "start_utc"), problem,
@@ -122,6 +129,10 @@ void ScenarioSpec::validate() const {
     if (heading_hold) {
       throw core::InputError(at(*this, "heading_hold"), "heading_hold is a joystick mode",
                              "DP setpoints hold the heading already; remove heading_hold");
+    }
+    if (settle_s > 0.0) {
+      throw core::InputError(at(*this, "settle_s"), "settle_s is a joystick mode",
+                             "DP starts at its first setpoint from rest; remove settle_s");
     }
     if (!joystick.empty()) {
       throw core::InputError(at(*this, "setpoint"), "a scenario is either joystick or DP",
@@ -167,8 +178,9 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
   const toml::table doc = TomlTable::parse_file(file);
   const TomlTable root(doc, file, "");
   root.reject_unknown({"name", "description", "duration_s", "dt_s", "log_rate_hz",
-                       "initial_heading_deg", "initial_surge_mps", "heading_hold", "start_utc",
-                       "environment", "joystick", "hybrid", "rudder", "setpoint", "load"});
+                       "initial_heading_deg", "initial_surge_mps", "heading_hold", "settle_s",
+                       "start_utc", "environment", "joystick", "hybrid", "rudder", "setpoint",
+                       "load"});
   ScenarioSpec spec;
   spec.source = file;
   spec.name = root.string("name");
@@ -179,6 +191,7 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
   spec.initial_heading_deg = root.number_or("initial_heading_deg", 0.0, -360.0, 360.0);
   spec.initial_surge_mps = root.number_or("initial_surge_mps", 0.0, -4.0, 7.0);
   spec.heading_hold = root.boolean_or("heading_hold", false);
+  spec.settle_s = root.number_or("settle_s", 0.0, 0.0, 3600.0);
   spec.start_utc = root.string_or("start_utc", spec.start_utc);
   if (auto env = root.optional_table("environment")) spec.environment = read_environment(*env);
 

@@ -82,7 +82,8 @@ TEST(Bias, SameSeedSameSequenceOtherSeedOther) {
 }
 
 TEST(Bias, SeaStateFactorIsOneAtTheReferenceAndTheCalmFractionInCalmWater) {
-  BiasParams p;  // H_ref = 2 m, c = 0.25
+  BiasParams p;  // H_ref = 2 m
+  p.calm_fraction = 0.25;
   EXPECT_DOUBLE_EQ(p.sea_state_factor(2.0), 1.0);
   EXPECT_DOUBLE_EQ(p.sea_state_factor(0.0), 0.25);
   // k(1 m) = √(c² + (1 − c²)/16) by hand: √(0.0625 + 0.05859375) = 0.348010...

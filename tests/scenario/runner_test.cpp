@@ -120,6 +120,37 @@ TEST(RunScenario, TruthRecordsCommandsAndPropellerStepTimeConstants) {
   EXPECT_TRUE(run.truth["time_constants"].contains("nomoto_3kn"));
 }
 
+TEST(RunScenario, SettlingStartsTheLogDriftingWithTheCurrent) {
+  // A 0.2 m/s current along the bow, no wind or waves: without settling the log starts at rest
+  // over ground; after 600 s of settling the vessel moves with the water, held back only by the
+  // still air: X_u·(0.2 − u) = ½ρ_a·c_x·A_F·u² gives the steady u_ss. The relative speed
+  // decays at least as fast as with the linear damping alone, T = (m − X_u̇)/X_u ≈ 97 s, so
+  // u(0) lies in (u_ss − u_ss·e^(−600/T), u_ss): within 4·10⁻⁴ m/s below it.
+  ScenarioSpec s = surge_step(80.0, 40.0);
+  s.environment.current_speed_mps = 0.2;
+  const VesselConfig v = calm_vessel();
+  const ScenarioRun at_rest = run_scenario(s, v, 1);
+  EXPECT_EQ(at_rest.truth_log.values("u").front(), 0.0);
+  s.settle_s = 600.0;
+  const ScenarioRun settled = run_scenario(s, v, 1);
+  const double a = 0.5 * v.wind.rho_air * v.wind.cx * v.wind.frontal_area_m2;
+  const double b = v.hull.x_u_Ns_m;
+  const double u_ss = (-b + std::sqrt(b * b + 4.0 * a * b * 0.2)) / (2.0 * a);
+  const double t_lin = (v.hull.mass_kg + v.hull.x_udot_kg) / b;
+  const double u0 = settled.truth_log.values("u").front();
+  EXPECT_LT(u0, u_ss);
+  EXPECT_GT(u0, u_ss * (1.0 - std::exp(-600.0 / t_lin)));
+  // Scenario time is kept: the same rows from t = 0, the command at its time, and the shaft
+  // still at rest 1 s later (dead time 1.3 s).
+  EXPECT_EQ(settled.truth_log.time(), at_rest.truth_log.time());  // to the bit: (k − k₀)·dt
+  EXPECT_EQ(settled.log.time(), at_rest.log.time());
+  ASSERT_EQ(settled.truth["commands"].size(), 1u);
+  EXPECT_EQ(settled.truth["commands"][0]["t_s"].get<double>(), 10.0);
+  EXPECT_EQ(settled.truth["propeller_steps"][0]["t_s"].get<double>(), 10.0);
+  EXPECT_EQ(settled.truth_log.values("rpm.stb")[10 * 10 + 10], 0.0);
+  EXPECT_EQ(settled.truth["scenario"]["settle_s"].get<double>(), 600.0);
+}
+
 TEST(RunScenario, SwayDemandMovesTheVesselToStarboard) {
   ScenarioSpec s;
   s.name = "sway";

@@ -80,5 +80,24 @@ TEST(ScenarioSpec, LogPeriodMustBeAWholeNumberOfSteps) {
   EXPECT_THROW(s.validate(), core::InputError);
 }
 
+TEST(ScenarioSpec, SettlingIsWholeSecondsAndJoystickOnly) {
+  const auto bad = [](const std::string& name, const std::string& body) {
+    return write_temp(name, "name = \"x\"\nduration_s = 10\n" + body);
+  };
+  EXPECT_THAT([&] { load_scenario(bad("dynpos_settle_frac.toml", "settle_s = 0.5\n")); },
+              testing::ThrowsMessage<core::InputError>(
+                  testing::ContainsRegex("settle_s.*whole number of seconds")));
+  EXPECT_THAT([&] { load_scenario(bad("dynpos_settle_neg.toml", "settle_s = -1\n")); },
+              testing::ThrowsMessage<core::InputError>(testing::ContainsRegex("settle_s")));
+  EXPECT_THAT(
+      [&] {
+        load_scenario(bad("dynpos_settle_dp.toml",
+                          "settle_s = 60\n[[setpoint]]\nt_s = 0\nnorth_m = 0\neast_m = 0\n"
+                          "heading_deg = 0\n"));
+      },
+      testing::ThrowsMessage<core::InputError>(testing::ContainsRegex("settle_s.*joystick")));
+  EXPECT_EQ(load_scenario(bad("dynpos_settle_ok.toml", "settle_s = 600\n")).settle_s, 600.0);
+}
+
 }  // namespace
 }  // namespace dynpos::scenario

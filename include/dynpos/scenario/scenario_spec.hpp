@@ -83,6 +83,12 @@ struct ScenarioSpec {
   /// Joystick with auto heading: a heading controller adds its yaw demand to the joystick's,
   /// holding ψ(0), as a DP joystick does in sway tests. Not with DP setpoints.
   bool heading_hold = false;
+  /// [s] whole seconds in [0, 3600]: the vessel runs this long before t = 0 in the
+  /// scenario's weather with its t = 0 state of commands (no lever, or the trim of
+  /// initial_surge_mps; auto heading if on), and the logs begin after it. A trial log starts
+  /// with the vessel drifting with current and wind, not at rest over ground. Joystick scenarios
+  /// only (DP holds its first setpoint from rest).
+  double settle_s = 0.0;
   EnvironmentSpec environment;
   std::vector<JoystickCommand> joystick;  ///< sorted by t_s; empty = zero demand throughout
   std::vector<RudderCommand> rudder;      ///< sorted by t_s; manual rudder steps
