@@ -63,7 +63,7 @@ struct RudderParams {
   /// (0, π/2]. Source: calibrated to the thesis yaw tests (section 3.5, figures 3.15–3.18): the
   /// rudder step 20°→47° gives "an initial pulse in yaw rate, but does not significantly change
   /// the steady state". 10°, an abrupt stall as for a thick low-aspect-ratio section, raises the
-  /// steady rate by 3–41 % there, 14 % on average (60° spread the fall up to 90° and raised it
+  /// steady rate by 9–18 % there, 14 % on average (60° spread the fall up to 90° and raised it
   /// by 70–95 %); the pulse is the lift peak at α_stall passed on the way.
   double post_stall_width = 10.0 * 3.14159265358979323846 / 180.0;
   /// Zero-lift drag coefficient C_D0 [-], range [0, 1). Source: reasoned — NACA-type section.
