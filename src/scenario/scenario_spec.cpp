@@ -7,6 +7,7 @@
 
 #include "dynpos/core/error.hpp"
 #include "dynpos/io/nmea.hpp"
+#include "dynpos/sim/sim_time.hpp"
 #include "toml_fields.hpp"
 
 namespace dynpos::scenario {
@@ -23,6 +24,16 @@ void check_range(const ScenarioSpec& spec, const std::string& field, double valu
   if (!(value >= lo && value <= hi)) {
     throw core::InputError(at(spec, field), fmt::format("value {} is out of range", value),
                            fmt::format("expected a number in [{}, {}]", lo, hi));
+  }
+}
+
+// A duration the simulator must step exactly: a whole number of dt_s (sim::TimeGrid's rule).
+void check_whole_steps(const ScenarioSpec& spec, const std::string& field, double value_s) {
+  const double steps = value_s / spec.dt_s;
+  if (std::abs(steps - std::round(steps)) > sim::kTickTolerance * steps) {
+    throw core::InputError(at(spec, field),
+                           fmt::format("{} s is not a multiple of dt_s = {} s", value_s, spec.dt_s),
+                           "give a whole number of dt_s steps (or a dt_s that divides it)");
   }
 }
 
@@ -75,6 +86,7 @@ void ScenarioSpec::validate() const {
   if (name.empty()) throw core::InputError(at(*this, "name"), "scenario has no name");
   check_range(*this, "duration_s", duration_s, 1e-6, 1e6);
   check_range(*this, "dt_s", dt_s, 1e-5, 1.0);
+  check_whole_steps(*this, "duration_s", duration_s);
   check_range(*this, "log_rate_hz", log_rate_hz, 1e-3, 1000.0);
   const double ticks_per_log = 1.0 / (log_rate_hz * dt_s);
   if (std::abs(ticks_per_log - std::round(ticks_per_log)) > 1e-9 * ticks_per_log ||
@@ -92,6 +104,7 @@ void ScenarioSpec::validate() const {
                            "give the settling time in whole seconds, so every task's grid keeps "
                            "its phase at t = 0");
   }
+  check_whole_steps(*this, "settle_s", settle_s);
   {
     const auto bad_start = [&](const std::string& problem) {
       throw core::InputError(at(*this, "start_utc"), problem,

@@ -161,25 +161,26 @@ TEST(Calibration, SwayStepsHoldHeadingAndGrowWithTheStep) {
     v_water[i] = log.values("v")[i] - vc_b;
     total[i] = std::hypot(log.values("u")[i], log.values("v")[i]);  // (3.19)
   }
+  const double psi_set = core::deg_to_rad(spec.initial_heading_deg);
   double max_heading_dev = 0.0;
-  std::vector<double> heading_wrapped;
+  std::vector<double> heading_error;
   for (double psi : log.values("heading")) {
-    heading_wrapped.push_back(core::wrap_pi(psi));
-    max_heading_dev = std::max(max_heading_dev, std::abs(heading_wrapped.back()));
+    heading_error.push_back(core::wrap_pi(psi - psi_set));
+    max_heading_dev = std::max(max_heading_dev, std::abs(heading_error.back()));
   }
   // Auto heading (ω = 0.15 rad/s) against wind, current and the yaw moment of each step. At the
   // onset of a large step the tunnel's force arrives seconds before the stern's side force,
   // which waits for propeller thrust (dead time 1.3 s, 7.5 kN/s), and the bow swings off:
-  // peaks of 3.7–7.4° over seeds 1–6 and both sides (seed 1 here: 4.4°). Once the step has
+  // peaks of 4.9–7.5° over seeds 1–6 and both sides (seed 1 here: 4.9°). Once the step has
   // settled, the heading is held: the mean over the last 30 s of every step is within
-  // 0.3–0.7° of the set heading over the same runs.
+  // 0.47–0.67° of the set heading over the same runs.
   EXPECT_LT(max_heading_dev, core::deg_to_rad(8.0));
   const auto& cmds = run.truth["commands"];
   for (std::size_t k = 0; k < cmds.size(); ++k) {
     const double t0 = cmds[k]["t_s"].get<double>();
     const double t1 =
         k + 1 < cmds.size() ? cmds[k + 1]["t_s"].get<double>() : t.back() + 1.0 / spec.log_rate_hz;
-    EXPECT_LT(std::abs(window_mean(log, heading_wrapped, t1 - 30.0, t1)), core::deg_to_rad(1.0))
+    EXPECT_LT(std::abs(window_mean(log, heading_error, t1 - 30.0, t1)), core::deg_to_rad(1.0))
         << "held heading, step at " << t0 << " s";
   }
   double previous = 0.0;
@@ -195,16 +196,16 @@ TEST(Calibration, SwayStepsHoldHeadingAndGrowWithTheStep) {
 }
 
 TEST(Calibration, SwayTotalSpeedTimeConstantsInThesisRange) {
-  // Tables 3.28 and 3.30: total speed (3.19) T = 9–19 s for 0–25 … 0–100 % sway steps, larger
-  // steps faster; the thesis calls the values of "lower quality" (surge drift, no clear steady
-  // state). One run is at the mercy of the current and gusts: a 25 or 50 % step to starboard
-  // first stops the vessel's drift with the current (0.2 m/s), so its total speed dips before it
-  // rises. Checked: over seeds 1–3 and both sides, the median T of the 0–50 % … 0–100 % steps
-  // lies in 9–19 s (measured 10.1 s), and larger steps are faster: the median at 100 % is below
-  // the one at 50 % (seeds 1–3: 9.0 s against 12.8 s; seeds 4–6: 8.9 s against 9.2 s, median
-  // 9.6 s). Single fits scatter from 0.1 s to 32 s at 50 %, so the trend is only checked on
-  // medians.
-  std::vector<double> t_all, t_50, t_100;
+  // Tables 3.28 and 3.30: total speed (3.19) T = 9–19 s for the 0–25 … 0–100 % sway steps,
+  // larger steps faster; the thesis calls the values of "lower quality". The scenarios head so
+  // that the current (0.2 m/s) sets the vessel towards the side of the steps: the total speed
+  // then grows from the drift by the through-water response, and every step has a clean rise
+  // (with the current across the other way, a 50 % step first stopped the drift and its fit
+  // failed). Measured over seeds 1–3 and both sides: every fit 9.8–33.3 s; medians 0–25 %
+  // 23.4 s, 0–50 % 20.6 s, 0–100 % 11.4 s; median of the 0–50 … 0–100 % steps 18.4 s. Checked:
+  // every single fit within a factor of two of the thesis range (4.5–38 s), the median of the
+  // 0–50 … 0–100 % steps in 9–19 s, and the medians shorter for larger steps.
+  std::vector<double> t_large, t_25, t_50, t_100;
   for (const char* name : {"sway-steps-starboard.toml", "sway-steps-port.toml"}) {
     const ScenarioSpec spec = load_scenario(kScenarios / name);
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {
@@ -218,21 +219,27 @@ TEST(Calibration, SwayTotalSpeedTimeConstantsInThesisRange) {
       for (std::size_t k = 0; k + 1 < js.size(); ++k) {
         const double from = k == 0 ? 0.0 : std::abs(js[k - 1].sway_pct);
         const double to = std::abs(js[k].sway_pct);
-        if (from != 0.0 || to < 50.0) continue;
+        if (from != 0.0 || to == 0.0) continue;
         const model::FopdtTruth f = fit_step(log, total, js[k].t_s, js[k + 1].t_s);
         std::printf("%s seed %llu, 0-%.0f %%: total speed T %.1f s, delay %.1f s\n", name,
                     static_cast<unsigned long long>(seed), to, f.time_constant, f.dead_time);
-        t_all.push_back(f.time_constant);
+        EXPECT_GE(f.time_constant, 4.5) << name << " seed " << seed << " 0-" << to;
+        EXPECT_LE(f.time_constant, 38.0) << name << " seed " << seed << " 0-" << to;
+        if (to >= 50.0) t_large.push_back(f.time_constant);
+        if (to == 25.0) t_25.push_back(f.time_constant);
         if (to == 50.0) t_50.push_back(f.time_constant);
         if (to == 100.0) t_100.push_back(f.time_constant);
       }
     }
   }
-  ASSERT_EQ(t_all.size(), 15u);  // (3 + 2 steps) × 3 seeds: 0–75 % is run to starboard only
-  const double m = median(t_all);
-  std::printf("median T %.1f s (50 %%: %.1f s, 100 %%: %.1f s)\n", m, median(t_50), median(t_100));
+  ASSERT_EQ(t_25.size(), 6u);      // both sides × 3 seeds
+  ASSERT_EQ(t_large.size(), 15u);  // (3 + 2 steps) × 3 seeds: 0–75 % is run to starboard only
+  const double m = median(t_large);
+  std::printf("median T %.1f s (25 %%: %.1f s, 50 %%: %.1f s, 100 %%: %.1f s)\n", m, median(t_25),
+              median(t_50), median(t_100));
   EXPECT_GE(m, 9.0);
   EXPECT_LE(m, 19.0);
+  EXPECT_LT(median(t_50), median(t_25));
   EXPECT_LT(median(t_100), median(t_50));
 }
 

@@ -96,7 +96,28 @@ TEST(ScenarioSpec, SettlingIsWholeSecondsAndJoystickOnly) {
                           "heading_deg = 0\n"));
       },
       testing::ThrowsMessage<core::InputError>(testing::ContainsRegex("settle_s.*joystick")));
+  // dt = 0.7 s with a log period of 1.4 s and a 7 s run: the run and the log period are whole
+  // steps, but 600 s is 857.14… steps, so the scenario's t = 0 would fall between two.
+  EXPECT_THAT(
+      [&] {
+        load_scenario(write_temp("dynpos_settle_dt.toml",
+                                 "name = \"x\"\nduration_s = 7\ndt_s = 0.7\n"
+                                 "log_rate_hz = 0.7142857142857143\nsettle_s = 600\n"));
+      },
+      testing::ThrowsMessage<core::InputError>(
+          testing::ContainsRegex("settle_s.*600 s is not a multiple of dt_s = 0.7 s")));
   EXPECT_EQ(load_scenario(bad("dynpos_settle_ok.toml", "settle_s = 600\n")).settle_s, 600.0);
+}
+
+TEST(ScenarioSpec, DurationIsWholeSteps) {
+  // 10 s is 33.3… steps of 0.3 s: an InputError naming the key, not a simulator exception.
+  const auto spec = [](const std::string& name, const std::string& dt) {
+    return write_temp(name, "name = \"x\"\nduration_s = 10\ndt_s = " + dt + "\n");
+  };
+  EXPECT_THAT([&] { load_scenario(spec("dynpos_duration_dt.toml", "0.3")); },
+              testing::ThrowsMessage<core::InputError>(
+                  testing::ContainsRegex("duration_s.*10 s is not a multiple of dt_s = 0.3 s")));
+  EXPECT_EQ(load_scenario(spec("dynpos_duration_ok.toml", "0.02")).duration_s, 10.0);
 }
 
 }  // namespace
