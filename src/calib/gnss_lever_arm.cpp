@@ -117,8 +117,9 @@ struct RowBlock {
   Vec3 z;
   int ka = -1, kb = -1;  // antenna blocks: +Aa on ka, −Ab on kb (kb may be −1)
   Mat3 Aa = Mat3::Zero(), Ab = Mat3::Zero();
-  int group = 0;          // 0: time differences, 1: antenna differences (× 3 axes)
-  std::size_t epoch = 0;  // the later epoch: when the row becomes available
+  int group = 0;            // 0: time differences, 1: antenna differences (× 3 axes)
+  std::size_t epoch = 0;    // the later epoch: when the row becomes available
+  std::size_t epoch_a = 0;  // time differences: the earlier epoch (its fix enters with −1)
 };
 
 std::vector<RowBlock> lsq_rows(const std::vector<Epoch>& ep, std::size_t m, int lag) {
@@ -146,6 +147,7 @@ std::vector<RowBlock> lsq_rows(const std::vector<Epoch>& ep, std::size_t m, int 
       r.Aa = b.R - a.R;
       r.group = 0;
       r.epoch = idx[j];
+      r.epoch_a = idx[j - static_cast<std::size_t>(lag)];
       rows.push_back(r);
     }
   }
@@ -161,6 +163,7 @@ std::vector<RowBlock> lsq_rows(const std::vector<Epoch>& ep, std::size_t m, int 
       r.Ab = ep[i].R;
       r.group = 1;
       r.epoch = i;
+      r.epoch_a = i;
       rows.push_back(r);
     }
   }
@@ -170,8 +173,9 @@ std::vector<RowBlock> lsq_rows(const std::vector<Epoch>& ep, std::size_t m, int 
 struct LsqSolution {
   bool ok = false;
   Eigen::VectorXd x;
-  Eigen::MatrixXd cov;
-  double cost = kNaN;  // Σ_g n_g·log σ_g² (−2·log-likelihood up to a constant)
+  Eigen::MatrixXd normal_inv;  // (AᵀWA)⁻¹
+  double dof_scale = 1.0;      // N_rows/(N_rows − n_params)
+  double cost = kNaN;          // Σ_g n_g·log σ_g² (−2·log-likelihood up to a constant)
   std::array<double, 6> var{};
   std::array<std::size_t, 6> count{};
 };
@@ -221,7 +225,7 @@ LsqSolution solve_lsq(const std::vector<RowBlock>& rows, std::size_t m) {
     Eigen::MatrixXd N = Eigen::MatrixXd::Zero(n, n);
     Eigen::VectorXd b = Eigen::VectorXd::Zero(n);
     for (const RowBlock& r : rows) accumulate(r, s.var, N, b);
-    if (!solve_normal(N, b, s.x, &s.cov)) return s;
+    if (!solve_normal(N, b, s.x, nullptr)) return s;
     // Residual variance per group and axis re-weights the rows (iterated to a fixed point).
     std::array<double, 6> ss{};
     s.count.fill(0);
@@ -243,13 +247,53 @@ LsqSolution solve_lsq(const std::vector<RowBlock>& rows, std::size_t m) {
   Eigen::MatrixXd N = Eigen::MatrixXd::Zero(n, n);
   Eigen::VectorXd b = Eigen::VectorXd::Zero(n);
   for (const RowBlock& r : rows) accumulate(r, s.var, N, b);
-  s.ok = solve_normal(N, b, s.x, &s.cov);
+  s.ok = solve_normal(N, b, s.x, &s.normal_inv);
   // The degrees of freedom: scale by N_rows/(N_rows − n_params).
   std::size_t nrows = 0;
   for (std::size_t c : s.count) nrows += c;
   if (nrows > static_cast<std::size_t>(n))
-    s.cov *= static_cast<double>(nrows) / static_cast<double>(nrows - static_cast<std::size_t>(n));
+    s.dof_scale =
+        static_cast<double>(nrows) / static_cast<double>(nrows - static_cast<std::size_t>(n));
   return s;
+}
+
+// Covariance of the arms for white fix noise. A fix enters every row it is differenced in (two
+// time differences lag epochs apart, and the antenna differences of its epoch), so the rows are
+// correlated and (AᵀWA)⁻¹ alone is not the covariance: where the attitude changes faster than
+// the lag, neighbouring rows see the shared fix with opposite signs and (AᵀWA)⁻¹ is optimistic.
+// With x = N⁻¹·Σ_r c_r·z_r (c_r = Aᵣᵀ·W) and each fix's noise n_s entering z_r with ±1,
+// Cov = N⁻¹·(Σ_s σ_s²·h_s·h_sᵀ)·N⁻¹ with h_s = Σ_{r ∋ s} ±c_r. The fix variance per NED axis is
+// half the time differences' residual variance (a difference of two fixes).
+Eigen::MatrixXd fix_noise_covariance(const std::vector<RowBlock>& rows, const LsqSolution& s,
+                                     std::size_t m, std::size_t n_epochs) {
+  const long n = static_cast<long>(3 * m);
+  // One column per fix and axis: (antenna, epoch, axis).
+  Eigen::MatrixXd h = Eigen::MatrixXd::Zero(n, static_cast<long>(3 * m * n_epochs));
+  const auto column = [&](int k, std::size_t e, int ax) {
+    return static_cast<long>((static_cast<std::size_t>(k) * n_epochs + e) * 3) + ax;
+  };
+  for (const RowBlock& r : rows) {
+    for (int ax = 0; ax < 3; ++ax) {
+      const double w = 1.0 / s.var[static_cast<std::size_t>(3 * r.group + ax)];
+      Eigen::VectorXd c = Eigen::VectorXd::Zero(n);
+      c.segment<3>(3 * r.ka) = w * r.Aa.row(ax).transpose();
+      if (r.kb >= 0) c.segment<3>(3 * r.kb) -= w * r.Ab.row(ax).transpose();
+      // Time difference: +fix(ka, epoch) − fix(ka, epoch_a); antenna difference: +fix(ka) −
+      // fix(kb) at one epoch.
+      h.col(column(r.ka, r.epoch, ax)) += c;
+      h.col(column(r.group == 0 ? r.ka : r.kb, r.epoch_a, ax)) -= c;
+    }
+  }
+  Eigen::MatrixXd middle = Eigen::MatrixXd::Zero(n, n);
+  for (int ax = 0; ax < 3; ++ax) {
+    const double fix_var = 0.5 * s.var[static_cast<std::size_t>(ax)];
+    for (std::size_t k = 0; k < m; ++k)
+      for (std::size_t e = 0; e < n_epochs; ++e) {
+        const auto col = h.col(column(static_cast<int>(k), e, ax));
+        middle.noalias() += fix_var * col * col.transpose();
+      }
+  }
+  return s.dof_scale * s.normal_inv * middle * s.normal_inv;
 }
 
 double lsq_cost_at(const MotionInterp& mi, const std::vector<GnssSeries>& ant, double offset,
@@ -527,7 +571,7 @@ GnssArmResult estimate_gnss_arms(const MotionSeries& motion,
       return res;
     }
     for (std::size_t k = 0; k < m; ++k) arms[k] = s.x.segment<3>(static_cast<long>(3 * k));
-    cov = s.cov;
+    cov = fix_noise_covariance(rows, s, m, ep.size());
     // Growing-window solution for the history plot, with the final weights.
     const int n = static_cast<int>(3 * m);
     Eigen::MatrixXd N = Eigen::MatrixXd::Zero(n, n);
