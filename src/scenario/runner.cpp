@@ -7,6 +7,7 @@
 #include <cmath>
 #include <optional>
 #include <stdexcept>
+#include <tuple>
 
 #include "dynpos/control/dp_controller.hpp"
 #include "dynpos/control/reference_model.hpp"
@@ -327,8 +328,10 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
         apply_setpoint(sp, t);
         ++next_setpoint;
       }
-      if (dp_active && next_setpoint == spec.setpoints.size() &&
-          !truth["setpoints"].back().contains("t_reached_s") && circle.reached(eta, setpoint)) {
+      // The first time the setpoint in force is inside its operating circle (section 3.5.2),
+      // whether the next setpoint follows on reach or at its time.
+      if (dp_active && !truth["setpoints"].back().contains("t_reached_s") &&
+          circle.reached(eta, setpoint)) {
         truth["setpoints"].back()["t_reached_s"] = t;
       }
       if (dp_active) {
@@ -416,13 +419,17 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
            {"rudder_stb_deg", core::rad_to_deg(cmd.rudder_stb)},
            {"n_tunnel_rps", cmd.n_tunnel},
            {"tau_unmet", {a.tau_unmet_b.x(), a.tau_unmet_b.y(), a.tau_unmet_b.z()}}});
-      if (std::abs(cmd.n_stb - before.n_stb) > 1e-3) {
+      // Both main propellers (one model): the sway tables 3.27 and 3.29 use the starboard and
+      // the port propeller respectively.
+      for (const auto& [name, n_from, n_to] : {std::tuple{"port", before.n_port, cmd.n_port},
+                                               std::tuple{"stb", before.n_stb, cmd.n_stb}}) {
+        if (std::abs(n_to - n_from) <= 1e-3) continue;
         const model::ThrusterStepTruth step =
-            model::thruster_step_truth(plant.propeller(), before.n_stb, cmd.n_stb, dt);
+            model::thruster_step_truth(plant.propeller(), n_from, n_to, dt);
         truth["propeller_steps"].push_back({{"t_s", t},
-                                            {"thruster", "stb"},
-                                            {"n_from_rps", before.n_stb},
-                                            {"n_to_rps", cmd.n_stb},
+                                            {"thruster", name},
+                                            {"n_from_rps", n_from},
+                                            {"n_to_rps", n_to},
                                             {"shaft_speed", fopdt_json(step.shaft_speed)},
                                             {"thrust", fopdt_json(step.thrust)}});
       }

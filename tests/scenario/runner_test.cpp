@@ -103,8 +103,17 @@ TEST(RunScenario, TruthRecordsCommandsAndPropellerStepTimeConstants) {
   const ScenarioRun run = run_scenario(surge_step(80.0, 40.0), calm_vessel(), 1);
   ASSERT_EQ(run.truth["commands"].size(), 1u);
   EXPECT_EQ(run.truth["commands"][0]["t_s"].get<double>(), 10.0);
-  ASSERT_EQ(run.truth["propeller_steps"].size(), 1u);
-  const auto& step = run.truth["propeller_steps"][0];
+  // Both propellers step (port first), from the same model and, straight ahead, to the same
+  // shaft speed up to rounding: the same truth to 1e-9 s.
+  ASSERT_EQ(run.truth["propeller_steps"].size(), 2u);
+  const auto& port = run.truth["propeller_steps"][0];
+  EXPECT_EQ(port["thruster"], "port");
+  for (const char* q : {"shaft_speed", "thrust"}) {
+    EXPECT_NEAR(port[q]["T_s"].get<double>(),
+                run.truth["propeller_steps"][1][q]["T_s"].get<double>(), 1e-9);
+  }
+  const auto& step = run.truth["propeller_steps"][1];
+  EXPECT_EQ(step["thruster"], "stb");
   const double t_n = step["shaft_speed"]["T_s"].get<double>();
   const double d_n = step["shaft_speed"]["delay_s"].get<double>();
   // DESIGN.md targets from tables 3.23–3.29: T_n 0.5–5.5 s, δ_n 1.2–3.3 s.
