@@ -149,6 +149,10 @@ std::vector<ParamField> mru_fields(sensors::MruParams& m) {
                 {"accel_std_mps2", &m.accel_std_mps2, 0, 10},
                 {"accel_bias_std_mps2", &m.accel_bias_std_mps2, 0, 10},
                 {"accel_bias_time_constant_s", &m.accel_bias_time_constant_s, 1e-3, 1e7},
+                {"angle_bias_std_deg", &m.angle_bias_std_rad, 0, 10, kDegToRad},
+                {"angle_bias_time_constant_s", &m.angle_bias_time_constant_s, 1e-3, 1e7},
+                {"rate_bias_std_deg_s", &m.rate_bias_std_rad_s, 0, 10, kDegToRad},
+                {"rate_bias_time_constant_s", &m.rate_bias_time_constant_s, 1e-3, 1e7},
             });
   return f;
 }

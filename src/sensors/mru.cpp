@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace dynpos::sensors {
 
@@ -20,35 +21,54 @@ void MruParams::validate() const {
   if (!lever_arm_b.allFinite()) throw std::invalid_argument(name + ": lever arm must be finite");
   const auto nonneg = [](double v) { return std::isfinite(v) && v >= 0.0; };
   if (!nonneg(angle_std_rad) || !nonneg(rate_std_rad_s) || !nonneg(accel_std_mps2) ||
-      !nonneg(accel_bias_std_mps2)) {
+      !nonneg(accel_bias_std_mps2) || !nonneg(angle_bias_std_rad) || !nonneg(rate_bias_std_rad_s)) {
     throw std::invalid_argument(name + ": noise and bias std must be ≥ 0");
   }
-  if (!(accel_bias_time_constant_s > 0.0)) {
+  if (!(accel_bias_time_constant_s > 0.0) || !(angle_bias_time_constant_s > 0.0) ||
+      !(rate_bias_time_constant_s > 0.0)) {
     throw std::invalid_argument(name + ": bias time constant must be > 0");
   }
 }
 
 namespace {
 
-sim::GaussMarkov accel_bias(const MruParams& p, double period_s, std::uint64_t seed,
-                            const char* axis) {
+// A stationary Gauss–Markov bias with its own random stream, "<mru>.<stream>".
+sim::GaussMarkov bias(double time_constant_s, double std, double period_s, std::uint64_t seed,
+                      const std::string& stream) {
   sim::GaussMarkov b =
-      sim::GaussMarkov::with_stationary_std(p.accel_bias_time_constant_s, p.accel_bias_std_mps2,
-                                            period_s, sim::Rng(seed, p.name + ".bias." + axis));
+      sim::GaussMarkov::with_stationary_std(time_constant_s, std, period_s, sim::Rng(seed, stream));
   b.reset_stationary();
   return b;
+}
+
+// Adds the bias's value to x and advances it; a zero-σ bias draws nothing.
+void add_bias(double& x, sim::GaussMarkov& b, double std) {
+  if (std > 0.0) {
+    x += b.value();
+    b.step();
+  }
 }
 
 }  // namespace
 
 Mru::Mru(const MruParams& params, AccelerationConvention convention, double period_s,
          std::uint64_t seed)
-    : params_(params),
-      convention_(convention),
-      rng_(seed, params.name + ".noise"),
-      accel_bias_{accel_bias(params, period_s, seed, "x"), accel_bias(params, period_s, seed, "y"),
-                  accel_bias(params, period_s, seed, "z")} {
+    : params_(params), convention_(convention), rng_(seed, params.name + ".noise") {
   params_.validate();
+  const MruParams& p = params_;
+  // The accelerometer streams keep their names ("<mru>.bias.x"), so logs with an accelerometer
+  // bias are unchanged by the angle and rate biases.
+  const char* axes[] = {"x", "y", "z"};
+  for (int i = 0; i < 3; ++i) {
+    accel_bias_.push_back(bias(p.accel_bias_time_constant_s, p.accel_bias_std_mps2, period_s, seed,
+                               p.name + ".bias." + axes[i]));
+    rate_bias_.push_back(bias(p.rate_bias_time_constant_s, p.rate_bias_std_rad_s, period_s, seed,
+                              p.name + ".rate_bias." + axes[i]));
+  }
+  for (int i = 0; i < 2; ++i) {
+    angle_bias_.push_back(bias(p.angle_bias_time_constant_s, p.angle_bias_std_rad, period_s, seed,
+                               p.name + ".angle_bias." + axes[i]));
+  }
 }
 
 MruSample Mru::measure(const RigidBodyMotion& m) {
@@ -60,16 +80,18 @@ MruSample Mru::measure(const RigidBodyMotion& m) {
   };
   s.roll = m.theta.x() + noise(p.angle_std_rad);
   s.pitch = m.theta.y() + noise(p.angle_std_rad);
-  for (int i = 0; i < 3; ++i) s.omega_b[i] = m.omega_nb_b[i] + noise(p.rate_std_rad_s);
+  add_bias(s.roll, angle_bias_[0], p.angle_bias_std_rad);
+  add_bias(s.pitch, angle_bias_[1], p.angle_bias_std_rad);
+  for (int i = 0; i < 3; ++i) {
+    s.omega_b[i] = m.omega_nb_b[i] + noise(p.rate_std_rad_s);
+    add_bias(s.omega_b[i], rate_bias_[i], p.rate_bias_std_rad_s);
+  }
   s.accel_b = convention_ == AccelerationConvention::kKinematic
                   ? point_acceleration_b(m, p.lever_arm_b)
                   : point_specific_force_b(m, p.lever_arm_b);
   for (int i = 0; i < 3; ++i) {
     s.accel_b[i] += noise(p.accel_std_mps2);
-    if (p.accel_bias_std_mps2 > 0.0) {
-      s.accel_b[i] += accel_bias_[i].value();
-      accel_bias_[i].step();
-    }
+    add_bias(s.accel_b[i], accel_bias_[i], p.accel_bias_std_mps2);
   }
   return s;
 }

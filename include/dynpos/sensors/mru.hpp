@@ -5,11 +5,11 @@
 /// acceleration (gravity removed) or as specific force (what the accelerometers sense).
 
 #include <Eigen/Core>
-#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "dynpos/core/angle.hpp"
 #include "dynpos/sensors/rigid_body_motion.hpp"
@@ -38,6 +38,12 @@ struct MruParams {
   double accel_std_mps2 = 0.01;                    ///< acceleration white noise [m/s²]
   double accel_bias_std_mps2 = 0.0;           ///< stationary σ of an accelerometer bias [m/s²]
   double accel_bias_time_constant_s = 600.0;  ///< [s]
+  /// Slowly varying roll/pitch error of the aided attitude (Gauss–Markov, per axis) [rad].
+  double angle_bias_std_rad = 0.0;
+  double angle_bias_time_constant_s = 600.0;  ///< [s]
+  /// Gyro bias left after the MRU's own filter (Gauss–Markov, per body axis) [rad/s].
+  double rate_bias_std_rad_s = 0.0;
+  double rate_bias_time_constant_s = 600.0;  ///< [s]
   void validate() const;
 };
 
@@ -61,7 +67,9 @@ class Mru {
   MruParams params_;
   AccelerationConvention convention_;
   sim::Rng rng_;
-  std::array<sim::GaussMarkov, 3> accel_bias_;
+  std::vector<sim::GaussMarkov> accel_bias_;  // x, y, z
+  std::vector<sim::GaussMarkov> angle_bias_;  // roll, pitch
+  std::vector<sim::GaussMarkov> rate_bias_;   // p, q, r
 };
 
 }  // namespace dynpos::sensors
