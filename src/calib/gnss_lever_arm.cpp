@@ -259,8 +259,9 @@ LsqSolution solve_lsq(const std::vector<RowBlock>& rows, std::size_t m) {
 
 // Covariance of the arms for white fix noise. A fix enters every row it is differenced in (two
 // time differences lag epochs apart, and the antenna differences of its epoch), so the rows are
-// correlated and (AᵀWA)⁻¹ alone is not the covariance: where the attitude changes faster than
-// the lag, neighbouring rows see the shared fix with opposite signs and (AᵀWA)⁻¹ is optimistic.
+// correlated and (AᵀWA)⁻¹ alone is not the covariance: it overstates the 1σ of what a slow
+// turn shows (x, y) and understates that of what the wave roll and pitch show (z), whose ΔR
+// changes sign between the two differences sharing a fix.
 // With x = N⁻¹·Σ_r c_r·z_r (c_r = Aᵣᵀ·W) and each fix's noise n_s entering z_r with ±1,
 // Cov = N⁻¹·(Σ_s σ_s²·h_s·h_sᵀ)·N⁻¹ with h_s = Σ_{r ∋ s} ±c_r. The fix variance per NED axis is
 // half the time differences' residual variance (a difference of two fixes).
