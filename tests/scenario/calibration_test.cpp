@@ -61,6 +61,14 @@ double median(std::vector<double> v) {
   return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+// The joystick command times and the end of the run: step k lasts from t[k] to t[k + 1].
+std::vector<double> command_times(const ScenarioSpec& spec) {
+  std::vector<double> t;
+  for (const auto& c : spec.joystick) t.push_back(c.t_s);
+  t.push_back(spec.duration_s);
+  return t;
+}
+
 TEST(Calibration, SurgeStepsForwardMatchTheThesisShape) {
   // Table 3.24: T = 16.4 s (δ 8.5 s) for 0–80 %, 34.2 s for 25–40 %, 59.2 s for 15–25 %: the
   // time constant grows as the steps get smaller. One run is at the mercy of the current
@@ -72,9 +80,7 @@ TEST(Calibration, SurgeStepsForwardMatchTheThesisShape) {
   // are fitted at 28.9–113.0 s, 56.6–91.2 s and 51.4–76.0 s (medians 87.7, 71.4 and 63.3 s).
   const ScenarioSpec spec = load_scenario(kScenarios / "surge-steps-forward.toml");
   ASSERT_GT(spec.settle_s, 0.0);
-  std::vector<double> t_cmd;
-  for (const auto& c : spec.joystick) t_cmd.push_back(c.t_s);
-  t_cmd.push_back(spec.duration_s);
+  const std::vector<double> t_cmd = command_times(spec);
   // Commands: 0→5, 5→10, 10→15, 15→25, 25→40, 40→0, 0→80, 80→0 %.
   std::vector<double> t_0_5, t_5_10, t_10_15, t_15_25, t_25_40, t_0_80;
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {
@@ -132,9 +138,7 @@ TEST(Calibration, SurgeStepsBackwardInTheThesisRange) {
   // small steps slower than the 0–40 % one.
   const ScenarioSpec spec = load_scenario(kScenarios / "surge-steps-backward.toml");
   ASSERT_GT(spec.settle_s, 0.0);
-  std::vector<double> t_cmd;
-  for (const auto& c : spec.joystick) t_cmd.push_back(c.t_s);
-  t_cmd.push_back(spec.duration_s);
+  const std::vector<double> t_cmd = command_times(spec);
   // Commands: 0→5, 5→10, 10→15, 15→20, 20→0, 0→40, 40→0 % astern.
   ASSERT_EQ(t_cmd.size(), 8u);
   const char* names[] = {"0-5", "5-10", "10-15", "15-20", "20-0", "0-40"};
