@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "commands.hpp"
-#include "data_dir.hpp"
+#include "dynpos/analysis/data_dir.hpp"
 #include "dynpos/io/json_writer.hpp"
 #include "dynpos/scenario/campaign.hpp"
 #include "dynpos/scenario/vessel_config.hpp"
@@ -33,7 +33,7 @@ void register_demo(CLI::App& app) {
       "conventional integral action under an ice load and a mooring line snap (JSON + SVG). "
       "The other analyses of the logs join the report as they become available.");
   sub->callback([opt] {
-    const std::filesystem::path data = find_data_dir();
+    const std::filesystem::path data = analysis::find_data_dir();
     const auto specs = load_campaign(data / "scenarios");
     const auto vessel = scenario::load_vessel_config(data / "vessels" / "gunnerus.toml");
     std::filesystem::create_directories(opt->out_dir);

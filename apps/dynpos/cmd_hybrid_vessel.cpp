@@ -13,7 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
-#include "data_dir.hpp"
+#include "dynpos/analysis/data_dir.hpp"
 #include "dynpos/core/error.hpp"
 #include "dynpos/io/json_writer.hpp"
 #include "dynpos/report/svg_plot.hpp"
@@ -148,7 +148,7 @@ std::string hybrid_vessel_scenario_file(const std::string& short_name) {
 
 HybridVesselResult run_hybrid_vessel(const std::string& short_name, std::uint64_t seed,
                                      double within_m) {
-  const std::filesystem::path data = find_data_dir();
+  const std::filesystem::path data = analysis::find_data_dir();
   const scenario::ScenarioSpec spec = scenario::load_scenario(
       data / "scenarios" / (hybrid_vessel_scenario_file(short_name) + ".toml"));
   const scenario::VesselConfig vessel =

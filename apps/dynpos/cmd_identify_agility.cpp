@@ -18,7 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
-#include "data_dir.hpp"
+#include "dynpos/analysis/data_dir.hpp"
 #include "dynpos/core/circular_stats.hpp"
 #include "dynpos/core/error.hpp"
 #include "dynpos/ident/agility.hpp"
@@ -533,7 +533,7 @@ scenario::ReportSection agility_demo_section(const std::filesystem::path& campai
   }
   if (!logs.empty()) {
     const scenario::VesselConfig vessel =
-        scenario::load_vessel_config(find_data_dir() / "vessels" / "gunnerus.toml");
+        scenario::load_vessel_config(analysis::find_data_dir() / "vessels" / "gunnerus.toml");
     const report::Table map = thrust_map_table(logs, vessel);
     const std::string text =
         "Thrust map T = c·n|n| (3.17) back-calculated from the surge step logs (logged thrust "

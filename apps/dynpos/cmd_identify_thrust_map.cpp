@@ -14,7 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
-#include "data_dir.hpp"
+#include "dynpos/analysis/data_dir.hpp"
 #include "dynpos/core/error.hpp"
 #include "dynpos/ident/thrust_map.hpp"
 #include "dynpos/io/csv_writer.hpp"
@@ -122,7 +122,7 @@ void run_apply(const ThrustMapOptions& o) {
                            "name the CSV to write the computed thrust into");
   }
   const scenario::VesselConfig vessel = scenario::load_vessel_config(
-      o.vessel.empty() ? find_data_dir() / "vessels" / "gunnerus.toml" : o.vessel);
+      o.vessel.empty() ? analysis::find_data_dir() / "vessels" / "gunnerus.toml" : o.vessel);
   const auto maps = vessel_maps(vessel);
   const core::Log log =
       o.input.read([](const std::string& role) { return role.rfind("rpm.", 0) == 0; });

@@ -339,7 +339,7 @@ scenario::ReportSection leverarm_mru_demo_section(const std::filesystem::path& c
   if (!reference) {
     o.input.columns = {"roll=mru1.roll", "pitch=mru1.pitch", "p=mru1.p", "q=mru1.q", "r=mru1.r"};
   }
-  const core::Log probe = LogInput{log, {}, {}, {}}.read(is_mru_accel_role);
+  const core::Log probe = analysis::LogSource{log, {}, {}, {}}.read(is_mru_accel_role);
   for (const std::string& name : mru_names(probe)) o.mru_logs.push_back(name + "=" + log.string());
   const MruRun run = analyse(o);
   const auto truth = truth_arms(dir / "truth.json");

@@ -7,7 +7,7 @@
 #include <memory>
 
 #include "commands.hpp"
-#include "data_dir.hpp"
+#include "dynpos/analysis/data_dir.hpp"
 #include "dynpos/io/csv_writer.hpp"
 #include "dynpos/io/json_writer.hpp"
 #include "dynpos/scenario/campaign.hpp"
@@ -54,7 +54,7 @@ struct SimulateOptions {
 };
 
 void run_simulate(const SimulateOptions& opt) {
-  const std::filesystem::path data = find_data_dir();
+  const std::filesystem::path data = analysis::find_data_dir();
   const std::filesystem::path scenario_dir = data / "scenarios";
   if (opt.list) {
     for (const std::string& name : scenario::list_scenarios(scenario_dir)) {

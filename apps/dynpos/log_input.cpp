@@ -1,11 +1,5 @@
 #include "log_input.hpp"
 
-#include <algorithm>
-
-#include "dynpos/core/error.hpp"
-#include "dynpos/io/csv_reader.hpp"
-#include "dynpos/io/roles.hpp"
-
 namespace dynpos::cli {
 
 void LogInput::add_options(CLI::App& sub, const std::string& roles_help) {
@@ -14,51 +8,6 @@ void LogInput::add_options(CLI::App& sub, const std::string& roles_help) {
       ->check(CLI::ExistingFile);
   sub.add_option("--col", columns, "ROLE=COLUMN (repeatable). Roles: " + roles_help);
   sub.add_option("--unit", units, "ROLE=UNIT (repeatable), e.g. thrust.port=kN");
-}
-
-io::ColumnMap LogInput::column_map(
-    const std::function<bool(const std::string& role)>& wanted) const {
-  io::ColumnMap map = map_file.empty() ? io::ColumnMap{} : io::load_column_map(map_file);
-  io::apply_overrides(map, columns, units);
-  std::vector<std::string> mapped_columns;
-  for (const auto& [role, entry] : map.roles()) mapped_columns.push_back(entry.column);
-  if (map.find("time") == nullptr) map.set_column("time", "time");
-  for (const std::string& cell : io::read_csv_header(log)) {
-    const std::string name = io::split_header_cell(cell).name;
-    if (map.find(name) != nullptr || !wanted(name) || !io::find_role(name)) continue;
-    // A column the user mapped to another role is not taken a second time.
-    if (std::find(mapped_columns.begin(), mapped_columns.end(), name) != mapped_columns.end()) {
-      continue;
-    }
-    map.set_column(name, name);
-  }
-  return map;
-}
-
-core::Log LogInput::read(const std::function<bool(const std::string& role)>& wanted) const {
-  return io::read_csv(log, column_map(wanted));
-}
-
-std::vector<std::string> thruster_names(const core::Log& log, const std::string& prefix) {
-  std::vector<std::string> names;
-  const std::string head = prefix + ".";
-  for (const core::Channel& c : log.channels()) {
-    if (c.name.rfind(head, 0) != 0) continue;
-    const std::string name = c.name.substr(head.size());
-    if (name.find('.') != std::string::npos) continue;
-    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
-  }
-  return names;
-}
-
-void check_json_target(const std::string& json) {
-  if (json.empty() || json == "-") return;
-  const auto parent = std::filesystem::path(json).parent_path();
-  if (!parent.empty() && !std::filesystem::is_directory(parent)) {
-    throw core::InputError({{}, {}, {}, "--json"},
-                           "folder '" + parent.string() + "' does not exist",
-                           "create it first, or use --json - for stdout");
-  }
 }
 
 }  // namespace dynpos::cli

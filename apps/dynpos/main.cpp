@@ -8,6 +8,7 @@
 
 #include "commands.hpp"
 #include "dynpos/core/error.hpp"
+#include "option_spelling.hpp"
 
 int main(int argc, char** argv) {
   using namespace dynpos::cli;
@@ -36,7 +37,7 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? kExitOk : kExitInputError;
   } catch (const dynpos::core::InputError& e) {
-    fmt::print(stderr, "dynpos: error: {}\n", e.what());
+    fmt::print(stderr, "dynpos: error: {}\n", cli_message(e));
     return kExitInputError;
   } catch (const Unavailable& u) {
     fmt::print(stderr, "dynpos {}: not available in this version; planned: {}\n", u.command,

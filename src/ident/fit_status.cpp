@@ -26,17 +26,7 @@ std::string_view warning_code_name(WarningCode code) {
   return "unknown";
 }
 
-std::string_view fit_status_name(FitStatus status) {
-  switch (status) {
-    case FitStatus::kOk:
-      return "ok";
-    case FitStatus::kNotConverged:
-      return "not_converged";
-    case FitStatus::kFailed:
-      return "failed";
-  }
-  return "unknown";
-}
+std::string_view fit_status_name(FitStatus status) { return core::status_name(status); }
 
 bool has_warning(const std::vector<FitWarning>& warnings, WarningCode code) {
   return std::any_of(warnings.begin(), warnings.end(),

@@ -26,14 +26,22 @@ class InputError : public std::runtime_error {
  public:
   InputError(InputLocation where, std::string what, std::string hint = {});
 
+  /// A bad option of a request, named by its request key, e.g. "min_step" or "col:output"
+  /// (analysis/options.hpp): each front end shows the key in its own spelling ("--min-step" on
+  /// the command line). what() shows it as "(key): problem; hint".
+  static InputError for_option(std::string key, std::string what, std::string hint = {});
+
   const InputLocation& where() const noexcept { return where_; }
   const std::string& problem() const noexcept { return problem_; }
   const std::string& hint() const noexcept { return hint_; }
+  /// The request key of a bad option; empty for an error in a file.
+  const std::string& option() const noexcept { return option_; }
 
  private:
   InputLocation where_;
   std::string problem_;
   std::string hint_;
+  std::string option_;
 };
 
 /// "file:line:column (name): problem; hint" — the text InputError::what() returns.

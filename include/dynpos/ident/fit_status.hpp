@@ -13,14 +13,12 @@
 #include <string_view>
 #include <vector>
 
+#include "dynpos/core/status.hpp"
+
 namespace dynpos::ident {
 
-/// Overall outcome of a fit.
-enum class FitStatus {
-  kOk,            ///< estimates are present (they may still carry warnings)
-  kNotConverged,  ///< the iteration limit was hit; estimates are the last iterate
-  kFailed,        ///< no estimate could be made; see the message
-};
+/// Overall outcome of a fit: the library's one status convention (core/status.hpp).
+using FitStatus = core::Status;
 
 /// What a warning is about; the message gives the numbers.
 enum class WarningCode {

@@ -1,16 +1,12 @@
-#pragma once
-// Where the built-in data (vessels, scenarios) is.
+#include "dynpos/analysis/data_dir.hpp"
 
 #include <cstdlib>
-#include <filesystem>
 
 #include "dynpos/core/error.hpp"
 
-namespace dynpos::cli {
+namespace dynpos::analysis {
 
-/// $DYNPOS_DATA_DIR if set; else ../share/dynpos beside an installed executable; else the
-/// source tree's data/ folder the executable was built from.
-inline std::filesystem::path find_data_dir() {
+std::filesystem::path find_data_dir() {
   if (const char* env = std::getenv("DYNPOS_DATA_DIR"); env != nullptr && *env != '\0') {
     return env;
   }
@@ -20,10 +16,11 @@ inline std::filesystem::path find_data_dir() {
     const std::filesystem::path installed = exe.parent_path().parent_path() / "share" / "dynpos";
     if (std::filesystem::is_directory(installed / "scenarios")) return installed;
   }
-  const std::filesystem::path source = DYNPOS_DATA_DIR;
-  if (std::filesystem::is_directory(source / "scenarios")) return source;
+  for (const std::filesystem::path dir : {DYNPOS_INSTALL_DATA_DIR, DYNPOS_SOURCE_DATA_DIR}) {
+    if (std::filesystem::is_directory(dir / "scenarios")) return dir;
+  }
   throw core::InputError({}, "cannot find the dynpos data folder (vessels, scenarios)",
                          "set DYNPOS_DATA_DIR to it");
 }
 
-}  // namespace dynpos::cli
+}  // namespace dynpos::analysis

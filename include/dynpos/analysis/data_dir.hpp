@@ -1,0 +1,14 @@
+#pragma once
+/// \file
+/// Where the built-in data (vessels, scenarios) is.
+
+#include <filesystem>
+
+namespace dynpos::analysis {
+
+/// $DYNPOS_DATA_DIR if set; else ../share/dynpos beside the running executable (an installed
+/// dynpos); else the installed library's share/dynpos; else the source tree's data/ folder it
+/// was built from. InputError if none holds a scenarios/ folder.
+std::filesystem::path find_data_dir();
+
+}  // namespace dynpos::analysis

@@ -1,0 +1,38 @@
+#pragma once
+/// \file
+/// Where an analysis reads its log from: a CSV file, a column map file, and ROLE=COLUMN /
+/// ROLE=UNIT overrides; for logs whose header already uses role names (dynpos' own logs), the
+/// roles found by name.
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "dynpos/core/log.hpp"
+#include "dynpos/io/column_map.hpp"
+
+namespace dynpos::analysis {
+
+/// Accepts the roles an analysis wants to pick up by name from the log's header.
+using RoleFilter = std::function<bool(const std::string& role)>;
+
+struct LogSource {
+  std::filesystem::path log;         ///< the CSV log
+  std::filesystem::path map_file;    ///< column map (TOML), or empty
+  std::vector<std::string> columns;  ///< ROLE=COLUMN
+  std::vector<std::string> units;    ///< ROLE=UNIT
+
+  /// The map from map_file, then columns/units; `time` defaults to the column "time". Then every
+  /// header column whose name is a role accepted by `wanted` and not yet mapped is mapped to
+  /// itself (so "thrust.port [kN]" in a dynpos log needs no --col).
+  io::ColumnMap column_map(const RoleFilter& wanted) const;
+
+  /// Reads the log with column_map(wanted).
+  core::Log read(const RoleFilter& wanted) const;
+};
+
+/// Thruster names NAME of the channels "PREFIX.NAME" of a log, in channel order, unique.
+std::vector<std::string> thruster_names(const core::Log& log, const std::string& prefix);
+
+}  // namespace dynpos::analysis

@@ -1,0 +1,34 @@
+#include "dynpos/analysis/json_fields.hpp"
+
+#include <fmt/core.h>
+
+#include <cmath>
+
+namespace dynpos::analysis {
+
+nlohmann::json number_json(const std::optional<double>& v, double scale) {
+  return v && std::isfinite(*v) ? nlohmann::json(*v * scale) : nlohmann::json(nullptr);
+}
+
+nlohmann::json sigma_json(const std::optional<ident::Estimate>& e) {
+  return e ? number_json(e->sigma) : nlohmann::json(nullptr);
+}
+
+nlohmann::json warnings_json(const std::vector<ident::FitWarning>& warnings) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const ident::FitWarning& w : warnings) {
+    out.push_back(
+        {{"code", std::string(ident::warning_code_name(w.code))}, {"message", w.message}});
+  }
+  return out;
+}
+
+std::string number_cell(const std::optional<double>& v, const char* spec) {
+  return v && std::isfinite(*v) ? fmt::format(fmt::runtime(spec), *v) : std::string("—");
+}
+
+std::optional<double> value_of(const std::optional<ident::Estimate>& e) {
+  return e ? std::optional<double>(e->value) : std::nullopt;
+}
+
+}  // namespace dynpos::analysis
