@@ -1,0 +1,14 @@
+#pragma once
+/// \file
+/// A section of the `dynpos demo` report, one per analysis.
+
+#include "dynpos/scenario/campaign.hpp"
+
+namespace dynpos::analysis {
+
+/// An analysis section of the campaign report: a title and the same content as HTML (a
+/// fragment, links relative to the report folder) and as Markdown. An empty title means the
+/// analysis has nothing to add.
+using ReportSection = scenario::ReportSection;
+
+}  // namespace dynpos::analysis
