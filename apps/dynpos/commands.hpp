@@ -79,7 +79,6 @@ void add_leverarm_mru(CLI::App& leverarm);              // cmd_leverarm_mru.cpp
 scenario::ReportSection step_demo_section(const std::filesystem::path& campaign_dir);
 scenario::ReportSection agility_demo_section(const std::filesystem::path& campaign_dir);
 scenario::ReportSection four_corner_demo_section(const std::filesystem::path& campaign_dir);
-scenario::ReportSection station_keeping_demo_section(const std::filesystem::path& campaign_dir);
 scenario::ReportSection leverarm_gnss_demo_section(const std::filesystem::path& campaign_dir);
 scenario::ReportSection leverarm_mru_demo_section(const std::filesystem::path& campaign_dir);
 

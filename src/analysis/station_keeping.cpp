@@ -1,0 +1,108 @@
+#include "dynpos/analysis/station_keeping.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "dynpos/analysis/options.hpp"
+#include "dynpos/core/error.hpp"
+#include "dynpos/ident/local_position.hpp"
+
+namespace dynpos::analysis {
+namespace {
+
+bool wanted_role(const std::string& role) {
+  for (const char* r : {"north", "east", "lat", "lon", "heading", "wind_speed", "wind_dir",
+                        "setpoint.north", "setpoint.east", "setpoint.heading"}) {
+    if (role == r) return true;
+  }
+  return role.rfind("thrust.", 0) == 0 || role.rfind("power.", 0) == 0;
+}
+
+std::vector<double> values_or_empty(const core::Log& log, const std::string& name) {
+  return log.has(name) ? log.values(name) : std::vector<double>{};
+}
+
+// The position in metres: north/east as logged (any offset), else lat/lon about their first fix.
+ident::StationKeepingInput make_input(const core::Log& log) {
+  ident::StationKeepingInput in;
+  in.t_s = log.time();
+  if (log.has("north") && log.has("east")) {
+    in.north_m = log.values("north");
+    in.east_m = log.values("east");
+  } else if (log.has("lat") && log.has("lon")) {
+    const ident::LocalPositions p = ident::local_north_east(log.values("lat"), log.values("lon"));
+    in.north_m = p.north_m;
+    in.east_m = p.east_m;
+  }
+  in.heading_rad = values_or_empty(log, "heading");
+  in.wind_speed_mps = values_or_empty(log, "wind_speed");
+  in.wind_dir_rad = values_or_empty(log, "wind_dir");
+  std::vector<std::string> names = thruster_names(log, "thrust");
+  for (const std::string& n : thruster_names(log, "power")) {
+    if (std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);
+  }
+  for (const std::string& n : names) {
+    in.thrusters.push_back(
+        {n, values_or_empty(log, "thrust." + n), values_or_empty(log, "power." + n)});
+  }
+  return in;
+}
+
+// The given window (a missing end is duration_s from the other), else one per setpoint hold,
+// else the last duration_s of the log.
+std::vector<ident::TimeWindow> windows_of(const StationKeepingRequest& request,
+                                          const core::Log& log,
+                                          const ident::StationKeepingInput& in) {
+  const std::optional<double>& from = request.t_from_s;
+  const std::optional<double>& to = request.t_to_s;
+  const double duration = request.duration_s;
+  if (from || to) {
+    return {{"window", from.value_or(to ? *to - duration : 0.0),
+             to.value_or(from ? *from + duration : 0.0)}};
+  }
+  if (request.per_setpoint) {
+    if (!log.has("setpoint.heading") && !log.has("setpoint.north")) {
+      throw core::InputError({request.source.log.string(), {}, {}, "setpoint.heading"},
+                             "--per-setpoint needs the DP setpoints in the log",
+                             "map setpoint.north, setpoint.east, setpoint.heading, or give "
+                             "--from/--to");
+    }
+    return ident::setpoint_windows(in.t_s, values_or_empty(log, "setpoint.north"),
+                                   values_or_empty(log, "setpoint.east"),
+                                   values_or_empty(log, "setpoint.heading"), duration);
+  }
+  return {{"last " + fmt::format("{:g}", duration) + " s",
+           std::max(in.t_s.front(), in.t_s.back() - duration), in.t_s.back()}};
+}
+
+}  // namespace
+
+void StationKeepingRequest::validate() const {
+  if (!(duration_s > 0.0)) throw option_error("duration", "the window duration must be > 0 s");
+}
+
+StationKeepingReport run_station_keeping(const StationKeepingRequest& request) {
+  request.validate();
+  const core::Log log = request.source.read(wanted_role);
+  if (!(log.has("north") && log.has("east")) && !(log.has("lat") && log.has("lon"))) {
+    throw core::InputError({request.source.log.string(), {}, {}, "north/east"},
+                           "no position in the log",
+                           "map north and east in metres (any offset, e.g. UTM: --col "
+                           "north=gnss1.north --col east=gnss1.east) or lat and lon");
+  }
+  const ident::StationKeepingInput in = make_input(log);
+  StationKeepingReport report;
+  report.log = request.source.log;
+  report.waves = request.waves;
+  report.current = request.current;
+  report.per_setpoint = request.per_setpoint;
+  for (const ident::TimeWindow& w : windows_of(request, log, in)) {
+    report.windows.push_back(ident::analyse_station_keeping(in, w));
+  }
+  return report;
+}
+
+}  // namespace dynpos::analysis

@@ -1,0 +1,163 @@
+#include "dynpos/analysis/station_keeping.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include <fmt/core.h>
+
+#include "../io/io_test_util.hpp"
+#include "dynpos/core/error.hpp"
+
+namespace dynpos::analysis {
+namespace {
+
+using io::testing::TempDir;
+
+// 400 s at 1 Hz: the DP setpoint (and the heading) 0° for t < 200 s, then 90°. North alternates
+// 100.5 / 99.5 m (std 0.5 m), east is 200 m; wind 8 m/s from 350°; the port thruster gives
+// 20 kN at 100 kW; the tunnel logs thrust only.
+std::filesystem::path write_log(const TempDir& dir) {
+  std::string csv =
+      "time [s],north [m],east [m],heading [deg],setpoint.heading [deg],wind_speed [m/s],"
+      "wind_dir [deg],thrust.port [kN],power.port [kW],thrust.tunnel [kN]\n";
+  for (int i = 0; i < 400; ++i) {
+    const double heading = i < 200 ? 0.0 : 90.0;
+    csv += fmt::format("{},{},200,{},{},8,350,20,100,-5\n", i, i % 2 == 0 ? 100.5 : 99.5, heading,
+                       heading);
+  }
+  return dir.write("log.csv", csv);
+}
+
+template <class F>
+core::InputError input_error(F&& f) {
+  try {
+    f();
+  } catch (const core::InputError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "expected a core::InputError";
+  return core::InputError({}, "");
+}
+
+TEST(StationKeepingAnalysis, PerSetpointWindowsOfAKnownLog) {
+  TempDir dir;
+  StationKeepingRequest request;
+  request.source.log = write_log(dir);
+  request.per_setpoint = true;
+  request.duration_s = 100.0;
+  const StationKeepingReport report = run_station_keeping(request);
+  // The last 100 s of each hold: 99 … 199 s and 299 … 399 s.
+  ASSERT_EQ(report.windows.size(), 2u);
+  EXPECT_EQ(report.windows[0].window.name, "heading 0");
+  EXPECT_DOUBLE_EQ(report.windows[0].window.t_from_s, 99.0);
+  EXPECT_DOUBLE_EQ(report.windows[0].window.t_to_s, 199.0);
+  EXPECT_EQ(report.windows[1].window.name, "heading 90");
+  EXPECT_DOUBLE_EQ(report.windows[1].window.t_to_s, 399.0);
+  const ident::StationKeepingResult& w = report.windows[1];
+  // ±0.5 m over 101 samples (one extra of one sign): std 0.5·√(1 − 1/101²), within 1e-4 m.
+  ASSERT_TRUE(w.position_std_north_m);
+  EXPECT_NEAR(*w.position_std_north_m, 0.5, 1e-4);
+  EXPECT_NEAR(*w.position_std_east_m, 0.0, 1e-9);
+  ASSERT_EQ(w.thrusters.size(), 2u);
+  EXPECT_EQ(w.thrusters[0].name, "port");
+  EXPECT_NEAR(*w.thrusters[0].mean_abs_thrust_N, 20e3, 1e-6);
+  EXPECT_NEAR(*w.thrusters[0].energy_J, 100e3 * 100.0, 1e-3);  // 100 kW for 100 s
+  EXPECT_NEAR(*w.total_mean_abs_thrust_N, 25e3, 1e-6);         // |−5| + 20 kN
+  EXPECT_FALSE(w.total_energy_J);                              // the tunnel's power is not logged
+
+  const nlohmann::json doc = to_json(report);
+  EXPECT_EQ(doc.at("analysis"), "station-keeping");
+  EXPECT_EQ(doc.at("log"), request.source.log.string());
+  EXPECT_TRUE(doc.at("observed").at("waves").is_null());
+  ASSERT_EQ(doc.at("windows").size(), 2u);
+  const nlohmann::json& j = doc.at("windows")[1];
+  for (const char* key : {"name", "t_from", "t_to", "position_samples", "position_std_m",
+                          "heading_deg", "wind_speed_mps", "wind_dir_deg", "thrusters", "thrust_kN",
+                          "energy_kJ", "accumulated_thrust_kNs"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  EXPECT_NEAR(j.at("heading_deg").at("mean").get<double>(), 90.0, 1e-9);
+  EXPECT_NEAR(j.at("wind_dir_deg").at("mean").get<double>(), 350.0, 1e-9);
+  EXPECT_NEAR(j.at("thrust_kN").at("total").get<double>(), 25.0, 1e-9);
+  EXPECT_NEAR(j.at("energy_kJ").at("port").get<double>(), 10000.0, 1e-6);
+  EXPECT_TRUE(j.at("energy_kJ").at("total").is_null());
+}
+
+TEST(StationKeepingAnalysis, OneWindowIsTheTopLevelOfTheDocument) {
+  TempDir dir;
+  StationKeepingRequest request;
+  request.source.log = write_log(dir);
+  request.t_from_s = 250.0;  // to = from + duration
+  request.duration_s = 50.0;
+  request.waves = "Hs 2 m";
+  const StationKeepingReport report = run_station_keeping(request);
+  ASSERT_EQ(report.windows.size(), 1u);
+  EXPECT_DOUBLE_EQ(report.windows[0].window.t_to_s, 300.0);
+  const nlohmann::json doc = to_json(report);
+  EXPECT_FALSE(doc.contains("windows"));
+  EXPECT_EQ(doc.at("name"), "window");
+  EXPECT_EQ(doc.at("observed").at("waves"), "Hs 2 m");
+  EXPECT_EQ(doc.at("position_samples"), 51);
+
+  const std::string text = to_text(report);
+  EXPECT_NE(text.find("stationkeeping, 1 window(s)\n  window: 250.0 … 300.0 s\n"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("waves (observed): Hs 2 m\n"), std::string::npos) << text;
+  EXPECT_EQ(text.find("current (observed)"), std::string::npos) << text;
+  const report::Table table = station_keeping_table(report);
+  ASSERT_EQ(table.header.size(), 2u);
+  // Rows: wind ×4, position ×2, heading ×2, then thrust and energy of port, tunnel and total.
+  ASSERT_EQ(table.rows.size(), 14u);
+  EXPECT_EQ(table.rows[2][0], "wind from, mean [deg]");
+  EXPECT_EQ(table.rows[2][1], "350");
+  EXPECT_EQ(table.rows[6][1], "90.0");  // heading mean
+  EXPECT_EQ(table.rows[10][0], "mean thrust total [kN]");
+  EXPECT_EQ(table.rows[10][1], "25.0");
+  EXPECT_EQ(table.rows[12][0], "energy tunnel [kJ]");
+  EXPECT_EQ(table.rows[12][1], "—");
+}
+
+TEST(StationKeepingAnalysis, TheDefaultWindowIsTheEndOfTheLog) {
+  TempDir dir;
+  StationKeepingRequest request;
+  request.source.log = write_log(dir);
+  const StationKeepingReport report = run_station_keeping(request);
+  ASSERT_EQ(report.windows.size(), 1u);
+  EXPECT_EQ(report.windows[0].window.name, "last 300 s");
+  EXPECT_DOUBLE_EQ(report.windows[0].window.t_from_s, 99.0);
+  EXPECT_DOUBLE_EQ(report.windows[0].window.t_to_s, 399.0);
+}
+
+TEST(StationKeepingAnalysis, ValidateNamesTheDuration) {
+  StationKeepingRequest request;
+  request.duration_s = 0.0;
+  const core::InputError e = input_error([&] { request.validate(); });
+  EXPECT_EQ(e.option(), "duration");
+  EXPECT_EQ(e.problem(), "the window duration must be > 0 s");
+  request.duration_s = 1.0;
+  EXPECT_NO_THROW(request.validate());
+}
+
+TEST(StationKeepingAnalysis, ErrorsAboutTheLogNameIt) {
+  TempDir dir;
+  const std::filesystem::path log = dir.write("flat.csv", "time [s],x [m]\n0,1\n1,2\n2,3\n");
+  StationKeepingRequest request;
+  request.source.log = log;
+  core::InputError e = input_error([&] { run_station_keeping(request); });
+  EXPECT_EQ(e.where().file, log.string());
+  EXPECT_EQ(e.problem(), "no position in the log");
+
+  request.per_setpoint = true;
+  const std::filesystem::path no_setpoints =
+      dir.write("no_setpoints.csv", "time [s],north [m],east [m]\n0,1,2\n1,1,2\n2,1,2\n3,1,2\n");
+  request.source.log = no_setpoints;
+  e = input_error([&] { run_station_keeping(request); });
+  EXPECT_EQ(e.where().file, no_setpoints.string());
+  EXPECT_EQ(e.problem(), "--per-setpoint needs the DP setpoints in the log");
+}
+
+}  // namespace
+}  // namespace dynpos::analysis
