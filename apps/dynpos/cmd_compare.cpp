@@ -10,7 +10,6 @@
 #include "commands.hpp"
 #include "dynpos/analysis/compare.hpp"
 #include "dynpos/analysis/options.hpp"
-#include "dynpos/core/error.hpp"
 #include "dynpos/io/json_writer.hpp"
 
 namespace dynpos::cli {
@@ -21,20 +20,9 @@ struct CompareOptions {
   std::string json;
 };
 
-// The checks in the order the command has always reported them: --format and --step-tolerance,
-// then the --json folder, then --labels.
-void check(const CompareOptions& opt) {
-  try {
-    opt.request.validate();
-  } catch (const core::InputError& e) {
-    if (e.option() != "labels") throw;
-  }
-  analysis::check_output_file("json", opt.json);
-  opt.request.validate();
-}
-
 void run(const CompareOptions& opt) {
-  check(opt);
+  opt.request.validate();
+  analysis::check_output_file("json", opt.json);
   const analysis::CompareReport report = analysis::run_compare(opt.request);
   if (!opt.json.empty()) io::write_json(opt.json, analysis::to_json(report));
   std::FILE* out = opt.json == "-" ? stderr : stdout;
