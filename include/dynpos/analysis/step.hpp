@@ -1,0 +1,113 @@
+#pragma once
+/// \file
+/// Step-test identification on any CSV log (thesis 3.2): every step of the input (or of a
+/// trigger, or the window given) found, and a FOPDT (3.7) or second-order model fitted to the
+/// output after each.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "dynpos/analysis/log_source.hpp"
+#include "dynpos/core/status.hpp"
+#include "dynpos/ident/fit_status.hpp"
+#include "dynpos/ident/step_detector.hpp"
+
+namespace dynpos::analysis {
+
+/// What to identify: the log's roles time, input (the command), output (the response) and
+/// optionally trigger (e.g. power feedback, to time steps without a command); or u and v with
+/// derive = "total-speed".
+struct StepRequest {
+  LogSource source;
+  /// "lsq": least squares with the dead time; "smith": Smith's two-point method (3.8)-(3.9);
+  /// "smith2": Smith's second-order 20/60 %; "rk": Rangaiah-Krishnaswamy 14/55/91 %.
+  std::string method = "lsq";
+  std::optional<double> from_s;     ///< window start [s]: one step in the window
+  std::optional<double> to_s;       ///< window end [s]
+  std::optional<double> step_at_s;  ///< step time [s], with or without a window
+  /// "" or "total-speed": fit √(u² + v²) (3.19) from the roles u and v (sway tests).
+  std::string derive;
+  /// Smallest input change counted as a step, in the input's SI unit; 0: from the noise.
+  double min_step = 0.0;
+  /// Shortest time [s] the input holds a level to count as a step.
+  double min_plateau_s = 3.0;
+
+  /// Throws option_error naming "method" or "derive" for a value it does not know.
+  void validate() const;
+};
+
+/// How the step times were found.
+enum class StepTimingSource {
+  kCommand,  ///< from the input (the command)
+  kTrigger,  ///< from a trigger signal that responds to the input
+  kWindow,   ///< neither is logged: the window given
+};
+
+/// "command", "trigger" or "window".
+std::string_view timing_name(StepTimingSource timing);
+
+/// Extras of a first-order fit (methods lsq and smith).
+struct FopdtFitDetails {
+  std::optional<double> gain_sigma;             ///< 1σ of K; absent without K, or for Smith
+  std::optional<double> time_constant_sigma_s;  ///< 1σ of T [s]
+  std::optional<double> dead_time_sigma_s;      ///< 1σ of δ [s]
+  std::optional<double> gain_from_levels;       ///< K = Δy/Δu from the mean levels, (3.4)
+  std::optional<double> rms_residual;           ///< [output unit]
+};
+
+/// Extras of a second-order fit (methods smith2 and rk).
+struct SecondOrderFitDetails {
+  std::optional<double> time_constant_1_s;  ///< T₁ [s]
+  std::optional<double> time_constant_2_s;  ///< T₂ [s]
+  std::optional<double> damping_ratio;      ///< ζ [-]
+};
+
+/// One step and the model fitted to it. Values are SI: y in the output's unit, K in output unit
+/// per input unit.
+struct StepFit {
+  ident::Step step;                       ///< step time, window end and input levels
+  std::optional<double> y_before;         ///< y₀
+  std::optional<double> y_after;          ///< y₀ + K·Δu
+  std::optional<double> gain;             ///< K
+  std::optional<double> time_constant_s;  ///< T (T₁ of a second-order fit) [s]
+  std::optional<double> dead_time_s;      ///< δ [s]
+  std::optional<double> r_squared;
+  core::Status status = core::Status::kFailed;
+  std::string message;
+  std::vector<ident::FitWarning> warnings;
+  std::optional<FopdtFitDetails> fopdt;               ///< set for lsq and smith
+  std::optional<SecondOrderFitDetails> second_order;  ///< set for smith2 and rk
+};
+
+/// The steps of one log and their fits.
+struct StepReport {
+  std::filesystem::path log;
+  std::string method;
+  std::string output_unit;                ///< SI unit of the output; "" is dimensionless
+  std::optional<std::string> input_unit;  ///< SI unit of the input; absent without one
+  StepTimingSource timing = StepTimingSource::kCommand;
+  std::vector<StepFit> steps;
+};
+
+/// Validates, reads the log, finds the steps and fits each by FOPDT (3.7):
+/// y = y₀ + K·Δu·(1 − e^{−(t−t₀−δ)/T}), or by the second-order model of the method.
+/// Throws option_error("col:output") without an output, option_error("col:input") without
+/// an input, a trigger or a window to find the steps in, and InputError naming the log for a
+/// bad file.
+StepReport run_step(const StepRequest& request);
+
+/// The `identify step --json` document: {log, method, output_unit, input_unit, timing,
+/// steps: [{t_step, t_end, u_before, u_after, y_before, y_after, K, T, delay, r_squared,
+/// status, message?, warnings, ...}]} with sigma, K_levels and rms_residual (first order) or
+/// T1, T2 and damping_ratio (second order).
+nlohmann::json to_json(const StepReport& report);
+
+/// A header line and one table row per step, as `identify step` prints them.
+std::string to_text(const StepReport& report);
+
+}  // namespace dynpos::analysis

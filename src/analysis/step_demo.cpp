@@ -1,0 +1,299 @@
+// The step-test section of the `dynpos demo` report: thesis tables 3.23–3.31 on the campaign's
+// logs, each fitted time constant against the simulator's truth.
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "dynpos/analysis/demo_sections.hpp"
+#include "dynpos/analysis/json_fields.hpp"
+#include "dynpos/core/log.hpp"
+#include "dynpos/ident/derived_signals.hpp"
+#include "dynpos/ident/fopdt_fit.hpp"
+#include "dynpos/ident/step_detector.hpp"
+#include "dynpos/io/column_map.hpp"
+#include "dynpos/io/csv_reader.hpp"
+#include "dynpos/io/json_writer.hpp"
+#include "dynpos/report/svg_plot.hpp"
+#include "dynpos/report/table.hpp"
+
+namespace dynpos::analysis {
+namespace {
+
+// One step test of the campaign, shaped like a table of thesis 3.23–3.31.
+struct StepDemoTest {
+  const char* scenario;
+  const char* id;          // file stem under analysis/steps/
+  const char* quantity;    // what the table is about
+  const char* input;       // column of the command the steps are found in
+  const char* output;      // column fitted; "" with total_speed
+  bool total_speed;        // fit √(u² + v²) (3.19) instead of `output`
+  const char* truth;       // "shaft_speed"/"thrust" (propeller_steps), "nomoto" (rudder_steps), ""
+  const char* thesis;      // the thesis' figures for comparison (DESIGN.md calibration table)
+  const char* input_unit;  // the input as the trial logger shows it ...
+  double input_scale;      // ... = SI value × this
+};
+
+constexpr StepDemoTest kStepDemoTests[] = {
+    {"surge-steps-forward", "surge-forward_rpm", "Shaft speed, starboard propeller",
+     "command.rpm.stb", "rpm.stb", false, "shaft_speed",
+     "table 3.23: T_n 0.5–5.5 s, δ_n 1.2–3.3 s; larger steps slower", "rpm", 60.0},
+    {"surge-steps-forward", "surge-forward_thrust", "Thrust, starboard propeller",
+     "command.rpm.stb", "thrust.stb", false, "thrust", "table 3.23: T 0.3–4.7 s, δ 1–5.6 s", "rpm",
+     60.0},
+    {"surge-steps-forward", "surge-forward_speed", "Surge speed u", "lever.surge", "u", false, "",
+     "table 3.24: T 16 s (0–80 %), 34 s (25–40 %), 59 s (15–25 %), 60–135 s (small steps)", "%",
+     100.0},
+    {"surge-steps-backward", "surge-backward_rpm", "Shaft speed, starboard propeller",
+     "command.rpm.stb", "rpm.stb", false, "shaft_speed",
+     "table 3.25: T_n 0.5–5.5 s, δ_n 1.2–3.3 s; larger steps slower", "rpm", 60.0},
+    {"surge-steps-backward", "surge-backward_thrust", "Thrust, starboard propeller",
+     "command.rpm.stb", "thrust.stb", false, "thrust", "table 3.25: T 0.3–4.7 s, δ 1–5.6 s", "rpm",
+     60.0},
+    {"surge-steps-backward", "surge-backward_speed", "Surge speed u", "lever.surge", "u", false, "",
+     "table 3.26: T 31–77 s (backward)", "%", 100.0},
+    {"sway-steps-starboard", "sway-starboard_speed", "Total speed √(u² + v²) (3.19)", "lever.sway",
+     "", true, "", "table 3.28: T 9–19 s, δ 1–4 s; larger steps faster", "%", 100.0},
+    {"sway-steps-port", "sway-port_speed", "Total speed √(u² + v²) (3.19)", "lever.sway", "", true,
+     "", "table 3.30: T 9–19 s, δ 1–4 s; larger steps faster", "%", 100.0},
+    {"yaw-steps", "yaw_rate", "Yaw rate r (MRU 1), starboard rudder steps", "command.rudder.stb",
+     "mru1.r", false, "nomoto",
+     "table 3.31 (rudder 0→20°): T 4.7–5.6 s at 3 kn, 2.9–3.0 s at 6 kn, δ ≈ 2 s", "deg",
+     57.29577951308232},
+};
+
+// One step of a run's truth for the quantity a table compares.
+struct TruthStep {
+  double t_s = -1e9;     // step time; far from every step when truth.json lacks it
+  std::string thruster;  // propeller steps: "port", "stb", ...; rudder steps: ""
+  std::optional<double> T_s, delay_s;
+};
+
+// The truth of `quantity` ("shaft_speed" or "thrust": truth.json's propeller_steps; "nomoto":
+// its rudder_steps) for every step of the run in `run_dir`; none without truth.json or for the
+// quantity "". The one place the demo reads truth.json, by its keys.
+std::vector<TruthStep> read_truth_steps(const std::filesystem::path& run_dir,
+                                        const std::string& quantity) {
+  nlohmann::json truth;
+  if (std::ifstream in(run_dir / "truth.json"); in) truth = nlohmann::json::parse(in);
+  const bool rudder = quantity == "nomoto";
+  const char* list = rudder ? "rudder_steps" : "propeller_steps";
+  std::vector<TruthStep> out;
+  if (quantity.empty() || !truth.is_object() || !truth.contains(list)) return out;
+  const auto number = [](const nlohmann::json& j, const char* key) {
+    return j.is_object() && j.contains(key) && j.at(key).is_number()
+               ? std::optional<double>(j.at(key).get<double>())
+               : std::nullopt;
+  };
+  for (const nlohmann::json& s : truth.at(list)) {
+    TruthStep step;
+    step.t_s = number(s, "t_s").value_or(step.t_s);
+    if (s.contains("thruster") && s.at("thruster").is_string())
+      step.thruster = s.at("thruster").get<std::string>();
+    if (rudder) {
+      // Nomoto's first-order yaw-rate time constant T_r; the dead time of the yaw-rate response
+      // has no single truth (servo + hull), so it stays missing.
+      if (s.contains("nomoto")) step.T_s = number(s.at("nomoto"), "Tr_s");
+    } else if (s.contains(quantity)) {
+      step.T_s = number(s.at(quantity), "T_s");
+      step.delay_s = number(s.at(quantity), "delay_s");
+    }
+    out.push_back(std::move(step));
+  }
+  return out;
+}
+
+// The truth of the step at `t_step`: the nearest step of the truth within 1 s (the command is
+// logged at the step time; 1 s is far below the shortest spacing of steps, 60 s).
+TruthStep truth_for(const std::vector<TruthStep>& truth, const StepDemoTest& test, double t_step) {
+  const bool rudder = std::string(test.truth) == "nomoto";
+  for (const TruthStep& s : truth) {
+    if (!rudder && s.thruster != "stb") continue;
+    if (std::abs(s.t_s - t_step) > 1.0) continue;
+    return s;
+  }
+  return {};
+}
+
+struct StepDemoOutcome {
+  report::Table table;
+  std::string plot;  // file name under analysis/steps/, or empty
+  std::size_t steps = 0, with_truth = 0;
+  double worst_error_pct = 0.0;
+};
+
+// The logged response of a test: time, y and their units.
+struct StepDemoSignals {
+  std::vector<double> t, u, y;
+  std::string u_unit, y_unit;
+};
+
+StepDemoSignals read_demo_signals(const std::filesystem::path& run_dir, const StepDemoTest& test) {
+  io::ColumnMap map;
+  map.set_column("time", "time");
+  map.set_column("input", test.input);
+  if (test.total_speed) {
+    map.set_column("u", "u");
+    map.set_column("v", "v");
+  } else {
+    map.set_column("output", test.output);
+  }
+  const core::Log log = io::read_csv(run_dir / "log.csv", map);
+  StepDemoSignals s;
+  s.t = log.time();
+  s.u = log.values("input");
+  s.y = test.total_speed ? ident::total_speed(log.values("u"), log.values("v"))  // (3.19)
+                         : log.values("output");
+  s.y_unit = test.total_speed ? "m/s" : log.channel("output").unit;
+  s.u_unit = log.channel("input").unit;
+  return s;
+}
+
+// The data and the fitted FOPDT (3.7) of every step, with the step times marked.
+void write_step_demo_plot(const std::filesystem::path& file, const StepDemoTest& test,
+                          const StepDemoSignals& s, const std::vector<double>& fit_t,
+                          const std::vector<double>& fit_y, const std::vector<double>& markers) {
+  report::Figure fig;
+  fig.title = fmt::format("{}: {} — data and fitted FOPDT (3.7)", test.scenario, test.quantity);
+  report::Panel panel;
+  panel.x_axis = {"Time", "s", {}, {}};
+  panel.y_axis = {test.quantity, s.y_unit, {}, {}};
+  panel.series.push_back({"logged", s.t, s.y, "#1f77b4", 1.0, false});
+  panel.series.push_back({"FOPDT fit (Smith)", fit_t, fit_y, "#d62728", 1.5, true});
+  panel.x_markers = markers;
+  fig.panels.push_back(std::move(panel));
+  report::write_svg(file, fig);
+}
+
+StepDemoOutcome run_step_demo_test(const std::filesystem::path& campaign_dir,
+                                   const StepDemoTest& test, const std::filesystem::path& out_dir) {
+  const std::filesystem::path run_dir = campaign_dir / test.scenario;
+  const StepDemoSignals s = read_demo_signals(run_dir, test);
+  const std::vector<TruthStep> truth = read_truth_steps(run_dir, test.truth);
+
+  // Smith's two-point method (3.8)-(3.9): the method that defines truth.json's time constants.
+  ident::FopdtFitOptions f;
+  f.method = ident::FopdtMethod::kSmith;
+  const std::vector<ident::Step> steps = ident::detect_steps(s.t, s.u).steps;
+
+  const auto in_logger_unit = [&test](const std::optional<double>& v) {
+    return v ? std::optional<double>(*v * test.input_scale) : std::nullopt;
+  };
+  StepDemoOutcome out;
+  out.table.header = {"t_step [s]",  fmt::format("input [{}]", test.input_unit),
+                      "T [s]",       "δ [s]",
+                      "R²",          "T truth [s]",
+                      "δ truth [s]", "T error [%]",
+                      "status"};
+  out.table.first_numeric_column = 0;
+  nlohmann::json doc;
+  doc["analysis"] = "step";
+  doc["log"] = std::string(test.scenario) + "/log.csv";  // relative: the report is relocatable
+  doc["method"] = "smith";
+  doc["quantity"] = test.quantity;
+  doc["output_unit"] = s.y_unit;
+  doc["input_unit"] = s.u_unit;
+  doc["thesis"] = test.thesis;
+  doc["steps"] = nlohmann::json::array();
+  std::vector<double> fit_t, fit_y, markers;
+  for (const ident::Step& step : steps) {
+    const ident::FopdtFitResult r = ident::fit_fopdt(s.t, s.y, step, f);
+    const TruthStep tv = truth_for(truth, test, step.t_step);
+    const std::optional<double> T = value_of(r.time_constant), delay = value_of(r.dead_time);
+    std::optional<double> err;
+    if (T && tv.T_s && *tv.T_s > 0.0) {
+      err = 100.0 * (*T - *tv.T_s) / *tv.T_s;
+      out.worst_error_pct = std::max(out.worst_error_pct, std::abs(*err));
+      ++out.with_truth;
+    }
+    ++out.steps;
+    std::string notes(ident::fit_status_name(r.status));
+    for (const ident::FitWarning& w : r.warnings) {
+      notes += (notes.empty() ? "" : ", ") + std::string(ident::warning_code_name(w.code));
+    }
+    nlohmann::json j;
+    j["t_step"] = step.t_step;
+    j["u_before"] = number_json(step.u_before);
+    j["u_after"] = number_json(step.u_after);
+    j["T"] = number_json(T);
+    j["delay"] = number_json(delay);
+    j["K"] = r.gain ? nlohmann::json(r.gain->value) : nlohmann::json(nullptr);
+    j["r_squared"] = number_json(r.r_squared);
+    j["status"] = std::string(ident::fit_status_name(r.status));
+    j["warnings"] = warnings_json(r.warnings);
+    j["truth"] = {{"T", number_json(tv.T_s)}, {"delay", number_json(tv.delay_s)}};
+    j["T_error_pct"] = number_json(err);
+    doc["steps"].push_back(j);
+    out.table.rows.push_back({fmt::format("{:.1f}", step.t_step),
+                              number_cell(in_logger_unit(step.u_before), "{:.4g}") + " → " +
+                                  number_cell(in_logger_unit(step.u_after), "{:.4g}"),
+                              number_cell(T, "{:.2f}"), number_cell(delay, "{:.2f}"),
+                              number_cell(r.r_squared, "{:.3f}"), number_cell(tv.T_s, "{:.2f}"),
+                              number_cell(tv.delay_s, "{:.2f}"), number_cell(err, "{:+.1f}"),
+                              notes});
+    // The fitted FOPDT (3.7) over the step's window, for the plot; gaps between steps.
+    markers.push_back(step.t_step);
+    if (const auto model = r.model()) {
+      for (std::size_t i = 0; i < s.t.size(); ++i) {
+        if (s.t[i] < step.t_begin || s.t[i] > step.t_end) continue;
+        fit_t.push_back(s.t[i]);
+        fit_y.push_back((*model)(s.t[i]));
+      }
+      fit_t.push_back(std::nan(""));
+      fit_y.push_back(std::nan(""));
+    }
+  }
+  io::write_json((out_dir / (std::string(test.id) + ".json")).string(), doc);
+  out.plot = std::string(test.id) + ".svg";
+  write_step_demo_plot(out_dir / out.plot, test, s, fit_t, fit_y, markers);
+  return out;
+}
+
+}  // namespace
+
+ReportSection step_demo_section(const std::filesystem::path& campaign_dir) {
+  const std::filesystem::path out_dir = campaign_dir / "analysis" / "steps";
+  ReportSection section;
+  std::string md, html;
+  for (const StepDemoTest& test : kStepDemoTests) {
+    if (!std::filesystem::exists(campaign_dir / test.scenario / "log.csv")) continue;
+    std::filesystem::create_directories(out_dir);
+    const StepDemoOutcome o = run_step_demo_test(campaign_dir, test, out_dir);
+    const std::string head = fmt::format("{} — {} ({} step(s)); thesis {}.", test.scenario,
+                                         test.quantity, o.steps, test.thesis);
+    std::string note;
+    if (std::string(test.truth) == "nomoto") {
+      note =
+          " T truth is Nomoto's T_r = T1 + T2 − T3 (truth.json) at the speed of each step; a "
+          "FOPDT fit from the rudder command includes the servo ramp and the speed loss in "
+          "the turn, so it is not expected to equal T_r.";
+    }
+    if (o.with_truth > 0) {
+      note += fmt::format(" Largest |T error| against truth.json: {:.1f} % over {} step(s).",
+                          o.worst_error_pct, o.with_truth);
+    }
+    const std::string rel = "analysis/steps/" + o.plot;
+    md += fmt::format("**{}**{}\n\n{}\n![{}]({})\n\n", head, note, report::render_markdown(o.table),
+                      o.plot, rel);
+    html += fmt::format("<p><b>{}</b>{}</p>\n{}<p><img src=\"{}\" alt=\"{}\"></p>\n", head, note,
+                        report::render_html(o.table), rel, o.plot);
+  }
+  if (md.empty()) return section;
+  section.title = "Step tests: time constants and dead times (thesis tables 3.23–3.31)";
+  const std::string intro =
+      "FOPDT (3.7) fitted by Smith's two-point method (3.8)-(3.9) to each step the command "
+      "columns show; the truth is the simulator's own response evaluated the same way. Data and "
+      "fits: analysis/steps/*.json and *.svg.";
+  section.markdown = intro + "\n\n" + md;
+  section.html = "<p>" + intro + "</p>\n" + html;
+  return section;
+}
+
+}  // namespace dynpos::analysis

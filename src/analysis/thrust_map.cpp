@@ -1,0 +1,167 @@
+#include "dynpos/analysis/thrust_map.hpp"
+
+#include <fmt/core.h>
+
+#include <map>
+
+#include "dynpos/analysis/data_dir.hpp"
+#include "dynpos/analysis/json_fields.hpp"
+#include "dynpos/analysis/options.hpp"
+#include "dynpos/core/error.hpp"
+#include "dynpos/model/thruster.hpp"
+#include "dynpos/model/tunnel_thruster.hpp"
+#include "dynpos/scenario/vessel_config.hpp"
+
+namespace dynpos::analysis {
+namespace {
+
+bool is_rpm_or_thrust(const std::string& role) {
+  return role.rfind("rpm.", 0) == 0 || role.rfind("thrust.", 0) == 0;
+}
+
+// The thrust maps of the vessel file (3.17), tables 3.1/3.2: c₊ and c₋ = −c(n < 0) of each
+// thruster model, c = ρK_T·D⁴ for that sign.
+std::map<std::string, ident::ThrustMap> vessel_maps(const scenario::VesselConfig& v) {
+  const model::Thruster main(v.propeller);
+  const ident::ThrustMap propeller{main.thrust_coefficient(1.0), -main.thrust_coefficient(-1.0)};
+  const model::TunnelThruster bow(v.tunnel);
+  const ident::ThrustMap tunnel{bow.thrust_coefficient(1.0), -bow.thrust_coefficient(-1.0)};
+  return {{"port", propeller}, {"stb", propeller}, {"tunnel", tunnel}};
+}
+
+std::vector<ThrusterMapFit> fit_maps(const ThrustMapRequest& request) {
+  const core::Log log = request.source.read(is_rpm_or_thrust);
+  std::vector<ThrusterMapFit> fits;
+  for (const std::string& name : thruster_names(log, "rpm")) {
+    if (!log.has("thrust." + name)) continue;
+    ident::ThrustMapFitOptions f;
+    f.min_abs_shaft_speed_rps = request.min_speed_rpm / 60.0;
+    f.shaft_speed_name = "rpm." + name;
+    f.thrust_name = "thrust." + name;
+    ThrusterMapFit fit{
+        name, ident::fit_thrust_map(log.values("rpm." + name), log.values("thrust." + name), f),
+        std::nullopt};
+    if (fit.fit.c_forward && fit.fit.c_reverse) {
+      fit.c_mean =
+          ident::ThrustMap{fit.fit.c_forward->value, fit.fit.c_reverse->value}.mean_coefficient();
+    }
+    fits.push_back(std::move(fit));
+  }
+  if (fits.empty()) {
+    throw core::InputError({request.source.log.string(), {}, {}, "thrust.NAME"},
+                           "no thruster with both shaft speed and thrust in the log",
+                           "map them per thruster, e.g. --col rpm.port=RPM_P --col "
+                           "thrust.port=THRUST_P (a dynpos log names them so already)");
+  }
+  return fits;
+}
+
+AppliedThrust apply_maps(const ThrustMapRequest& request) {
+  const scenario::VesselConfig vessel = scenario::load_vessel_config(
+      request.vessel.empty() ? find_data_dir() / "vessels" / "gunnerus.toml" : request.vessel);
+  const auto maps = vessel_maps(vessel);
+  const core::Log log =
+      request.source.read([](const std::string& role) { return role.rfind("rpm.", 0) == 0; });
+  AppliedThrust out{core::Log(log.time()), 0, vessel.source, request.abs_speed};
+  for (const std::string& name : thruster_names(log, "rpm")) {
+    const auto it = maps.find(name);
+    if (it == maps.end()) {
+      throw core::InputError({request.source.log.string(), {}, {}, "rpm." + name},
+                             "no thrust map for thruster '" + name + "' in the vessel file",
+                             "the vessel file has port, stb (main propellers) and tunnel");
+    }
+    const std::vector<double>& n = log.values("rpm." + name);
+    std::vector<double> thrust_kN =
+        request.abs_speed ? ident::thrust_from_abs_speed(it->second.mean_coefficient(), n)
+                          : it->second.thrust(n);
+    for (double& t : thrust_kN) t /= 1000.0;
+    std::vector<double> rpm(n.size());
+    for (std::size_t i = 0; i < n.size(); ++i) rpm[i] = n[i] * 60.0;
+    out.log.add_channel("rpm." + name, "rpm", std::move(rpm));
+    out.log.add_channel("thrust." + name, "kN", std::move(thrust_kN));
+    ++out.thrusters;
+  }
+  if (out.thrusters == 0) {
+    throw core::InputError({request.source.log.string(), {}, {}, "rpm.NAME"},
+                           "no shaft speed column in the log",
+                           "map one per thruster, e.g. --col rpm.port=RPM_P");
+  }
+  return out;
+}
+
+// A coefficient in kN/rps² with its 1σ, as the table shows it.
+std::string kn_cell(const std::optional<ident::Estimate>& e) {
+  if (!e) return "—";
+  return e->sigma ? fmt::format("{:.3f} ± {:.3f}", e->value / 1000.0, *e->sigma / 1000.0)
+                  : fmt::format("{:.3f}", e->value / 1000.0);
+}
+
+}  // namespace
+
+void ThrustMapRequest::validate() const {
+  if (min_speed_rpm < 0.0) {
+    throw option_error("min_speed", fmt::format("{} rpm is negative", min_speed_rpm),
+                       "give the smallest |n| to fit, ≥ 0 rpm");
+  }
+}
+
+ThrustMapReport run_thrust_map(const ThrustMapRequest& request) {
+  request.validate();
+  ThrustMapReport report;
+  report.log = request.source.log;
+  report.min_speed_rpm = request.min_speed_rpm;
+  if (request.apply) {
+    report.applied = apply_maps(request);
+  } else {
+    report.thrusters = fit_maps(request);
+  }
+  return report;
+}
+
+nlohmann::json to_json(const ThrustMapReport& report) {
+  nlohmann::json doc;
+  doc["analysis"] = "thrust-map";
+  doc["log"] = report.log.string();
+  doc["unit"] = "N/rps^2";
+  doc["thrusters"] = nlohmann::json::array();
+  for (const ThrusterMapFit& t : report.thrusters) {
+    const ident::ThrustMapFitResult& r = t.fit;
+    doc["thrusters"].push_back(
+        {{"name", t.name},
+         {"c_pos", number_json(value_of(r.c_forward))},
+         {"c_neg", number_json(value_of(r.c_reverse))},
+         {"sigma", {{"c_pos", sigma_json(r.c_forward)}, {"c_neg", sigma_json(r.c_reverse)}}},
+         {"c_mean", number_json(t.c_mean)},
+         {"n_samples", {{"pos", r.samples_forward}, {"neg", r.samples_reverse}}},
+         {"r_squared", number_json(r.r_squared)},
+         {"status", std::string(ident::fit_status_name(r.status))},
+         {"message", r.message}});
+  }
+  return doc;
+}
+
+std::string to_text(const ThrustMapReport& report, const std::filesystem::path& csv_out) {
+  if (report.applied) {
+    const AppliedThrust& a = *report.applied;
+    return fmt::format(
+        "{}: thrust of {} thruster(s) from {} ({}) into {}\n", report.log.string(), a.thrusters,
+        a.vessel_source.empty() ? std::string("the built-in vessel") : a.vessel_source,
+        a.abs_speed ? "|n| only: mean coefficient (3.18)" : "signed n: c+ / c- (3.17)",
+        csv_out.string());
+  }
+  std::string text = fmt::format("{}: thrust map T = c·n|n| (3.17), |n| ≥ {} rpm, ±1σ\n",
+                                 report.log.string(), report.min_speed_rpm);
+  text += fmt::format("{:<10} {:>20} {:>20} {:>9} {:>8} {:>8} {:>7}\n", "thruster", "c+ [kN/rps²]",
+                      "c- [kN/rps²]", "c̄", "n+", "n-", "R²");
+  for (const ThrusterMapFit& t : report.thrusters) {
+    const ident::ThrustMapFitResult& r = t.fit;
+    text +=
+        fmt::format("{:<10} {:>20} {:>20} {:>9} {:>8} {:>8} {:>7}\n", t.name, kn_cell(r.c_forward),
+                    kn_cell(r.c_reverse),
+                    t.c_mean ? fmt::format("{:.3f}", *t.c_mean / 1000.0) : "—", r.samples_forward,
+                    r.samples_reverse, r.r_squared ? fmt::format("{:.4f}", *r.r_squared) : "—");
+  }
+  return text;
+}
+
+}  // namespace dynpos::analysis
