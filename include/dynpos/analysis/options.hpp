@@ -3,11 +3,13 @@
 /// How a request names a bad option: by its request key, one convention for every front end.
 ///
 /// Requests are validated once, here in the library. A bad value throws core::InputError whose
-/// location carries the request key (InputError::option()): the field name in snake_case ("min_step",
-/// "method"), "col:ROLE" for a missing column mapping ("col:output"), and several keys joined by
+/// location carries the request key (InputError::option()): the field name in snake_case
+/// ("min_step", "method"), "col:ROLE" for a missing column mapping ("col:output"), and several keys
+/// joined by
 /// '/' ("from/to"). The CLI shows a key as its option ("--min-step", "--col output=COLUMN",
 /// "--from/--to"), the Python API as its keyword argument.
 
+#include <filesystem>
 #include <string>
 
 #include "dynpos/core/error.hpp"
@@ -17,6 +19,11 @@ namespace dynpos::analysis {
 /// An InputError about the option `key` (see the file comment for the spelling).
 core::InputError option_error(const std::string& key, const std::string& problem,
                               const std::string& hint = {});
+
+/// An InputError about the option `key` whose value does not fit the input file `file` (e.g. a
+/// time window outside the log): the file, then the key as option_error() names it.
+core::InputError option_error_in_file(const std::filesystem::path& file, const std::string& key,
+                                      const std::string& problem, const std::string& hint = {});
 
 /// Throws option_error(key) if the folder of the output file `path` does not exist. "" and "-"
 /// (standard output) are always fine.
