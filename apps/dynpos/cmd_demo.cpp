@@ -62,7 +62,7 @@ void register_demo(CLI::App& app) {
     }
     std::vector<scenario::ReportSection> sections;
     for (auto* analysis :
-         {&step_demo_section, &analysis::agility_demo_section, &four_corner_demo_section,
+         {&step_demo_section, &analysis::agility_demo_section, &analysis::four_corner_demo_section,
           &station_keeping_demo_section, &leverarm_gnss_demo_section, &leverarm_mru_demo_section}) {
       scenario::ReportSection section = (*analysis)(opt->out_dir);
       if (!section.title.empty()) sections.push_back(std::move(section));

@@ -77,7 +77,6 @@ void add_leverarm_mru(CLI::App& leverarm);              // cmd_leverarm_mru.cpp
 // figures and JSON under campaign_dir/analysis/, and returns the section (links relative to
 // campaign_dir). An empty title means the analysis has nothing to add.
 scenario::ReportSection step_demo_section(const std::filesystem::path& campaign_dir);
-scenario::ReportSection four_corner_demo_section(const std::filesystem::path& campaign_dir);
 scenario::ReportSection station_keeping_demo_section(const std::filesystem::path& campaign_dir);
 scenario::ReportSection leverarm_gnss_demo_section(const std::filesystem::path& campaign_dir);
 scenario::ReportSection leverarm_mru_demo_section(const std::filesystem::path& campaign_dir);
