@@ -76,8 +76,6 @@ void add_leverarm_mru(CLI::App& leverarm);              // cmd_leverarm_mru.cpp
 // the campaign written into `campaign_dir` (DIR/<scenario>/log.csv and truth.json), writes its
 // figures and JSON under campaign_dir/analysis/, and returns the section (links relative to
 // campaign_dir). An empty title means the analysis has nothing to add.
-scenario::ReportSection agility_demo_section(const std::filesystem::path& campaign_dir);
-scenario::ReportSection four_corner_demo_section(const std::filesystem::path& campaign_dir);
 scenario::ReportSection leverarm_gnss_demo_section(const std::filesystem::path& campaign_dir);
 scenario::ReportSection leverarm_mru_demo_section(const std::filesystem::path& campaign_dir);
 

@@ -56,5 +56,16 @@ TEST(InputError, KeepsItsParts) {
   }
 }
 
+TEST(InputError, AnOptionErrorCanNameTheFileItWasCheckedAgainst) {
+  const InputError plain = InputError::for_option("from/to", "outside the log", "choose");
+  EXPECT_EQ(plain.option(), "from/to");
+  EXPECT_EQ(plain.where().file, "");
+  EXPECT_EQ(std::string(plain.what()), "(from/to): outside the log; choose");
+  const InputError in_file = InputError::for_option("from/to", "outside the log", "", "a.csv");
+  EXPECT_EQ(in_file.option(), "from/to");
+  EXPECT_EQ(in_file.where().file, "a.csv");
+  EXPECT_EQ(std::string(in_file.what()), "a.csv (from/to): outside the log");
+}
+
 }  // namespace
 }  // namespace dynpos::core

@@ -9,6 +9,7 @@
 /// '/' ("from/to"). The CLI shows a key as its option ("--min-step", "--col output=COLUMN",
 /// "--from/--to"), the Python API as its keyword argument.
 
+#include <filesystem>
 #include <string>
 
 #include "dynpos/core/error.hpp"
@@ -18,6 +19,11 @@ namespace dynpos::analysis {
 /// An InputError about the option `key` (see the file comment for the spelling).
 core::InputError option_error(const std::string& key, const std::string& problem,
                               const std::string& hint = {});
+
+/// An InputError about the option `key` whose value does not fit the input file `file` (e.g. a
+/// time window outside the log): the file, then the key as option_error() names it.
+core::InputError option_error_in_file(const std::filesystem::path& file, const std::string& key,
+                                      const std::string& problem, const std::string& hint = {});
 
 /// Throws option_error(key) if the folder of the output file `path` does not exist. "" and "-"
 /// (standard output) are always fine.

@@ -28,8 +28,11 @@ class InputError : public std::runtime_error {
 
   /// A bad option of a request, named by its request key, e.g. "min_step" or "col:output"
   /// (analysis/options.hpp): each front end shows the key in its own spelling ("--min-step" on
-  /// the command line). what() shows it as "(key): problem; hint".
-  static InputError for_option(std::string key, std::string what, std::string hint = {});
+  /// the command line). what() shows it as "(key): problem; hint". `file`, when not empty, names
+  /// the input the option was checked against (e.g. a time window outside the log): what() shows
+  /// "file (key): problem; hint".
+  static InputError for_option(std::string key, std::string what, std::string hint = {},
+                               std::string file = {});
 
   const InputLocation& where() const noexcept { return where_; }
   const std::string& problem() const noexcept { return problem_; }
