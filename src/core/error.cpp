@@ -35,8 +35,9 @@ InputError::InputError(InputLocation where, std::string what, std::string hint)
       problem_(std::move(what)),
       hint_(std::move(hint)) {}
 
-InputError InputError::for_option(std::string key, std::string what, std::string hint) {
-  InputError e({{}, {}, {}, key}, std::move(what), std::move(hint));
+InputError InputError::for_option(std::string key, std::string what, std::string hint,
+                                  std::string file) {
+  InputError e({std::move(file), {}, {}, key}, std::move(what), std::move(hint));
   e.option_ = std::move(key);
   return e;
 }

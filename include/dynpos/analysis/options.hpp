@@ -3,10 +3,10 @@
 /// How a request names a bad option: by its request key, one convention for every front end.
 ///
 /// Requests are validated once, here in the library. A bad value throws core::InputError whose
-/// location carries the request key (InputError::option()): the field name in snake_case ("min_step",
-/// "method"), "col:ROLE" for a missing column mapping ("col:output"), and several keys joined by
-/// '/' ("from/to"). The CLI shows a key as its option ("--min-step", "--col output=COLUMN",
-/// "--from/--to"), the Python API as its keyword argument.
+/// location carries the request key (InputError::option()): the field name in snake_case
+/// ("min_step", "method"), "col:ROLE" for a missing column mapping ("col:output"), and several
+/// keys joined by '/' ("from/to"). The CLI shows a key as its option ("--min-step",
+/// "--col output=COLUMN", "--from/--to"), the Python API as its keyword argument.
 
 #include <string>
 
@@ -17,6 +17,11 @@ namespace dynpos::analysis {
 /// An InputError about the option `key` (see the file comment for the spelling).
 core::InputError option_error(const std::string& key, const std::string& problem,
                               const std::string& hint = {});
+
+/// An InputError about the option `key` whose value names `file`: the file is missing, or its
+/// content does not fit the option. Shown as "file (key): problem; hint".
+core::InputError file_option_error(const std::string& file, const std::string& key,
+                                   const std::string& problem, const std::string& hint = {});
 
 /// Throws option_error(key) if the folder of the output file `path` does not exist. "" and "-"
 /// (standard output) are always fine.

@@ -28,8 +28,10 @@ class InputError : public std::runtime_error {
 
   /// A bad option of a request, named by its request key, e.g. "min_step" or "col:output"
   /// (analysis/options.hpp): each front end shows the key in its own spelling ("--min-step" on
-  /// the command line). what() shows it as "(key): problem; hint".
-  static InputError for_option(std::string key, std::string what, std::string hint = {});
+  /// the command line). what() shows it as "(key): problem; hint", or "file (key): problem;
+  /// hint" when the option names a `file` the problem is about.
+  static InputError for_option(std::string key, std::string what, std::string hint = {},
+                               std::string file = {});
 
   const InputLocation& where() const noexcept { return where_; }
   const std::string& problem() const noexcept { return problem_; }
