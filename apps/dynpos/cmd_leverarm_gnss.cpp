@@ -381,7 +381,7 @@ GnssRun analyse(const GnssCliOptions& o) {
   }
   GnssRun run;
   run.result = calib::estimate_gnss_arms(motion.motion, gnss, lo);
-  if (!run.result.ok)
+  if (run.result.status != core::Status::kOk)
     throw core::InputError({o.input.log.string(), {}, {}, "time"}, run.result.message,
                            "check that the GNSS fixes and the motion cover the same time (a "
                            "maneuver of a few minutes with turning and roll)");

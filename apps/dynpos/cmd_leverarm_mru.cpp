@@ -122,7 +122,7 @@ MruRun analyse(const MruCliOptions& o) {
   eo.tau_s = o.tau_s;
   eo.w1_per_s = o.w1_per_s;
   run.result = calib::estimate_mru_arms(run.signals, eo);
-  if (!run.result.ok) {
+  if (run.result.status != core::Status::kOk) {
     throw core::InputError({o.input.log.string(), {}, {}, "time"}, run.result.message,
                            "log a longer maneuver with rotation (a turning circle in waves)");
   }
