@@ -9,6 +9,7 @@
 
 #include "commands.hpp"
 #include "dynpos/analysis/data_dir.hpp"
+#include "dynpos/analysis/demo_sections.hpp"
 #include "dynpos/io/json_writer.hpp"
 #include "dynpos/scenario/campaign.hpp"
 #include "dynpos/scenario/vessel_config.hpp"
@@ -60,9 +61,9 @@ void register_demo(CLI::App& app) {
       }
     }
     std::vector<scenario::ReportSection> sections;
-    for (auto* analysis :
-         {&step_demo_section, &agility_demo_section, &four_corner_demo_section,
-          &station_keeping_demo_section, &leverarm_gnss_demo_section, &leverarm_mru_demo_section}) {
+    for (auto* analysis : {&step_demo_section, &agility_demo_section, &four_corner_demo_section,
+                           &station_keeping_demo_section, &analysis::leverarm_gnss_demo_section,
+                           &analysis::leverarm_mru_demo_section}) {
       scenario::ReportSection section = (*analysis)(opt->out_dir);
       if (!section.title.empty()) sections.push_back(std::move(section));
     }

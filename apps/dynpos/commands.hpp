@@ -80,8 +80,6 @@ scenario::ReportSection step_demo_section(const std::filesystem::path& campaign_
 scenario::ReportSection agility_demo_section(const std::filesystem::path& campaign_dir);
 scenario::ReportSection four_corner_demo_section(const std::filesystem::path& campaign_dir);
 scenario::ReportSection station_keeping_demo_section(const std::filesystem::path& campaign_dir);
-scenario::ReportSection leverarm_gnss_demo_section(const std::filesystem::path& campaign_dir);
-scenario::ReportSection leverarm_mru_demo_section(const std::filesystem::path& campaign_dir);
 
 void register_simulate(CLI::App& app);
 void register_identify(CLI::App& app);
