@@ -64,7 +64,7 @@ void register_demo(CLI::App& app) {
     for (auto* section_of :
          {&analysis::step_demo_section, &analysis::agility_demo_section,
           &analysis::four_corner_demo_section, &analysis::station_keeping_demo_section,
-          &leverarm_gnss_demo_section, &leverarm_mru_demo_section}) {
+          &analysis::leverarm_gnss_demo_section, &analysis::leverarm_mru_demo_section}) {
       scenario::ReportSection section = (*section_of)(opt->out_dir);
       if (!section.title.empty()) sections.push_back(std::move(section));
     }

@@ -72,13 +72,6 @@ void add_identify_station_keeping(CLI::App& identify);  // cmd_identify_station_
 void add_leverarm_gnss(CLI::App& leverarm);             // cmd_leverarm_gnss.cpp
 void add_leverarm_mru(CLI::App& leverarm);              // cmd_leverarm_mru.cpp
 
-// Sections of the `dynpos demo` report, one per analysis. Each runs its analysis on the logs of
-// the campaign written into `campaign_dir` (DIR/<scenario>/log.csv and truth.json), writes its
-// figures and JSON under campaign_dir/analysis/, and returns the section (links relative to
-// campaign_dir). An empty title means the analysis has nothing to add.
-scenario::ReportSection leverarm_gnss_demo_section(const std::filesystem::path& campaign_dir);
-scenario::ReportSection leverarm_mru_demo_section(const std::filesystem::path& campaign_dir);
-
 void register_simulate(CLI::App& app);
 void register_identify(CLI::App& app);
 void register_leverarm(CLI::App& app);

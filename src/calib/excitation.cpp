@@ -51,30 +51,17 @@ void ExcitationOptions::validate() const {
   verdict.validate();
 }
 
-ExcitationDiagnostics excitation_diagnostics(const MotionSeries& motion,
-                                             const ExcitationOptions& options) {
-  options.validate();
+namespace {
+
+// Proposition 1, (4.25): rank of S² + Ṡ at the samples `at`, with Ṡ = S(ω̇) from central
+// differences of ω; fills rank_s2_sdot, s2_sdot_min_sv_rps2 and rank3_fraction.
+void observability_rank(const MotionSeries& motion, const std::vector<std::size_t>& at,
+                        const ExcitationOptions& options, ExcitationDiagnostics& d) {
   const std::size_t n = motion.size();
-  if (motion.omega_b_rps.size() != n || motion.theta_rad.size() != n || n < 3) {
-    throw std::invalid_argument(
-        "excitation_diagnostics: need attitude and angular rates, at least 3 samples");
-  }
-  ExcitationDiagnostics d;
   const auto& t = motion.t_s;
   const auto& w = motion.omega_b_rps;
-  // The diagnostics are reported at most at output_rate_hz (every `step`-th sample).
-  const double span = t.back() - t.front();
-  const double rate = span > 0.0 ? static_cast<double>(n - 1) / span : 1.0;
-  const auto step =
-      static_cast<std::size_t>(std::max(1.0, std::floor(rate / options.output_rate_hz)));
-  std::vector<std::size_t> at;
-  for (std::size_t i = 0; i < n; i += step) at.push_back(i);
-  for (std::size_t i : at) d.t_s.push_back(t[i]);
   d.rank_s2_sdot.resize(at.size());
   d.s2_sdot_min_sv_rps2.resize(at.size());
-  d.pe_min_eig_rad2ps.assign(at.size(), std::numeric_limits<double>::quiet_NaN());
-
-  // Proposition 1, (4.25): rank of S² + Ṡ with Ṡ = S(ω̇) from central differences of ω.
   std::size_t rank3 = 0;
   for (std::size_t ii = 0; ii < at.size(); ++ii) {
     const std::size_t i = at[ii];
@@ -91,8 +78,16 @@ ExcitationDiagnostics excitation_diagnostics(const MotionSeries& motion,
     if (rank == 3) ++rank3;
   }
   d.rank3_fraction = static_cast<double>(rank3) / static_cast<double>(at.size());
+}
 
-  // PE, (4.51)–(4.55): prefix integrals of SᵀS (trapezoid) give every window in O(1).
+// PE, (4.51)–(4.55): the smallest eigenvalue of ∫SᵀS over the window centred on each sample of
+// `at` (prefix integrals by the trapezoid rule give every window in O(1)), and its range.
+void persistence_of_excitation(const MotionSeries& motion, const std::vector<std::size_t>& at,
+                               const ExcitationOptions& options, ExcitationDiagnostics& d) {
+  const std::size_t n = motion.size();
+  const auto& t = motion.t_s;
+  const auto& w = motion.omega_b_rps;
+  d.pe_min_eig_rad2ps.assign(at.size(), std::numeric_limits<double>::quiet_NaN());
   std::vector<Eigen::Matrix3d> prefix(n, Eigen::Matrix3d::Zero());
   auto sts = [&](std::size_t i) -> Eigen::Matrix3d {
     const Eigen::Matrix3d s = core::skew(w[i]);
@@ -129,8 +124,14 @@ ExcitationDiagnostics excitation_diagnostics(const MotionSeries& motion,
   }
   d.pe_min_eig_min_rad2ps = lo;
   d.pe_min_eig_max_rad2ps = hi;
+}
 
-  // Observability Gramian (4.13) of one antenna, x = [P₀; l]: CᵀC = [I, R; Rᵀ, I] (4.15).
+// Observability Gramian (4.13) of one antenna, x = [P₀; l]: CᵀC = [I, R; Rᵀ, I] (4.15), its
+// condition, the arm's predicted 1σ and the verdict per axis (after the rank of Proposition 1).
+void gramian_verdict(const MotionSeries& motion, const ExcitationOptions& options,
+                     ExcitationDiagnostics& d) {
+  const std::size_t n = motion.size();
+  const auto& t = motion.t_s;
   Eigen::Matrix<double, 6, 6> gram = Eigen::Matrix<double, 6, 6>::Zero();
   auto ctc = [&](std::size_t i) {
     const Eigen::Vector3d& th = motion.theta_rad[i];
@@ -173,6 +174,31 @@ ExcitationDiagnostics excitation_diagnostics(const MotionSeries& motion,
     const std::string adv = determinacy_advice(k, d.verdict[k]);
     if (!adv.empty()) d.advice.push_back(adv);
   }
+}
+
+}  // namespace
+
+ExcitationDiagnostics excitation_diagnostics(const MotionSeries& motion,
+                                             const ExcitationOptions& options) {
+  options.validate();
+  const std::size_t n = motion.size();
+  if (motion.omega_b_rps.size() != n || motion.theta_rad.size() != n || n < 3) {
+    throw std::invalid_argument(
+        "excitation_diagnostics: need attitude and angular rates, at least 3 samples");
+  }
+  ExcitationDiagnostics d;
+  const auto& t = motion.t_s;
+  // The diagnostics are reported at most at output_rate_hz (every `step`-th sample).
+  const double span = t.back() - t.front();
+  const double rate = span > 0.0 ? static_cast<double>(n - 1) / span : 1.0;
+  const auto step =
+      static_cast<std::size_t>(std::max(1.0, std::floor(rate / options.output_rate_hz)));
+  std::vector<std::size_t> at;
+  for (std::size_t i = 0; i < n; i += step) at.push_back(i);
+  for (std::size_t i : at) d.t_s.push_back(t[i]);
+  observability_rank(motion, at, options, d);
+  persistence_of_excitation(motion, at, options, d);
+  gramian_verdict(motion, options, d);
   return d;
 }
 

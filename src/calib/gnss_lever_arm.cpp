@@ -5,6 +5,7 @@
 #include <Eigen/Eigenvalues>
 #include <GeographicLib/LocalCartesian.hpp>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -13,6 +14,7 @@
 
 #include "dynpos/core/error.hpp"
 #include "dynpos/core/rotation.hpp"
+#include "gnss_arm_steps.hpp"
 
 namespace dynpos::calib {
 namespace {
@@ -423,6 +425,169 @@ void run_adaptive(const std::vector<Epoch>& ep, const GnssArmOptions& o, std::ve
   }
 }
 
+// Problems of the inputs that leave nothing to estimate, as a message ("" when there is none);
+// throws std::invalid_argument for inputs no caller should pass.
+std::string input_problem(const MotionSeries& motion, const std::vector<GnssSeries>& antennas,
+                          const GnssArmOptions& options) {
+  const std::size_t m = antennas.size();
+  if (m == 0) return "no GNSS antenna given";
+  if (!options.initial_arms_b_m.empty() && options.initial_arms_b_m.size() != m)
+    throw std::invalid_argument("GnssArmOptions: initial_arms_b_m needs one arm per antenna");
+  if (motion.size() < 3 || motion.v_b_mps.size() != motion.size() ||
+      motion.omega_b_rps.size() != motion.size()) {
+    return "the motion needs attitude, angular rates and velocity, at least 3 samples";
+  }
+  for (const GnssSeries& a : antennas) {
+    if (a.t_s.size() != a.p_n_m.size())
+      throw std::invalid_argument("GnssSeries " + a.name + ": t_s and p_n_m differ in size");
+  }
+  return {};
+}
+
+// The time offset δ: profile of the least-squares cost over δ, a coarse grid over ±max, a fine
+// grid around its best point, and a parabola through the best three. Fills the scan and the 1σ
+// of δ into `res`.
+double estimate_time_offset(const MotionInterp& mi, const std::vector<GnssSeries>& antennas,
+                            const GnssArmOptions& options, GnssArmResult& res) {
+  const std::size_t m = antennas.size();
+  const int lag = options.lag_epochs;
+  const double step = options.time_offset_step_s;
+  const double coarse = std::min(5.0 * step, options.max_time_offset_s);
+  auto scan = [&](double lo, double hi, double st) {
+    for (double d = lo; d <= hi + 1e-12; d += st) {
+      const double c = lsq_cost_at(mi, antennas, d, lag);
+      res.offset_scan_s.push_back(d);
+      res.offset_scan_cost.push_back(c);
+    }
+  };
+  scan(-options.max_time_offset_s, options.max_time_offset_s, coarse);
+  const double c0 = res.offset_scan_s[detail::best_offset_index(res.offset_scan_cost)];
+  scan(c0 - coarse, c0 + coarse, step);
+  // Sorted by δ for the parabola and for the caller's plot.
+  detail::sort_offset_scan(res.offset_scan_s, res.offset_scan_cost);
+  const std::size_t best = detail::best_offset_index(res.offset_scan_cost);
+  const auto refined = detail::refine_offset(res.offset_scan_s, res.offset_scan_cost, best);
+  if (!refined) return res.offset_scan_s[best];
+  // cost per row ≈ −2·log L / N: var(δ) = 2 / (N·c'').
+  std::size_t nrows = 0;
+  {
+    const LsqSolution s =
+        solve_lsq(lsq_rows(make_epochs(mi, antennas, refined->offset_s), m, lag), m);
+    for (std::size_t c : s.count) nrows += c;
+  }
+  res.time_offset_std_s = std::sqrt(2.0 / (static_cast<double>(nrows) * refined->curvature));
+  return refined->offset_s;
+}
+
+// The growing-window least-squares solution at every epoch, with the final weights `var`: the
+// history plot of the least-squares arms.
+void lsq_history(const std::vector<RowBlock>& rows, const std::array<double, 6>& var,
+                 const std::vector<Epoch>& ep, std::size_t m, GnssArmResult& res) {
+  const int n = static_cast<int>(3 * m);
+  Eigen::MatrixXd N = Eigen::MatrixXd::Zero(n, n);
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(n);
+  std::vector<std::size_t> order(rows.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t c) { return rows[a].epoch < rows[c].epoch; });
+  std::size_t ri = 0;
+  for (std::size_t i = 0; i < ep.size(); ++i) {
+    while (ri < order.size() && rows[order[ri]].epoch <= i)
+      accumulate(rows[order[ri++]], var, N, b);
+    Eigen::VectorXd x;
+    const bool good = solve_normal(N, b, x, nullptr);
+    res.t_s.push_back(ep[i].t_s);
+    for (std::size_t k = 0; k < m; ++k)
+      res.arm_history_b_m[k].push_back(good ? Vec3(x.segment<3>(static_cast<long>(3 * k)))
+                                            : Vec3::Constant(kNaN));
+  }
+}
+
+// Batch least squares: the arms, their covariance for white fix noise and the history. False
+// when the normal equations are singular.
+bool run_lsq(const std::vector<Epoch>& ep, int lag, std::vector<Vec3>& arms, Eigen::MatrixXd& cov,
+             GnssArmResult& res) {
+  const std::size_t m = arms.size();
+  const std::vector<RowBlock> rows = lsq_rows(ep, m, lag);
+  const LsqSolution s = solve_lsq(rows, m);
+  if (!s.ok) return false;
+  for (std::size_t k = 0; k < m; ++k) arms[k] = s.x.segment<3>(static_cast<long>(3 * k));
+  cov = fix_noise_covariance(rows, s, m, ep.size());
+  lsq_history(rows, s.var, ep, m, res);
+  return true;
+}
+
+// The converged interval and the reported arms: least squares its solution and own 1σ, the
+// observers mean and std over the interval; each component's verdict from the excitation.
+void report_arms(const MotionSeries& motion, const std::vector<GnssSeries>& antennas,
+                 const GnssArmOptions& options, const std::vector<Epoch>& ep,
+                 const std::vector<Vec3>& arms, const Eigen::MatrixXd& cov, GnssArmResult& res) {
+  const double t0 = ep.front().t_s;
+  const double t1 = ep.back().t_s;
+  res.converged_from_s = t0 + options.converged_from_fraction * (t1 - t0);
+  res.converged_to_s = t1;
+  res.excitation = excitation_diagnostics(motion, options.excitation);
+  for (std::size_t k = 0; k < antennas.size(); ++k) {
+    const detail::IntervalStats stats =
+        detail::interval_statistics(res.t_s, res.arm_history_b_m[k], res.converged_from_s);
+    res.interval_mean_b_m.push_back(stats.mean);
+    res.interval_std_b_m.push_back(stats.std);
+    ArmEstimate a;
+    a.name = antennas[k].name;
+    if (options.method == GnssArmMethod::kLsq) {
+      a.l_b_m = arms[k];
+      for (int j = 0; j < 3; ++j) a.std_m(j) = std::sqrt(cov(3 * long(k) + j, 3 * long(k) + j));
+    } else {
+      a.l_b_m = stats.mean;
+      a.std_m = res.interval_std_b_m.back();
+    }
+    for (int j = 0; j < 3; ++j)
+      a.determinacy[j] = worse(res.excitation.verdict[static_cast<std::size_t>(j)],
+                               determinacy_from_std(a.std_m(j), options.excitation.verdict));
+    res.arms.push_back(a);
+  }
+}
+
+// P₀ from the fixes with the reported arms (4.32) (least squares: also the P₀ track, the mean
+// offset plus the integrated velocity), and the rms residual of the model (4.2).
+void p0_and_residuals(const std::vector<Epoch>& ep, GnssArmMethod method, GnssArmResult& res) {
+  const std::size_t m = res.arms.size();
+  Vec3 c_sum = Vec3::Zero();
+  int c_n = 0;
+  for (const Epoch& e : ep) {
+    Vec3 p = Vec3::Zero();
+    int c = 0;
+    for (std::size_t k = 0; k < m; ++k)
+      if (e.has[k]) {
+        p += e.p[k] - e.R * res.arms[k].l_b_m;
+        ++c;
+      }
+    const Vec3 pm = c > 0 ? Vec3(p / c) : Vec3::Constant(kNaN);
+    res.p0_measured_n_m.push_back(pm);
+    if (c > 0) {
+      c_sum += pm - e.D;
+      ++c_n;
+    }
+  }
+  const Vec3 c0 = c_sum / std::max(c_n, 1);
+  if (method == GnssArmMethod::kLsq) {
+    for (const Epoch& e : ep) res.p0_n_m.push_back(c0 + e.D);
+  }
+  Vec3 ss = Vec3::Zero();
+  int nres = 0;
+  for (std::size_t i = 0; i < ep.size(); ++i) {
+    // An observer's start transient is not a model residual: its interval only.
+    if (method != GnssArmMethod::kLsq && ep[i].t_s < res.converged_from_s) continue;
+    for (std::size_t k = 0; k < m; ++k)
+      if (ep[i].has[k] && res.p0_n_m[i].allFinite()) {
+        const Vec3 e = ep[i].p[k] - res.p0_n_m[i] - ep[i].R * res.arms[k].l_b_m;
+        ss += e.cwiseProduct(e);
+        ++nres;
+      }
+  }
+  res.residual_rms_n_m = (ss / std::max(nres, 1)).cwiseSqrt();
+}
+
 }  // namespace
 
 std::string_view gnss_arm_method_name(GnssArmMethod m) {
@@ -464,87 +629,16 @@ GnssArmResult estimate_gnss_arms(const MotionSeries& motion,
   options.validate();
   GnssArmResult res;
   res.method = options.method;
+  res.message = input_problem(motion, antennas, options);
+  if (!res.message.empty()) return res;
   const std::size_t m = antennas.size();
-  if (m == 0) {
-    res.message = "no GNSS antenna given";
-    return res;
-  }
-  if (!options.initial_arms_b_m.empty() && options.initial_arms_b_m.size() != m)
-    throw std::invalid_argument("GnssArmOptions: initial_arms_b_m needs one arm per antenna");
-  if (motion.size() < 3 || motion.v_b_mps.size() != motion.size() ||
-      motion.omega_b_rps.size() != motion.size()) {
-    res.message = "the motion needs attitude, angular rates and velocity, at least 3 samples";
-    return res;
-  }
-  for (const GnssSeries& a : antennas) {
-    if (a.t_s.size() != a.p_n_m.size())
-      throw std::invalid_argument("GnssSeries " + a.name + ": t_s and p_n_m differ in size");
-  }
   const MotionInterp mi(motion);
   const int lag = options.lag_epochs;
 
-  // Time offset: profile of the least-squares cost over δ, coarse grid, fine grid, parabola.
   double offset = options.time_offset_s;
   res.time_offset_std_s = kNaN;
   if (options.estimate_time_offset) {
-    const double step = options.time_offset_step_s;
-    const double coarse = std::min(5.0 * step, options.max_time_offset_s);
-    auto scan = [&](double lo, double hi, double st) {
-      for (double d = lo; d <= hi + 1e-12; d += st) {
-        const double c = lsq_cost_at(mi, antennas, d, lag);
-        res.offset_scan_s.push_back(d);
-        res.offset_scan_cost.push_back(c);
-      }
-    };
-    scan(-options.max_time_offset_s, options.max_time_offset_s, coarse);
-    auto best_of = [&]() {
-      std::size_t b = 0;
-      for (std::size_t i = 0; i < res.offset_scan_cost.size(); ++i)
-        if (std::isfinite(res.offset_scan_cost[i]) &&
-            (!std::isfinite(res.offset_scan_cost[b]) ||
-             res.offset_scan_cost[i] < res.offset_scan_cost[b]))
-          b = i;
-      return res.offset_scan_s[b];
-    };
-    const double c0 = best_of();
-    scan(c0 - coarse, c0 + coarse, step);
-    // Sort the scan by δ for the parabola and for the caller's plot.
-    std::vector<std::size_t> order(res.offset_scan_s.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return res.offset_scan_s[a] < res.offset_scan_s[b];
-    });
-    std::vector<double> xs, cs;
-    for (std::size_t i : order) {
-      if (!xs.empty() && std::abs(res.offset_scan_s[i] - xs.back()) < 1e-9) continue;
-      xs.push_back(res.offset_scan_s[i]);
-      cs.push_back(res.offset_scan_cost[i]);
-    }
-    res.offset_scan_s = xs;
-    res.offset_scan_cost = cs;
-    const double best = best_of();
-    offset = best;
-    std::size_t bi = 0;
-    while (bi < xs.size() && xs[bi] != best) ++bi;
-    if (bi > 0 && bi + 1 < xs.size() && std::isfinite(cs[bi - 1]) && std::isfinite(cs[bi + 1])) {
-      const double h1 = xs[bi] - xs[bi - 1];
-      const double h2 = xs[bi + 1] - xs[bi];
-      if (std::abs(h1 - h2) < 1e-9) {
-        const double curv = (cs[bi + 1] - 2.0 * cs[bi] + cs[bi - 1]) / (h1 * h1);
-        if (curv > 0.0) {
-          offset = xs[bi] - h1 * (cs[bi + 1] - cs[bi - 1]) /
-                                (2.0 * (cs[bi + 1] - 2.0 * cs[bi] + cs[bi - 1]));
-          offset = std::clamp(offset, xs[bi] - h1, xs[bi] + h1);
-          // cost per row ≈ −2·log L / N: var(δ) = 2 / (N·c'').
-          std::size_t nrows = 0;
-          {
-            const LsqSolution s = solve_lsq(lsq_rows(make_epochs(mi, antennas, offset), m, lag), m);
-            for (std::size_t c : s.count) nrows += c;
-          }
-          res.time_offset_std_s = std::sqrt(2.0 / (static_cast<double>(nrows) * curv));
-        }
-      }
-    }
+    offset = estimate_time_offset(mi, antennas, options, res);
     res.time_offset_estimated = true;
   }
   res.time_offset_s = offset;
@@ -563,119 +657,86 @@ GnssArmResult estimate_gnss_arms(const MotionSeries& motion,
 
   Eigen::MatrixXd cov;
   if (options.method == GnssArmMethod::kLsq) {
-    const std::vector<RowBlock> rows = lsq_rows(ep, m, lag);
-    const LsqSolution s = solve_lsq(rows, m);
-    if (!s.ok) {
+    if (!run_lsq(ep, lag, arms, cov, res)) {
       res.message =
           "the least-squares problem is singular: the maneuver does not rotate the vessel "
           "enough to see the arms (see the excitation diagnostics)";
       return res;
-    }
-    for (std::size_t k = 0; k < m; ++k) arms[k] = s.x.segment<3>(static_cast<long>(3 * k));
-    cov = fix_noise_covariance(rows, s, m, ep.size());
-    // Growing-window solution for the history plot, with the final weights.
-    const int n = static_cast<int>(3 * m);
-    Eigen::MatrixXd N = Eigen::MatrixXd::Zero(n, n);
-    Eigen::VectorXd b = Eigen::VectorXd::Zero(n);
-    std::vector<std::size_t> order(rows.size());
-    for (std::size_t i = 0; i < rows.size(); ++i) order[i] = i;
-    std::stable_sort(order.begin(), order.end(),
-                     [&](std::size_t a, std::size_t c) { return rows[a].epoch < rows[c].epoch; });
-    std::size_t ri = 0;
-    for (std::size_t i = 0; i < ep.size(); ++i) {
-      while (ri < order.size() && rows[order[ri]].epoch <= i)
-        accumulate(rows[order[ri++]], s.var, N, b);
-      Eigen::VectorXd x;
-      const bool good = solve_normal(N, b, x, nullptr);
-      res.t_s.push_back(ep[i].t_s);
-      for (std::size_t k = 0; k < m; ++k)
-        res.arm_history_b_m[k].push_back(good ? Vec3(x.segment<3>(static_cast<long>(3 * k)))
-                                              : Vec3::Constant(kNaN));
     }
   } else if (options.method == GnssArmMethod::kLuenberger) {
     run_luenberger(ep, options, arms, res);
   } else {
     run_adaptive(ep, options, arms, res);
   }
-
-  // Converged interval and the reported arms.
-  const double t0 = ep.front().t_s;
-  const double t1 = ep.back().t_s;
-  res.converged_from_s = t0 + options.converged_from_fraction * (t1 - t0);
-  res.converged_to_s = t1;
-  res.excitation = excitation_diagnostics(motion, options.excitation);
-  for (std::size_t k = 0; k < m; ++k) {
-    Vec3 sum = Vec3::Zero();
-    Vec3 sq = Vec3::Zero();
-    int c = 0;
-    for (std::size_t i = 0; i < res.t_s.size(); ++i) {
-      const Vec3& a = res.arm_history_b_m[k][i];
-      if (res.t_s[i] < res.converged_from_s || !a.allFinite()) continue;
-      sum += a;
-      sq += a.cwiseProduct(a);
-      ++c;
-    }
-    const Vec3 mean = c > 0 ? Vec3(sum / c) : Vec3::Constant(kNaN);
-    const Vec3 var = c > 1 ? Vec3(((sq - c * mean.cwiseProduct(mean)) / (c - 1)).cwiseMax(0.0))
-                           : Vec3::Constant(kNaN);
-    res.interval_mean_b_m.push_back(mean);
-    res.interval_std_b_m.push_back(var.cwiseSqrt());
-    ArmEstimate a;
-    a.name = antennas[k].name;
-    if (options.method == GnssArmMethod::kLsq) {
-      a.l_b_m = arms[k];
-      for (int j = 0; j < 3; ++j) a.std_m(j) = std::sqrt(cov(3 * long(k) + j, 3 * long(k) + j));
-    } else {
-      a.l_b_m = mean;
-      a.std_m = res.interval_std_b_m.back();
-    }
-    for (int j = 0; j < 3; ++j)
-      a.determinacy[j] = worse(res.excitation.verdict[static_cast<std::size_t>(j)],
-                               determinacy_from_std(a.std_m(j), options.excitation.verdict));
-    res.arms.push_back(a);
-  }
-  // P₀ from the fixes with the final arms (4.32), and the residual of the model (4.2).
-  Vec3 c_sum = Vec3::Zero();
-  int c_n = 0;
-  for (const Epoch& e : ep) {
-    Vec3 p = Vec3::Zero();
-    int c = 0;
-    for (std::size_t k = 0; k < m; ++k)
-      if (e.has[k]) {
-        p += e.p[k] - e.R * res.arms[k].l_b_m;
-        ++c;
-      }
-    const Vec3 pm = c > 0 ? Vec3(p / c) : Vec3::Constant(kNaN);
-    res.p0_measured_n_m.push_back(pm);
-    if (c > 0) {
-      c_sum += pm - e.D;
-      ++c_n;
-    }
-  }
-  const Vec3 c0 = c_sum / std::max(c_n, 1);
-  if (options.method == GnssArmMethod::kLsq) {
-    for (const Epoch& e : ep) res.p0_n_m.push_back(c0 + e.D);
-  }
-  Vec3 ss = Vec3::Zero();
-  int nres = 0;
-  for (std::size_t i = 0; i < ep.size(); ++i) {
-    // An observer's start transient is not a model residual: its interval only.
-    if (options.method != GnssArmMethod::kLsq && ep[i].t_s < res.converged_from_s) continue;
-    for (std::size_t k = 0; k < m; ++k)
-      if (ep[i].has[k] && res.p0_n_m[i].allFinite()) {
-        const Vec3 e = ep[i].p[k] - res.p0_n_m[i] - ep[i].R * res.arms[k].l_b_m;
-        ss += e.cwiseProduct(e);
-        ++nres;
-      }
-  }
-  res.residual_rms_n_m = (ss / std::max(nres, 1)).cwiseSqrt();
+  report_arms(motion, antennas, options, ep, arms, cov, res);
+  p0_and_residuals(ep, options.method, res);
   if (m == 1)
     res.notes.emplace_back(
         "one antenna: P0 and the arm are estimated together (thesis case study 2); the arm is "
         "from the point whose velocity u, v, w is logged");
-  res.ok = true;
+  res.status = core::Status::kOk;
   res.message = "ok";
   return res;
 }
 
+namespace detail {
+
+std::size_t best_offset_index(const std::vector<double>& cost_per_row) {
+  std::size_t b = 0;
+  for (std::size_t i = 0; i < cost_per_row.size(); ++i)
+    if (std::isfinite(cost_per_row[i]) &&
+        (!std::isfinite(cost_per_row[b]) || cost_per_row[i] < cost_per_row[b]))
+      b = i;
+  return b;
+}
+
+void sort_offset_scan(std::vector<double>& offset_s, std::vector<double>& cost_per_row) {
+  std::vector<std::size_t> order(offset_s.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return offset_s[a] < offset_s[b]; });
+  std::vector<double> xs, cs;
+  for (std::size_t i : order) {
+    if (!xs.empty() && std::abs(offset_s[i] - xs.back()) < 1e-9) continue;
+    xs.push_back(offset_s[i]);
+    cs.push_back(cost_per_row[i]);
+  }
+  offset_s = xs;
+  cost_per_row = cs;
+}
+
+std::optional<OffsetRefinement> refine_offset(const std::vector<double>& xs,
+                                              const std::vector<double>& cs, std::size_t bi) {
+  if (!(bi > 0 && bi + 1 < xs.size() && std::isfinite(cs[bi - 1]) && std::isfinite(cs[bi + 1])))
+    return std::nullopt;
+  const double h1 = xs[bi] - xs[bi - 1];
+  const double h2 = xs[bi + 1] - xs[bi];
+  if (!(std::abs(h1 - h2) < 1e-9)) return std::nullopt;
+  const double curv = (cs[bi + 1] - 2.0 * cs[bi] + cs[bi - 1]) / (h1 * h1);
+  if (!(curv > 0.0)) return std::nullopt;
+  double offset =
+      xs[bi] - h1 * (cs[bi + 1] - cs[bi - 1]) / (2.0 * (cs[bi + 1] - 2.0 * cs[bi] + cs[bi - 1]));
+  offset = std::clamp(offset, xs[bi] - h1, xs[bi] + h1);
+  return OffsetRefinement{offset, curv};
+}
+
+IntervalStats interval_statistics(const std::vector<double>& t_s,
+                                  const std::vector<Eigen::Vector3d>& history, double from_s) {
+  Vec3 sum = Vec3::Zero();
+  Vec3 sq = Vec3::Zero();
+  int c = 0;
+  for (std::size_t i = 0; i < t_s.size(); ++i) {
+    const Vec3& a = history[i];
+    if (t_s[i] < from_s || !a.allFinite()) continue;
+    sum += a;
+    sq += a.cwiseProduct(a);
+    ++c;
+  }
+  const Vec3 mean = c > 0 ? Vec3(sum / c) : Vec3::Constant(kNaN);
+  const Vec3 var = c > 1 ? Vec3(((sq - c * mean.cwiseProduct(mean)) / (c - 1)).cwiseMax(0.0))
+                         : Vec3::Constant(kNaN);
+  return {mean, var.cwiseSqrt()};
+}
+
+}  // namespace detail
 }  // namespace dynpos::calib

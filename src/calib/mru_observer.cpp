@@ -10,6 +10,7 @@
 #include "dynpos/calib/excitation.hpp"
 #include "dynpos/core/error.hpp"
 #include "dynpos/core/rotation.hpp"
+#include "mru_arm_steps.hpp"
 
 namespace dynpos::calib {
 namespace {
@@ -124,6 +125,150 @@ int half_width(const std::vector<double>& t, double window_s) {
   std::vector<double> dt(t.size() - 1);
   for (std::size_t i = 0; i + 1 < t.size(); ++i) dt[i] = t[i + 1] - t[i];
   return std::max(2, static_cast<int>(std::lround(0.5 * window_s / median(dt))));
+}
+
+// The normal equations of the least squares on a_i − a₀ = M·l_i: the information matrix
+// H = Σ MᵀM and one right-hand side Σ Mᵀ(a_i − a₀) per MRU.
+struct NormalEquations {
+  Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
+  std::vector<Eigen::Vector3d> b;
+};
+
+NormalEquations normal_equations(const MruSignals& s, detail::SampleSpan span) {
+  const std::size_t m = s.names.size();
+  NormalEquations ne;
+  ne.b.assign(m, Eigen::Vector3d::Zero());
+  for (std::size_t i = span.begin; i < span.end; ++i) {
+    ne.H += s.M_b[i].transpose() * s.M_b[i];
+    for (std::size_t j = 0; j < m; ++j) {
+      ne.b[j] += s.M_b[i].transpose() * (s.a_b_mps2[j][i] - s.a0_b_mps2[i]);
+    }
+  }
+  return ne;
+}
+
+// One MRU's least-squares arm l = H⁻¹·b and its 1σ from the residuals: cov(l) = σ²·H⁻¹, σ² the
+// residual variance, inflated for the correlation the smoother puts between neighbours.
+void lsq_arm(const MruSignals& s, std::size_t j, detail::SampleSpan span,
+             const Eigen::Matrix3d& Hinv, const Eigen::Vector3d& b, Eigen::Vector3d& l,
+             Eigen::Vector3d& std_m) {
+  l = Hinv * b;
+  std::vector<Eigen::Vector3d> e;
+  e.reserve(span.size());
+  double rss = 0.0;
+  for (std::size_t i = span.begin; i < span.end; ++i) {
+    e.push_back(s.a_b_mps2[j][i] - s.a0_b_mps2[i] - s.M_b[i] * l);
+    rss += e.back().squaredNorm();
+  }
+  const double sigma2 = rss / static_cast<double>(3 * span.size() - 3);
+  const double inflation = detail::variance_inflation(e);
+  for (int a = 0; a < 3; ++a) std_m[a] = std::sqrt(sigma2 * inflation * Hinv(a, a));
+}
+
+// The recursive least-squares solution on the data up to t, every `stride` samples: the history
+// plot of the least-squares arms.
+void lsq_history(const MruSignals& s, detail::SampleSpan span, std::size_t stride,
+                 MruEstimateResult& res) {
+  const std::size_t m = s.names.size();
+  Eigen::Matrix3d Hc = Eigen::Matrix3d::Zero();
+  std::vector<Eigen::Vector3d> bc(m, Eigen::Vector3d::Zero());
+  for (std::size_t i = span.begin; i < span.end; ++i) {
+    Hc += s.M_b[i].transpose() * s.M_b[i];
+    for (std::size_t j = 0; j < m; ++j) {
+      bc[j] += s.M_b[i].transpose() * (s.a_b_mps2[j][i] - s.a0_b_mps2[i]);
+    }
+    if ((i - span.begin) % stride != 0) continue;
+    res.history_t_s.push_back(s.t_s[i]);
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> e(Hc);
+    const bool ok =
+        e.eigenvalues()(0) > 1e-6 * std::max(1e-30, e.eigenvalues()(2)) && e.eigenvalues()(0) > 0.0;
+    for (std::size_t j = 0; j < m; ++j) {
+      res.history_l_b_m[j].push_back(ok ? Eigen::Vector3d(Hc.ldlt().solve(bc[j]))
+                                        : Eigen::Vector3d::Constant(kNaN));
+    }
+  }
+}
+
+// Luenberger observer (4.80) on x = [A₀; l₁ … l_m] in NED, y_i = R a_i, C (4.76). W₂ from the
+// mean eigenvalue of the information matrix per sample, `mean_eig` [1/s⁴]. The arms are the
+// mean and std of the state over the converged interval.
+void run_observer(const MruSignals& s, const MruEstimateOptions& options, detail::SampleSpan span,
+                  double mean_eig, std::size_t stride, MruEstimateResult& res) {
+  const std::size_t m = s.names.size();
+  const std::size_t i0 = span.begin, i1 = span.end;
+  const int nx = static_cast<int>(3 * (m + 1));
+  const double w2 = 1.0 / (options.tau_s * mean_eig);
+  Eigen::VectorXd Wd(nx);
+  Wd.head<3>().setConstant(options.w1_per_s);
+  Wd.tail(nx - 3).setConstant(w2);
+  Eigen::VectorXd x(nx);
+  const auto A0_n = [&](std::size_t i) -> Eigen::Vector3d { return s.R_nb[i] * s.a0_b_mps2[i]; };
+  x.head<3>() = A0_n(i0);
+  for (std::size_t j = 0; j < m; ++j) x.segment<3>(static_cast<int>(3 + 3 * j)) = options.l0_b_m;
+  Eigen::MatrixXd C = Eigen::MatrixXd::Zero(static_cast<int>(3 * m), nx);
+  Eigen::VectorXd y(static_cast<int>(3 * m));
+  std::vector<std::vector<Eigen::Vector3d>> trace(m);
+  const std::size_t conv_from =
+      i0 + static_cast<std::size_t>(options.converge_fraction * static_cast<double>(span.size()));
+  for (std::size_t i = i0 + 1; i < i1; ++i) {
+    const double h = s.t_s[i] - s.t_s[i - 1];
+    // B(t)u(t) (4.74)–(4.75) integrated over the step: Ȧ₀ of (4.70) is the derivative of
+    // A₀ = R(ν̇ + ω × ν), so its integral is the change of A₀.
+    x.head<3>() += A0_n(i) - A0_n(i - 1);
+    const Eigen::Matrix3d RM = s.R_nb[i] * s.M_b[i];
+    for (std::size_t j = 0; j < m; ++j) {
+      const int r = static_cast<int>(3 * j);
+      C.block<3, 3>(r, 0).setIdentity();
+      C.block<3, 3>(r, 3 + r) = RM;
+      y.segment<3>(r) = s.R_nb[i] * s.a_b_mps2[j][i];
+    }
+    // Correction W Cᵀ ỹ, integrated implicitly (unconditionally stable for any gain):
+    // x⁺ = x + (I + h W CᵀC)⁻¹ h W Cᵀ (y − C x).
+    const Eigen::MatrixXd WCt = Wd.asDiagonal() * C.transpose();
+    const Eigen::MatrixXd K = Eigen::MatrixXd::Identity(nx, nx) + h * WCt * C;
+    x += K.partialPivLu().solve(h * WCt * (y - C * x));
+    if (i >= conv_from) {
+      for (std::size_t j = 0; j < m; ++j) {
+        trace[j].push_back(x.segment<3>(static_cast<int>(3 + 3 * j)));
+      }
+    }
+    if ((i - i0) % stride == 0) {
+      res.history_t_s.push_back(s.t_s[i]);
+      for (std::size_t j = 0; j < m; ++j) {
+        res.history_l_b_m[j].push_back(x.segment<3>(static_cast<int>(3 + 3 * j)));
+      }
+    }
+  }
+  for (std::size_t j = 0; j < m; ++j) {
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for (const auto& v : trace[j]) mean += v;
+    mean /= static_cast<double>(trace[j].size());
+    Eigen::Vector3d var = Eigen::Vector3d::Zero();
+    for (const auto& v : trace[j]) var += (v - mean).cwiseAbs2();
+    var /= static_cast<double>(std::max<std::size_t>(1, trace[j].size() - 1));
+    res.arms[j].l_b_m = mean;
+    res.arms[j].std_m = var.cwiseSqrt();
+  }
+  res.interval_from_s = s.t_s[conv_from];
+  res.interval_to_s = s.t_s[i1 - 1];
+}
+
+// Verdict per component from the residual-based 1σ (the same for both methods: it is what the
+// data can tell), and Proposition 3: without rank-3 G anywhere nothing is determined.
+void verdicts(const std::vector<std::string>& names, bool invertible, int rank3,
+              const std::vector<Eigen::Vector3d>& std_lsq, MruEstimateResult& res) {
+  for (std::size_t j = 0; j < names.size(); ++j) {
+    for (int a = 0; a < 3; ++a) {
+      Determinacy d = invertible ? determinacy_from_std(std_lsq[j][a]) : Determinacy::kNot;
+      if (rank3 == 0) d = Determinacy::kNot;
+      res.arms[j].determinacy[a] = d;
+      const std::string advice = determinacy_advice(a, d);
+      if (!advice.empty()) {
+        const std::string line = names[j] + ": " + advice;
+        res.excitation.advice.push_back(line);
+      }
+    }
+  }
 }
 
 }  // namespace
@@ -317,186 +462,92 @@ MruEstimateResult estimate_mru_arms(const MruSignals& s, const MruEstimateOption
     return res;
   }
   // The used span: the edges where the smoother's window is cut off are dropped.
-  std::size_t i0 = 0, i1 = n;
-  while (i0 < n && s.t_s[i0] < s.t_s.front() + options.edge_s) ++i0;
-  while (i1 > i0 && s.t_s[i1 - 1] > s.t_s.back() - options.edge_s) --i1;
-  if (i1 < i0 + 10) {
+  const detail::SampleSpan span = detail::used_span(s.t_s, options.edge_s);
+  if (span.end < span.begin + 10) {
     res.message = "the log is too short once the filter edges are dropped";
     return res;
   }
-  const std::size_t used = i1 - i0;
-  const double dt = (s.t_s[i1 - 1] - s.t_s[i0]) / static_cast<double>(used - 1);
+  const std::size_t used = span.size();
+  const double dt = (s.t_s[span.end - 1] - s.t_s[span.begin]) / static_cast<double>(used - 1);
   const std::size_t stride =
       std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(1.0 / (kHistoryRate_hz * dt))));
 
-  // Information matrix H = Σ MᵀM and right-hand sides Σ Mᵀ(a_i − a₀).
-  Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
-  std::vector<Eigen::Vector3d> b(m, Eigen::Vector3d::Zero());
-  for (std::size_t i = i0; i < i1; ++i) {
-    H += s.M_b[i].transpose() * s.M_b[i];
-    for (std::size_t j = 0; j < m; ++j) {
-      b[j] += s.M_b[i].transpose() * (s.a_b_mps2[j][i] - s.a0_b_mps2[i]);
-    }
-  }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(H / static_cast<double>(used));
+  const NormalEquations ne = normal_equations(s, span);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(ne.H / static_cast<double>(used));
   res.excitation.info_min_eig = eig.eigenvalues()(0);
   res.excitation.info_condition =
       eig.eigenvalues()(0) > 0 ? eig.eigenvalues()(2) / eig.eigenvalues()(0) : kNaN;
   const bool invertible = eig.eigenvalues()(0) > 1e-12 * std::max(1e-30, eig.eigenvalues()(2));
   const Eigen::Matrix3d Hinv =
-      invertible ? Eigen::Matrix3d(H.inverse()) : Eigen::Matrix3d::Constant(kNaN);
-  // Residual-based covariance cov(l) = σ² H⁻¹, σ² the residual variance, inflated for the
-  // correlation the smoother puts between neighbouring residuals (below).
+      invertible ? Eigen::Matrix3d(ne.H.inverse()) : Eigen::Matrix3d::Constant(kNaN);
   std::vector<Eigen::Vector3d> l_lsq(m), std_lsq(m);
-  for (std::size_t j = 0; j < m; ++j) {
-    l_lsq[j] = Hinv * b[j];
-    double rss = 0.0;
-    for (std::size_t i = i0; i < i1; ++i) {
-      rss += (s.a_b_mps2[j][i] - s.a0_b_mps2[i] - s.M_b[i] * l_lsq[j]).squaredNorm();
-    }
-    const double sigma2 = rss / static_cast<double>(3 * used - 3);
-    // Effective count: neighbouring residuals are correlated over the smoothing window; the
-    // lag-1 autocorrelation ρ gives the variance inflation (1 + ρ)/(1 − ρ) of an AR(1) noise.
-    double num = 0.0, den = 0.0;
-    for (std::size_t i = i0 + 1; i < i1; ++i) {
-      const Eigen::Vector3d e0 =
-          s.a_b_mps2[j][i - 1] - s.a0_b_mps2[i - 1] - s.M_b[i - 1] * l_lsq[j];
-      const Eigen::Vector3d e1 = s.a_b_mps2[j][i] - s.a0_b_mps2[i] - s.M_b[i] * l_lsq[j];
-      num += e0.dot(e1);
-      den += e0.squaredNorm();
-    }
-    const double rho = den > 0 ? std::clamp(num / den, 0.0, 0.999) : 0.0;
-    const double inflation = (1.0 + rho) / (1.0 - rho);
-    for (int a = 0; a < 3; ++a) std_lsq[j][a] = std::sqrt(sigma2 * inflation * Hinv(a, a));
-  }
+  for (std::size_t j = 0; j < m; ++j) lsq_arm(s, j, span, Hinv, ne.b[j], l_lsq[j], std_lsq[j]);
 
   // Excitation along the log: G(t) (4.77) at the history rate.
+  const int rank3 = detail::g_excitation(s, span, stride, res.excitation);
+
+  res.arms.resize(m);
+  for (std::size_t j = 0; j < m; ++j) res.arms[j].name = s.names[j];
+  res.history_l_b_m.assign(m, {});
+  if (options.method == MruMethod::kLsq) {
+    lsq_history(s, span, stride, res);
+    for (std::size_t j = 0; j < m; ++j) {
+      res.arms[j].l_b_m = l_lsq[j];
+      res.arms[j].std_m = std_lsq[j];
+    }
+    res.interval_from_s = s.t_s[span.begin];
+    res.interval_to_s = s.t_s[span.end - 1];
+  } else {
+    run_observer(s, options, span, std::max(1e-30, eig.eigenvalues().mean()), stride, res);
+  }
+  verdicts(s.names, invertible, rank3, std_lsq, res);
+  res.status = core::Status::kOk;
+  res.message = "ok";
+  return res;
+}
+
+namespace detail {
+
+SampleSpan used_span(const std::vector<double>& t_s, double edge_s) {
+  const std::size_t n = t_s.size();
+  std::size_t i0 = 0, i1 = n;
+  while (i0 < n && t_s[i0] < t_s.front() + edge_s) ++i0;
+  while (i1 > i0 && t_s[i1 - 1] > t_s.back() - edge_s) --i1;
+  return {i0, i1};
+}
+
+double variance_inflation(const std::vector<Eigen::Vector3d>& e) {
+  double num = 0.0, den = 0.0;
+  for (std::size_t i = 1; i < e.size(); ++i) {
+    num += e[i - 1].dot(e[i]);
+    den += e[i - 1].squaredNorm();
+  }
+  const double rho = den > 0 ? std::clamp(num / den, 0.0, 0.999) : 0.0;
+  return (1.0 + rho) / (1.0 - rho);
+}
+
+int g_excitation(const MruSignals& s, SampleSpan span, std::size_t stride, MruExcitation& out) {
   std::vector<double> min_sv, cond;
   int rank3 = 0;
-  for (std::size_t i = i0; i < i1; i += stride) {
+  for (std::size_t i = span.begin; i < span.end; i += stride) {
     const Eigen::Matrix3d G = mru_g_matrix(s.omega_b_rps[i], s.omega_dot_b[i], s.omega_ddot_b[i]);
     const Eigen::JacobiSVD<Eigen::Matrix3d> svd(G);
     const Eigen::Vector3d sv = svd.singularValues();
     const double tol = std::max(1e-9, 1e-3 * sv(0));
     const int rank = static_cast<int>((sv.array() > tol).count());
     rank3 += rank == 3 ? 1 : 0;
-    res.excitation.t_s.push_back(s.t_s[i]);
-    res.excitation.g_min_sv.push_back(sv(2));
-    res.excitation.g_rank.push_back(rank);
+    out.t_s.push_back(s.t_s[i]);
+    out.g_min_sv.push_back(sv(2));
+    out.g_rank.push_back(rank);
     min_sv.push_back(sv(2));
     cond.push_back(sv(2) > 0 ? sv(0) / sv(2) : std::numeric_limits<double>::infinity());
   }
-  res.excitation.rank3_fraction =
+  out.rank3_fraction =
       min_sv.empty() ? 0.0 : static_cast<double>(rank3) / static_cast<double>(min_sv.size());
-  res.excitation.g_min_sv_median = median(min_sv);
-  res.excitation.g_condition_median = median(cond);
-
-  res.arms.resize(m);
-  for (std::size_t j = 0; j < m; ++j) res.arms[j].name = s.names[j];
-  res.history_l_b_m.assign(m, {});
-
-  if (options.method == MruMethod::kLsq) {
-    // Recursive solution on the data up to t, for the plots.
-    Eigen::Matrix3d Hc = Eigen::Matrix3d::Zero();
-    std::vector<Eigen::Vector3d> bc(m, Eigen::Vector3d::Zero());
-    for (std::size_t i = i0; i < i1; ++i) {
-      Hc += s.M_b[i].transpose() * s.M_b[i];
-      for (std::size_t j = 0; j < m; ++j) {
-        bc[j] += s.M_b[i].transpose() * (s.a_b_mps2[j][i] - s.a0_b_mps2[i]);
-      }
-      if ((i - i0) % stride != 0) continue;
-      res.history_t_s.push_back(s.t_s[i]);
-      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> e(Hc);
-      const bool ok = e.eigenvalues()(0) > 1e-6 * std::max(1e-30, e.eigenvalues()(2)) &&
-                      e.eigenvalues()(0) > 0.0;
-      for (std::size_t j = 0; j < m; ++j) {
-        res.history_l_b_m[j].push_back(ok ? Eigen::Vector3d(Hc.ldlt().solve(bc[j]))
-                                          : Eigen::Vector3d::Constant(kNaN));
-      }
-    }
-    for (std::size_t j = 0; j < m; ++j) {
-      res.arms[j].l_b_m = l_lsq[j];
-      res.arms[j].std_m = std_lsq[j];
-    }
-    res.interval_from_s = s.t_s[i0];
-    res.interval_to_s = s.t_s[i1 - 1];
-  } else {
-    // Luenberger observer (4.80) on x = [A₀; l₁ … l_m] in NED, y_i = R a_i, C (4.76).
-    const int nx = static_cast<int>(3 * (m + 1));
-    const double mean_eig = std::max(1e-30, eig.eigenvalues().mean());
-    const double w2 = 1.0 / (options.tau_s * mean_eig);
-    Eigen::VectorXd Wd(nx);
-    Wd.head<3>().setConstant(options.w1_per_s);
-    Wd.tail(nx - 3).setConstant(w2);
-    Eigen::VectorXd x(nx);
-    const auto A0_n = [&](std::size_t i) -> Eigen::Vector3d { return s.R_nb[i] * s.a0_b_mps2[i]; };
-    x.head<3>() = A0_n(i0);
-    for (std::size_t j = 0; j < m; ++j) x.segment<3>(static_cast<int>(3 + 3 * j)) = options.l0_b_m;
-    Eigen::MatrixXd C = Eigen::MatrixXd::Zero(static_cast<int>(3 * m), nx);
-    Eigen::VectorXd y(static_cast<int>(3 * m));
-    std::vector<std::vector<Eigen::Vector3d>> trace(m);
-    const std::size_t conv_from =
-        i0 + static_cast<std::size_t>(options.converge_fraction * static_cast<double>(used));
-    for (std::size_t i = i0 + 1; i < i1; ++i) {
-      const double h = s.t_s[i] - s.t_s[i - 1];
-      // B(t)u(t) (4.74)–(4.75) integrated over the step: Ȧ₀ of (4.70) is the derivative of
-      // A₀ = R(ν̇ + ω × ν), so its integral is the change of A₀.
-      x.head<3>() += A0_n(i) - A0_n(i - 1);
-      const Eigen::Matrix3d RM = s.R_nb[i] * s.M_b[i];
-      for (std::size_t j = 0; j < m; ++j) {
-        const int r = static_cast<int>(3 * j);
-        C.block<3, 3>(r, 0).setIdentity();
-        C.block<3, 3>(r, 3 + r) = RM;
-        y.segment<3>(r) = s.R_nb[i] * s.a_b_mps2[j][i];
-      }
-      // Correction W Cᵀ ỹ, integrated implicitly (unconditionally stable for any gain):
-      // x⁺ = x + (I + h W CᵀC)⁻¹ h W Cᵀ (y − C x).
-      const Eigen::MatrixXd WCt = Wd.asDiagonal() * C.transpose();
-      const Eigen::MatrixXd K = Eigen::MatrixXd::Identity(nx, nx) + h * WCt * C;
-      x += K.partialPivLu().solve(h * WCt * (y - C * x));
-      if (i >= conv_from) {
-        for (std::size_t j = 0; j < m; ++j) {
-          trace[j].push_back(x.segment<3>(static_cast<int>(3 + 3 * j)));
-        }
-      }
-      if ((i - i0) % stride == 0) {
-        res.history_t_s.push_back(s.t_s[i]);
-        for (std::size_t j = 0; j < m; ++j) {
-          res.history_l_b_m[j].push_back(x.segment<3>(static_cast<int>(3 + 3 * j)));
-        }
-      }
-    }
-    for (std::size_t j = 0; j < m; ++j) {
-      Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-      for (const auto& v : trace[j]) mean += v;
-      mean /= static_cast<double>(trace[j].size());
-      Eigen::Vector3d var = Eigen::Vector3d::Zero();
-      for (const auto& v : trace[j]) var += (v - mean).cwiseAbs2();
-      var /= static_cast<double>(std::max<std::size_t>(1, trace[j].size() - 1));
-      res.arms[j].l_b_m = mean;
-      res.arms[j].std_m = var.cwiseSqrt();
-    }
-    res.interval_from_s = s.t_s[conv_from];
-    res.interval_to_s = s.t_s[i1 - 1];
-  }
-
-  // Verdict per component from the residual-based 1σ (the same for both methods: it is what
-  // the data can tell), and Proposition 3: without rank-3 G anywhere nothing is determined.
-  for (std::size_t j = 0; j < m; ++j) {
-    for (int a = 0; a < 3; ++a) {
-      Determinacy d = invertible ? determinacy_from_std(std_lsq[j][a]) : Determinacy::kNot;
-      if (rank3 == 0) d = Determinacy::kNot;
-      res.arms[j].determinacy[a] = d;
-      const std::string advice = determinacy_advice(a, d);
-      if (!advice.empty()) {
-        const std::string line = s.names[j] + ": " + advice;
-        res.excitation.advice.push_back(line);
-      }
-    }
-  }
-  res.ok = true;
-  res.message = "ok";
-  return res;
+  out.g_min_sv_median = median(min_sv);
+  out.g_condition_median = median(cond);
+  return rank3;
 }
 
+}  // namespace detail
 }  // namespace dynpos::calib

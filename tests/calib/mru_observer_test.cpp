@@ -69,7 +69,7 @@ TEST(MruObserver, MixedRateLogRecoversArm) {
   const MruSignals s = mru_signals_from_logs(log, {{"mru1", &log, "log.csv"}});
   EXPECT_FALSE(s.notes.empty());  // w not logged
   const MruEstimateResult r = estimate_mru_arms(s);
-  ASSERT_TRUE(r.ok);
+  ASSERT_EQ(r.status, core::Status::kOk);
   EXPECT_LT((r.arms[0].l_b_m - l).norm(), 1e-3);
 }
 

@@ -71,7 +71,7 @@ TEST(LeverarmGnss, TurningCircleDefaultEstimatorWithin2cm) {
   const std::vector<std::string> names = {"gnss1", "gnss2", "gnss3"};
   const Inputs in = inputs(run, names);
   const calib::GnssArmResult r = calib::estimate_gnss_arms(in.motion.motion, in.gnss);
-  ASSERT_TRUE(r.ok) << r.message;
+  ASSERT_EQ(r.status, core::Status::kOk) << r.message;
   EXPECT_EQ(r.method, calib::GnssArmMethod::kLsq);
   ASSERT_EQ(r.arms.size(), 3u);
   for (std::size_t k = 0; k < 3; ++k) {
@@ -103,7 +103,7 @@ TEST(LeverarmGnss, TurningCircleFindsGnssTimeOffset) {
   calib::GnssArmOptions o;
   o.estimate_time_offset = true;
   const calib::GnssArmResult r = calib::estimate_gnss_arms(in.motion.motion, in.gnss, o);
-  ASSERT_TRUE(r.ok) << r.message;
+  ASSERT_EQ(r.status, core::Status::kOk) << r.message;
   EXPECT_TRUE(r.time_offset_estimated);
   EXPECT_NEAR(r.time_offset_s, 0.2, 0.01);
   EXPECT_LT(r.time_offset_std_s, 0.01);
@@ -111,7 +111,7 @@ TEST(LeverarmGnss, TurningCircleFindsGnssTimeOffset) {
   for (int j = 0; j < 3; ++j) EXPECT_NEAR(r.arms[0].l_b_m(j), truth(j), 0.02) << "axis " << j;
 
   const calib::GnssArmResult ignored = calib::estimate_gnss_arms(in.motion.motion, in.gnss);
-  ASSERT_TRUE(ignored.ok) << ignored.message;
+  ASSERT_EQ(ignored.status, core::Status::kOk) << ignored.message;
   EXPECT_GT((ignored.arms[0].l_b_m - truth).cwiseAbs().maxCoeff(), 0.05)
       << "a 0.2 s latency should spoil the arm when ignored";
   EXPECT_GT(ignored.residual_rms_n_m.head<2>().norm(), r.residual_rms_n_m.head<2>().norm());
@@ -160,8 +160,9 @@ ArmCase three_antennas(bool gnss_noise) {
 Eigen::Vector3d error_of(const ArmCase& c, calib::GnssArmOptions o, calib::GnssArmMethod method) {
   o.method = method;
   const calib::GnssArmResult r = calib::estimate_gnss_arms(c.in.motion.motion, c.in.gnss, o);
-  EXPECT_TRUE(r.ok) << r.message;
-  if (!r.ok) return Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  EXPECT_EQ(r.status, core::Status::kOk) << r.message;
+  if (r.status != core::Status::kOk)
+    return Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
   return worst_error(r, c.truth);
 }
 

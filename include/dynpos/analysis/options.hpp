@@ -4,10 +4,9 @@
 ///
 /// Requests are validated once, here in the library. A bad value throws core::InputError whose
 /// location carries the request key (InputError::option()): the field name in snake_case
-/// ("min_step", "method"), "col:ROLE" for a missing column mapping ("col:output"), and several keys
-/// joined by
-/// '/' ("from/to"). The CLI shows a key as its option ("--min-step", "--col output=COLUMN",
-/// "--from/--to"), the Python API as its keyword argument.
+/// ("min_step", "method"), "col:ROLE" for a missing column mapping ("col:output"), and several
+/// keys joined by '/' ("from/to"). The CLI shows a key as its option ("--min-step",
+/// "--col output=COLUMN", "--from/--to"), the Python API as its keyword argument.
 
 #include <filesystem>
 #include <string>

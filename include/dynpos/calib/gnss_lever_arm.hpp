@@ -29,6 +29,7 @@
 #include "dynpos/calib/excitation.hpp"
 #include "dynpos/calib/motion_series.hpp"
 #include "dynpos/core/log.hpp"
+#include "dynpos/core/status.hpp"
 
 namespace dynpos::calib {
 
@@ -88,7 +89,7 @@ struct GnssArmOptions {
 
 /// The estimate and what came with it.
 struct GnssArmResult {
-  bool ok = false;
+  core::Status status = core::Status::kFailed;  ///< kOk, or kFailed with the reason in message
   std::string message;
   GnssArmMethod method = GnssArmMethod::kLsq;
   /// One per antenna. LSQ: final solution and its own 1σ. Observers: mean and standard
@@ -117,7 +118,7 @@ struct GnssArmResult {
 };
 
 /// Estimates every antenna's arm. Problems of the data (no fixes inside the motion's time,
-/// too few epochs) come back as ok = false with a message; invalid options throw
+/// too few epochs) come back as status kFailed with a message; invalid options throw
 /// std::invalid_argument. The motion needs attitude, angular rates and velocity.
 GnssArmResult estimate_gnss_arms(const MotionSeries& motion,
                                  const std::vector<GnssSeries>& antennas,

@@ -23,6 +23,7 @@
 
 #include "dynpos/calib/arm_estimate.hpp"
 #include "dynpos/core/log.hpp"
+#include "dynpos/core/status.hpp"
 
 namespace dynpos::calib {
 
@@ -119,7 +120,7 @@ struct MruExcitation {
 };
 
 struct MruEstimateResult {
-  bool ok = false;
+  core::Status status = core::Status::kFailed;  ///< kOk, or kFailed with the reason in message
   std::string message;
   MruMethod method = MruMethod::kLsq;
   std::vector<ArmEstimate> arms;  ///< std: residual-based (lsq) or over the interval (observer)
@@ -131,7 +132,8 @@ struct MruEstimateResult {
   std::vector<std::vector<Eigen::Vector3d>> history_l_b_m;  ///< [arm][sample]
 };
 
-/// Estimates every MRU's arm from the signals.
+/// Estimates every MRU's arm from the signals. Too few samples come back as status kFailed with
+/// a message; invalid options throw std::invalid_argument.
 MruEstimateResult estimate_mru_arms(const MruSignals& signals,
                                     const MruEstimateOptions& options = {});
 

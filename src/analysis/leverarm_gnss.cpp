@@ -1,0 +1,310 @@
+#include "dynpos/analysis/leverarm_gnss.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <utility>
+
+#include "dynpos/analysis/options.hpp"
+#include "dynpos/core/error.hpp"
+#include "dynpos/io/nmea.hpp"
+#include "gnss_antenna_name.hpp"
+
+namespace dynpos::analysis {
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+
+bool motion_role(const std::string& role) {
+  for (const char* r : {"roll", "pitch", "heading", "p", "q", "r", "u", "v", "w"})
+    if (role == r) return true;
+  return false;
+}
+
+bool gnss_role(const std::string& role) { return role.rfind("gnss", 0) == 0; }
+
+// The option of request key `key` as the command line spells it, for the examples in hints.
+std::string flag(std::string key) {
+  std::replace(key.begin(), key.end(), '_', '-');
+  return "--" + key;
+}
+
+// "gnssK=VALUE" → (gnssK, VALUE).
+std::pair<std::string, std::string> split_eq(const std::string& text, const std::string& key,
+                                             const std::string& example) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0 || eq + 1 == text.size()) {
+    throw option_error(key, "malformed argument '" + text + "': expected " + example,
+                       "for example " + flag(key) + " " + example);
+  }
+  return {text.substr(0, eq), text.substr(eq + 1)};
+}
+
+Vec3 parse_vec3(const std::string& text, const std::string& key) {
+  std::stringstream ss(text);
+  std::string item;
+  std::vector<double> v;
+  while (std::getline(ss, item, ',')) {
+    try {
+      std::size_t used = 0;
+      v.push_back(std::stod(item, &used));
+      if (used != item.size()) v.push_back(NAN);
+    } catch (const std::exception&) {
+      v.push_back(NAN);
+    }
+  }
+  if (v.size() != 3 || !std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); }))
+    throw option_error(key, "'" + text + "' is not three numbers X,Y,Z",
+                       "for example " + flag(key) + " 0.02,0.02,20");
+  return {v[0], v[1], v[2]};
+}
+
+calib::GnssArmMethod parse_method(const std::string& m) {
+  if (m == "luenberger") return calib::GnssArmMethod::kLuenberger;
+  if (m == "adaptive") return calib::GnssArmMethod::kAdaptive;
+  if (m == "lsq") return calib::GnssArmMethod::kLsq;
+  throw option_error("method", "unknown method '" + m + "'", "use luenberger, adaptive or lsq");
+}
+
+void check_prefix(const std::string& p, const std::string& key) {
+  if (!is_gnss_antenna_name(p))
+    throw option_error(key, "'" + p + "' is not an antenna role prefix",
+                       "antennas are named gnssK, e.g. gnss1");
+}
+
+// The per-antenna input files: "gnssK=FILE", an antenna name and an existing file.
+void check_antenna_files(const std::vector<std::string>& specs, const std::string& key,
+                         const std::string& example, const std::string& what) {
+  for (const std::string& g : specs) {
+    const auto [prefix, file] = split_eq(g, key, example);
+    check_prefix(prefix, key);
+    if (!std::filesystem::exists(file))
+      throw option_error_in_file(file, key, "file not found", "give an existing " + what);
+  }
+}
+
+// The estimator's options from the request, every option but the initial arms (which need the
+// antennas of the data) checked in the command line's order.
+calib::GnssArmOptions arm_options(const LeverarmGnssRequest& q) {
+  calib::GnssArmOptions lo;
+  lo.method = parse_method(q.method);
+  if (!q.w1.empty()) lo.luenberger_w_p0 = parse_vec3(q.w1, "w1");
+  if (!q.w2.empty()) lo.luenberger_w_arm = parse_vec3(q.w2, "w2");
+  if (!q.gamma.empty()) lo.adaptive_gamma = parse_vec3(q.gamma, "gamma");
+  if (!q.L.empty()) lo.adaptive_l = parse_vec3(q.L, "L");
+  auto positive = [](const Vec3& v, const char* key) {
+    if (!(v.array() > 0.0).all())
+      throw option_error(key, "gains must be > 0", "for example 0.02,0.02,20");
+  };
+  positive(lo.luenberger_w_p0, "w1");
+  positive(lo.luenberger_w_arm, "w2");
+  if (lo.adaptive_gamma) positive(*lo.adaptive_gamma, "gamma");
+  positive(lo.adaptive_l, "L");
+  if (!(q.adaptive_rate > 0.0) || !std::isfinite(q.adaptive_rate))
+    throw option_error("adaptive_rate", "the rate must be > 0", "for example 0.1 [1/s]");
+  lo.adaptive_rate_per_s = q.adaptive_rate;
+  if (!q.init_p0.empty()) lo.initial_p0_n_m = parse_vec3(q.init_p0, "init_p0");
+  for (const std::string& s : q.init)
+    parse_vec3(split_eq(s, "init", "gnss1=0.2,-0.6,-13.9").second, "init");
+  if (q.lag < 1) throw option_error("lag", "the lag must be >= 1 epoch");
+  lo.lag_epochs = q.lag;
+  if (q.time_offset && q.estimate_time_offset)
+    throw option_error("time_offset", "--time-offset and --estimate-time-offset exclude each other",
+                       "give one of them");
+  if (q.time_offset) {
+    if (!std::isfinite(*q.time_offset))
+      throw option_error("time_offset", "the offset must be finite");
+    lo.time_offset_s = *q.time_offset;
+  }
+  lo.estimate_time_offset = q.estimate_time_offset;
+  if (!(q.max_time_offset >= 0.05) || !std::isfinite(q.max_time_offset))
+    throw option_error("max_time_offset", "must be >= 0.05 s");
+  lo.max_time_offset_s = q.max_time_offset;
+  if (!(q.converged_from >= 0.0 && q.converged_from < 1.0))
+    throw option_error("converged_from", "must be in [0, 1)",
+                       "0.5 averages over the second half of the log");
+  lo.converged_from_fraction = q.converged_from;
+  if (!(q.pe_window > 0.0) || !std::isfinite(q.pe_window))
+    throw option_error("pe_window", "must be > 0 s");
+  lo.excitation.window_s = q.pe_window;
+  if (!(q.gnss_std > 0.0) || !std::isfinite(q.gnss_std))
+    throw option_error("gnss_std", "must be > 0 m");
+  lo.excitation.gnss_std_m = q.gnss_std;
+  return lo;
+}
+
+// The initial arms of `init` in the order of the estimated antennas `names`.
+std::vector<Vec3> initial_arms(const std::vector<std::string>& init,
+                               const std::vector<std::string>& names) {
+  if (init.empty()) return {};
+  std::vector<Vec3> arms(names.size(), Vec3::Zero());
+  for (const std::string& s : init) {
+    const auto [p, v] = split_eq(s, "init", "gnss1=0.2,-0.6,-13.9");
+    const auto it = std::find(names.begin(), names.end(), p);
+    if (it == names.end())
+      throw option_error("init", "antenna '" + p + "' is not estimated",
+                         "the antennas are the gnssK of the inputs (or --antennas)");
+    arms[static_cast<std::size_t>(it - names.begin())] = parse_vec3(v, "init");
+  }
+  return arms;
+}
+
+// The motion log, the per-antenna logs of gnss_log and nmea, and where each antenna's fixes are
+// (pointers into the logs: an Inputs is not copied or moved once filled).
+struct Inputs {
+  core::Log log;
+  std::vector<core::Log> extra;  // kept alive for the GnssSource pointers
+  std::vector<calib::GnssSource> sources;
+  std::vector<std::string> notes;
+};
+
+// An NMEA file's fixes on the log's clock: NMEA time is UTC seconds of day, the log's t = 0 is
+// at utc_at_zero; without it the NMEA times must overlap the log's (a log kept in UTC).
+core::Log nmea_on_log_clock(const io::NmeaGnssLog& nl, const core::Log& motion,
+                            const std::optional<double>& utc0, const std::string& file) {
+  std::vector<double> t = nl.log.time();
+  const auto& mt = motion.time();
+  const double shift = utc0 ? *utc0 : 0.0;
+  if (!utc0) {
+    const bool overlap = !t.empty() && t.back() >= mt.front() && t.front() <= mt.back();
+    if (!overlap)
+      throw option_error_in_file(
+          file, "utc_at_zero",
+          fmt::format("the NMEA times ({:.0f} … {:.0f} s UTC of day) do not overlap the log's "
+                      "times ({:.0f} … {:.0f} s)",
+                      t.front(), t.back(), mt.front(), mt.back()),
+          "give the UTC time of the log's t = 0 with --utc-at-zero HH:MM:SS[.sss] (a virtual "
+          "trial writes it as start_utc in truth.json)");
+  }
+  for (double& x : t) x -= shift;
+  core::Log shifted(t);
+  for (const core::Channel& c : nl.log.channels())
+    shifted.add_channel(c.name, c.unit, c.values, c.interp);
+  return shifted;
+}
+
+// The antennas: those asked for, else every gnssK of the log and the extra files, in K order.
+std::vector<std::string> antenna_names(
+    const LeverarmGnssRequest& q, const core::Log& log,
+    const std::map<std::string, std::pair<std::size_t, std::string>>& external) {
+  std::vector<std::string> prefixes = q.antennas;
+  if (!prefixes.empty()) return prefixes;
+  prefixes = calib::gnss_prefixes(log);
+  for (const auto& [p, e] : external)
+    if (std::find(prefixes.begin(), prefixes.end(), p) == prefixes.end()) prefixes.push_back(p);
+  std::sort(prefixes.begin(), prefixes.end(), [](const std::string& a, const std::string& b) {
+    return std::stoi(a.substr(4)) < std::stoi(b.substr(4));
+  });
+  return prefixes;
+}
+
+// Fills `in` in place: its sources point into it.
+void read_inputs(const LeverarmGnssRequest& q, Inputs& in) {
+  in.log = q.source.read([](const std::string& r) { return motion_role(r) || gnss_role(r); });
+  std::map<std::string, std::pair<std::size_t, std::string>> external;  // prefix → (extra, file)
+  in.extra.reserve(q.gnss_log.size() + q.nmea.size());
+  for (const std::string& g : q.gnss_log) {
+    const auto [prefix, file] = split_eq(g, "gnss_log", "gnss1=FILE.csv");
+    LogSource li{file, q.source.map_file, {}, {}};
+    for (const std::string& c : q.source.columns)
+      if (c.rfind(prefix + ".", 0) == 0) li.columns.push_back(c);
+    for (const std::string& u : q.source.units)
+      if (u.rfind(prefix + ".", 0) == 0) li.units.push_back(u);
+    in.extra.push_back(
+        li.read([&](const std::string& r) { return r.rfind(prefix + ".", 0) == 0; }));
+    external[prefix] = {in.extra.size() - 1, file};
+  }
+  std::optional<double> utc0;
+  if (!q.utc_at_zero.empty()) utc0 = io::parse_utc_time_of_day(q.utc_at_zero);
+  for (const std::string& g : q.nmea) {
+    const auto [prefix, file] = split_eq(g, "nmea", "gnss1=FILE.nmea");
+    const io::NmeaGnssLog nl = io::read_nmea_gnss(file, prefix);
+    in.extra.push_back(nmea_on_log_clock(nl, in.log, utc0, file));
+    external[prefix] = {in.extra.size() - 1, file};
+    in.notes.push_back(fmt::format("{}: {} NMEA sentences from {} ({} skipped)", prefix,
+                                   nl.sentences, file, nl.skipped));
+  }
+  const std::vector<std::string> prefixes = antenna_names(q, in.log, external);
+  if (prefixes.empty())
+    throw core::InputError({q.source.log.string(), {}, {}, "gnss1.lat"},
+                           "no GNSS antenna in the inputs",
+                           "map gnssK.lat/lon/height or gnssK.north/east/down with --col, or give "
+                           "--gnss-log gnssK=FILE or --nmea gnssK=FILE");
+  for (const std::string& p : prefixes) {
+    const auto it = external.find(p);
+    if (it != external.end())
+      in.sources.push_back({&in.extra[it->second.first], p, it->second.second});
+    else
+      in.sources.push_back({&in.log, p, q.source.log.string()});
+  }
+}
+
+// The motion of the log; the library does not know the file, so it is put into its errors.
+calib::MotionFromLog motion_of(const core::Log& log, const std::filesystem::path& file) {
+  try {
+    return calib::motion_from_mixed_log(log);
+  } catch (const core::InputError& e) {
+    core::InputLocation where = e.where();
+    if (where.file.empty()) where.file = file.string();
+    throw core::InputError(where, e.problem(), e.hint());
+  }
+}
+
+// The GNSS rate for the predicted σ: the median fix spacing of the antenna (≥ 3 fixes).
+double fix_rate_hz(const calib::GnssSeries& g) {
+  std::vector<double> dt;
+  for (std::size_t i = 1; i < g.t_s.size(); ++i) dt.push_back(g.t_s[i] - g.t_s[i - 1]);
+  std::nth_element(dt.begin(), dt.begin() + static_cast<long>(dt.size() / 2), dt.end());
+  return 1.0 / dt[dt.size() / 2];
+}
+
+}  // namespace
+
+void LeverarmGnssRequest::validate() const {
+  check_antenna_files(gnss_log, "gnss_log", "gnss1=FILE.csv", "CSV file");
+  if (!utc_at_zero.empty()) io::parse_utc_time_of_day(utc_at_zero);
+  check_antenna_files(nmea, "nmea", "gnss1=FILE.nmea", "NMEA 0183 file");
+  for (const std::string& p : antennas) check_prefix(p, "antennas");
+  arm_options(*this);
+}
+
+LeverarmGnssReport run_leverarm_gnss(const LeverarmGnssRequest& q) {
+  q.validate();
+  Inputs in;
+  read_inputs(q, in);
+  const calib::MotionFromLog motion = motion_of(in.log, q.source.log);
+  const std::vector<calib::GnssSeries> gnss = calib::gnss_from_logs(in.sources);
+  // Proposition 2's persistence of excitation is judged over windows of pe_window seconds: a
+  // log shorter than one window cannot show it (and is too short for a calibration).
+  const auto& mt = motion.motion.t_s;
+  const double span = mt.back() - mt.front();
+  if (span < q.pe_window)
+    throw option_error_in_file(
+        q.source.log.string(), "pe_window",
+        fmt::format("the motion spans {:.1f} s, shorter than one excitation window of {:.0f} s",
+                    span, q.pe_window),
+        "log a maneuver of a few minutes with turning and roll (e.g. a turning circle), or "
+        "shorten --pe-window");
+  std::vector<std::string> names;
+  for (const auto& g : gnss) names.push_back(g.name);
+  calib::GnssArmOptions lo = arm_options(q);
+  lo.initial_arms_b_m = initial_arms(q.init, names);
+  LeverarmGnssReport report;
+  report.log = q.source.log;
+  report.pe_window_s = q.pe_window;
+  report.gnss_rate_hz = fix_rate_hz(gnss[0]);
+  lo.excitation.gnss_rate_hz = report.gnss_rate_hz;
+  report.result = calib::estimate_gnss_arms(motion.motion, gnss, lo);
+  if (report.result.status != core::Status::kOk)
+    throw core::InputError({q.source.log.string(), {}, {}, "time"}, report.result.message,
+                           "check that the GNSS fixes and the motion cover the same time (a "
+                           "maneuver of a few minutes with turning and roll)");
+  report.input_notes = motion.notes;
+  report.input_notes.insert(report.input_notes.end(), in.notes.begin(), in.notes.end());
+  return report;
+}
+
+}  // namespace dynpos::analysis

@@ -1,0 +1,101 @@
+// The `dynpos demo` section of `leverarm gnss`: the turning circle's logged motion against the
+// trial's true antenna arms.
+
+#include <fmt/core.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "dynpos/analysis/demo_sections.hpp"
+#include "dynpos/analysis/json_fields.hpp"
+#include "dynpos/analysis/leverarm_gnss.hpp"
+#include "dynpos/io/json_writer.hpp"
+#include "gnss_antenna_name.hpp"
+
+namespace dynpos::analysis {
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+
+// The true antenna arms [m, BODY] of a trial's truth.json ("lever_arms": {"gnssK": [x, y, z]});
+// none when the file is missing or unreadable.
+std::map<std::string, Vec3> true_gnss_arms(const std::filesystem::path& truth_file) {
+  std::map<std::string, Vec3> truth;
+  if (!std::filesystem::exists(truth_file)) return truth;
+  std::ifstream f(truth_file);
+  const nlohmann::json t = nlohmann::json::parse(f, nullptr, false);
+  if (t.is_object() && t.contains("lever_arms"))
+    for (const auto& [name, v] : t["lever_arms"].items())
+      if (v.is_array() && v.size() == 3 && is_gnss_antenna_name(name))
+        truth[name] = Vec3(v[0].get<double>(), v[1].get<double>(), v[2].get<double>());
+  return truth;
+}
+
+// Estimate against truth per antenna, and the largest error.
+report::Table truth_table(const calib::GnssArmResult& r, const std::map<std::string, Vec3>& truth) {
+  report::Table cmp;
+  cmp.header = {"antenna",    "x est [m]", "x true [m]", "y est [m]",
+                "y true [m]", "z est [m]", "z true [m]", "max |error| [cm]"};
+  for (const auto& a : r.arms) {
+    const auto it = truth.find(a.name);
+    std::vector<std::string> row = {a.name};
+    double err = NAN;
+    for (int j = 0; j < 3; ++j) {
+      row.push_back(number_cell(a.l_b_m(j), "{:.3f}"));
+      row.push_back(it != truth.end() ? number_cell(it->second(j), "{:.3f}") : "—");
+    }
+    if (it != truth.end()) err = 100.0 * (a.l_b_m - it->second).cwiseAbs().maxCoeff();
+    row.push_back(number_cell(err, "{:.1f}"));
+    cmp.rows.push_back(std::move(row));
+  }
+  return cmp;
+}
+
+}  // namespace
+
+ReportSection leverarm_gnss_demo_section(const std::filesystem::path& campaign_dir) {
+  const std::filesystem::path log = campaign_dir / "turning-circle" / "log.csv";
+  if (!std::filesystem::exists(log)) return {};
+  LeverarmGnssRequest q;
+  q.source.log = log;
+  q.source.columns = {"roll=mru1.roll", "pitch=mru1.pitch", "p=mru1.p", "q=mru1.q", "r=mru1.r"};
+  const LeverarmGnssReport report = run_leverarm_gnss(q);
+  nlohmann::json doc = to_json(report);
+  doc["log"] = "turning-circle/log.csv";
+  const std::map<std::string, Vec3> truth =
+      true_gnss_arms(campaign_dir / "turning-circle" / "truth.json");
+  const std::filesystem::path dir = campaign_dir / "analysis" / "leverarm";
+  const auto plots = write_figures(report, dir, truth);
+  io::write_json((dir / "gnss.json").string(), doc);
+  const calib::GnssArmResult& r = report.result;
+  const report::Table cmp = truth_table(r, truth);
+  const std::string intro = fmt::format(
+      "Turning circle (`turning-circle`), method {}: motion from MRU 1 (roll, pitch, p, q, r at "
+      "100 Hz), gyro heading (10 Hz) and the speed log (u, v over ground, 1 Hz; no heave speed "
+      "w); fixes of every antenna at 1 Hz with RTK noise; GNSS time offset {:.3f} s (given). "
+      "The baselines between antennas need no velocity and come out within millimetres; the "
+      "absolute arms rest on the integrated velocity of P0, and a 1 Hz speed log without w "
+      "misses its wave-frequency part, which leaves errors of centimetres to decimetres (z "
+      "most, through the roll). With a 100 Hz velocity reference (truth.csv) the same "
+      "estimator is within 3 mm (thesis table 4.2, noise-free: about 0.2 mm). JSON: "
+      "analysis/leverarm/gnss.json.",
+      calib::gnss_arm_method_name(r.method), r.time_offset_s);
+  std::string links_md, links_html;
+  for (const auto& p : plots) {
+    const std::string rel = "analysis/leverarm/" + p.filename().string();
+    links_md += fmt::format("![{}]({})\n", p.stem().string(), rel);
+    links_html += fmt::format("<p><img src=\"{}\" alt=\"{}\"></p>\n", rel, p.stem().string());
+  }
+  std::string advice;
+  for (const std::string& a : r.excitation.advice) advice += a + ". ";
+  ReportSection s;
+  s.title = "GNSS lever arms (turning circle)";
+  s.markdown = intro + "\n\n" + report::render_markdown(arm_table(report)) + "\n" +
+               report::render_markdown(cmp) + "\n" + advice + "\n\n" + links_md;
+  s.html = "<p>" + intro + "</p>\n" + report::render_html(arm_table(report)) +
+           report::render_html(cmp) + (advice.empty() ? "" : "<p>" + advice + "</p>\n") +
+           links_html;
+  return s;
+}
+
+}  // namespace dynpos::analysis

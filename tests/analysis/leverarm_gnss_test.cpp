@@ -1,0 +1,237 @@
+// `leverarm gnss` as a request → report on a short simulated turning circle (antennas at the arms
+// of thesis table 4.1, RTK noise, 1 Hz fixes), its request checks and its JSON.
+
+#include "dynpos/analysis/leverarm_gnss.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include "dynpos/analysis/demo_sections.hpp"
+#include "dynpos/core/error.hpp"
+#include "dynpos/scenario/campaign.hpp"
+#include "dynpos/scenario/runner.hpp"
+#include "dynpos/scenario/scenario_spec.hpp"
+#include "dynpos/scenario/vessel_config.hpp"
+
+namespace dynpos::analysis {
+namespace {
+
+const std::filesystem::path kSource = DYNPOS_SOURCE_DIR;
+
+// One simulated turning circle for every test: DIR/turning-circle/{log.csv, truth.csv,
+// truth.json, gnssK.nmea}, as `dynpos demo` writes it.
+class LeverarmGnss : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = std::filesystem::temp_directory_path() / "dynpos_analysis_leverarm_gnss";
+    std::filesystem::remove_all(dir_);
+    scenario::ScenarioSpec spec =
+        scenario::load_scenario(kSource / "data" / "scenarios" / "turning-circle.toml");
+    spec.set_duration(200.0);
+    const scenario::VesselConfig vessel =
+        scenario::load_vessel_config(kSource / "data" / "vessels" / "gunnerus.toml");
+    const scenario::ScenarioRun run = scenario::run_scenario(spec, vessel, 3);
+    scenario::write_scenario_run(run, trial());
+    start_utc_ = run.start_utc;
+    for (const char* name : {"gnss1", "gnss2", "gnss3"}) {
+      const auto& v = run.truth.at("lever_arms").at(name);
+      truth_[name] = {v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
+    }
+  }
+  static std::filesystem::path trial() { return dir_ / "turning-circle"; }
+
+  // Motion from the reference (truth.csv), the fixes of `antennas` from the logger.
+  static LeverarmGnssRequest reference_request(const std::vector<std::string>& antennas) {
+    LeverarmGnssRequest q;
+    q.source.log = trial() / "truth.csv";
+    for (const std::string& a : antennas)
+      q.gnss_log.push_back(a + "=" + (trial() / "log.csv").string());
+    return q;
+  }
+
+  static std::filesystem::path dir_;
+  static std::string start_utc_;
+  static std::map<std::string, Eigen::Vector3d> truth_;
+};
+
+std::filesystem::path LeverarmGnss::dir_;
+std::string LeverarmGnss::start_utc_;
+std::map<std::string, Eigen::Vector3d> LeverarmGnss::truth_;
+
+// The key of the option error `request.validate()` throws ("" if none).
+std::string error_key(const LeverarmGnssRequest& request) {
+  try {
+    request.validate();
+  } catch (const core::InputError& e) {
+    return e.option();
+  }
+  return {};
+}
+
+// Least squares on 200 s of the reference motion: the estimator's own 1σ is a few mm in x and y
+// and about 1.5 cm in z here, so each arm is held to 4σ + 1 mm of the truth (as in the
+// validation test), and to 5 cm absolute so that a wrong arm of decimetres fails.
+TEST_F(LeverarmGnss, ReferenceMotionRecoversTheTrueArms) {
+  const LeverarmGnssReport r = run_leverarm_gnss(reference_request({"gnss1", "gnss2", "gnss3"}));
+  ASSERT_EQ(r.result.status, core::Status::kOk);
+  EXPECT_NEAR(r.gnss_rate_hz, 1.0, 1e-9);  // from the fix spacing of the 1 Hz receivers
+  ASSERT_EQ(r.result.arms.size(), 3U);
+  for (const calib::ArmEstimate& a : r.result.arms) {
+    const Eigen::Vector3d& l = truth_.at(a.name);
+    for (int j = 0; j < 3; ++j) {
+      const double err = std::abs(a.l_b_m(j) - l(j));
+      EXPECT_LT(err, 4.0 * a.std_m(j) + 1e-3) << a.name << " axis " << j;
+      EXPECT_LT(err, 0.05) << a.name << " axis " << j;
+    }
+  }
+  const std::string text = to_text(r);
+  EXPECT_EQ(
+      text.rfind((trial() / "truth.csv").string() + ": GNSS lever arms, method lsq, 3 antenna(s), ",
+                 0),
+      0U);
+  EXPECT_NE(text.find("GNSS time offset: 0.000 s (given)"), std::string::npos);
+}
+
+// The NMEA fixes are UTC seconds of day: placed on the log's clock by utc_at_zero they give the
+// arms of the same fixes in log.csv within 2 mm (NMEA rounds positions to about 0.2 mm); without
+// it they do not overlap the log and the request's utc_at_zero is named, with the file.
+TEST_F(LeverarmGnss, NmeaFixesOnTheLogClock) {
+  LeverarmGnssRequest q;
+  q.source.log = trial() / "truth.csv";
+  q.nmea = {"gnss1=" + (trial() / "gnss1.nmea").string(),
+            "gnss2=" + (trial() / "gnss2.nmea").string()};
+  q.utc_at_zero = start_utc_;
+  const LeverarmGnssReport nmea = run_leverarm_gnss(q);
+  const LeverarmGnssReport csv = run_leverarm_gnss(reference_request({"gnss1", "gnss2"}));
+  ASSERT_EQ(nmea.result.arms.size(), 2U);
+  for (std::size_t k = 0; k < 2; ++k)
+    EXPECT_LT((nmea.result.arms[k].l_b_m - csv.result.arms[k].l_b_m).cwiseAbs().maxCoeff(), 2e-3);
+  ASSERT_EQ(nmea.input_notes.size(), 2U);
+  EXPECT_NE(nmea.input_notes[0].find("gnss1: "), std::string::npos);
+  EXPECT_NE(nmea.input_notes[0].find("NMEA sentences from"), std::string::npos);
+
+  q.utc_at_zero.clear();
+  try {
+    run_leverarm_gnss(q);
+    FAIL() << "NMEA times outside the log's were accepted";
+  } catch (const core::InputError& e) {
+    EXPECT_EQ(e.option(), "utc_at_zero");
+    EXPECT_EQ(e.where().file, (trial() / "gnss1.nmea").string());
+  }
+}
+
+TEST_F(LeverarmGnss, ValidateNamesTheBadOption) {
+  const LeverarmGnssRequest good = reference_request({"gnss1"});
+  EXPECT_EQ(error_key(good), "");
+  LeverarmGnssRequest q = good;
+  q.method = "fast";
+  EXPECT_EQ(error_key(q), "method");
+  q = good;
+  q.lag = 0;
+  EXPECT_EQ(error_key(q), "lag");
+  q = good;
+  q.w1 = "1,2";
+  EXPECT_EQ(error_key(q), "w1");
+  q = good;
+  q.L = "1,0,1";
+  EXPECT_EQ(error_key(q), "L");
+  q = good;
+  q.init = {"gnss1=1,2,x"};
+  EXPECT_EQ(error_key(q), "init");
+  q = good;
+  q.antennas = {"gps1"};
+  EXPECT_EQ(error_key(q), "antennas");
+  q = good;
+  q.time_offset = 0.1;
+  q.estimate_time_offset = true;
+  EXPECT_EQ(error_key(q), "time_offset");
+  q = good;
+  q.max_time_offset = 0.01;
+  EXPECT_EQ(error_key(q), "max_time_offset");
+  q = good;
+  q.converged_from = 1.0;
+  EXPECT_EQ(error_key(q), "converged_from");
+  q = good;
+  q.pe_window = 0.0;
+  EXPECT_EQ(error_key(q), "pe_window");
+  q = good;
+  q.gnss_std = -1.0;
+  EXPECT_EQ(error_key(q), "gnss_std");
+  q = good;
+  q.gnss_log = {"gnss1"};
+  EXPECT_EQ(error_key(q), "gnss_log");
+  q = good;
+  q.gnss_log = {"gnss1=" + (dir_ / "no-such.csv").string()};
+  try {
+    q.validate();
+    FAIL() << "a missing file was accepted";
+  } catch (const core::InputError& e) {
+    EXPECT_EQ(e.option(), "gnss_log");
+    EXPECT_EQ(e.where().file, (dir_ / "no-such.csv").string());
+  }
+}
+
+// An initial arm for an antenna that is not estimated needs the data to be found: run names it.
+TEST_F(LeverarmGnss, InitialArmOfAnUnknownAntennaIsAnOptionError) {
+  LeverarmGnssRequest q = reference_request({"gnss1"});
+  q.method = "luenberger";
+  q.init = {"gnss2=0,0,-13"};
+  try {
+    run_leverarm_gnss(q);
+    FAIL() << "an initial arm of gnss2 was accepted";
+  } catch (const core::InputError& e) {
+    EXPECT_EQ(e.option(), "init");
+  }
+}
+
+TEST_F(LeverarmGnss, JsonHasTheDocumentedKeys) {
+  LeverarmGnssRequest q = reference_request({"gnss1", "gnss2"});
+  q.method = "adaptive";
+  const nlohmann::json j = to_json(run_leverarm_gnss(q));
+  for (const char* key : {"method", "arms", "arms_frame", "interval_s", "p0", "excitation",
+                          "adaptive_gamma", "time_offset_s", "time_offset_estimated",
+                          "time_offset_std_s", "residual_rms_m", "epochs", "notes", "log"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_EQ(j["method"], "adaptive");
+  EXPECT_EQ(j["log"], (trial() / "truth.csv").string());
+  ASSERT_EQ(j["arms"].size(), 2U);
+  for (const char* key :
+       {"name", "x", "y", "z", "std", "determined", "interval_mean", "interval_std"})
+    EXPECT_TRUE(j["arms"][0].contains(key)) << key;
+  for (const char* key : {"rank3_fraction", "pe_window_min_eig_rad2ps", "gramian_condition",
+                          "predicted_arm_std_m", "verdict", "advice"})
+    EXPECT_TRUE(j["excitation"].contains(key)) << key;
+  EXPECT_TRUE(j["time_offset_std_s"].is_null());  // not estimated
+  // The adaptive gain chosen from the data is noted; the motion's notes follow.
+  ASSERT_FALSE(j["notes"].empty());
+  EXPECT_NE(j["notes"][0].get<std::string>().find("adaptive gain"), std::string::npos);
+}
+
+TEST_F(LeverarmGnss, LogShorterThanOneExcitationWindowNamesTheWindow) {
+  LeverarmGnssRequest q = reference_request({"gnss1"});
+  q.pe_window = 500.0;
+  try {
+    run_leverarm_gnss(q);
+    FAIL() << "a 200 s log was accepted with a 500 s window";
+  } catch (const core::InputError& e) {
+    EXPECT_EQ(e.option(), "pe_window");
+    EXPECT_EQ(e.where().file, (trial() / "truth.csv").string());
+  }
+}
+
+TEST_F(LeverarmGnss, DemoSectionComparesWithTheTruth) {
+  const ReportSection s = leverarm_gnss_demo_section(dir_);
+  EXPECT_EQ(s.title, "GNSS lever arms (turning circle)");
+  EXPECT_NE(s.markdown.find("x true [m]"), std::string::npos);
+  const std::filesystem::path out = dir_ / "analysis" / "leverarm";
+  for (const char* f :
+       {"gnss.json", "arm-gnss1.svg", "arm-gnss3.svg", "p0-ne.svg", "excitation.svg"})
+    EXPECT_TRUE(std::filesystem::exists(out / f)) << f;
+  EXPECT_EQ(leverarm_gnss_demo_section(dir_ / "no-campaign").title, "");
+}
+
+}  // namespace
+}  // namespace dynpos::analysis
