@@ -5,12 +5,6 @@
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <string>
-#include <vector>
-
-#include <nlohmann/json.hpp>
-
-#include "dynpos/scenario/campaign.hpp"
-#include "dynpos/scenario/load_response.hpp"
 
 namespace dynpos::cli {
 
@@ -28,34 +22,6 @@ struct Unavailable {
   std::string planned;  ///< what the subcommand will do
 };
 
-/// The scenario name that runs every built-in scenario.
-inline constexpr const char* kCampaign = "campaign";
-
-/// Every scenario file of `scenario_dir`, loaded, in name order.
-std::vector<scenario::ScenarioSpec> load_campaign(const std::filesystem::path& scenario_dir);
-
-/// Prints one line per run and where the report is.
-void print_campaign(const std::vector<scenario::RunSummary>& runs,
-                    const std::filesystem::path& out_dir);
-
-/// `dynpos hybrid vessel`: both designs on a sudden-load scenario of the virtual Gunnerus.
-struct HybridVesselResult {
-  std::string name;           ///< "ice" or "mooring"
-  std::string scenario_name;  ///< the scenario file's name, e.g. "dp-ice-load"
-  std::uint64_t seed = 1;
-  scenario::HybridComparison comparison;
-  nlohmann::json parameters;  ///< the jump rule's parameters
-};
-/// The scenario file of a load case ("ice" → "dp-ice-load"); InputError for an unknown one.
-std::string hybrid_vessel_scenario_file(const std::string& short_name);
-HybridVesselResult run_hybrid_vessel(const std::string& short_name, std::uint64_t seed,
-                                     double within_m = 1.0);
-nlohmann::json hybrid_vessel_json(const HybridVesselResult& r);
-enum class TableFormat { kText, kMarkdown, kHtml };
-/// The side-by-side table.
-std::string hybrid_vessel_table(const HybridVesselResult& r, TableFormat format);
-std::vector<std::filesystem::path> write_hybrid_vessel_plots(const HybridVesselResult& r,
-                                                             const std::filesystem::path& dir);
 /// Adds `vessel` to the `hybrid` subcommand.
 void add_hybrid_vessel(CLI::App& hybrid);
 

@@ -51,71 +51,6 @@ RunSummary summarise(const ScenarioSpec& spec, const ScenarioRun& run, std::uint
   return s;
 }
 
-nlohmann::json to_json(const RunSummary& s) {
-  return {{"name", s.name},
-          {"description", s.description},
-          {"duration_s", s.duration_s},
-          {"rows", s.rows},
-          {"seed", s.seed},
-          {"max_speed_mps", s.max_speed_mps},
-          {"max_yaw_rate_dps", s.max_yaw_rate_dps},
-          {"distance_m", s.distance_m},
-          {"energy_kJ", s.energy_kJ},
-          {"log", s.name + "/log.csv"},
-          {"truth_log", s.name + "/truth.csv"},
-          {"truth", s.name + "/truth.json"}};
-}
-
-std::string markdown_table(const std::vector<RunSummary>& runs) {
-  std::string md =
-      "| scenario | duration [s] | rows | max speed [kn] | max yaw rate [deg/s] | track [m] | "
-      "energy [kJ] | log |\n|---|---:|---:|---:|---:|---:|---:|---|\n";
-  for (const RunSummary& s : runs) {
-    md += fmt::format(
-        "| {} | {:.0f} | {} | {:.2f} | {:.2f} | {:.0f} | {:.0f} | [{}/log.csv]({}/log.csv) |\n",
-        s.name, s.duration_s, s.rows, s.max_speed_mps * 3600.0 / 1852.0, s.max_yaw_rate_dps,
-        s.distance_m, s.energy_kJ, s.name, s.name);
-  }
-  return md;
-}
-
-std::string html_page(const std::vector<RunSummary>& runs, const VesselConfig& vessel,
-                      std::uint64_t master_seed, const std::vector<ReportSection>& sections) {
-  std::string extra;
-  for (const ReportSection& sec : sections) {
-    extra += "<h2>" + io::escape_markup(sec.title) + "</h2>\n" + sec.html + "\n";
-  }
-  std::string rows;
-  for (const RunSummary& s : runs) {
-    rows += fmt::format(
-        "<tr><td><a href=\"{0}/log.csv\">{0}</a></td><td>{1}</td><td>{2:.0f}</td><td>{3}</td>"
-        "<td>{4:.2f}</td><td>{5:.2f}</td><td>{6:.0f}</td><td>{7:.0f}</td>"
-        "<td><a href=\"{0}/truth.json\">truth</a></td></tr>\n",
-        io::escape_markup(s.name), io::escape_markup(s.description), s.duration_s, s.rows,
-        s.max_speed_mps * 3600.0 / 1852.0, s.max_yaw_rate_dps, s.distance_m, s.energy_kJ);
-  }
-  return fmt::format(
-      "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
-      "<title>dynpos virtual sea trial — {0}</title>\n<style>body{{font-family:sans-serif;"
-      "margin:2em;max-width:70em}}table{{border-collapse:collapse}}td,th{{border:1px solid #ccc;"
-      "padding:0.3em 0.6em;text-align:right}}td:nth-child(2){{text-align:left}}</style></head>\n"
-      "<body><h1>Virtual sea trial: {0}</h1>\n<p>Master seed {1}. Each scenario folder holds "
-      "<code>log.csv</code> (the trial logger: sensors at their rates, commands; columns in "
-      "docs/log-format.md), <code>truth.csv</code> (the true motion) and <code>truth.json</code> "
-      "(the true parameters, lever arms, command times and time "
-      "constants).</p>\n<table><tr><th>scenario</th>"
-      "<th>what</th><th>duration [s]</th><th>rows</th><th>max speed [kn]</th>"
-      "<th>max yaw rate [deg/s]</th><th>track [m]</th><th>energy [kJ]</th><th></th></tr>\n{2}"
-      "</table>\n{3}</body></html>\n",
-      io::escape_markup(vessel.name), master_seed, rows, extra);
-}
-
-void write_text(const std::filesystem::path& path, const std::string& text) {
-  io::AtomicFile file(path);
-  file.stream() << text;
-  file.commit();
-}
-
 // The antennas of a trial log: prefixes "gnssK" with K's lat, lon, height, north and east.
 std::vector<std::string> gnss_antennas(const core::Log& log) {
   std::vector<std::string> names;
@@ -233,6 +168,17 @@ void write_scenario_run(const ScenarioRun& run, const std::filesystem::path& dir
   }
 }
 
+std::vector<ScenarioSpec> load_campaign(const std::filesystem::path& scenario_dir) {
+  std::vector<ScenarioSpec> specs;
+  for (const std::string& name : list_scenarios(scenario_dir)) {
+    specs.push_back(load_scenario(scenario_dir / (name + ".toml")));
+  }
+  if (specs.empty()) {
+    throw core::InputError({scenario_dir.string(), {}, {}, {}}, "no scenario files found");
+  }
+  return specs;
+}
+
 std::vector<RunSummary> run_campaign(const std::vector<ScenarioSpec>& scenarios,
                                      const VesselConfig& vessel, std::uint64_t master_seed,
                                      const std::filesystem::path& out_dir) {
@@ -247,24 +193,7 @@ std::vector<RunSummary> run_campaign(const std::vector<ScenarioSpec>& scenarios,
     s.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     summaries.push_back(s);
   }
-  nlohmann::json summary;
-  summary["vessel"] = vessel.name;
-  summary["master_seed"] = master_seed;
-  summary["scenarios"] = nlohmann::json::array();
-  for (const RunSummary& s : summaries) summary["scenarios"].push_back(to_json(s));
-  io::write_json((out_dir / "summary.json").string(), summary);
-  write_campaign_report(summaries, vessel, master_seed, out_dir, {});
   return summaries;
-}
-
-void write_campaign_report(const std::vector<RunSummary>& summaries, const VesselConfig& vessel,
-                           std::uint64_t master_seed, const std::filesystem::path& out_dir,
-                           const std::vector<ReportSection>& sections) {
-  std::string md = fmt::format("# Virtual sea trial: {}\n\nMaster seed {}.\n\n{}", vessel.name,
-                               master_seed, markdown_table(summaries));
-  for (const ReportSection& sec : sections) md += "\n## " + sec.title + "\n\n" + sec.markdown;
-  write_text(out_dir / "summary.md", md);
-  write_text(out_dir / "index.html", html_page(summaries, vessel, master_seed, sections));
 }
 
 }  // namespace dynpos::scenario

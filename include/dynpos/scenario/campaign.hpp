@@ -1,14 +1,12 @@
 #pragma once
 /// \file
-/// A campaign: several scenarios run on one vessel, each into its own folder, with a summary.
-/// `dynpos simulate campaign` and `dynpos demo` are built on it.
+/// A campaign: several scenarios run on one vessel, each into its own folder, with a summary of
+/// each run. `dynpos simulate campaign` and `dynpos demo` are built on it.
 
 #include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "dynpos/scenario/runner.hpp"
 #include "dynpos/scenario/scenario_spec.hpp"
@@ -30,14 +28,6 @@ struct RunSummary {
   double wall_time_s = 0.0;       ///< simulation time on this machine
 };
 
-/// An analysis section of the campaign report: a title and the same content as HTML (a
-/// fragment, links relative to the report folder) and as Markdown.
-struct ReportSection {
-  std::string title;
-  std::string html;
-  std::string markdown;
-};
-
 /// The seed a scenario runs with in a campaign: independent of which other scenarios run.
 std::uint64_t campaign_seed(std::uint64_t master_seed, const std::string& scenario_name);
 
@@ -47,15 +37,15 @@ std::uint64_t campaign_seed(std::uint64_t master_seed, const std::string& scenar
 /// atomically.
 void write_scenario_run(const ScenarioRun& run, const std::filesystem::path& dir);
 
-/// Runs each scenario and writes DIR/<name>/ (write_scenario_run), then DIR/summary.json,
-/// DIR/summary.md and DIR/index.html. Returns the summaries in order.
+/// Every scenario file of `scenario_dir` (list_scenarios), loaded, in name order. Throws
+/// core::InputError naming the folder if it holds none.
+std::vector<ScenarioSpec> load_campaign(const std::filesystem::path& scenario_dir);
+
+/// Runs each scenario with its campaign_seed() and writes DIR/<name>/ (write_scenario_run).
+/// Returns the summaries in order; the report on them is the application's
+/// (analysis/campaign_report.hpp).
 std::vector<RunSummary> run_campaign(const std::vector<ScenarioSpec>& scenarios,
                                      const VesselConfig& vessel, std::uint64_t master_seed,
                                      const std::filesystem::path& out_dir);
-
-/// (Re)writes DIR/summary.md and DIR/index.html: the campaign table, then `sections`.
-void write_campaign_report(const std::vector<RunSummary>& summaries, const VesselConfig& vessel,
-                           std::uint64_t master_seed, const std::filesystem::path& out_dir,
-                           const std::vector<ReportSection>& sections);
 
 }  // namespace dynpos::scenario

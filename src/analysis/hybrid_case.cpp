@@ -1,0 +1,139 @@
+#include "dynpos/analysis/hybrid_case.hpp"
+
+#include <stdexcept>
+
+#include "dynpos/analysis/options.hpp"
+#include "dynpos/core/angle.hpp"
+
+namespace dynpos::analysis {
+namespace {
+
+constexpr const char* kFirstOrder = "first-order";
+constexpr const char* kDp = "dp";
+
+// Applies the common settings to the timing; option_error on a bad value.
+void apply_timing(const HybridCaseRequest& request, hybrid::CaseTiming& timing) {
+  if (request.dwell_s) timing.dwell_time_s = *request.dwell_s;
+  if (request.sample_period_s) timing.sample_period_s = *request.sample_period_s;
+  if (request.noise_power) timing.noise_power = *request.noise_power;
+  if (request.end_time_s) timing.end_time_s = *request.end_time_s;
+  timing.seed = request.seed;
+  try {
+    timing.validate();
+  } catch (const std::invalid_argument& e) {
+    throw option_error("dwell/sample_period/noise_power/end_time", e.what(),
+                       "times must be multiples of the 1 ms step");
+  }
+}
+
+hybrid::JumpSet hybrid_jump_set(const HybridCaseRequest& request) {
+  return request.sampled ? hybrid::JumpSet::kSampled : hybrid::JumpSet::kIdeal;
+}
+
+// The first-order case as the request sets it up, Theorem 6 checked.
+FirstOrderStudy first_order_study(const HybridCaseRequest& request) {
+  if (request.heading_deg) {
+    throw option_error("heading", "only the dp case has a heading", "drop --heading");
+  }
+  FirstOrderStudy s;
+  hybrid::FirstOrderCaseOptions& o = s.options;
+  apply_timing(request, o.timing);
+  if (request.lambda) o.params.lambda = *request.lambda;
+  if (request.ki) o.params.ki = *request.ki;
+  if (request.solve_p) {
+    const auto P = hybrid::solve_lyapunov(o.params.A(), Eigen::Matrix2d::Identity());
+    if (!P) throw option_error("solve_p", "the Lyapunov equation has no unique solution");
+    o.params.P = *P;
+  }
+  o.params.jump_set = hybrid_jump_set(request);
+  s.check = o.params.check();
+  if (!s.check.ok()) {
+    throw option_error(request.ki ? "ki" : "lambda",
+                       "the conditions of Theorem 6 fail: " + s.check.reason,
+                       request.solve_p ? "" : "try --solve-p to compute P from A^T P + PA = -I");
+  }
+  return s;
+}
+
+// The DP case as the request sets it up, Theorem 7 checked.
+DpStudy dp_study(const HybridCaseRequest& request) {
+  if (request.ki || request.solve_p) {
+    throw option_error(request.ki ? "ki" : "solve_p", "only the first-order case has this option",
+                       "the dp case uses the gains of thesis section 5.3.2");
+  }
+  DpStudy s;
+  hybrid::DpCaseOptions& o = s.options;
+  apply_timing(request, o.timing);
+  if (request.lambda) o.params.lambda = *request.lambda;
+  if (request.heading_deg) {
+    o.params.eta_d.z() = core::wrap_pi(core::deg_to_rad(*request.heading_deg));
+  }
+  o.params.jump_set = hybrid_jump_set(request);
+  s.check = o.params.check();
+  if (!s.check.ok()) {
+    throw option_error("lambda", "the conditions of Theorem 7 fail: " + s.check.reason);
+  }
+  return s;
+}
+
+std::variant<FirstOrderStudy, DpStudy> study_of(const HybridCaseRequest& request) {
+  if (request.no_jumps && request.sampled) {
+    throw option_error("sampled",
+                       "--sampled chooses the jump set of the hybrid run, and "
+                       "--no-jumps runs no hybrid run",
+                       "drop one of them");
+  }
+  if (request.case_name == kFirstOrder) return first_order_study(request);
+  if (request.case_name == kDp) return dp_study(request);
+  throw option_error("case", "unknown case '" + request.case_name + "'",
+                     "choose one of first-order, dp");
+}
+
+// Runs the conventional design and (unless no_jumps) the hybrid one with the options' jump set.
+template <typename CaseOptions, typename RunCase>
+void run_both(HybridCaseReport& report, CaseOptions o, bool no_jumps, RunCase run_case) {
+  const hybrid::JumpSet jump_set = o.params.jump_set;
+  o.params.jump_set = hybrid::JumpSet::kNone;
+  report.conventional = run_case(o);
+  if (!no_jumps) {
+    o.params.jump_set = jump_set;
+    report.hybrid = run_case(o);
+  }
+}
+
+}  // namespace
+
+void HybridCaseRequest::validate() const { (void)study_of(*this); }
+
+HybridCaseReport run_hybrid_case(const HybridCaseRequest& request) {
+  HybridCaseReport report;
+  report.study = study_of(request);
+  report.case_name = request.case_name;
+  report.jump_set = hybrid_jump_set(request);
+  report.seed = request.seed;
+  if (const auto* fo = std::get_if<FirstOrderStudy>(&report.study)) {
+    run_both(report, fo->options, request.no_jumps, hybrid::run_first_order_case);
+  } else {
+    run_both(report, std::get<DpStudy>(report.study).options, request.no_jumps,
+             hybrid::run_dp_case);
+  }
+  return report;
+}
+
+void check_hybrid_case_outputs(const std::filesystem::path& out_dir, const std::string& json) {
+  if (!out_dir.empty() && std::filesystem::exists(out_dir) &&
+      !std::filesystem::is_directory(out_dir)) {
+    throw option_error("out", "'" + out_dir.string() + "' exists and is not a folder",
+                       "name a folder (it is created if needed)");
+  }
+  if (json.empty() || json == "-") return;
+  const std::filesystem::path parent = std::filesystem::path(json).parent_path();
+  const bool in_out_dir =
+      !out_dir.empty() && parent.lexically_normal() == out_dir.lexically_normal();
+  if (!parent.empty() && !in_out_dir && !std::filesystem::is_directory(parent)) {
+    throw option_error("json", "folder '" + parent.string() + "' does not exist",
+                       "create it first, or use --json - for stdout");
+  }
+}
+
+}  // namespace dynpos::analysis

@@ -1,0 +1,111 @@
+#include "dynpos/analysis/simulate.hpp"
+
+#include <fmt/core.h>
+
+#include <cmath>
+
+#include "dynpos/analysis/campaign_report.hpp"
+#include "dynpos/analysis/data_dir.hpp"
+#include "dynpos/analysis/options.hpp"
+#include "dynpos/scenario/runner.hpp"
+#include "dynpos/scenario/vessel_config.hpp"
+
+namespace dynpos::analysis {
+namespace {
+
+void check_positive(const std::optional<double>& value, const char* key, const char* what,
+                    const char* unit) {
+  if (value && !(*value > 0.0 && std::isfinite(*value))) {
+    throw option_error(key, fmt::format("the {} must be > 0 {}, got {:g}", what, unit, *value));
+  }
+}
+
+void apply_overrides(const SimulateRequest& request, scenario::ScenarioSpec& spec) {
+  if (request.duration_s) spec.set_duration(*request.duration_s);
+  if (request.log_rate_hz) spec.log_rate_hz = *request.log_rate_hz;
+  spec.validate();
+}
+
+std::vector<ScenarioListing> list_built_in(const std::filesystem::path& scenario_dir) {
+  std::vector<ScenarioListing> out;
+  for (const std::string& name : scenario::list_scenarios(scenario_dir)) {
+    out.push_back({name, scenario::load_scenario(scenario_dir / (name + ".toml")).description});
+  }
+  return out;
+}
+
+std::vector<scenario::RunSummary> simulate_campaign(const SimulateRequest& request,
+                                                    const std::filesystem::path& scenario_dir,
+                                                    const std::filesystem::path& vessel_file) {
+  std::vector<scenario::ScenarioSpec> specs = scenario::load_campaign(scenario_dir);
+  for (scenario::ScenarioSpec& spec : specs) apply_overrides(request, spec);
+  const scenario::VesselConfig vessel = scenario::load_vessel_config(vessel_file);
+  std::vector<scenario::RunSummary> runs =
+      scenario::run_campaign(specs, vessel, request.seed, request.out_dir);
+  write_campaign_report(runs, vessel, request.seed, request.out_dir, {});
+  return runs;
+}
+
+SimulatedRun simulate_one(const SimulateRequest& request, const std::filesystem::path& scenario_dir,
+                          const std::filesystem::path& vessel_file) {
+  scenario::ScenarioSpec spec =
+      scenario::load_scenario(scenario::resolve_scenario(request.scenario, scenario_dir));
+  apply_overrides(request, spec);
+  const scenario::VesselConfig vessel = scenario::load_vessel_config(vessel_file);
+  const scenario::ScenarioRun run = scenario::run_scenario(spec, vessel, request.seed);
+  scenario::write_scenario_run(run, request.out_dir);
+  return {spec.name, spec.duration_s, request.seed, run.log.size(), run.log.channels().size()};
+}
+
+}  // namespace
+
+void SimulateRequest::validate() const {
+  check_positive(duration_s, "duration", "run length", "s");
+  check_positive(log_rate_hz, "log_rate", "log rate", "Hz");
+  if (list) return;
+  if (scenario.empty()) {
+    throw core::InputError({}, "no scenario given",
+                           "name one, e.g. 'dynpos simulate "
+                           "surge-steps-forward --out DIR' (--list shows all)");
+  }
+  if (out_dir.empty()) throw core::InputError({}, "no output folder given", "add --out DIR");
+}
+
+SimulateReport run_simulate(const SimulateRequest& request) {
+  request.validate();
+  const std::filesystem::path data = find_data_dir();
+  const std::filesystem::path scenario_dir = data / "scenarios";
+  SimulateReport report;
+  report.out_dir = request.out_dir;
+  if (request.list) {
+    report.result = list_built_in(scenario_dir);
+    return report;
+  }
+  const std::filesystem::path vessel_file =
+      request.vessel_file.empty() ? data / "vessels" / "gunnerus.toml" : request.vessel_file;
+  if (request.scenario == kCampaign) {
+    report.result = simulate_campaign(request, scenario_dir, vessel_file);
+  } else {
+    report.result = simulate_one(request, scenario_dir, vessel_file);
+  }
+  return report;
+}
+
+std::string to_text(const SimulateReport& report) {
+  if (const auto* list = std::get_if<std::vector<ScenarioListing>>(&report.result)) {
+    std::string out;
+    for (const ScenarioListing& s : *list) out += fmt::format("{:<24} {}\n", s.name, s.description);
+    return out;
+  }
+  if (const auto* runs = std::get_if<std::vector<scenario::RunSummary>>(&report.result)) {
+    return campaign_text(*runs, report.out_dir);
+  }
+  const SimulatedRun& run = std::get<SimulatedRun>(report.result);
+  return fmt::format("simulated '{}' ({:.0f} s, seed {}): {} rows x {} channels\n", run.scenario,
+                     run.duration_s, run.seed, run.rows, run.channels) +
+         fmt::format("wrote {}\n      {}\n      {}\n", (report.out_dir / "log.csv").string(),
+                     (report.out_dir / "truth.csv").string(),
+                     (report.out_dir / "truth.json").string());
+}
+
+}  // namespace dynpos::analysis
