@@ -11,8 +11,9 @@
 namespace dynpos::hybrid {
 
 DerivativeSampler::DerivativeSampler(Eigen::Index n, double sample_period_s, double noise_power,
-                                     sim::Rng rng)
+                                     sim::Rng rng, SampleSpacing spacing)
     : period_(sample_period_s),
+      spacing_(spacing),
       noise_std_(0.0),
       rng_(std::move(rng)),
       previous_(Eigen::VectorXd::Zero(std::max<Eigen::Index>(n, 0))),
@@ -39,7 +40,8 @@ bool DerivativeSampler::sample(double t, const Eigen::Ref<const Eigen::VectorXd>
   }
   bool ready = false;
   if (has_previous_) {
-    estimate_ = (y - previous_) / period_;  // (5.80), (5.92)
+    const double spacing = spacing_ == SampleSpacing::kNominal ? period_ : t - previous_time_;
+    estimate_ = (y - previous_) / spacing;  // (5.80), (5.92)
     if (noise_std_ > 0.0) {
       for (Eigen::Index i = 0; i < estimate_.size(); ++i)
         estimate_(i) += noise_std_ * rng_.normal();

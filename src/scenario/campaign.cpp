@@ -162,7 +162,7 @@ void write_scenario_run(const ScenarioRun& run, const std::filesystem::path& dir
   std::filesystem::create_directories(dir);
   io::write_csv(dir / "log.csv", run.log);
   io::write_csv(dir / "truth.csv", run.truth_log);
-  io::write_json((dir / "truth.json").string(), run.truth);
+  write_trial_truth(run.truth, dir / "truth.json");
   for (const std::string& antenna : gnss_antennas(run.log)) {
     write_gnss_nmea(run, antenna, dir / (antenna + ".nmea"));
   }

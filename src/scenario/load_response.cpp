@@ -78,7 +78,7 @@ HybridComparison compare_integral_action(const ScenarioSpec& spec, const VesselC
   const auto run = [&](const ScenarioSpec& s) {
     DesignRun d{run_scenario(s, vessel, seed), {}, 0};
     d.response = evaluate_load_response(d.run.truth_log, c.t_load_s, within_m);
-    if (d.run.truth.contains("hybrid")) d.jumps = d.run.truth["hybrid"]["jump_times_s"].size();
+    if (d.run.truth.hybrid) d.jumps = d.run.truth.hybrid->jump_times_s.size();
     return d;
   };
   c.conventional = run(conventional);

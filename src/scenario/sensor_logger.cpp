@@ -105,7 +105,7 @@ void SensorLogger::declare(core::Log& log) const {
   for (const auto& [name, unit] : names_) log.declare_channel(name, unit);
 }
 
-const TruthSample& SensorLogger::delayed(std::size_t delay) const {
+const VesselSample& SensorLogger::delayed(std::size_t delay) const {
   // Before the run has `delay` samples, the oldest (the initial state) stands for the past.
   const std::size_t n = history_.size();
   return history_[delay < n ? n - 1 - delay : 0];
@@ -116,7 +116,7 @@ double SensorLogger::measure(Channel& c, double x_si) {
   return c.resolution > 0.0 ? sim::quantize(y, c.resolution) : y;
 }
 
-void SensorLogger::record(std::size_t tick, const TruthSample& now, std::span<double> row) {
+void SensorLogger::record(std::size_t tick, const VesselSample& now, std::span<double> row) {
   history_.push_back(now);
   while (history_.size() > max_delay_ + 1) history_.pop_front();
   std::size_t i = 0;
@@ -153,34 +153,34 @@ void SensorLogger::record(std::size_t tick, const TruthSample& now, std::span<do
   };
   if (gyro_) {
     const std::size_t at = i;
-    scalar(*gyro_, [](const TruthSample& t) { return t.motion.theta.z(); });
+    scalar(*gyro_, [](const VesselSample& t) { return t.motion.theta.z(); });
     if (!core::is_missing(row[at])) row[at] = wrap_deg(row[at], gyro_->resolution);
   }
   if (speed_) {
     for (int k = 0; k < 2; ++k) {
-      scalar((*speed_)[k], [k](const TruthSample& t) { return t.motion.v_b()[k]; });
+      scalar((*speed_)[k], [k](const VesselSample& t) { return t.motion.v_b()[k]; });
     }
   }
   if (wind_) {
-    scalar((*wind_)[0], [](const TruthSample& t) { return t.wind_speed_mps; });
+    scalar((*wind_)[0], [](const VesselSample& t) { return t.wind_speed_mps; });
     const std::size_t at = i;
-    scalar((*wind_)[1], [](const TruthSample& t) { return t.wind_from_rad; });
+    scalar((*wind_)[1], [](const VesselSample& t) { return t.wind_from_rad; });
     if (!core::is_missing(row[at])) row[at] = wrap_deg(row[at], (*wind_)[1].resolution);
   }
   for (int k = 0; k < 3; ++k) {
     if (rpm_[k]) {
       const std::size_t at = i;
-      scalar(*rpm_[k], [k](const TruthSample& t) { return t.shaft_speed_rps[k]; });
+      scalar(*rpm_[k], [k](const VesselSample& t) { return t.shaft_speed_rps[k]; });
       const double n_rps = row[at] / kRpsToRpm;
       const double thrust_N = core::is_missing(n_rps) ? core::kMissing
                               : k < 2                 ? propeller_.thrust(n_rps, 0.0)
                                                       : tunnel_.outputs(n_rps, 0.0).thrust;
       row[i++] = thrust_N * 1e-3;
     }
-    if (power_[k]) scalar(*power_[k], [k](const TruthSample& t) { return t.power_W[k]; });
+    if (power_[k]) scalar(*power_[k], [k](const VesselSample& t) { return t.power_W[k]; });
   }
   for (int k = 0; k < 2; ++k) {
-    if (rudder_[k]) scalar(*rudder_[k], [k](const TruthSample& t) { return t.rudder_rad[k]; });
+    if (rudder_[k]) scalar(*rudder_[k], [k](const VesselSample& t) { return t.rudder_rad[k]; });
   }
 }
 

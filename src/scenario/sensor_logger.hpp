@@ -15,6 +15,7 @@
 #include "dynpos/model/thruster.hpp"
 #include "dynpos/model/tunnel_thruster.hpp"
 #include "dynpos/scenario/vessel_config.hpp"
+#include "dynpos/scenario/vessel_sample.hpp"
 #include "dynpos/sensors/gnss_receiver.hpp"
 #include "dynpos/sensors/mru.hpp"
 #include "dynpos/sensors/rigid_body_motion.hpp"
@@ -22,16 +23,6 @@
 #include "dynpos/sensors/sensor_timing.hpp"
 
 namespace dynpos::scenario::detail {
-
-/// The true values the sensors measure, at one logger tick.
-struct TruthSample {
-  sensors::RigidBodyMotion motion;
-  std::array<double, 3> shaft_speed_rps{};  ///< port, stb, tunnel
-  std::array<double, 3> power_W{};          ///< port, stb, tunnel
-  std::array<double, 2> rudder_rad{};       ///< port, stb
-  double wind_speed_mps = 0.0;
-  double wind_from_rad = 0.0;
-};
 
 class SensorLogger {
  public:
@@ -46,7 +37,7 @@ class SensorLogger {
 
   /// Records logger tick k (ticks are consecutive from 0) with the truth `now`: fills `row`
   /// (channel_count() values, missing where no sensor sampled) from the delayed truths.
-  void record(std::size_t tick, const TruthSample& now, std::span<double> row);
+  void record(std::size_t tick, const VesselSample& now, std::span<double> row);
 
  private:
   struct Channel {
@@ -55,7 +46,7 @@ class SensorLogger {
     double scale = 1.0;       // SI → logged unit
     double resolution = 0.0;  // in the logged unit
   };
-  const TruthSample& delayed(std::size_t delay) const;
+  const VesselSample& delayed(std::size_t delay) const;
   void add_name(std::string name, std::string unit);
   double measure(Channel& c, double x_si);
 
@@ -70,7 +61,7 @@ class SensorLogger {
   std::array<std::optional<Channel>, 3> rpm_, power_;
   std::array<std::optional<Channel>, 2> rudder_;
   std::size_t max_delay_ = 0;
-  std::deque<TruthSample> history_;
+  std::deque<VesselSample> history_;
 };
 
 }  // namespace dynpos::scenario::detail

@@ -55,7 +55,10 @@ const char* to_string(SimStatus status) noexcept {
 }
 
 Simulator::Simulator(const HybridSystem& system, SimulatorOptions options)
-    : system_(system), options_((options.validate(), options)), grid_(options_.dt) {
+    : system_(system),
+      options_((options.validate(), options)),
+      grid_(options_.dt),
+      dwell_(options_.dwell_time, kDwellSlackPerDt * options_.dt) {
   if (system_.state_size() < 1) throw std::invalid_argument("Simulator: state_size() must be >= 1");
   if (system_.input_size() < 0) throw std::invalid_argument("Simulator: input_size() must be >= 0");
   u0_ = Eigen::VectorXd::Zero(system_.input_size());
@@ -97,8 +100,7 @@ SimResult Simulator::run(const Eigen::VectorXd& x0) {
   x_trial_.resize(n);
   x_plus_.resize(n);
   rk4_ = Rk4<>(n);
-  has_jumped_ = false;
-  last_jump_time_ = 0.0;
+  dwell_.reset();
 
   SimResult result;
   const Tick end_tick = grid_.ticks(options_.end_time, "end_time");
@@ -133,11 +135,10 @@ SimResult Simulator::run(const Eigen::VectorXd& x0) {
 }
 
 bool Simulator::jump_and_check(double t, SimResult& result) {
-  const double dwell_slack = kDwellSlackPerDt * options_.dt;
   int jumps_here = 0;
   bool dwell_blocked = false;
   while (system_.in_jump_set(t, x_, u_)) {
-    if (has_jumped_ && t - last_jump_time_ < options_.dwell_time - dwell_slack) {
+    if (!dwell_.allows(t)) {
       dwell_blocked = true;
       break;
     }
@@ -151,8 +152,7 @@ bool Simulator::jump_and_check(double t, SimResult& result) {
     if (jump_observer_) jump_observer_(t, x_, x_plus_);
     x_.swap(x_plus_);  // swaps buffers, no allocation
     ++jumps_here;
-    has_jumped_ = true;
-    last_jump_time_ = t;
+    dwell_.record_jump(t);
     result.jump_times.push_back(t);
     if (!x_.allFinite()) {
       return stop(result, SimStatus::kNonFinite, t,
@@ -161,13 +161,14 @@ bool Simulator::jump_and_check(double t, SimResult& result) {
   }
   if (options_.check_flow_set && !system_.in_flow_set(t, x_, u_)) {
     return stop(result, SimStatus::kLeftFlowSet, t,
-                dwell_blocked ? "x is outside the flow set C at t = " + detail::format_number(t) +
-                                    " s and in D, but the dwell time " +
-                                    detail::format_number(options_.dwell_time) +
-                                    " s since the last jump at " +
-                                    detail::format_number(last_jump_time_) + " s forbids a jump"
-                              : "x is outside both the flow set C and the jump set D at t = " +
-                                    detail::format_number(t) + " s");
+                dwell_blocked
+                    ? "x is outside the flow set C at t = " + detail::format_number(t) +
+                          " s and in D, but the dwell time " +
+                          detail::format_number(options_.dwell_time) +
+                          " s since the last jump at " +
+                          detail::format_number(*dwell_.last_jump_time()) + " s forbids a jump"
+                    : "x is outside both the flow set C and the jump set D at t = " +
+                          detail::format_number(t) + " s");
   }
   return true;
 }

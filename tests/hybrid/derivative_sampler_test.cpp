@@ -22,6 +22,27 @@ TEST(DerivativeSampler, NoiseFreeRampGivesItsSlope) {
   }
 }
 
+TEST(DerivativeSampler, MeasuredSpacingDividesByTheTimeBetweenTheSamples) {
+  // Samples every 10 ticks of 0.01 s: t_k − t_{k−10} is 0.1 s only up to rounding, and the
+  // measured spacing divides by exactly that difference, the nominal one by T_s.
+  DerivativeSampler nominal(1, 0.1, 0.0, sim::Rng(1));
+  DerivativeSampler measured(1, 0.1, 0.0, sim::Rng(1), SampleSpacing::kMeasured);
+  bool spacing_rounded = false;
+  for (int k = 0; k <= 300; k += 10) {
+    const double t = 0.01 * k;
+    const Eigen::VectorXd y = Eigen::VectorXd::Constant(1, 1.0 + 0.5 * k);
+    const bool ready = nominal.sample(t, y);
+    ASSERT_EQ(measured.sample(t, y), ready);
+    if (!ready) continue;
+    const double t_prev = 0.01 * (k - 10);
+    EXPECT_EQ(measured.estimate()(0), 5.0 / (t - t_prev));
+    EXPECT_EQ(nominal.estimate()(0), 5.0 / 0.1);
+    EXPECT_EQ(measured.older_sample_time(), t_prev);
+    spacing_rounded = spacing_rounded || t - t_prev != 0.1;
+  }
+  EXPECT_TRUE(spacing_rounded);  // the two differ somewhere, so the test tells them apart
+}
+
 TEST(DerivativeSampler, NoiseHasTheStdOfItsPower) {
   // Power 0.1 at T_s = 0.03 s: σ = √(0.1/0.03) ≈ 1.826 (the first-order case study).
   DerivativeSampler s(1, 0.03, 0.1, sim::Rng(7, "test"));

@@ -18,6 +18,7 @@
 #include "dynpos/scenario/campaign.hpp"
 #include "dynpos/scenario/runner.hpp"
 #include "dynpos/scenario/scenario_spec.hpp"
+#include "dynpos/scenario/trial_truth.hpp"
 #include "dynpos/scenario/vessel_config.hpp"
 
 namespace dynpos::scenario {
@@ -66,7 +67,8 @@ TEST(CampaignNmea, EveryAntennaRoundTripsAgainstLogCsv) {
   const ScenarioRun run = run_scenario(spec, vessel, 11);
   TempDir dir;
   write_scenario_run(run, dir.path());
-  EXPECT_EQ(run.truth.at("start_utc"), "2014-08-27T10:00:00Z");
+  EXPECT_EQ(run.truth.start_utc, "2014-08-27T10:00:00Z");
+  EXPECT_EQ(read_trial_truth(dir.path() / "truth.json").start_utc, "2014-08-27T10:00:00Z");
 
   const core::Log csv = io::read_csv_all(dir.path() / "log.csv");  // lat/lon in rad (SI)
   const double start_s = io::parse_utc_time_of_day(spec.start_utc);

@@ -8,6 +8,7 @@
 
 #include "dynpos/io/csv_reader.hpp"
 #include "dynpos/io/csv_writer.hpp"
+#include "dynpos/scenario/campaign.hpp"
 #include "dynpos/scenario/vessel_plant.hpp"
 
 namespace dynpos::scenario {
@@ -61,7 +62,7 @@ TEST(RunScenario, SameSeedBitIdenticalOtherSeedDifferent) {
   const ScenarioRun b = run_scenario(rough(60.0), v, 11);
   const ScenarioRun c = run_scenario(rough(60.0), v, 12);
   EXPECT_TRUE(bit_identical(a.log, b.log));
-  EXPECT_EQ(a.truth.dump(), b.truth.dump());
+  EXPECT_EQ(to_json(a.truth).dump(), to_json(b.truth).dump());
   // Another seed: every sensor channel differs (its noise and the weather it sees), and so do
   // the allocation's shaft speeds, thrusts and rudder angles (they depend on the inflow); the
   // joystick's lever and demand, which the scenario fixes, do not.
@@ -113,21 +114,19 @@ TEST(RunScenario, SteadySurgeMatchesThrustMapAndHullDamping) {
 
 TEST(RunScenario, TruthRecordsCommandsAndPropellerStepTimeConstants) {
   const ScenarioRun run = run_scenario(surge_step(80.0, 40.0), calm_vessel(), 1);
-  ASSERT_EQ(run.truth["commands"].size(), 1u);
-  EXPECT_EQ(run.truth["commands"][0]["t_s"].get<double>(), 10.0);
+  ASSERT_EQ(run.truth.commands.size(), 1u);
+  EXPECT_EQ(run.truth.commands[0].t_s, 10.0);
   // Both propellers step (port first), from the same model and, straight ahead, to the same
   // shaft speed up to rounding: the same truth to 1e-9 s.
-  ASSERT_EQ(run.truth["propeller_steps"].size(), 2u);
-  const auto& port = run.truth["propeller_steps"][0];
-  EXPECT_EQ(port["thruster"], "port");
-  for (const char* q : {"shaft_speed", "thrust"}) {
-    EXPECT_NEAR(port[q]["T_s"].get<double>(),
-                run.truth["propeller_steps"][1][q]["T_s"].get<double>(), 1e-9);
-  }
-  const auto& step = run.truth["propeller_steps"][1];
-  EXPECT_EQ(step["thruster"], "stb");
-  const double t_n = step["shaft_speed"]["T_s"].get<double>();
-  const double d_n = step["shaft_speed"]["delay_s"].get<double>();
+  ASSERT_EQ(run.truth.propeller_steps.size(), 2u);
+  const PropellerStepTruth& port = run.truth.propeller_steps[0];
+  const PropellerStepTruth& step = run.truth.propeller_steps[1];
+  EXPECT_EQ(port.thruster, "port");
+  EXPECT_NEAR(port.shaft_speed.time_constant, step.shaft_speed.time_constant, 1e-9);
+  EXPECT_NEAR(port.thrust.time_constant, step.thrust.time_constant, 1e-9);
+  EXPECT_EQ(step.thruster, "stb");
+  const double t_n = step.shaft_speed.time_constant;
+  const double d_n = step.shaft_speed.dead_time;
   // DESIGN.md targets from tables 3.23–3.29: T_n 0.5–5.5 s, δ_n 1.2–3.3 s.
   EXPECT_GE(t_n, 0.5);
   EXPECT_LE(t_n, 5.5);
@@ -137,8 +136,8 @@ TEST(RunScenario, TruthRecordsCommandsAndPropellerStepTimeConstants) {
   const auto& n = run.truth_log.values("rpm.stb");
   const std::size_t before = 10 * 10 + 10;  // t = 11 s < 10 s + 1.3 s dead time
   EXPECT_EQ(n[before], 0.0);
-  EXPECT_GT(n.back(), 0.9 * step["n_to_rps"].get<double>());
-  EXPECT_TRUE(run.truth["time_constants"].contains("nomoto_3kn"));
+  EXPECT_GT(n.back(), 0.9 * step.n_to_rps);
+  EXPECT_GT(run.truth.time_constants.nomoto_3kn.Tr_s, 0.0);
 }
 
 TEST(RunScenario, SettlingStartsTheLogDriftingWithTheCurrent) {
@@ -165,11 +164,11 @@ TEST(RunScenario, SettlingStartsTheLogDriftingWithTheCurrent) {
   // still at rest 1 s later (dead time 1.3 s).
   EXPECT_EQ(settled.truth_log.time(), at_rest.truth_log.time());  // to the bit: (k − k₀)·dt
   EXPECT_EQ(settled.log.time(), at_rest.log.time());
-  ASSERT_EQ(settled.truth["commands"].size(), 1u);
-  EXPECT_EQ(settled.truth["commands"][0]["t_s"].get<double>(), 10.0);
-  EXPECT_EQ(settled.truth["propeller_steps"][0]["t_s"].get<double>(), 10.0);
+  ASSERT_EQ(settled.truth.commands.size(), 1u);
+  EXPECT_EQ(settled.truth.commands[0].t_s, 10.0);
+  EXPECT_EQ(settled.truth.propeller_steps[0].t_s, 10.0);
   EXPECT_EQ(settled.truth_log.values("rpm.stb")[10 * 10 + 10], 0.0);
-  EXPECT_EQ(settled.truth["scenario"]["settle_s"].get<double>(), 600.0);
+  EXPECT_EQ(settled.truth.scenario.settle_s, 600.0);
 }
 
 TEST(RunScenario, SwayDemandMovesTheVesselToStarboard) {
@@ -181,7 +180,7 @@ TEST(RunScenario, SwayDemandMovesTheVesselToStarboard) {
   EXPECT_GT(run.truth_log.values("east").back(), 2.0);
   EXPECT_GT(run.truth_log.values("thrust.tunnel").back(), 0.0);
   // The allocation met the demand (no unmet force or moment) throughout.
-  for (const auto& unmet : run.truth["allocation_unmet_max"]) EXPECT_LT(unmet.get<double>(), 1.0);
+  for (const double unmet : run.truth.allocation_unmet_max) EXPECT_LT(unmet, 1.0);
 }
 
 TEST(RunScenario, StepLoadPushesTheVesselOnlyWhileOn) {
@@ -195,7 +194,7 @@ TEST(RunScenario, StepLoadPushesTheVesselOnlyWhileOn) {
   EXPECT_EQ(east[100], 0.0);    // nothing before the load (calm, no thrust)
   EXPECT_GT(v[600], 0.1);       // drifting east (sway at heading 0) when it switches off
   EXPECT_LT(v.back(), v[600]);  // decelerating after it is gone
-  EXPECT_EQ(run.truth["scenario"]["loads"].size(), 1u);
+  EXPECT_EQ(run.truth.scenario.loads.size(), 1u);
 }
 
 TEST(RunScenario, StarboardRudderTurnsToStarboardWithNomotoTruth) {
@@ -210,11 +209,32 @@ TEST(RunScenario, StarboardRudderTurnsToStarboardWithNomotoTruth) {
   EXPECT_NEAR(r[90], 0.0, 1e-6);  // before the rudder moves (command at 10 s + dead time)
   EXPECT_GT(r.back(), 0.005);     // steady starboard turn, > 0.3 °/s
   EXPECT_LT(run.truth_log.values("roll").back(), 0.0);  // heeling outwards, to port
-  ASSERT_EQ(run.truth["rudder_steps"].size(), 1u);
-  const auto& step = run.truth["rudder_steps"][0];
-  EXPECT_NEAR(step["to_deg"].get<double>(), 20.0, 1e-12);
+  ASSERT_EQ(run.truth.rudder_steps.size(), 1u);
+  const RudderStepTruth& step = run.truth.rudder_steps[0];
+  EXPECT_NEAR(step.to_deg, 20.0, 1e-12);
   // Nomoto T_r at ≈ 6 kn: table 3.31 gives 2.9–3.0 s; the model's truth lies within ±0.5 s.
-  EXPECT_NEAR(step["nomoto"]["Tr_s"].get<double>(), 3.0, 0.5);
+  ASSERT_TRUE(step.nomoto.has_value());
+  EXPECT_NEAR(step.nomoto->Tr_s, 3.0, 0.5);
+}
+
+TEST(RunScenario, TruthJsonReadsBackAsTheRunsTruth) {
+  ScenarioSpec s;
+  s.name = "dp-hybrid";
+  s.duration_s = 60.0;
+  s.setpoints = {{0.0, 0.0, 0.0, 0.0, "hold"}, {-1.0, 3.0, 0.0, 0.0, "ahead"}};
+  s.loads = {{10.0, 1e300, -2.0e4, 0.0, 0.0}};
+  s.hybrid_integral = hybrid::IntegralJumpParams{};
+  const ScenarioRun run = run_scenario(s, VesselConfig{}, 3);
+  ASSERT_TRUE(run.truth.hybrid.has_value());
+  EXPECT_FALSE(run.truth.hybrid->jump_times_s.empty());  // the load makes the rule jump
+  ASSERT_EQ(run.truth.setpoints.size(), 2u);
+  EXPECT_TRUE(run.truth.setpoints[0].t_reached_s.has_value());
+  const auto dir = std::filesystem::temp_directory_path() / "dynpos_runner_truth_test";
+  write_scenario_run(run, dir);
+  const TrialTruth back = read_trial_truth(dir / "truth.json");
+  EXPECT_EQ(to_json(back).dump(), to_json(run.truth).dump());
+  EXPECT_EQ(back.hybrid->jump_times_s, run.truth.hybrid->jump_times_s);
+  std::filesystem::remove_all(dir);
 }
 
 TEST(RunScenario, CsvRoundTripIsExact) {

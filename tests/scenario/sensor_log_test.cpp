@@ -12,6 +12,7 @@
 #include "dynpos/io/csv_reader.hpp"
 #include "dynpos/io/csv_writer.hpp"
 #include "dynpos/scenario/runner.hpp"
+#include "dynpos/sensors/mru.hpp"
 
 namespace dynpos::scenario {
 namespace {
@@ -191,7 +192,7 @@ TEST(SensorLog, SpecificForceConventionSensesGravity) {
   // Heave accelerations average out over 60 s to ≪ 0.1 m/s²; roll/pitch of a few degrees
   // change cos φ cos θ by < 0.5 %.
   EXPECT_NEAR(mean_az, -sensors::kGravity_mps2, 0.1);
-  EXPECT_EQ(run.truth["mru_acceleration"], "specific-force");
+  EXPECT_EQ(run.truth.mru_acceleration, sensors::AccelerationConvention::kSpecificForce);
 }
 
 TEST(SensorLog, TrialLogReadsBackInSiWithBlanksAsMissing) {

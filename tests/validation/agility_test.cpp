@@ -21,13 +21,10 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <span>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "dynpos/ident/derived_signals.hpp"
 #include "dynpos/ident/thrust_map.hpp"
@@ -36,6 +33,7 @@
 #include "dynpos/scenario/campaign.hpp"
 #include "dynpos/scenario/runner.hpp"
 #include "dynpos/scenario/scenario_spec.hpp"
+#include "dynpos/scenario/trial_truth.hpp"
 #include "dynpos/scenario/vessel_config.hpp"
 
 namespace dynpos {
@@ -239,18 +237,16 @@ TEST(AgilityValidation, ResponseTimesMatchTheNoiseFreeTruth) {
   EXPECT_GE(nulls, 4);
 
   // truth.json: the starboard propeller's T + δ straight ahead and astern, no yaw.
-  std::ifstream in(dir / "truth.json");
-  const nlohmann::json tj = nlohmann::json::parse(in);
+  const scenario::TrialTruth trial_truth = scenario::read_trial_truth(dir / "truth.json");
   int bounded = 0;
-  for (const auto& step : tj.at("propeller_steps")) {
-    if (step.at("thruster") != "stb" || step.at("n_from_rps").get<double>() != 0.0) continue;
-    const double t_s = step.at("t_s").get<double>();
+  for (const scenario::PropellerStepTruth& step : trial_truth.propeller_steps) {
+    if (step.thruster != "stb" || step.n_from_rps != 0.0) continue;
+    const double t_s = step.t_s;
     for (const auto& s : r.steps) {
       if (std::abs(s.t_step - t_s) > 0.05 || !s.thrusters[1].response_s) continue;
       const bool straight = std::abs(s.direction_deg) < 1.0 || std::abs(s.direction_deg) > 179.0;
       if (!straight || std::abs(s.yaw_pct.value_or(0.0)) > 1.0) continue;
-      const double t63 =
-          step.at("thrust").at("T_s").get<double>() + step.at("thrust").at("delay_s").get<double>();
+      const double t63 = step.thrust.time_constant + step.thrust.dead_time;
       // One log sample (0.1 s) for the interpolation, and 0.1 s for the final level: truth.json
       // takes the end of an isolated run, the analysis the mean of the last 8 s of the step,
       // where the thrust has settled to well under 1 % (a 1 % level change moves the crossing

@@ -57,8 +57,7 @@ Inputs inputs(const scenario::ScenarioRun& run, const std::vector<std::string>& 
 }
 
 Eigen::Vector3d true_arm(const scenario::ScenarioRun& run, const std::string& name) {
-  const auto& v = run.truth.at("lever_arms").at(name);
-  return {v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
+  return run.truth.lever_arms.at(name);
 }
 
 // Full turning circle (400 s, one and a bit turns, Hs 1 m), three antennas, default estimator

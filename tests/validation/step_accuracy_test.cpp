@@ -8,10 +8,8 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
+#include <stdexcept>
 #include <string>
-
-#include <nlohmann/json.hpp>
 
 #include "dynpos/ident/fopdt_fit.hpp"
 #include "dynpos/ident/step_detector.hpp"
@@ -20,6 +18,7 @@
 #include "dynpos/scenario/campaign.hpp"
 #include "dynpos/scenario/runner.hpp"
 #include "dynpos/scenario/scenario_spec.hpp"
+#include "dynpos/scenario/trial_truth.hpp"
 
 namespace dynpos {
 namespace {
@@ -28,7 +27,7 @@ const std::filesystem::path kSource = DYNPOS_SOURCE_DIR;
 
 struct TrialRun {
   std::filesystem::path dir;
-  nlohmann::json truth;
+  scenario::TrialTruth truth;
 };
 
 TrialRun simulate(const std::string& name, std::uint64_t seed) {
@@ -40,8 +39,7 @@ TrialRun simulate(const std::string& name, std::uint64_t seed) {
   out.dir = std::filesystem::temp_directory_path() /
             ("dynpos_step_accuracy_" + name + "_" + std::to_string(seed));
   scenario::write_scenario_run(scenario::run_scenario(spec, vessel, seed), out.dir);
-  std::ifstream in(out.dir / "truth.json");
-  out.truth = nlohmann::json::parse(in);
+  out.truth = scenario::read_trial_truth(out.dir / "truth.json");
   return out;
 }
 
@@ -76,6 +74,14 @@ std::vector<Identified> identify(const std::filesystem::path& log, const std::st
 // thruster fits (tables 3.23 and 3.25).
 constexpr double kComparedStepRps = 0.2;
 
+// The truth of one quantity ("shaft_speed" or "thrust") of a propeller step.
+const model::FopdtTruth& fopdt_of(const scenario::PropellerStepTruth& step,
+                                  const std::string& quantity) {
+  if (quantity == "shaft_speed") return step.shaft_speed;
+  if (quantity == "thrust") return step.thrust;
+  throw std::invalid_argument("no propeller step truth '" + quantity + "'");
+}
+
 // For every propeller step of truth.json, the identified step nearest in time (the logger times
 // the command within one sample) and, for steps of at least kComparedStepRps, its T against the
 // truth. Tolerance 15 % (the issue's).
@@ -84,10 +90,10 @@ void expect_within_truth(const TrialRun& run, const std::string& thruster,
                          int min_compared) {
   const auto found = identify(run.dir / "log.csv", "command.rpm." + thruster, output_column);
   int compared = 0;
-  for (const auto& step : run.truth.at("propeller_steps")) {
-    if (step.at("thruster") != thruster) continue;
-    const double t_step = step.at("t_s").get<double>();
-    const double truth = step.at(quantity).at("T_s").get<double>();
+  for (const scenario::PropellerStepTruth& step : run.truth.propeller_steps) {
+    if (step.thruster != thruster) continue;
+    const double t_step = step.t_s;
+    const double truth = fopdt_of(step, quantity).time_constant;
     const Identified* nearest = nullptr;
     for (const Identified& f : found) {
       if (nearest == nullptr || std::abs(f.t_step - t_step) < std::abs(nearest->t_step - t_step)) {
@@ -96,8 +102,7 @@ void expect_within_truth(const TrialRun& run, const std::string& thruster,
     }
     ASSERT_NE(nearest, nullptr) << "no step found near " << t_step << " s";
     EXPECT_NEAR(nearest->t_step, t_step, 0.5) << quantity << " step at " << t_step << " s";
-    const double change_rps =
-        std::abs(step.at("n_to_rps").get<double>() - step.at("n_from_rps").get<double>());
+    const double change_rps = std::abs(step.n_to_rps - step.n_from_rps);
     if (change_rps < kComparedStepRps) continue;
     EXPECT_NEAR(nearest->time_constant_s, truth, 0.15 * truth)
         << thruster << " " << quantity << " step at " << t_step << " s";

@@ -23,19 +23,30 @@
 
 namespace dynpos::hybrid {
 
+/// What the difference of two samples is divided by.
+enum class SampleSpacing {
+  kNominal,   ///< the sample period T_s, as (5.80) and (5.92) write it
+  kMeasured,  ///< t_k − t_{k−1} of the times given to sample(): for a caller whose sample
+              ///< times are products of a finer tick grid, so that their difference is T_s
+              ///< only up to rounding (the DP controller of a scenario run)
+};
+
 /// Finite-difference derivative of a sampled vector signal with additive white noise.
 class DerivativeSampler {
  public:
   /// A sampler for signals of size n (≥ 1) sampled every sample_period_s [s] (> 0), with
-  /// derivative noise of power noise_power (≥ 0, see the file comment), drawn from rng.
-  /// Throws std::invalid_argument on an out-of-range argument.
-  DerivativeSampler(Eigen::Index n, double sample_period_s, double noise_power, sim::Rng rng);
+  /// derivative noise of power noise_power (≥ 0, see the file comment), drawn from rng, and
+  /// the difference divided as `spacing` says. Throws std::invalid_argument on an
+  /// out-of-range argument.
+  DerivativeSampler(Eigen::Index n, double sample_period_s, double noise_power, sim::Rng rng,
+                    SampleSpacing spacing = SampleSpacing::kNominal);
 
   /// Takes the sample y_k at time t [s] (the caller samples every T_s). Returns true when an
   /// estimate exists, i.e. from the second sample on; the estimate is then in estimate().
   bool sample(double t, const Eigen::Ref<const Eigen::VectorXd>& y);
 
-  /// (y_k − y_{k−1})/T_s + w_k, size n; zero before the second sample.
+  /// (y_k − y_{k−1})/T_s + w_k (T_s or t_k − t_{k−1}, see SampleSpacing), size n; zero before
+  /// the second sample.
   const Eigen::VectorXd& estimate() const noexcept { return estimate_; }
 
   /// Time of y_{k−1}, the older sample of the estimate [s]; NaN before the second sample.
@@ -48,6 +59,7 @@ class DerivativeSampler {
 
  private:
   double period_;
+  SampleSpacing spacing_;
   double noise_std_;
   sim::Rng rng_;
   Eigen::VectorXd previous_;

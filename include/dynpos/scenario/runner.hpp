@@ -2,14 +2,19 @@
 /// \file
 /// Runs a scenario on the virtual vessel: the plant, the operator's commands, the log and the
 /// truth that goes with it.
+///
+/// run_scenario() composes the parts of a run on one sim::Simulator: the VesselPlant, the
+/// control task (operator commands, auto heading or DP, thrust allocation; control_task.hpp),
+/// the actuators' dead times (actuator_commands.hpp), the environment (trial_environment.hpp)
+/// and the two loggers (truth_recorder.hpp, trial_logger.hpp), on the time base of
+/// trial_clock.hpp.
 
 #include <cstdint>
 #include <string>
 
-#include <nlohmann/json.hpp>
-
 #include "dynpos/core/log.hpp"
 #include "dynpos/scenario/scenario_spec.hpp"
+#include "dynpos/scenario/trial_truth.hpp"
 #include "dynpos/scenario/vessel_config.hpp"
 
 namespace dynpos::scenario {
@@ -21,7 +26,8 @@ struct ScenarioRun {
   core::Log log;
   /// The true motion and actuator states at the log rate, SI units (docs/log-format.md).
   core::Log truth_log;
-  nlohmann::json truth;  ///< parameters, seed, lever arms, command times, true time constants
+  /// Parameters, seed, lever arms, command times, true time constants (truth.json).
+  TrialTruth truth;
   /// UTC of t = 0, "YYYY-MM-DDTHH:MM:SS[.sss]Z" (ScenarioSpec::start_utc).
   std::string start_utc;
   /// [m] geoid (mean sea level) above the WGS84 ellipsoid at the GNSS origin: the origin's

@@ -9,7 +9,8 @@
 /// rudder angle [rad], tunnel shaft speed [rps]); the environment force in BODY held over the
 /// step (wind + wave drift) [N, N, N·m]; the force in NED (bias (2.22) + step loads)
 /// [N, N, N·m]; the current velocity in NED [m/s]. Dead times and the environment are
-/// discrete and advanced once per tick by the runner (sample and hold).
+/// discrete and advanced once per tick by the run's tasks (sample and hold; actuator_commands.hpp,
+/// trial_environment.hpp).
 
 #include <Eigen/Core>
 

@@ -35,6 +35,7 @@
 #include <string>
 #include <vector>
 
+#include "dynpos/sim/dwell_time.hpp"
 #include "dynpos/sim/hybrid_system.hpp"
 #include "dynpos/sim/rk4.hpp"
 #include "dynpos/sim/sim_time.hpp"
@@ -172,8 +173,7 @@ class Simulator {
   Eigen::VectorXd x_trial_;
   Eigen::VectorXd x_plus_;
   Rk4<> rk4_;
-  bool has_jumped_ = false;
-  double last_jump_time_ = 0.0;
+  DwellTime dwell_;
 };
 
 }  // namespace dynpos::sim

@@ -1,0 +1,47 @@
+#pragma once
+/// \file
+/// The vessel's true state at one log tick, as the truth log records it and the sensors
+/// measure it: the full 6-DOF motion (the plant's low-frequency state composed with the
+/// wave-frequency motion, differentiated analytically so that (4.2) and (4.65) hold exactly
+/// along the sampled path), the actuators' outputs and the weather.
+
+#include <Eigen/Core>
+#include <array>
+
+#include "dynpos/scenario/trial_environment.hpp"
+#include "dynpos/scenario/vessel_plant.hpp"
+#include "dynpos/sensors/rigid_body_motion.hpp"
+
+namespace dynpos::scenario {
+
+/// The truth at one log tick (SI units).
+struct VesselSample {
+  sensors::RigidBodyMotion motion;                      ///< at the control origin, LF + WF
+  std::array<double, 3> shaft_speed_rps{};              ///< port, stb, tunnel
+  std::array<double, 3> thrust_N{};                     ///< port, stb, tunnel
+  std::array<double, 3> power_W{};                      ///< port, stb, tunnel
+  std::array<double, 2> rudder_rad{};                   ///< port, stb
+  double wind_speed_mps = 0.0;                          ///< the true wind
+  double wind_from_rad = 0.0;                           ///< the direction it comes from, [0, 2π)
+  Eigen::Vector2d current_n = Eigen::Vector2d::Zero();  ///< current (N, E) [m/s]
+  Eigen::Vector3d load_n = Eigen::Vector3d::Zero();     ///< step loads (NED) [N, N, N·m]
+};
+
+/// Takes VesselSamples of a run (keeps the workspace, so sampling does not allocate).
+class VesselSampler {
+ public:
+  /// A sampler of `plant` in `environment` (both must outlive it).
+  VesselSampler(const VesselPlant& plant, const TrialEnvironment& environment);
+
+  /// The sample at scenario time t [s] of the plant's state x and held input u, with the
+  /// environment's wave generator at the sample of t.
+  const VesselSample& sample(double t, const sim::ConstVectorRef& x, const sim::ConstVectorRef& u);
+
+ private:
+  const VesselPlant& plant_;
+  const TrialEnvironment& environment_;
+  Eigen::VectorXd dxdt_;
+  VesselSample sample_;
+};
+
+}  // namespace dynpos::scenario

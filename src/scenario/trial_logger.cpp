@@ -1,0 +1,81 @@
+#include "dynpos/scenario/trial_logger.hpp"
+
+#include <fmt/core.h>
+
+#include <span>
+#include <stdexcept>
+#include <utility>
+
+#include "dynpos/core/angle.hpp"
+#include "dynpos/core/error.hpp"
+#include "sensor_logger.hpp"
+
+namespace dynpos::scenario {
+namespace {
+
+// The command channels, after the sensors (logger units).
+constexpr std::pair<const char*, const char*> kCommandChannels[] = {
+    {"command.surge", "%"},         {"command.sway", "%"},         {"command.yaw", "%"},
+    {"lever.surge", "%"},           {"lever.sway", "%"},           {"lever.yaw", "%"},
+    {"command.rpm.port", "rpm"},    {"command.rpm.stb", "rpm"},    {"command.rpm.tunnel", "rpm"},
+    {"command.thrust.port", "kN"},  {"command.thrust.stb", "kN"},  {"command.thrust.tunnel", "kN"},
+    {"command.rudder.port", "deg"}, {"command.rudder.stb", "deg"}, {"setpoint.north", "m"},
+    {"setpoint.east", "m"},         {"setpoint.heading", "deg"},
+};
+
+// A sensor rate or latency that does not fit the log's tick grid is bad input (the vessel file
+// together with the scenario's log rate).
+std::unique_ptr<detail::SensorLogger> sensor_logger(const ScenarioSpec& spec,
+                                                    const VesselConfig& vessel,
+                                                    const VesselPlant& plant, std::uint64_t seed) {
+  try {
+    return std::make_unique<detail::SensorLogger>(vessel, plant.propeller(), plant.tunnel(),
+                                                  spec.log_rate_hz, seed);
+  } catch (const std::invalid_argument& e) {
+    throw core::InputError(
+        {vessel.source.empty() ? spec.source : vessel.source, {}, {}, {}}, e.what(),
+        fmt::format("the log rate is {} Hz: give the sensor a rate that divides it and a "
+                    "latency of whole log periods, or change the log rate (--log-rate)",
+                    spec.log_rate_hz));
+  }
+}
+
+}  // namespace
+
+TrialLogger::TrialLogger(core::Log& log, const ScenarioSpec& spec, const VesselConfig& vessel,
+                         const VesselPlant& plant, std::uint64_t seed, const ControlTask& control)
+    : log_(log), control_(control), sensors_(sensor_logger(spec, vessel, plant, seed)) {
+  sensors_->declare(log_);
+  for (const auto& [name, unit] : kCommandChannels) log_.declare_channel(name, unit);
+  row_.resize(sensors_->channel_count() + std::size(kCommandChannels));
+}
+
+TrialLogger::~TrialLogger() = default;
+
+void TrialLogger::record(double t, const VesselSample& sample) {
+  const std::span<double> measured(row_);
+  sensors_->record(tick_++, sample, measured.first(sensors_->channel_count()));
+  std::size_t i = sensors_->channel_count();
+  const Eigen::Vector3d& demand_pct = control_.demand_pct();
+  const Eigen::Vector3d& lever_pct = control_.lever_pct();
+  const ActuatorCommands& cmd = control_.commands();
+  const Eigen::Vector3d& setpoint = control_.setpoint_n();
+  for (int k = 0; k < 3; ++k) row_[i++] = demand_pct[k];
+  for (int k = 0; k < 3; ++k) row_[i++] = lever_pct[k];
+  row_[i++] = cmd.n_port_rps * 60.0;
+  row_[i++] = cmd.n_stb_rps * 60.0;
+  row_[i++] = cmd.n_tunnel_rps * 60.0;
+  for (int j : {model::ThrustConfiguration::kThrustPort, model::ThrustConfiguration::kThrustStb,
+                model::ThrustConfiguration::kTunnel}) {
+    row_[i++] = control_.forces_N()[j] * 1e-3;
+  }
+  row_[i++] = core::rad_to_deg(cmd.rudder_port_rad);
+  row_[i++] = core::rad_to_deg(cmd.rudder_stb_rad);
+  row_[i++] = setpoint.x();
+  row_[i++] = setpoint.y();
+  row_[i++] =
+      control_.dp_active() ? core::rad_to_deg(core::wrap_2pi(setpoint.z())) : core::kMissing;
+  log_.append_row(t, row_);
+}
+
+}  // namespace dynpos::scenario
