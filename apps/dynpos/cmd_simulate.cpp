@@ -8,6 +8,7 @@
 
 #include "commands.hpp"
 #include "dynpos/analysis/data_dir.hpp"
+#include "dynpos/core/error.hpp"
 #include "dynpos/io/csv_writer.hpp"
 #include "dynpos/io/json_writer.hpp"
 #include "dynpos/scenario/campaign.hpp"
