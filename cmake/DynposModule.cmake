@@ -1,3 +1,5 @@
+include(GNUInstallDirs)
+
 # Warning and sanitizer flags shared by every dynpos target.
 add_library(dynpos_warnings INTERFACE)
 target_compile_options(dynpos_warnings INTERFACE -Wall -Wextra -Wpedantic
@@ -11,22 +13,35 @@ endif()
 # dynpos_add_module(NAME DEPS targets...)
 # One static library per module from src/NAME/*.cpp, public headers in include/dynpos/NAME.
 # A module links only to the modules it names, so a wrong include fails to build.
+# The library is installed and exported as dynpos::NAME (cmake/DynposInstall.cmake); its
+# private headers in src/NAME stay in the source tree.
 function(dynpos_add_module name)
   cmake_parse_arguments(ARG "" "" "DEPS" ${ARGN})
   file(GLOB sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/${name}/*.cpp)
+  set(headers $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include>
+    $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
   if(NOT sources)  # a header-only module
     add_library(dynpos_${name} INTERFACE)
-    target_include_directories(dynpos_${name} INTERFACE ${PROJECT_SOURCE_DIR}/include)
+    target_include_directories(dynpos_${name} INTERFACE ${headers})
     target_link_libraries(dynpos_${name} INTERFACE ${ARG_DEPS})
-    add_library(dynpos::${name} ALIAS dynpos_${name})
-    return()
+  else()
+    add_library(dynpos_${name} STATIC ${sources})
+    target_include_directories(dynpos_${name} PUBLIC ${headers}
+      PRIVATE ${PROJECT_SOURCE_DIR}/src/${name})
+    # The warning flags are the build's own business: a static library exports even its
+    # private links ($<LINK_ONLY:...>), so the installed package must not name this target.
+    target_link_libraries(dynpos_${name} PUBLIC ${ARG_DEPS}
+      PRIVATE $<BUILD_INTERFACE:dynpos_warnings>)
+    # Code compiled with the sanitizers needs their runtimes wherever it is linked.
+    if(DYNPOS_SANITIZE)
+      target_link_options(dynpos_${name} INTERFACE
+        $<INSTALL_INTERFACE:-fsanitize=address,undefined>)
+    endif()
   endif()
-  add_library(dynpos_${name} STATIC ${sources})
   add_library(dynpos::${name} ALIAS dynpos_${name})
-  target_include_directories(dynpos_${name}
-    PUBLIC $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include>
-    PRIVATE ${PROJECT_SOURCE_DIR}/src/${name})
-  target_link_libraries(dynpos_${name} PUBLIC ${ARG_DEPS} PRIVATE dynpos_warnings)
+  set_target_properties(dynpos_${name} PROPERTIES EXPORT_NAME ${name})
+  install(TARGETS dynpos_${name} EXPORT dynposTargets
+    ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 endfunction()
 
 # dynpos_add_test(NAME SOURCE LIBS...): one GoogleTest executable registered with CTest.
