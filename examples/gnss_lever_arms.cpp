@@ -40,14 +40,12 @@ void estimate() {
   }
   const calib::GnssArmResult result =
       calib::estimate_gnss_arms(motion.motion, calib::gnss_from_logs(sources));
-  if (!result.ok) throw std::runtime_error(result.message);
+  if (result.status != core::Status::kOk) throw std::runtime_error(result.message);
 
   fmt::print("{:6} {:>26} {:>26} {:>9}  determined (x, y, z)\n", "", "estimated arm x, y, z [m]",
              "true arm [m]", "error");
   for (const calib::ArmEstimate& arm : result.arms) {
-    const auto& truth = run.truth.at("lever_arms").at(arm.name);
-    const Eigen::Vector3d l_true(truth[0].get<double>(), truth[1].get<double>(),
-                                 truth[2].get<double>());
+    const Eigen::Vector3d& l_true = run.truth.lever_arms.at(arm.name);
     fmt::print(
         "{:6} {:8.3f} {:8.3f} {:8.3f}   {:8.3f} {:8.3f} {:8.3f} {:6.1f} mm  {}, {}, {}\n", arm.name,
         arm.l_b_m.x(), arm.l_b_m.y(), arm.l_b_m.z(), l_true.x(), l_true.y(), l_true.z(),

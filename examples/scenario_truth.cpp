@@ -33,23 +33,19 @@ void run() {
              run.log.channels().size(), run.truth_log.channels().size());
 
   // Lever arms in BODY (x forward, y starboard, z down) from the control origin [m].
-  for (const auto& [sensor, arm] : run.truth.at("lever_arms").items()) {
-    fmt::print("lever arm {:6} ({:7.3f}, {:7.3f}, {:7.3f}) m\n", sensor, arm[0].get<double>(),
-               arm[1].get<double>(), arm[2].get<double>());
+  for (const auto& [sensor, arm] : run.truth.lever_arms) {
+    fmt::print("lever arm {:6} ({:7.3f}, {:7.3f}, {:7.3f}) m\n", sensor, arm.x(), arm.y(), arm.z());
   }
 
   // Each step of each main propeller: the shaft speed and thrust responses as the model
   // defines them, first order plus dead time (thesis 2.29).
-  for (const auto& step : run.truth.at("propeller_steps")) {
-    const auto& shaft = step.at("shaft_speed");
-    const auto& thrust = step.at("thrust");
+  for (const scenario::PropellerStepTruth& step : run.truth.propeller_steps) {
     fmt::print(
         "propeller {:4} step at {:.1f} s, {:.0f} -> {:.0f} rpm: shaft speed T = {:.2f} s, "
         "delay = {:.2f} s; thrust T = {:.2f} s, delay = {:.2f} s\n",
-        step.at("thruster").get<std::string>(), step.at("t_s").get<double>(),
-        60.0 * step.at("n_from_rps").get<double>(), 60.0 * step.at("n_to_rps").get<double>(),
-        shaft.at("T_s").get<double>(), shaft.at("delay_s").get<double>(),
-        thrust.at("T_s").get<double>(), thrust.at("delay_s").get<double>());
+        step.thruster, step.t_s, 60.0 * step.n_from_rps, 60.0 * step.n_to_rps,
+        step.shaft_speed.time_constant, step.shaft_speed.dead_time, step.thrust.time_constant,
+        step.thrust.dead_time);
   }
 }
 
