@@ -4,7 +4,6 @@
 #include <fmt/core.h>
 
 #include <array>
-#include <fstream>
 #include <optional>
 #include <vector>
 
@@ -14,6 +13,7 @@
 #include "dynpos/analysis/four_corner.hpp"
 #include "dynpos/io/json_writer.hpp"
 #include "dynpos/report/table.hpp"
+#include "dynpos/scenario/trial_truth.hpp"
 
 namespace dynpos::analysis {
 namespace {
@@ -23,28 +23,22 @@ struct FourCornerTruth {
   /// The surveyed horizontal lever arm of GNSS antenna 1 (x, y) [m], when given.
   std::optional<std::array<double, 2>> gnss1_arm_m;
   /// The duration of each leg, t_reached − t_start of each setpoint but the hold, in order [s];
-  /// absent when truth.json has no setpoints.
+  /// absent without truth.json.
   std::optional<std::vector<double>> leg_durations_s;
 };
 
-// The one place the section reads truth.json (by key); a missing or unreadable file gives
-// nothing.
+// The one place the section reads truth.json; a missing file gives nothing.
 FourCornerTruth read_truth(const std::filesystem::path& truth_json) {
   FourCornerTruth truth;
-  std::ifstream file(truth_json);
-  const nlohmann::json t = nlohmann::json::parse(file, nullptr, false);
-  if (t.is_discarded()) return truth;
-  if (t.contains("lever_arms") && t["lever_arms"].contains("gnss1")) {
-    truth.gnss1_arm_m = std::array<double, 2>{t["lever_arms"]["gnss1"][0].get<double>(),
-                                              t["lever_arms"]["gnss1"][1].get<double>()};
+  if (!std::filesystem::exists(truth_json)) return truth;
+  const scenario::TrialTruth t = scenario::read_trial_truth(truth_json);
+  if (const auto arm = t.lever_arms.find("gnss1"); arm != t.lever_arms.end()) {
+    truth.gnss1_arm_m = std::array<double, 2>{arm->second.x(), arm->second.y()};
   }
-  if (t.contains("setpoints")) {
-    truth.leg_durations_s.emplace();
-    for (const auto& s : t["setpoints"]) {
-      if (s.contains("t_reached_s") && s["name"] != "hold") {
-        truth.leg_durations_s->push_back(s["t_reached_s"].get<double>() -
-                                         s["t_start_s"].get<double>());
-      }
+  truth.leg_durations_s.emplace();
+  for (const scenario::SetpointTruth& s : t.setpoints) {
+    if (s.t_reached_s && s.name != "hold") {
+      truth.leg_durations_s->push_back(*s.t_reached_s - s.t_start_s);
     }
   }
   return truth;

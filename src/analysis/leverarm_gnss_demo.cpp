@@ -4,12 +4,12 @@
 #include <fmt/core.h>
 
 #include <cmath>
-#include <fstream>
 
 #include "dynpos/analysis/demo_sections.hpp"
 #include "dynpos/analysis/json_fields.hpp"
 #include "dynpos/analysis/leverarm_gnss.hpp"
 #include "dynpos/io/json_writer.hpp"
+#include "dynpos/scenario/trial_truth.hpp"
 #include "gnss_antenna_name.hpp"
 
 namespace dynpos::analysis {
@@ -17,17 +17,12 @@ namespace {
 
 using Vec3 = Eigen::Vector3d;
 
-// The true antenna arms [m, BODY] of a trial's truth.json ("lever_arms": {"gnssK": [x, y, z]});
-// none when the file is missing or unreadable.
+// The true antenna arms [m, BODY] of a trial's truth.json; none when the file is missing.
 std::map<std::string, Vec3> true_gnss_arms(const std::filesystem::path& truth_file) {
   std::map<std::string, Vec3> truth;
   if (!std::filesystem::exists(truth_file)) return truth;
-  std::ifstream f(truth_file);
-  const nlohmann::json t = nlohmann::json::parse(f, nullptr, false);
-  if (t.is_object() && t.contains("lever_arms"))
-    for (const auto& [name, v] : t["lever_arms"].items())
-      if (v.is_array() && v.size() == 3 && is_gnss_antenna_name(name))
-        truth[name] = Vec3(v[0].get<double>(), v[1].get<double>(), v[2].get<double>());
+  for (const auto& [name, arm_b] : scenario::read_trial_truth(truth_file).lever_arms)
+    if (is_gnss_antenna_name(name)) truth[name] = arm_b;
   return truth;
 }
 

@@ -2,14 +2,13 @@
 
 #include <fmt/core.h>
 
-#include <fstream>
-
 #include "dynpos/analysis/demo_sections.hpp"
 #include "dynpos/analysis/json_fields.hpp"
 #include "dynpos/analysis/options.hpp"
 #include "dynpos/core/error.hpp"
 #include "dynpos/io/json_writer.hpp"
 #include "dynpos/report/svg_plot.hpp"
+#include "dynpos/scenario/trial_truth.hpp"
 
 namespace dynpos::analysis {
 namespace {
@@ -249,22 +248,12 @@ std::vector<std::filesystem::path> write_figures(const LeverarmMruReport& report
 
 namespace {
 
-// The true MRU arms [m, BODY] of a trial's truth.json ("lever_arms": {"mruK": [x, y, z] or
-// {"x_m", "y_m", "z_m"}}); none when the file is missing or unreadable.
+// The true MRU arms [m, BODY] of a trial's truth.json; none when the file is missing.
 std::map<std::string, Vec3> true_mru_arms(const std::filesystem::path& truth_json) {
   std::map<std::string, Vec3> out;
   if (!std::filesystem::exists(truth_json)) return out;
-  std::ifstream in(truth_json);
-  const nlohmann::json doc = nlohmann::json::parse(in, nullptr, false);
-  if (doc.is_discarded() || !doc.contains("lever_arms")) return out;
-  for (const auto& [name, v] : doc["lever_arms"].items()) {
-    if (name.rfind("mru", 0) != 0) continue;
-    if (v.is_array() && v.size() == 3) {
-      out[name] = {v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
-    } else if (v.is_object() && v.contains("x_m")) {
-      out[name] = {v["x_m"].get<double>(), v["y_m"].get<double>(), v["z_m"].get<double>()};
-    }
-  }
+  for (const auto& [name, arm_b] : scenario::read_trial_truth(truth_json).lever_arms)
+    if (name.rfind("mru", 0) == 0) out[name] = arm_b;
   return out;
 }
 

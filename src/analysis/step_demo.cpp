@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,6 +22,7 @@
 #include "dynpos/io/json_writer.hpp"
 #include "dynpos/report/svg_plot.hpp"
 #include "dynpos/report/table.hpp"
+#include "dynpos/scenario/trial_truth.hpp"
 
 namespace dynpos::analysis {
 namespace {
@@ -76,36 +76,34 @@ struct TruthStep {
   std::optional<double> T_s, delay_s;
 };
 
+// A time constant of truth.json as an optional: null (NaN) is missing.
+std::optional<double> known(double v) {
+  return std::isnan(v) ? std::nullopt : std::optional<double>(v);
+}
+
 // The truth of `quantity` ("shaft_speed" or "thrust": truth.json's propeller_steps; "nomoto":
 // its rudder_steps) for every step of the run in `run_dir`; none without truth.json or for the
-// quantity "". The one place the demo reads truth.json, by its keys.
+// quantity "". The one place the demo reads truth.json.
 std::vector<TruthStep> read_truth_steps(const std::filesystem::path& run_dir,
                                         const std::string& quantity) {
-  nlohmann::json truth;
-  if (std::ifstream in(run_dir / "truth.json"); in) truth = nlohmann::json::parse(in);
-  const bool rudder = quantity == "nomoto";
-  const char* list = rudder ? "rudder_steps" : "propeller_steps";
   std::vector<TruthStep> out;
-  if (quantity.empty() || !truth.is_object() || !truth.contains(list)) return out;
-  const auto number = [](const nlohmann::json& j, const char* key) {
-    return j.is_object() && j.contains(key) && j.at(key).is_number()
-               ? std::optional<double>(j.at(key).get<double>())
-               : std::nullopt;
-  };
-  for (const nlohmann::json& s : truth.at(list)) {
-    TruthStep step;
-    step.t_s = number(s, "t_s").value_or(step.t_s);
-    if (s.contains("thruster") && s.at("thruster").is_string())
-      step.thruster = s.at("thruster").get<std::string>();
-    if (rudder) {
-      // Nomoto's first-order yaw-rate time constant T_r; the dead time of the yaw-rate response
-      // has no single truth (servo + hull), so it stays missing.
-      if (s.contains("nomoto")) step.T_s = number(s.at("nomoto"), "Tr_s");
-    } else if (s.contains(quantity)) {
-      step.T_s = number(s.at(quantity), "T_s");
-      step.delay_s = number(s.at(quantity), "delay_s");
+  const std::filesystem::path file = run_dir / "truth.json";
+  if (quantity.empty() || !std::filesystem::exists(file)) return out;
+  const scenario::TrialTruth truth = scenario::read_trial_truth(file);
+  if (quantity == "nomoto") {
+    // Nomoto's first-order yaw-rate time constant T_r; the dead time of the yaw-rate response
+    // has no single truth (servo + hull), so it stays missing.
+    for (const scenario::RudderStepTruth& s : truth.rudder_steps) {
+      TruthStep step;
+      step.t_s = s.t_s;
+      if (s.nomoto) step.T_s = known(s.nomoto->Tr_s);
+      out.push_back(std::move(step));
     }
-    out.push_back(std::move(step));
+    return out;
+  }
+  for (const scenario::PropellerStepTruth& s : truth.propeller_steps) {
+    const model::FopdtTruth& f = quantity == "thrust" ? s.thrust : s.shaft_speed;
+    out.push_back({s.t_s, s.thruster, known(f.time_constant), known(f.dead_time)});
   }
   return out;
 }

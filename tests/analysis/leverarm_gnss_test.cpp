@@ -36,10 +36,8 @@ class LeverarmGnss : public ::testing::Test {
     const scenario::ScenarioRun run = scenario::run_scenario(spec, vessel, 3);
     scenario::write_scenario_run(run, trial());
     start_utc_ = run.start_utc;
-    for (const char* name : {"gnss1", "gnss2", "gnss3"}) {
-      const auto& v = run.truth.at("lever_arms").at(name);
-      truth_[name] = {v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
-    }
+    for (const char* name : {"gnss1", "gnss2", "gnss3"})
+      truth_[name] = run.truth.lever_arms.at(name);
   }
   static std::filesystem::path trial() { return dir_ / "turning-circle"; }
 

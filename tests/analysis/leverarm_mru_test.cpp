@@ -34,10 +34,7 @@ class LeverarmMru : public ::testing::Test {
         scenario::load_vessel_config(kSource / "data" / "vessels" / "gunnerus.toml");
     const scenario::ScenarioRun run = scenario::run_scenario(spec, vessel, 1);
     scenario::write_scenario_run(run, trial());
-    for (const char* name : {"mru1", "mru2"}) {
-      const auto& v = run.truth.at("lever_arms").at(name);
-      truth_[name] = {v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
-    }
+    for (const char* name : {"mru1", "mru2"}) truth_[name] = run.truth.lever_arms.at(name);
   }
   static std::filesystem::path trial() { return dir_ / "turning-circle"; }
 
