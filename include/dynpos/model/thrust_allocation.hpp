@@ -63,6 +63,7 @@
 
 #include <Eigen/Core>
 
+#include "dynpos/model/allocation_bounds.hpp"
 #include "dynpos/model/rudder.hpp"
 #include "dynpos/model/thrust_configuration.hpp"
 #include "dynpos/model/thruster.hpp"
@@ -168,9 +169,8 @@ class ThrustAllocator {
   const ThrustAllocationOptions& options() const noexcept { return options_; }
 
  private:
-  // Sign region of the main propellers' thrusts (T₁, T₂): 0 either sign, +1 ahead (T ≥ 0),
-  // −1 astern (T ≤ 0). Within one region the rudder cones are convex (file comment).
-  using SignRegion = std::array<int, 2>;
+  // Sign region of the main propellers' thrusts (allocation_bounds.hpp).
+  using SignRegion = ThrustSignRegion;
   // One allocation with the rudder-drag fixed point; `hold` applies input.hold_forces.
   ThrustAllocationResult allocate_with_drag(const ThrustAllocationInput& input, SignRegion region,
                                             bool hold) const;
@@ -186,6 +186,10 @@ class ThrustAllocator {
   Eigen::Vector3d normalised_unmet(const ThrustAllocationResult& r) const;
   // Marks r saturated, with a message, when τ_unmet is not within the tolerance of "met".
   void set_met_status(ThrustAllocationResult& r) const;
+  // The rudder cone at surge speed u [m/s] from the rudder model's linear lift.
+  RudderCone rudder_cone(double surge_speed) const noexcept;
+  // Shaft speed, rudder angle and tunnel commands for the forces of r at surge speed u [m/s].
+  void set_commands(ThrustAllocationResult& r, double surge_speed) const;
 
   Thruster propeller_;
   Rudder rudder_;
