@@ -1,14 +1,15 @@
 #pragma once
 /// \file
 /// GnssReceiver: a GNSS antenna at lever arm l_b, reporting geodetic latitude, longitude and
-/// ellipsoidal height (WGS84, through GeographicLib) and the same position in a local NED frame
-/// about a fixed geodetic origin, with white noise and a slowly varying (multipath-like) bias.
+/// ellipsoidal height (WGS84, through core::LocalNedFrame) and the same position in a local NED
+/// frame about a fixed geodetic origin, with white noise and a slowly varying (multipath-like)
+/// bias.
 
 #include <Eigen/Core>
-#include <GeographicLib/LocalCartesian.hpp>
 #include <array>
 #include <string>
 
+#include "dynpos/core/local_ned_frame.hpp"
 #include "dynpos/sensors/rigid_body_motion.hpp"
 #include "dynpos/sensors/sensor_timing.hpp"
 #include "dynpos/sim/noise.hpp"
@@ -57,7 +58,7 @@ class GnssReceiver {
 
  private:
   GnssParams params_;
-  GeographicLib::LocalCartesian enu_;  // GeographicLib's local frame is ENU
+  core::LocalNedFrame frame_;
   std::array<sim::WhiteNoise, 3> noise_;
   std::array<sim::GaussMarkov, 3> bias_;
 };
