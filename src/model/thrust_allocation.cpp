@@ -13,32 +13,44 @@
 
 namespace dynpos::model {
 
-using detail::require;
 using Vector5d = Eigen::Matrix<double, 5, 1>;
 
-void ThrustAllocationOptions::validate() const {
-  constexpr const char* o = "ThrustAllocationOptions";
-  for (int i = 0; i < 5; ++i) {
-    require(weights[i] > 0.0 && std::isfinite(weights[i]), o, "weights", weights[i],
-            "finite and > 0");
-    require(rate_limits[i] > 0.0 && std::isfinite(rate_limits[i]), o, "rate_limits", rate_limits[i],
-            "finite and > 0 N/s");
-  }
-  for (int i = 0; i < 3; ++i) {
-    require(priority[i] > 0.0 && std::isfinite(priority[i]), o, "priority", priority[i],
-            "finite and > 0");
-  }
-  require(force_scale > 0.0 && std::isfinite(force_scale), o, "force_scale", force_scale,
-          "finite and > 0 N");
-  require(moment_scale > 0.0 && std::isfinite(moment_scale), o, "moment_scale", moment_scale,
-          "finite and > 0 N*m");
-  require(detail::open_range(max_rudder_angle, 0.0, detail::kPi / 2), o, "max_rudder_angle",
-          max_rudder_angle, "in (0, pi/2) rad");
-  require(detail::closed_range(rudder_drag_compensation, 0.0, 1.0), o, "rudder_drag_compensation",
-          rudder_drag_compensation, "in [0, 1]");
-  require(hold_weight >= 0.0 && std::isfinite(hold_weight), o, "hold_weight", hold_weight,
-          "finite and >= 0");
+namespace {
+
+constexpr double kDegToRad = detail::kPi / 180.0;
+
+// The [allocation] table: every option with its range (core/param_range.hpp).
+template <typename P>
+std::vector<core::BasicParamField<core::ParamValue<P>>> fields(P& p) {
+  return {
+      {{"weight_thrust_port", "1", 1e-6, 1e6}, &p.weights[0]},
+      {{"weight_thrust_stb", "1", 1e-6, 1e6}, &p.weights[1]},
+      {{"weight_rudder_port", "1", 1e-6, 1e6}, &p.weights[2]},
+      {{"weight_rudder_stb", "1", 1e-6, 1e6}, &p.weights[3]},
+      {{"weight_tunnel", "1", 1e-6, 1e6}, &p.weights[4]},
+      {{"priority_surge", "1", 1e-6, 1e6}, &p.priority[0]},
+      {{"priority_sway", "1", 1e-6, 1e6}, &p.priority[1]},
+      {{"priority_yaw", "1", 1e-6, 1e6}, &p.priority[2]},
+      {{"force_scale_N", "N", 1, 1e9}, &p.force_scale},
+      {{"moment_scale_Nm", "N·m", 1, 1e10}, &p.moment_scale},
+      {{"max_rudder_angle_deg", "deg", 1, 60, false, false, kDegToRad}, &p.max_rudder_angle},
+      {{"rate_thrust_port_N_per_s", "N/s", 1, 1e8}, &p.rate_limits[0]},
+      {{"rate_thrust_stb_N_per_s", "N/s", 1, 1e8}, &p.rate_limits[1]},
+      {{"rate_rudder_port_N_per_s", "N/s", 1, 1e8}, &p.rate_limits[2]},
+      {{"rate_rudder_stb_N_per_s", "N/s", 1, 1e8}, &p.rate_limits[3]},
+      {{"rate_tunnel_N_per_s", "N/s", 1, 1e8}, &p.rate_limits[4]},
+      {{"rudder_drag_compensation", "1", 0, 1}, &p.rudder_drag_compensation},
+      {{"hold_weight", "1", 0, 1e3}, &p.hold_weight},
+  };
 }
+
+}  // namespace
+
+std::vector<core::ParamField> param_fields(ThrustAllocationOptions& options) {
+  return fields(options);
+}
+
+void ThrustAllocationOptions::validate() const { core::check_ranges("allocation", fields(*this)); }
 
 ThrustAllocator::ThrustAllocator(const Thruster& propeller, const Rudder& rudder,
                                  const TunnelThruster& tunnel,

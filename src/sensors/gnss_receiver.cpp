@@ -1,27 +1,16 @@
 #include "dynpos/sensors/gnss_receiver.hpp"
 
 #include <cmath>
-#include <stdexcept>
+
+#include "param_tables.hpp"
 
 namespace dynpos::sensors {
 
 void GeodeticOrigin::validate() const {
-  if (!(std::abs(lat_deg) <= 90.0 && std::abs(lon_deg) <= 180.0 && std::isfinite(height_m))) {
-    throw std::invalid_argument("GeodeticOrigin: latitude in [-90, 90], longitude in [-180, 180]");
-  }
+  core::check_ranges("sensors", detail::origin_fields(*this));
 }
 
-void GnssParams::validate() const {
-  timing.validate(name.c_str());
-  if (!lever_arm_b.allFinite()) throw std::invalid_argument(name + ": lever arm must be finite");
-  const auto nonneg = [](double v) { return std::isfinite(v) && v >= 0.0; };
-  if (!nonneg(horizontal_std_m) || !nonneg(vertical_std_m) || !nonneg(bias_std_m)) {
-    throw std::invalid_argument(name + ": noise and bias std must be ≥ 0");
-  }
-  if (!(bias_time_constant_s > 0.0)) {
-    throw std::invalid_argument(name + ": bias time constant must be > 0");
-  }
-}
+void GnssParams::validate() const { core::check_ranges(name, detail::gnss_fields(*this)); }
 
 namespace {
 

@@ -22,6 +22,8 @@ struct GeodeticOrigin {
   double lat_deg = 63.4400;  ///< Source: reasoned — Trondheimsfjord, Gunnerus' home waters.
   double lon_deg = 10.3500;  ///< [deg east]
   double height_m = 39.5;    ///< ellipsoidal height of mean sea level there (geoid ≈ 39.5 m)
+  /// Throws core::InputError naming the first value outside its range (the vessel file's
+  /// [sensors] origin_* keys, sensor_suite.hpp).
   void validate() const;
 };
 
@@ -33,6 +35,8 @@ struct GnssParams {
   double vertical_std_m = 0.02;         ///< white noise, vertical [m]; RTK 2–4 cm
   double bias_std_m = 0.0;              ///< stationary σ of a Gauss–Markov bias per axis [m]
   double bias_time_constant_s = 600.0;  ///< its correlation time [s]
+  /// Throws core::InputError naming NAME.KEY for the first value outside its range (the vessel
+  /// file's [gnssK] keys, sensor_suite.hpp).
   void validate() const;
 };
 
