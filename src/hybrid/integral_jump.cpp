@@ -2,26 +2,32 @@
 
 #include <Eigen/LU>
 #include <cmath>
-#include <stdexcept>
 
 #include "dynpos/core/rotation.hpp"
 
 namespace dynpos::hybrid {
 
-void IntegralJumpParams::validate() const {
-  if (!(lambda.allFinite() && (lambda.array() > 0.0).all())) {
-    throw std::invalid_argument("IntegralJumpParams.lambda: each λ must be finite and > 0");
-  }
-  if (!(epsilon1 > 0.0) || !(epsilon2 > 0.0)) {
-    throw std::invalid_argument("IntegralJumpParams: epsilon1 and epsilon2 must be > 0");
-  }
-  if (!(std::isfinite(sigma) && sigma >= 0.0)) {
-    throw std::invalid_argument("IntegralJumpParams.sigma must be ≥ 0");
-  }
-  if (!(dwell_s > 0.0 && std::isfinite(dwell_s))) {
-    throw std::invalid_argument("IntegralJumpParams.dwell_s must be > 0");
-  }
+namespace {
+
+// The scenario file's [hybrid] table (core/param_range.hpp).
+template <typename P>
+std::vector<core::BasicParamField<core::ParamValue<P>>> fields(P& p) {
+  return {
+      {{"lambda_surge_Ns_m", "N·s/m", 1e-6, 1e12}, &p.lambda.x()},
+      {{"lambda_sway_Ns_m", "N·s/m", 1e-6, 1e12}, &p.lambda.y()},
+      {{"lambda_yaw_Nms_rad", "N·m·s/rad", 1e-6, 1e14}, &p.lambda.z()},
+      {{"epsilon1", "1", 1e-9, 1e3}, &p.epsilon1},
+      {{"epsilon2", "1", 1e-9, 1e3}, &p.epsilon2},
+      {{"sigma", "1", 0, 1e6}, &p.sigma},
+      {{"dwell_s", "s", 1e-3, 1e4}, &p.dwell_s},
+  };
 }
+
+}  // namespace
+
+std::vector<core::ParamField> param_fields(IntegralJumpParams& params) { return fields(params); }
+
+void IntegralJumpParams::validate() const { core::check_ranges("hybrid", fields(*this)); }
 
 Eigen::Vector3d jump_direction(const Eigen::Vector3d& x2_b, double psi_rad) {
   return core::R_yaw(psi_rad) * x2_b;

@@ -190,6 +190,129 @@ void add_common_warnings(const FopdtFitOptions& options, const detail::StepRespo
   }
 }
 
+// Smith's two-point method (3.8)–(3.9) from the 28.3 % and 63.2 % crossing times.
+void smith_fit(const detail::StepResponse& r, const Step& step, const FopdtFitOptions& options,
+               std::optional<double> t28, std::optional<double> t63, FopdtFitResult& result) {
+  if (!t28 || !t63 || !(*t63 > *t28)) {
+    result.status = FitStatus::kFailed;
+    result.message = "the response does not cross 28.3 % and 63.2 % of Δy in order";
+    return;
+  }
+  const std::optional<double> du = step.delta_u();
+  const double tc = 1.5 * (*t63 - *t28);  // (3.8)
+  const double dead = *t63 - tc;          // (3.9)
+  result.y0 = Estimate{r.y0, {}};
+  result.amplitude = Estimate{r.delta_y, {}};
+  if (du) result.gain = Estimate{r.delta_y / *du, {}};
+  result.time_constant = Estimate{tc, {}};
+  result.dead_time = Estimate{dead, {}};
+  const FopdtModel model{step.t_step, r.y0, r.delta_y, tc, dead};
+  const detail::FitQuality q = detail::fit_quality(r, model);
+  result.r_squared = q.r_squared;
+  result.rms_residual = q.rms;
+  if (dead < 0.0) {
+    result.warnings.push_back(
+        {WarningCode::kDeadTimeAtBound,
+         "negative dead time " + fmt(dead) + " s: the response starts before the step time"});
+  }
+  add_common_warnings(options, r, tc, std::max(dead, 0.0), q.r_squared, result.warnings);
+  result.status = FitStatus::kOk;
+  result.message = "Smith two-point fit";
+}
+
+// Limits of the least squares: the sampling period sets the smallest resolvable time
+// constant, the window the largest; δ is held at a fixed dead time if one is given.
+Bounds lsq_bounds(const detail::StepResponse& r, const FopdtFitOptions& options) {
+  Bounds bounds;
+  bounds.t_min = std::max(1e-9 * r.tau_end, 1e-12);
+  bounds.t_max = 100.0 * r.tau_end;
+  bounds.delta_free = !options.fixed_dead_time_s.has_value();
+  bounds.delta_max = options.fixed_dead_time_s ? *options.fixed_dead_time_s
+                                               : options.max_dead_time_s.value_or(0.8 * r.tau_end);
+  return bounds;
+}
+
+// Starting points (T, δ) of the least squares, from Smith's times where the data give them.
+std::vector<std::array<double, 2>> lsq_starts(const detail::StepResponse& r,
+                                              std::optional<double> t28,
+                                              std::optional<double> t63) {
+  std::vector<std::array<double, 2>> starts;
+  if (t28 && t63 && *t63 > *t28) {
+    const double tc = 1.5 * (*t63 - *t28);
+    starts.push_back({tc, *t63 - tc});
+    starts.push_back({*t63, 0.0});
+    starts.push_back({0.5 * tc, *t63 - 0.5 * tc});
+  } else if (t63) {
+    starts.push_back({std::max(*t63, 0.05 * r.tau_end), 0.0});
+  } else {
+    starts.push_back({0.2 * r.tau_end, 0.0});
+  }
+  return starts;
+}
+
+// Standard deviations of the free parameters from the covariance σ²(JᵀJ)⁻¹ at p,
+// σ² = SSE/(N − p); NaN where it is not defined (δ when held, a singular JᵀJ, no dof).
+Vec4 parameter_sigmas(const detail::StepResponse& r, const Vec4& p, const Bounds& bounds) {
+  Mat4 jtj;
+  Vec4 jtr;
+  double sse = 0.0;
+  normal_equations(r, p, jtj, jtr, sse);
+  const int n_par = bounds.delta_free ? 4 : 3;
+  const double dof = static_cast<double>(r.y.size()) - n_par;
+  const double s2 = dof > 0.0 ? sse / dof : std::numeric_limits<double>::quiet_NaN();
+  Vec4 sigma = Vec4::Constant(std::numeric_limits<double>::quiet_NaN());
+  const Eigen::MatrixXd info = jtj.topLeftCorner(n_par, n_par);
+  const Eigen::FullPivLU<Eigen::MatrixXd> lu(info);
+  if (lu.isInvertible()) {
+    const Eigen::MatrixXd cov = s2 * lu.inverse();
+    for (int k = 0; k < n_par; ++k) sigma(k) = std::sqrt(std::max(cov(k, k), 0.0));
+  }
+  return sigma;
+}
+
+// The estimates, fit quality, warnings and status of the best least-squares run.
+void set_lsq_result(const detail::StepResponse& r, const Step& step, const FopdtFitOptions& options,
+                    const Bounds& bounds, const LmRun& best, FopdtFitResult& result) {
+  const Vec4 sigma = parameter_sigmas(r, best.p, bounds);
+  const auto opt_sigma = [](double s) -> std::optional<double> {
+    if (std::isfinite(s)) return s;
+    return std::nullopt;
+  };
+  result.y0 = Estimate{best.p(0), opt_sigma(sigma(0))};
+  result.amplitude = Estimate{best.p(1), opt_sigma(sigma(1))};
+  result.time_constant = Estimate{best.p(2), opt_sigma(sigma(2))};
+  result.dead_time = Estimate{best.p(3), bounds.delta_free ? opt_sigma(sigma(3)) : std::nullopt};
+  if (const std::optional<double> du = step.delta_u()) {
+    result.gain = Estimate{best.p(1) / *du,
+                           result.amplitude->sigma
+                               ? std::optional<double>(*result.amplitude->sigma / std::abs(*du))
+                               : std::nullopt};
+  }
+  const FopdtModel model{step.t_step, best.p(0), best.p(1), best.p(2), best.p(3)};
+  const detail::FitQuality q = detail::fit_quality(r, model);
+  result.r_squared = q.r_squared;
+  result.rms_residual = q.rms;
+  result.iterations = best.iterations;
+  if (bounds.delta_free) {
+    const double tol = 1e-9 * r.tau_end;
+    if (best.p(3) <= tol || best.p(3) >= bounds.delta_max - tol) {
+      result.warnings.push_back({WarningCode::kDeadTimeAtBound, "dead time " + fmt(best.p(3)) +
+                                                                    " s is at its limit [0, " +
+                                                                    fmt(bounds.delta_max) + "] s"});
+    }
+  }
+  add_common_warnings(options, r, best.p(2), best.p(3), q.r_squared, result.warnings);
+  if (best.converged) {
+    result.status = FitStatus::kOk;
+    result.message =
+        "least-squares fit converged in " + std::to_string(best.iterations) + " iterations";
+  } else {
+    result.status = FitStatus::kNotConverged;
+    result.message = "least squares did not converge in " + std::to_string(options.max_iterations) +
+                     " iterations";
+  }
+}
+
 }  // namespace
 
 FopdtFitResult fit_fopdt(std::span<const double> t, std::span<const double> y, const Step& step,
@@ -219,61 +342,19 @@ FopdtFitResult fit_fopdt(std::span<const double> t, std::span<const double> y, c
   // Smith's two-point method (3.8)–(3.9) on the data; also the least-squares start.
   const std::optional<double> t28 = detail::crossing_time(r, 1.0 - std::exp(-1.0 / 3.0));
   const std::optional<double> t63 = detail::crossing_time(r, 1.0 - std::exp(-1.0));
-
   if (options.method == FopdtMethod::kSmith) {
-    if (!t28 || !t63 || !(*t63 > *t28)) {
-      result.status = FitStatus::kFailed;
-      result.message = "the response does not cross 28.3 % and 63.2 % of Δy in order";
-      return result;
-    }
-    const double tc = 1.5 * (*t63 - *t28);  // (3.8)
-    const double dead = *t63 - tc;          // (3.9)
-    result.y0 = Estimate{r.y0, {}};
-    result.amplitude = Estimate{r.delta_y, {}};
-    if (du) result.gain = Estimate{r.delta_y / *du, {}};
-    result.time_constant = Estimate{tc, {}};
-    result.dead_time = Estimate{dead, {}};
-    const FopdtModel model{step.t_step, r.y0, r.delta_y, tc, dead};
-    const detail::FitQuality q = detail::fit_quality(r, model);
-    result.r_squared = q.r_squared;
-    result.rms_residual = q.rms;
-    if (dead < 0.0) {
-      result.warnings.push_back(
-          {WarningCode::kDeadTimeAtBound,
-           "negative dead time " + fmt(dead) + " s: the response starts before the step time"});
-    }
-    add_common_warnings(options, r, tc, std::max(dead, 0.0), q.r_squared, result.warnings);
-    result.status = FitStatus::kOk;
-    result.message = "Smith two-point fit";
+    smith_fit(r, step, options, t28, t63, result);
     return result;
   }
 
-  Bounds bounds;
-  // Sampling period sets the smallest resolvable time constant; the window the largest.
-  bounds.t_min = std::max(1e-9 * r.tau_end, 1e-12);
-  bounds.t_max = 100.0 * r.tau_end;
-  bounds.delta_free = !options.fixed_dead_time_s.has_value();
-  bounds.delta_max = options.fixed_dead_time_s ? *options.fixed_dead_time_s
-                                               : options.max_dead_time_s.value_or(0.8 * r.tau_end);
-
-  std::vector<std::array<double, 2>> starts;  // (T, δ)
-  if (t28 && t63 && *t63 > *t28) {
-    const double tc = 1.5 * (*t63 - *t28);
-    starts.push_back({tc, *t63 - tc});
-    starts.push_back({*t63, 0.0});
-    starts.push_back({0.5 * tc, *t63 - 0.5 * tc});
-  } else if (t63) {
-    starts.push_back({std::max(*t63, 0.05 * r.tau_end), 0.0});
-  } else {
-    starts.push_back({0.2 * r.tau_end, 0.0});
-  }
+  const Bounds bounds = lsq_bounds(r, options);
   LmRun best;
   best.sse = std::numeric_limits<double>::infinity();
   // The starts guard against a local minimum in δ. A converged fit whose residual is already
   // at the noise level (rms ≤ 1.5·σ̂, or 1e-4·|Δy| on clean data) leaves nothing for another
   // start to find, so the remaining starts are skipped.
   const double good_rms = std::max(1.5 * r.noise_sigma, 1e-4 * std::abs(r.delta_y));
-  for (const auto& s : starts) {
+  for (const auto& s : lsq_starts(r, t28, t63)) {
     Vec4 p0(r.y0, r.delta_y, std::max(s[0], bounds.t_min),
             bounds.delta_free ? std::max(s[1], 0.0) : bounds.delta_max);
     const LmRun run = levenberg_marquardt(r, p0, bounds, options.max_iterations);
@@ -285,61 +366,7 @@ FopdtFitResult fit_fopdt(std::span<const double> t, std::span<const double> y, c
     result.message = "least squares failed: the residuals are not finite";
     return result;
   }
-
-  // Covariance σ²(JᵀJ)⁻¹ at the optimum, σ² = SSE/(N − p).
-  Mat4 jtj;
-  Vec4 jtr;
-  double sse = 0.0;
-  normal_equations(r, best.p, jtj, jtr, sse);
-  const int n_par = bounds.delta_free ? 4 : 3;
-  const double dof = static_cast<double>(r.y.size()) - n_par;
-  const double s2 = dof > 0.0 ? sse / dof : std::numeric_limits<double>::quiet_NaN();
-  Vec4 sigma = Vec4::Constant(std::numeric_limits<double>::quiet_NaN());
-  {
-    const Eigen::MatrixXd info = jtj.topLeftCorner(n_par, n_par);
-    const Eigen::FullPivLU<Eigen::MatrixXd> lu(info);
-    if (lu.isInvertible()) {
-      const Eigen::MatrixXd cov = s2 * lu.inverse();
-      for (int k = 0; k < n_par; ++k) sigma(k) = std::sqrt(std::max(cov(k, k), 0.0));
-    }
-  }
-  const auto opt_sigma = [](double s) -> std::optional<double> {
-    if (std::isfinite(s)) return s;
-    return std::nullopt;
-  };
-  result.y0 = Estimate{best.p(0), opt_sigma(sigma(0))};
-  result.amplitude = Estimate{best.p(1), opt_sigma(sigma(1))};
-  result.time_constant = Estimate{best.p(2), opt_sigma(sigma(2))};
-  result.dead_time = Estimate{best.p(3), bounds.delta_free ? opt_sigma(sigma(3)) : std::nullopt};
-  if (du) {
-    result.gain = Estimate{best.p(1) / *du,
-                           result.amplitude->sigma
-                               ? std::optional<double>(*result.amplitude->sigma / std::abs(*du))
-                               : std::nullopt};
-  }
-  const FopdtModel model{step.t_step, best.p(0), best.p(1), best.p(2), best.p(3)};
-  const detail::FitQuality q = detail::fit_quality(r, model);
-  result.r_squared = q.r_squared;
-  result.rms_residual = q.rms;
-  result.iterations = best.iterations;
-  if (bounds.delta_free) {
-    const double tol = 1e-9 * r.tau_end;
-    if (best.p(3) <= tol || best.p(3) >= bounds.delta_max - tol) {
-      result.warnings.push_back({WarningCode::kDeadTimeAtBound, "dead time " + fmt(best.p(3)) +
-                                                                    " s is at its limit [0, " +
-                                                                    fmt(bounds.delta_max) + "] s"});
-    }
-  }
-  add_common_warnings(options, r, best.p(2), best.p(3), q.r_squared, result.warnings);
-  if (best.converged) {
-    result.status = FitStatus::kOk;
-    result.message =
-        "least-squares fit converged in " + std::to_string(best.iterations) + " iterations";
-  } else {
-    result.status = FitStatus::kNotConverged;
-    result.message = "least squares did not converge in " + std::to_string(options.max_iterations) +
-                     " iterations";
-  }
+  set_lsq_result(r, step, options, bounds, best, result);
   return result;
 }
 

@@ -1,11 +1,11 @@
 #include "dynpos/ident/local_position.hpp"
 
-#include <GeographicLib/LocalCartesian.hpp>
 #include <cmath>
 #include <numbers>
 #include <optional>
 
 #include "dynpos/core/error.hpp"
+#include "dynpos/core/local_ned_frame.hpp"
 
 namespace dynpos::ident {
 
@@ -18,7 +18,7 @@ LocalPositions local_north_east(const std::vector<double>& lat_rad,
   LocalPositions out;
   out.north_m.assign(lat_rad.size(), std::nan(""));
   out.east_m.assign(lat_rad.size(), std::nan(""));
-  std::optional<GeographicLib::LocalCartesian> plane;
+  std::optional<core::LocalNedFrame> plane;
   for (std::size_t i = 0; i < lat_rad.size(); ++i) {
     if (std::isnan(lat_rad[i]) || std::isnan(lon_rad[i])) continue;
     if (std::abs(lat_rad[i]) > std::numbers::pi / 2.0) {
@@ -26,11 +26,11 @@ LocalPositions local_north_east(const std::vector<double>& lat_rad,
                              "latitude " + std::to_string(lat_rad[i] * kDeg) + "° is outside ±90°",
                              "check the unit of lat (deg or rad) with --unit lat=deg");
     }
-    if (!plane) plane.emplace(lat_rad[i] * kDeg, lon_rad[i] * kDeg, 0.0);
-    double east = 0.0, north = 0.0, up = 0.0;
-    plane->Forward(lat_rad[i] * kDeg, lon_rad[i] * kDeg, 0.0, east, north, up);
-    out.north_m[i] = north;
-    out.east_m[i] = east;
+    const core::GeodeticPoint fix{lat_rad[i] * kDeg, lon_rad[i] * kDeg, 0.0};
+    if (!plane) plane.emplace(fix);
+    const Eigen::Vector3d p_n = plane->to_ned(fix);
+    out.north_m[i] = p_n.x();
+    out.east_m[i] = p_n.y();
   }
   return out;
 }

@@ -1,22 +1,73 @@
 #include "dynpos/model/environment.hpp"
 
 #include <cmath>
-#include <stdexcept>
+
+#include "dynpos/core/error.hpp"
 
 namespace dynpos::model {
 namespace {
 
+constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
+
 void require(bool ok, const char* what) {
-  if (!ok) throw std::invalid_argument(what);
+  if (!ok) throw core::InputError({}, what);
+}
+
+// The vessel file's [current], [wind] and [bias] tables (core/param_range.hpp).
+template <typename P>
+std::vector<core::BasicParamField<core::ParamValue<P>>> current_fields(P& p) {
+  return {
+      {{"speed_std_mps", "m/s", 0, 1}, &p.speed_std_mps},
+      {{"dir_std_deg", "deg", 0, 90, false, false, kDegToRad}, &p.dir_std_rad},
+      {{"time_constant_s", "s", 1, 1e6}, &p.time_constant_s},
+  };
+}
+
+template <typename P>
+std::vector<core::BasicParamField<core::ParamValue<P>>> wind_fields(P& p) {
+  return {
+      {{"gust_std_fraction", "1", 0, 0.99}, &p.gust_std_fraction},
+      {{"gust_time_constant_s", "s", 0.01, 1e4}, &p.gust_time_constant_s},
+      {{"dir_std_deg", "deg", 0, 90, false, false, kDegToRad}, &p.dir_std_rad},
+      {{"frontal_area_m2", "m²", 0.1, 1e5}, &p.frontal_area_m2},
+      {{"lateral_area_m2", "m²", 0.1, 1e5}, &p.lateral_area_m2},
+      {{"length_m", "m", 1, 500}, &p.length_m},
+      {{"cx", "1", 0, 5}, &p.cx},
+      {{"cy", "1", 0, 5}, &p.cy},
+      {{"cn", "1", -1, 1}, &p.cn},
+      {{"rho_air_kg_m3", "kg/m³", 0.5, 2}, &p.rho_air},
+  };
+}
+
+template <typename P>
+std::vector<core::BasicParamField<core::ParamValue<P>>> bias_fields(P& p) {
+  return {
+      {{"std_north_N", "N", 0, 1e7}, &p.std[0]},
+      {{"std_east_N", "N", 0, 1e7}, &p.std[1]},
+      {{"std_yaw_Nm", "N·m", 0, 1e9}, &p.std[2]},
+      {{"time_constant_north_s", "s", 1, 1e6}, &p.time_constant_s[0]},
+      {{"time_constant_east_s", "s", 1, 1e6}, &p.time_constant_s[1]},
+      {{"time_constant_yaw_s", "s", 1, 1e6}, &p.time_constant_s[2]},
+      {{"reference_hs_m", "m", 0.01, 19.99}, &p.reference_hs_m},
+      {{"calm_fraction", "1", 0, 1}, &p.calm_fraction},
+  };
+}
+
+// Throws core::InputError naming the key of `range` unless value is within it.
+void require_in(const core::ParamRange& range, double value) {
+  core::check_ranges("environment", std::vector<core::ConstParamField>{{range, &value}});
 }
 
 }  // namespace
 
+std::vector<core::ParamField> param_fields(CurrentParams& params) { return current_fields(params); }
+std::vector<core::ParamField> param_fields(WindParams& params) { return wind_fields(params); }
+std::vector<core::ParamField> param_fields(BiasParams& params) { return bias_fields(params); }
+
 void CurrentParams::validate() const {
-  require(speed_mps >= 0 && speed_mps <= 3, "CurrentParams.speed_mps must be in [0, 3] m/s");
+  require_in(kCurrentSpeedRange, speed_mps);
   require(std::isfinite(to_rad), "CurrentParams.to_rad must be finite");
-  require(speed_std_mps >= 0 && dir_std_rad >= 0, "CurrentParams stds must be >= 0");
-  require(time_constant_s > 0, "CurrentParams.time_constant_s must be > 0");
+  core::check_ranges("current", current_fields(*this));
 }
 
 Current::Current(const CurrentParams& params, std::uint64_t seed, double dt_s)
@@ -41,16 +92,9 @@ Eigen::Vector2d Current::velocity_n() const noexcept {
 }
 
 void WindParams::validate() const {
-  require(speed_mps >= 0 && speed_mps <= 50, "WindParams.speed_mps must be in [0, 50] m/s");
+  require_in(kWindSpeedRange, speed_mps);
   require(std::isfinite(from_rad), "WindParams.from_rad must be finite");
-  require(gust_std_fraction >= 0 && gust_std_fraction < 1,
-          "WindParams.gust_std_fraction must be in [0, 1)");
-  require(gust_time_constant_s > 0, "WindParams.gust_time_constant_s must be > 0");
-  require(dir_std_rad >= 0, "WindParams.dir_std_rad must be >= 0");
-  require(frontal_area_m2 > 0 && lateral_area_m2 > 0 && length_m > 0,
-          "WindParams areas and length must be > 0");
-  require(cx >= 0 && cy >= 0 && std::isfinite(cn), "WindParams coefficients must be >= 0");
-  require(rho_air > 0, "WindParams.rho_air must be > 0");
+  core::check_ranges("wind", wind_fields(*this));
 }
 
 Wind::Wind(const WindParams& params, std::uint64_t seed, double dt_s)
@@ -92,13 +136,7 @@ Eigen::Vector3d Wind::force_b(double heading_rad,
           -params_.cn * std::sin(2.0 * gamma) * q * params_.lateral_area_m2 * params_.length_m};
 }
 
-void BiasParams::validate() const {
-  require((std.array() >= 0).all() && std.allFinite(), "BiasParams.std must be >= 0");
-  require((time_constant_s.array() > 0).all(), "BiasParams.time_constant_s must be > 0");
-  require(reference_hs_m > 0 && reference_hs_m < 20,
-          "BiasParams.reference_hs_m must be in (0, 20) m");
-  require(calm_fraction >= 0 && calm_fraction <= 1, "BiasParams.calm_fraction must be in [0, 1]");
-}
+void BiasParams::validate() const { core::check_ranges("bias", bias_fields(*this)); }
 
 double BiasParams::sea_state_factor(double hs_m) const noexcept {
   const double h = hs_m / reference_hs_m;

@@ -6,43 +6,55 @@
 #include <stdexcept>
 #include <string>
 
+#include "dynpos/core/error.hpp"
+
 namespace dynpos::model {
 namespace {
 
-void require(bool ok, const char* field, const char* range) {
-  if (!ok) throw std::invalid_argument(std::string("HullParams.") + field + " must be " + range);
+// The [hull] table: every parameter with its range (core/param_range.hpp).
+template <typename P>
+std::vector<core::BasicParamField<core::ParamValue<P>>> fields(P& p) {
+  return {
+      {{"mass_kg", "kg", 1e3, 1e8}, &p.mass_kg},
+      {{"iz_kgm2", "kg·m²", 1, 1e12}, &p.iz_kgm2},
+      {{"xg_m", "m", -100, 100}, &p.xg_m},
+      {{"x_udot_kg", "kg", 0, 1e8}, &p.x_udot_kg},
+      {{"y_vdot_kg", "kg", 0, 1e8}, &p.y_vdot_kg},
+      {{"y_rdot_kgm", "kg·m", -1e10, 1e10}, &p.y_rdot_kgm},
+      {{"n_rdot_kgm2", "kg·m²", 0, 1e12}, &p.n_rdot_kgm2},
+      {{"x_u_Ns_m", "N·s/m", 1e-3, 1e8}, &p.x_u_Ns_m},
+      {{"x_uu_Ns2_m2", "N·s²/m²", 0, 1e8}, &p.x_uu_Ns2_m2},
+      {{"y_v_Ns_m", "N·s/m", 1e-3, 1e9}, &p.y_v_Ns_m},
+      {{"y_uv_Ns2_m2", "N·s²/m²", 0, 1e9}, &p.y_uv_Ns2_m2},
+      {{"y_vv_Ns2_m2", "N·s²/m²", 0, 1e9}, &p.y_vv_Ns2_m2},
+      {{"y_ur_Ns2", "N·s²", -1e10, 1e10}, &p.y_ur_Ns2},
+      {{"n_uv_Ns2", "N·s²", -1e10, 1e10}, &p.n_uv_Ns2},
+      {{"n_r_Nms", "N·m·s", 1e-3, 1e12}, &p.n_r_Nms},
+      {{"n_ur_Nms2", "N·m·s²", 0, 1e12}, &p.n_ur_Nms2},
+      {{"n_rr_Nms2", "N·m·s²", 0, 1e13}, &p.n_rr_Nms2},
+      {{"roll_period_s", "s", 0.5, 60}, &p.roll_period_s},
+      {{"roll_damping_ratio", "1", 1e-3, 2}, &p.roll_damping_ratio},
+      {{"heel_per_centripetal", "rad·s²/m", -10, 10}, &p.heel_per_centripetal},
+      {{"pitch_period_s", "s", 0.5, 60}, &p.pitch_period_s},
+      {{"pitch_damping_ratio", "1", 1e-3, 2}, &p.pitch_damping_ratio},
+      {{"trim_per_surge_accel", "rad·s²/m", -10, 10}, &p.trim_per_surge_accel},
+  };
 }
 
 }  // namespace
 
+std::vector<core::ParamField> param_fields(HullParams& params) { return fields(params); }
+
 void HullParams::validate() const {
-  require(mass_kg > 1e3 && mass_kg < 1e8, "mass_kg", "in (1e3, 1e8) kg");
-  require(iz_kgm2 > 0 && std::isfinite(iz_kgm2), "iz_kgm2", "> 0");
-  require(std::isfinite(xg_m) && std::abs(xg_m) < 100, "xg_m", "finite, |x_g| < 100 m");
-  require(x_udot_kg >= 0, "x_udot_kg", ">= 0");
-  require(y_vdot_kg >= 0, "y_vdot_kg", ">= 0");
-  require(std::isfinite(y_rdot_kgm), "y_rdot_kgm", "finite");
-  require(n_rdot_kgm2 >= 0, "n_rdot_kgm2", ">= 0");
-  require(x_u_Ns_m > 0, "x_u_Ns_m", "> 0 (linear damping keeps low-speed motion stable)");
-  require(x_uu_Ns2_m2 >= 0, "x_uu_Ns2_m2", ">= 0");
-  require(y_v_Ns_m > 0, "y_v_Ns_m", "> 0");
-  require(y_uv_Ns2_m2 >= 0, "y_uv_Ns2_m2", ">= 0");
-  require(y_vv_Ns2_m2 >= 0, "y_vv_Ns2_m2", ">= 0");
-  require(std::isfinite(y_ur_Ns2), "y_ur_Ns2", "finite");
-  require(std::isfinite(n_uv_Ns2), "n_uv_Ns2", "finite");
-  require(n_r_Nms > 0, "n_r_Nms", "> 0");
-  require(n_ur_Nms2 >= 0, "n_ur_Nms2", ">= 0");
-  require(n_rr_Nms2 >= 0, "n_rr_Nms2", ">= 0");
-  require(roll_period_s > 0.5 && roll_period_s < 60, "roll_period_s", "in (0.5, 60) s");
-  require(roll_damping_ratio > 0 && roll_damping_ratio < 2, "roll_damping_ratio", "in (0, 2)");
-  require(std::isfinite(heel_per_centripetal), "heel_per_centripetal", "finite");
-  require(pitch_period_s > 0.5 && pitch_period_s < 60, "pitch_period_s", "in (0.5, 60) s");
-  require(pitch_damping_ratio > 0 && pitch_damping_ratio < 2, "pitch_damping_ratio", "in (0, 2)");
-  require(std::isfinite(trim_per_surge_accel), "trim_per_surge_accel", "finite");
+  core::check_ranges("hull", fields(*this));
   const double m22 = mass_kg + y_vdot_kg;
   const double m33 = iz_kgm2 + n_rdot_kgm2;
   const double m23 = mass_kg * xg_m + y_rdot_kgm;
-  require(m22 * m33 - m23 * m23 > 0, "y_rdot_kgm", "small enough that M is positive definite");
+  if (!(m22 * m33 - m23 * m23 > 0)) {
+    throw core::InputError({},
+                           "HullParams.y_rdot_kgm must be small enough that M is positive "
+                           "definite");
+  }
 }
 
 Hull::Hull(const HullParams& params) : params_(params) {

@@ -12,39 +12,42 @@ namespace dynpos::model {
 
 using detail::clamp_abs;
 using detail::kPi;
-using detail::require;
 
-void RudderParams::validate() const {
-  constexpr const char* o = "RudderParams";
-  require(detail::open_range(max_angle, 0.0, kPi / 2), o, "max_angle", max_angle,
-          "in (0, pi/2) rad");
-  require(detail::open_range(rate_limit, 0.0, 1.0), o, "rate_limit", rate_limit, "in (0, 1) rad/s");
-  require(detail::open_range(servo_time_constant, 0.005, 10.0), o, "servo_time_constant",
-          servo_time_constant, "in (0.005, 10) s");
-  require(detail::half_open_range(dead_time, 0.0, 10.0), o, "dead_time", dead_time, "in [0, 10) s");
-  require(detail::open_range(area, 0.0, 50.0), o, "area", area, "in (0, 50) m^2");
-  require(detail::open_range(aspect_ratio, 0.2, 10.0), o, "aspect_ratio", aspect_ratio,
-          "in (0.2, 10)");
-  require(lift_slope > 0.0 && lift_slope <= 2.0 * kPi, o, "lift_slope", lift_slope,
-          "in (0, 2*pi] 1/rad");
-  require(detail::open_range(stall_angle, 0.0, kPi / 2), o, "stall_angle", stall_angle,
-          "in (0, pi/2) rad");
-  require(detail::closed_range(post_stall_lift_fraction, 0.0, 1.0), o, "post_stall_lift_fraction",
-          post_stall_lift_fraction, "in [0, 1]");
-  require(post_stall_width > 0.0 && post_stall_width <= kPi / 2, o, "post_stall_width",
-          post_stall_width, "in (0, pi/2] rad");
-  require(detail::half_open_range(drag_zero, 0.0, 1.0), o, "drag_zero", drag_zero, "in [0, 1)");
-  require(detail::half_open_range(drag_angle, 0.0, 3.0), o, "drag_angle", drag_angle, "in [0, 3)");
-  require(detail::closed_range(slipstream_fraction, 0.0, 1.0), o, "slipstream_fraction",
-          slipstream_fraction, "in [0, 1]");
-  require(detail::open_range(propeller_diameter, 0.0, 10.0), o, "propeller_diameter",
-          propeller_diameter, "in (0, 10) m");
-  require(detail::closed_range(flow_straightening, 0.0, 1.0), o, "flow_straightening",
-          flow_straightening, "in [0, 1]");
-  require(detail::closed_range(astern_lift_factor, 0.0, 1.0), o, "astern_lift_factor",
-          astern_lift_factor, "in [0, 1]");
-  require(detail::open_range(rho, 900.0, 1100.0), o, "rho", rho, "in (900, 1100) kg/m^3");
+namespace {
+
+constexpr double kDegToRad = kPi / 180.0;
+
+// The [rudder] table: every parameter with its range (core/param_range.hpp); angles in degrees.
+template <typename P>
+std::vector<core::BasicParamField<core::ParamValue<P>>> fields(P& p) {
+  return {
+      {{"max_angle_deg", "deg", 1, 90, false, false, kDegToRad}, &p.max_angle},
+      // The servo rate below 1 rad/s.
+      {{"rate_limit_deg_per_s", "deg/s", 0.1, 1.0 / kDegToRad, false, true, kDegToRad},
+       &p.rate_limit},
+      {{"servo_time_constant_s", "s", 0.005, 10, true}, &p.servo_time_constant},
+      {{"dead_time_s", "s", 0, 10, false, true}, &p.dead_time},
+      {{"area_m2", "m²", 0.01, 50}, &p.area},
+      {{"aspect_ratio", "1", 0.2, 10, true}, &p.aspect_ratio},
+      {{"lift_slope_per_rad", "1/rad", 0.1, 2.0 * kPi}, &p.lift_slope},
+      {{"stall_angle_deg", "deg", 1, 60, false, false, kDegToRad}, &p.stall_angle},
+      {{"post_stall_lift_fraction", "1", 0, 1}, &p.post_stall_lift_fraction},
+      {{"post_stall_width_deg", "deg", 0.1, 90, false, false, kDegToRad}, &p.post_stall_width},
+      {{"drag_zero", "1", 0, 1}, &p.drag_zero},
+      {{"drag_angle", "1", 0, 3, false, true}, &p.drag_angle},
+      {{"slipstream_fraction", "1", 0, 1}, &p.slipstream_fraction},
+      {{"propeller_diameter_m", "m", 0.1, 10}, &p.propeller_diameter},
+      {{"flow_straightening", "1", 0, 1}, &p.flow_straightening},
+      {{"astern_lift_factor", "1", 0, 1}, &p.astern_lift_factor},
+      {{"rho_kg_m3", "kg/m³", 900, 1100}, &p.rho},
+  };
 }
+
+}  // namespace
+
+std::vector<core::ParamField> param_fields(RudderParams& params) { return fields(params); }
+
+void RudderParams::validate() const { core::check_ranges("rudder", fields(*this)); }
 
 Rudder::Rudder(const RudderParams& params) : params_(params) { params_.validate(); }
 

@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "dynpos/core/error.hpp"
 #include "dynpos/sim/random.hpp"
 
 namespace dynpos::model {
@@ -14,7 +15,24 @@ constexpr double kRho = 1025.0;  // [kg/m³]
 constexpr double kTwoPi = 2.0 * M_PI;
 
 void require(bool ok, const std::string& what) {
-  if (!ok) throw std::invalid_argument(what);
+  if (!ok) throw core::InputError({}, what);
+}
+
+// The vessel file's [waves] table (core/param_range.hpp).
+template <typename P>
+std::vector<core::BasicParamField<core::ParamValue<P>>> fields(P& p) {
+  return {
+      {{"length_m", "m", 1, 500}, &p.length_m},
+      {{"beam_m", "m", 0.5, 100}, &p.beam_m},
+      {{"heave_period_s", "s", 0.5, 60}, &p.heave_period_s},
+      {{"heave_damping", "1", 1e-3, 2}, &p.heave_damping},
+      {{"roll_period_s", "s", 0.5, 60}, &p.roll_period_s},
+      {{"roll_damping", "1", 1e-3, 2}, &p.roll_damping},
+      {{"pitch_period_s", "s", 0.5, 60}, &p.pitch_period_s},
+      {{"pitch_damping", "1", 1e-3, 2}, &p.pitch_damping},
+      {{"yaw_factor", "1", 0, 10}, &p.yaw_factor},
+      {{"drift_coefficient", "1", 0, 5}, &p.drift_coefficient},
+  };
 }
 
 // Second-order resonance |H| and phase lag for a response driven quasi-statically at low ω.
@@ -29,26 +47,22 @@ void resonance(double omega, double period_s, double zeta, double& gain, double&
 }  // namespace
 
 void SeaStateParams::validate() const {
-  require(hs_m >= 0 && hs_m <= 15, "SeaStateParams.hs_m must be in [0, 15] m");
-  require(tp_s >= 2 && tp_s <= 25, "SeaStateParams.tp_s must be in [2, 25] s");
+  const double n = components;
+  core::check_ranges("environment",
+                     std::vector<core::ConstParamField>{{kSignificantWaveHeightRange, &hs_m},
+                                                        {kPeakPeriodRange, &tp_s},
+                                                        {kWaveComponentsRange, &n}});
   require(gamma >= 1 && gamma <= 7, "SeaStateParams.gamma must be in [1, 7]");
   require(std::isfinite(from_rad), "SeaStateParams.from_rad must be finite");
-  require(components >= 1 && components <= 5000, "SeaStateParams.components must be in [1, 5000]");
   require(omega_min_factor > 0 && omega_min_factor < 1,
           "SeaStateParams.omega_min_factor must be in (0, 1)");
   require(omega_max_factor > 1 && omega_max_factor < 20,
           "SeaStateParams.omega_max_factor must be in (1, 20)");
 }
 
-void WaveResponseParams::validate() const {
-  require(length_m > 0 && beam_m > 0, "WaveResponseParams length_m and beam_m must be > 0");
-  require(heave_period_s > 0 && roll_period_s > 0 && pitch_period_s > 0,
-          "WaveResponseParams natural periods must be > 0");
-  require(heave_damping > 0 && roll_damping > 0 && pitch_damping > 0,
-          "WaveResponseParams damping ratios must be > 0");
-  require(yaw_factor >= 0 && drift_coefficient >= 0,
-          "WaveResponseParams yaw_factor and drift_coefficient must be >= 0");
-}
+std::vector<core::ParamField> param_fields(WaveResponseParams& params) { return fields(params); }
+
+void WaveResponseParams::validate() const { core::check_ranges("waves", fields(*this)); }
 
 double jonswap(double omega, double hs_m, double tp_s, double gamma) {
   if (omega <= 0.0 || hs_m <= 0.0) return 0.0;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <tuple>
 #include <utility>
 
@@ -12,32 +13,44 @@
 
 namespace dynpos::model {
 
-using detail::require;
 using Vector5d = Eigen::Matrix<double, 5, 1>;
 
-void ThrustAllocationOptions::validate() const {
-  constexpr const char* o = "ThrustAllocationOptions";
-  for (int i = 0; i < 5; ++i) {
-    require(weights[i] > 0.0 && std::isfinite(weights[i]), o, "weights", weights[i],
-            "finite and > 0");
-    require(rate_limits[i] > 0.0 && std::isfinite(rate_limits[i]), o, "rate_limits", rate_limits[i],
-            "finite and > 0 N/s");
-  }
-  for (int i = 0; i < 3; ++i) {
-    require(priority[i] > 0.0 && std::isfinite(priority[i]), o, "priority", priority[i],
-            "finite and > 0");
-  }
-  require(force_scale > 0.0 && std::isfinite(force_scale), o, "force_scale", force_scale,
-          "finite and > 0 N");
-  require(moment_scale > 0.0 && std::isfinite(moment_scale), o, "moment_scale", moment_scale,
-          "finite and > 0 N*m");
-  require(detail::open_range(max_rudder_angle, 0.0, detail::kPi / 2), o, "max_rudder_angle",
-          max_rudder_angle, "in (0, pi/2) rad");
-  require(detail::closed_range(rudder_drag_compensation, 0.0, 1.0), o, "rudder_drag_compensation",
-          rudder_drag_compensation, "in [0, 1]");
-  require(hold_weight >= 0.0 && std::isfinite(hold_weight), o, "hold_weight", hold_weight,
-          "finite and >= 0");
+namespace {
+
+constexpr double kDegToRad = detail::kPi / 180.0;
+
+// The [allocation] table: every option with its range (core/param_range.hpp).
+template <typename P>
+std::vector<core::BasicParamField<core::ParamValue<P>>> fields(P& p) {
+  return {
+      {{"weight_thrust_port", "1", 1e-6, 1e6}, &p.weights[0]},
+      {{"weight_thrust_stb", "1", 1e-6, 1e6}, &p.weights[1]},
+      {{"weight_rudder_port", "1", 1e-6, 1e6}, &p.weights[2]},
+      {{"weight_rudder_stb", "1", 1e-6, 1e6}, &p.weights[3]},
+      {{"weight_tunnel", "1", 1e-6, 1e6}, &p.weights[4]},
+      {{"priority_surge", "1", 1e-6, 1e6}, &p.priority[0]},
+      {{"priority_sway", "1", 1e-6, 1e6}, &p.priority[1]},
+      {{"priority_yaw", "1", 1e-6, 1e6}, &p.priority[2]},
+      {{"force_scale_N", "N", 1, 1e9}, &p.force_scale},
+      {{"moment_scale_Nm", "N·m", 1, 1e10}, &p.moment_scale},
+      {{"max_rudder_angle_deg", "deg", 1, 60, false, false, kDegToRad}, &p.max_rudder_angle},
+      {{"rate_thrust_port_N_per_s", "N/s", 1, 1e8}, &p.rate_limits[0]},
+      {{"rate_thrust_stb_N_per_s", "N/s", 1, 1e8}, &p.rate_limits[1]},
+      {{"rate_rudder_port_N_per_s", "N/s", 1, 1e8}, &p.rate_limits[2]},
+      {{"rate_rudder_stb_N_per_s", "N/s", 1, 1e8}, &p.rate_limits[3]},
+      {{"rate_tunnel_N_per_s", "N/s", 1, 1e8}, &p.rate_limits[4]},
+      {{"rudder_drag_compensation", "1", 0, 1}, &p.rudder_drag_compensation},
+      {{"hold_weight", "1", 0, 1e3}, &p.hold_weight},
+  };
 }
+
+}  // namespace
+
+std::vector<core::ParamField> param_fields(ThrustAllocationOptions& options) {
+  return fields(options);
+}
+
+void ThrustAllocationOptions::validate() const { core::check_ranges("allocation", fields(*this)); }
 
 ThrustAllocator::ThrustAllocator(const Thruster& propeller, const Rudder& rudder,
                                  const TunnelThruster& tunnel,
@@ -200,67 +213,191 @@ Eigen::Vector3d ThrustAllocator::rudder_drag(const ThrustAllocationResult& r) co
                              -p.p_port_rudder_b.y() * dx_port - p.p_stb_rudder_b.y() * dx_stb);
 }
 
+namespace {
+
+constexpr int kT1 = ThrustConfiguration::kThrustPort;
+constexpr int kT2 = ThrustConfiguration::kThrustStb;
+constexpr int kY1 = ThrustConfiguration::kRudderPort;
+constexpr int kY2 = ThrustConfiguration::kRudderStb;
+constexpr int kT3 = ThrustConfiguration::kTunnel;
+
+int thrust_of(int rudder) { return rudder == kY1 ? kT1 : kT2; }
+
+bool finite(const ThrustAllocationInput& input) {
+  return input.tau_d_b.allFinite() && std::isfinite(input.surge_speed) && std::isfinite(input.dt) &&
+         input.previous_forces.allFinite() &&
+         !(input.hold_forces && !input.hold_forces->allFinite());
+}
+
+// The redistributed pseudo-inverse (file comment of thrust_allocation.hpp) on the scaled
+// variables y, f_i = d_i·y_i: each variable is free in the least squares, fixed at a bound, or
+// (a rudder) tied to its thrust on its cone, Y = σ(κ·T⁺ + c).
+class Clipping {
+ public:
+  Clipping(const ThrustConfiguration::Matrix& B, const Vector5d& d, const RudderCone& cone)
+      : B_(B), d_(d), cone_(cone) {
+    role_.fill(Role::kFree);
+  }
+
+  // The forces of one weighted least-squares solve over the free variables: the minimum-norm
+  // solution, or with `hold` (weight μ) the minimum-norm shift from the pull towards it.
+  Vector5d solve(const Eigen::Vector3d& tau_d_b, const Eigen::Vector3d& qh,
+                 const std::optional<Vector5d>& hold, double hold_weight) const;
+  // A tie is only the cone for T ≥ 0; below, the cone is the constant c. Fixes the first tied
+  // rudder whose thrust went astern at ±c; true if there was one.
+  bool untie_astern(const Vector5d& f);
+  // Fixes the free variable that violates its bound most (relative to its scale) at that
+  // bound, or ties a rudder that is on its cone; false if no free variable violates a bound.
+  bool fix_most_violated(const Vector5d& f, const Vector5d& lo, const Vector5d& hi,
+                         const Vector5d& scale, double y_scale);
+  // Projects f onto the bounds, thrusts first, then the rudder cones with those thrusts, and
+  // marks what is not free or had to move.
+  void project(Vector5d& f, const Vector5d& lo, const Vector5d& hi,
+               std::array<bool, 5>& saturated) const;
+
+ private:
+  enum class Role { kFree, kFixed, kTied };
+
+  const ThrustConfiguration::Matrix& B_;
+  const Vector5d& d_;
+  const RudderCone& cone_;
+  std::array<Role, 5> role_{};
+  Vector5d fixed_value_ = Vector5d::Zero();
+  std::array<double, 5> tie_sign_{};  // σ for a tied rudder
+};
+
+Vector5d Clipping::solve(const Eigen::Vector3d& tau_d_b, const Eigen::Vector3d& qh,
+                         const std::optional<Vector5d>& hold, double hold_weight) const {
+  // M·y = rhs over the free variables (tied rudders folded into their thrust column).
+  ThrustConfiguration::Matrix M = ThrustConfiguration::Matrix::Zero();
+  Eigen::Vector3d rhs = tau_d_b;
+  for (int j = 0; j < 5; ++j) {
+    if (role_[j] == Role::kFree) M.col(j) = B_.col(j) * d_[j];
+    if (role_[j] == Role::kFixed) rhs -= B_.col(j) * fixed_value_[j];
+  }
+  for (int j : {kY1, kY2}) {
+    if (role_[j] != Role::kTied) continue;
+    const int t = thrust_of(j);
+    if (role_[t] == Role::kFixed) {
+      rhs -= B_.col(j) * tie_sign_[j] * cone_.limit(fixed_value_[t]);
+    } else {
+      M.col(t) += B_.col(j) * tie_sign_[j] * cone_.kappa * d_[t];
+      rhs -= B_.col(j) * tie_sign_[j] * cone_.c_N;
+    }
+  }
+  const ThrustConfiguration::Matrix A = qh.asDiagonal() * M;
+  const Eigen::Vector3d b = qh.cwiseProduct(rhs);
+  const Eigen::CompleteOrthogonalDecomposition<ThrustConfiguration::Matrix> cod(A);
+  // Minimum-norm least-squares solution; when holding, min ‖y‖² + μ‖y − y_h‖² is the
+  // minimum-norm shift from c = y_h·μ/(1+μ) (file comment), on the free variables only.
+  Vector5d c = Vector5d::Zero();
+  if (hold) {
+    const double mu = hold_weight;
+    for (int j = 0; j < 5; ++j) {
+      if (role_[j] == Role::kFree) c[j] = mu / (1.0 + mu) * (*hold)[j] / d_[j];
+    }
+  }
+  const Vector5d y = c + cod.solve(b - A * c);
+
+  Vector5d f;
+  for (int j = 0; j < 5; ++j) {
+    f[j] = role_[j] == Role::kFree ? d_[j] * y[j] : fixed_value_[j];
+  }
+  for (int j : {kY1, kY2}) {
+    if (role_[j] == Role::kTied) {
+      f[j] = tie_sign_[j] * cone_.limit(f[thrust_of(j)]);
+    }
+  }
+  return f;
+}
+
+bool Clipping::untie_astern(const Vector5d& f) {
+  for (int j : {kY1, kY2}) {
+    if (role_[j] == Role::kTied && f[thrust_of(j)] < 0.0) {
+      role_[j] = Role::kFixed;
+      fixed_value_[j] = tie_sign_[j] * cone_.c_N;
+      return true;
+    }
+  }
+  return false;
+}
+
+bool Clipping::fix_most_violated(const Vector5d& f, const Vector5d& lo, const Vector5d& hi,
+                                 const Vector5d& scale, double y_scale) {
+  int worst = -1;
+  double worst_violation = 1e-9;
+  double worst_bound = 0.0;
+  for (int j = 0; j < 5; ++j) {
+    if (role_[j] != Role::kFree) continue;
+    double l = lo[j];
+    double h = hi[j];
+    if (j == kY1 || j == kY2) std::tie(l, h) = cone_.bounds(f[thrust_of(j)], lo[j], hi[j]);
+    const double violation = std::max(f[j] - h, l - f[j]) / scale[j];
+    if (violation > worst_violation) {
+      worst = j;
+      worst_violation = violation;
+      worst_bound = f[j] > h ? h : l;
+    }
+  }
+  if (worst < 0) return false;
+  const bool rudder = worst == kY1 || worst == kY2;
+  const double cone = rudder ? cone_.limit(f[thrust_of(worst)]) : 0.0;
+  if (rudder && std::abs(std::abs(worst_bound) - cone) <= 1e-12 * y_scale && cone > 0.0 &&
+      role_[thrust_of(worst)] != Role::kFixed) {
+    role_[worst] = Role::kTied;  // on its cone: keep it proportional to the thrust
+    tie_sign_[worst] = worst_bound > 0.0 ? 1.0 : -1.0;
+  } else {
+    role_[worst] = Role::kFixed;
+    fixed_value_[worst] = worst_bound;
+  }
+  return true;
+}
+
+void Clipping::project(Vector5d& f, const Vector5d& lo, const Vector5d& hi,
+                       std::array<bool, 5>& saturated) const {
+  for (int j : {kT1, kT2, kT3}) {
+    const double c = std::clamp(f[j], lo[j], hi[j]);
+    saturated[j] = role_[j] != Role::kFree || c != f[j];
+    f[j] = c;
+  }
+  for (int j : {kY1, kY2}) {
+    const auto [l, h] = cone_.bounds(f[thrust_of(j)], lo[j], hi[j]);
+    const double c = std::clamp(f[j], std::min(l, h), std::max(l, h));
+    saturated[j] = role_[j] != Role::kFree || c != f[j];
+    f[j] = c;
+  }
+}
+
+}  // namespace
+
+RudderCone ThrustAllocator::rudder_cone(double surge_speed) const noexcept {
+  // |Y| ≤ κ·T⁺ + c from the rudder model's linear lift (exact, see rudder.hpp).
+  const RudderParams& rp = rudder_.params();
+  const double lift_per_q =
+      rp.area * rp.lift_slope * std::min({options_.max_rudder_angle, rp.stall_angle, rp.max_angle});
+  return {rudder_.dynamic_pressure(0.0, 1.0) * lift_per_q,
+          rudder_.dynamic_pressure(std::max(surge_speed, 0.0), 0.0) * lift_per_q};
+}
+
 ThrustAllocationResult ThrustAllocator::solve(const ThrustAllocationInput& input, SignRegion region,
                                               bool hold) const {
   ThrustAllocationResult result;
-  if (!input.tau_d_b.allFinite() || !std::isfinite(input.surge_speed) || !std::isfinite(input.dt) ||
-      !input.previous_forces.allFinite() ||
-      (input.hold_forces && !input.hold_forces->allFinite())) {
+  if (!finite(input)) {
     result.status = AllocationStatus::kInvalidInput;
     result.message = "tau_d_b, surge_speed, dt, previous_forces and hold_forces must be finite";
     return result;
   }
   const double u = input.surge_speed;
-  const ThrustConfiguration::Matrix& B = configuration_.matrix();
-  constexpr int kT1 = ThrustConfiguration::kThrustPort;
-  constexpr int kT2 = ThrustConfiguration::kThrustStb;
-  constexpr int kY1 = ThrustConfiguration::kRudderPort;
-  constexpr int kY2 = ThrustConfiguration::kRudderStb;
-  constexpr int kT3 = ThrustConfiguration::kTunnel;
-
-  // Rudder cone |Y| ≤ κ·T⁺ + c from the rudder model's linear lift (exact, see rudder.hpp).
-  const RudderParams& rp = rudder_.params();
-  const double lift_per_q =
-      rp.area * rp.lift_slope * std::min({options_.max_rudder_angle, rp.stall_angle, rp.max_angle});
-  const double kappa = rudder_.dynamic_pressure(0.0, 1.0) * lift_per_q;
-  const double cone0 = rudder_.dynamic_pressure(std::max(u, 0.0), 0.0) * lift_per_q;
-
-  // Box bounds, tightened by the rate limits when a previous allocation is given.
-  auto [lo, hi] = bounds(u);
-  Vector5d rate_lo = Vector5d::Constant(-std::numeric_limits<double>::infinity());
-  Vector5d rate_hi = Vector5d::Constant(std::numeric_limits<double>::infinity());
-  if (input.dt > 0.0) {
-    rate_lo = input.previous_forces - options_.rate_limits * input.dt;
-    rate_hi = input.previous_forces + options_.rate_limits * input.dt;
-  }
-  for (int i = 0; i < 5; ++i) {
-    const double l = std::max(lo[i], rate_lo[i]);
-    const double h = std::min(hi[i], rate_hi[i]);
-    if (l <= h) {
-      lo[i] = l;
-      hi[i] = h;
-    } else {
-      // The box moved away from the previous value (e.g. the tunnel lost power with speed):
-      // the box wins, at the point nearest the previous value.
-      lo[i] = hi[i] = std::clamp(input.previous_forces[i], lo[i], hi[i]);
-    }
-  }
-  // The sign region of the main propellers (file comment).
-  for (int k : {0, 1}) {
-    const int j = k == 0 ? kT1 : kT2;
-    if (region[k] > 0) lo[j] = std::min(std::max(lo[j], 0.0), hi[j]);
-    if (region[k] < 0) hi[j] = std::max(std::min(hi[j], 0.0), lo[j]);
-  }
-  // Rudder bounds at thrust t: cone ∩ rate ∩ box.
-  const auto rudder_bounds = [&](int j, double t) {
-    const double cone = kappa * std::max(t, 0.0) + cone0;
-    return std::pair{std::max(-cone, lo[j]), std::min(cone, hi[j])};
-  };
+  const RudderCone cone = rudder_cone(u);
+  // Box bounds, tightened by the rate limits when a previous allocation is given, and the
+  // sign region of the main propellers (file comment).
+  const auto [lo, hi] =
+      allocation_box(bounds(u), input.previous_forces, options_.rate_limits, input.dt, region);
 
   // Scaling: f_i = d_i·y_i with d_i = s_i/√w_i, so ‖y‖² = Σ w_i (f_i/s_i)².
   Vector5d scale;
   const double t_fwd = propeller_.max_thrust_forward();
-  const double y_scale = kappa * t_fwd + cone0;
+  const double y_scale = cone.kappa * t_fwd + cone.c_N;
   scale[kT1] = scale[kT2] = t_fwd;
   scale[kY1] = scale[kY2] = y_scale;
   scale[kT3] = std::max(tunnel_.max_thrust_starboard(u), tunnel_.max_thrust_port(u));
@@ -269,124 +406,36 @@ ThrustAllocationResult ThrustAllocator::solve(const ThrustAllocationInput& input
                            std::sqrt(options_.priority[1]) / options_.force_scale,
                            std::sqrt(options_.priority[2]) / options_.moment_scale);
 
-  enum class Role { kFree, kFixed, kTied };
-  std::array<Role, 5> role{};
-  role.fill(Role::kFree);
-  Vector5d fixed_value = Vector5d::Zero();
-  std::array<double, 5> tie_sign{};  // σ for a tied rudder
-  const auto thrust_of = [](int rudder) { return rudder == kY1 ? kT1 : kT2; };
-
+  const std::optional<Vector5d> held = hold ? input.hold_forces : std::nullopt;
+  Clipping clipping(configuration_.matrix(), d, cone);
   Vector5d f = Vector5d::Zero();
   // Each pass changes one role (free → tied/fixed, tied → fixed), at most 5 + 2 changes.
   for (int iteration = 0; iteration < 10; ++iteration) {
-    // Build M·y = rhs over the free variables (tied rudders folded into their thrust column).
-    ThrustConfiguration::Matrix M = ThrustConfiguration::Matrix::Zero();
-    Eigen::Vector3d rhs = input.tau_d_b;
-    for (int j = 0; j < 5; ++j) {
-      if (role[j] == Role::kFree) M.col(j) = B.col(j) * d[j];
-      if (role[j] == Role::kFixed) rhs -= B.col(j) * fixed_value[j];
-    }
-    for (int j : {kY1, kY2}) {
-      if (role[j] != Role::kTied) continue;
-      const int t = thrust_of(j);
-      if (role[t] == Role::kFixed) {
-        rhs -= B.col(j) * tie_sign[j] * (kappa * std::max(fixed_value[t], 0.0) + cone0);
-      } else {
-        M.col(t) += B.col(j) * tie_sign[j] * kappa * d[t];
-        rhs -= B.col(j) * tie_sign[j] * cone0;
-      }
-    }
-    const ThrustConfiguration::Matrix A = qh.asDiagonal() * M;
-    const Eigen::Vector3d b = qh.cwiseProduct(rhs);
-    const Eigen::CompleteOrthogonalDecomposition<ThrustConfiguration::Matrix> cod(A);
-    // Minimum-norm least-squares solution; when holding, min ‖y‖² + μ‖y − y_h‖² is the
-    // minimum-norm shift from c = y_h·μ/(1+μ) (file comment), on the free variables only.
-    Vector5d c = Vector5d::Zero();
-    if (hold) {
-      const double mu = options_.hold_weight;
-      for (int j = 0; j < 5; ++j) {
-        if (role[j] == Role::kFree) c[j] = mu / (1.0 + mu) * (*input.hold_forces)[j] / d[j];
-      }
-    }
-    const Vector5d y = c + cod.solve(b - A * c);
+    f = clipping.solve(input.tau_d_b, qh, held, options_.hold_weight);
     ++result.iterations;
-
-    for (int j = 0; j < 5; ++j) {
-      f[j] = role[j] == Role::kFree ? d[j] * y[j] : fixed_value[j];
-    }
-    for (int j : {kY1, kY2}) {
-      if (role[j] == Role::kTied) {
-        f[j] = tie_sign[j] * (kappa * std::max(f[thrust_of(j)], 0.0) + cone0);
-      }
-    }
-
-    // A tie Y = σ(κT + c) is only the cone for T ≥ 0; below, the cone is the constant c.
-    bool retied = false;
-    for (int j : {kY1, kY2}) {
-      if (role[j] == Role::kTied && f[thrust_of(j)] < 0.0) {
-        role[j] = Role::kFixed;
-        fixed_value[j] = tie_sign[j] * cone0;
-        retied = true;
-        break;
-      }
-    }
-    if (retied) continue;
-
-    // The most violated free variable, measured relative to its scale.
-    int worst = -1;
-    double worst_violation = 1e-9;
-    double worst_bound = 0.0;
-    for (int j = 0; j < 5; ++j) {
-      if (role[j] != Role::kFree) continue;
-      double l = lo[j];
-      double h = hi[j];
-      if (j == kY1 || j == kY2) std::tie(l, h) = rudder_bounds(j, f[thrust_of(j)]);
-      const double violation = std::max(f[j] - h, l - f[j]) / scale[j];
-      if (violation > worst_violation) {
-        worst = j;
-        worst_violation = violation;
-        worst_bound = f[j] > h ? h : l;
-      }
-    }
-    if (worst < 0) break;
-    const bool rudder = worst == kY1 || worst == kY2;
-    const double cone = rudder ? kappa * std::max(f[thrust_of(worst)], 0.0) + cone0 : 0.0;
-    if (rudder && std::abs(std::abs(worst_bound) - cone) <= 1e-12 * y_scale && cone > 0.0 &&
-        role[thrust_of(worst)] != Role::kFixed) {
-      role[worst] = Role::kTied;  // on its cone: keep it proportional to the thrust
-      tie_sign[worst] = worst_bound > 0.0 ? 1.0 : -1.0;
-    } else {
-      role[worst] = Role::kFixed;
-      fixed_value[worst] = worst_bound;
-    }
+    if (clipping.untie_astern(f)) continue;
+    if (!clipping.fix_most_violated(f, lo, hi, scale, y_scale)) break;
   }
-
-  // Final projection onto the bounds (thrusts first, then rudder cones with those thrusts).
-  for (int j : {kT1, kT2, kT3}) {
-    const double c = std::clamp(f[j], lo[j], hi[j]);
-    result.saturated[j] = role[j] != Role::kFree || c != f[j];
-    f[j] = c;
-  }
-  for (int j : {kY1, kY2}) {
-    const auto [l, h] = rudder_bounds(j, f[thrust_of(j)]);
-    const double c = std::clamp(f[j], std::min(l, h), std::max(l, h));
-    result.saturated[j] = role[j] != Role::kFree || c != f[j];
-    f[j] = c;
-  }
+  clipping.project(f, lo, hi, result.saturated);
 
   result.forces = f;
-  result.tau_achieved_b = B * f;
+  result.tau_achieved_b = configuration_.matrix() * f;
   result.tau_unmet_b = input.tau_d_b - result.tau_achieved_b;
   set_met_status(result);
-
-  result.n_port = propeller_.shaft_speed_for_thrust(f[kT1]);
-  result.n_stb = propeller_.shaft_speed_for_thrust(f[kT2]);
-  const double a_max = std::min(options_.max_rudder_angle, rp.max_angle);
-  result.rudder_port = detail::clamp_abs(rudder_.angle_for_side_force(f[kY1], u, f[kT1]), a_max);
-  result.rudder_stb = detail::clamp_abs(rudder_.angle_for_side_force(f[kY2], u, f[kT2]), a_max);
-  result.tunnel_thrust = f[kT3];
-  result.n_tunnel = tunnel_.shaft_speed_for_thrust(f[kT3], u);
+  set_commands(result, u);
   return result;
+}
+
+void ThrustAllocator::set_commands(ThrustAllocationResult& r, double surge_speed) const {
+  const Vector5d& f = r.forces;
+  const double u = surge_speed;
+  r.n_port = propeller_.shaft_speed_for_thrust(f[kT1]);
+  r.n_stb = propeller_.shaft_speed_for_thrust(f[kT2]);
+  const double a_max = std::min(options_.max_rudder_angle, rudder_.params().max_angle);
+  r.rudder_port = detail::clamp_abs(rudder_.angle_for_side_force(f[kY1], u, f[kT1]), a_max);
+  r.rudder_stb = detail::clamp_abs(rudder_.angle_for_side_force(f[kY2], u, f[kT2]), a_max);
+  r.tunnel_thrust = f[kT3];
+  r.n_tunnel = tunnel_.shaft_speed_for_thrust(f[kT3], u);
 }
 
 }  // namespace dynpos::model

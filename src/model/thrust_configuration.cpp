@@ -1,23 +1,34 @@
 #include "dynpos/model/thrust_configuration.hpp"
 
-#include <stdexcept>
 #include <string>
+
+#include "dynpos/core/error.hpp"
 
 namespace dynpos::model {
 
 namespace {
 
-void require_finite(const Eigen::Vector2d& p, const char* field) {
-  if (!p.allFinite()) {
-    throw std::invalid_argument(std::string("ThrustConfigurationParams.") + field +
-                                ": must be finite");
-  }
+// The [layout] table: each position with its range (core/param_range.hpp).
+template <typename P>
+std::vector<core::BasicParamField<core::ParamValue<P>>> fields(P& p) {
+  return {
+      {{"port_propeller_x_m", "m", -100, 100}, &p.p_port_propeller_b.x()},
+      {{"port_propeller_y_m", "m", -50, 50}, &p.p_port_propeller_b.y()},
+      {{"stb_propeller_x_m", "m", -100, 100}, &p.p_stb_propeller_b.x()},
+      {{"stb_propeller_y_m", "m", -50, 50}, &p.p_stb_propeller_b.y()},
+      {{"port_rudder_x_m", "m", -100, 100}, &p.p_port_rudder_b.x()},
+      {{"port_rudder_y_m", "m", -50, 50}, &p.p_port_rudder_b.y()},
+      {{"stb_rudder_x_m", "m", -100, 100}, &p.p_stb_rudder_b.x()},
+      {{"stb_rudder_y_m", "m", -50, 50}, &p.p_stb_rudder_b.y()},
+      {{"tunnel_x_m", "m", -100, 100}, &p.p_tunnel_b.x()},
+      {{"tunnel_y_m", "m", -50, 50}, &p.p_tunnel_b.y()},
+  };
 }
 
 void require_layout(bool ok, const char* field, const char* rule) {
   if (!ok) {
-    throw std::invalid_argument(std::string("ThrustConfigurationParams.") + field + ": must " +
-                                rule);
+    throw core::InputError({},
+                           std::string("ThrustConfigurationParams.") + field + ": must " + rule);
   }
 }
 
@@ -28,12 +39,12 @@ Eigen::Vector3d sway_column(const Eigen::Vector2d& p) { return {0.0, 1.0, p.x()}
 
 }  // namespace
 
+std::vector<core::ParamField> param_fields(ThrustConfigurationParams& params) {
+  return fields(params);
+}
+
 void ThrustConfigurationParams::validate() const {
-  require_finite(p_port_propeller_b, "p_port_propeller_b");
-  require_finite(p_stb_propeller_b, "p_stb_propeller_b");
-  require_finite(p_port_rudder_b, "p_port_rudder_b");
-  require_finite(p_stb_rudder_b, "p_stb_rudder_b");
-  require_finite(p_tunnel_b, "p_tunnel_b");
+  core::check_ranges("layout", fields(*this));
   require_layout(p_port_propeller_b.y() < 0.0, "p_port_propeller_b", "have y < 0 (port)");
   require_layout(p_stb_propeller_b.y() > 0.0, "p_stb_propeller_b", "have y > 0 (starboard)");
   require_layout(p_tunnel_b.x() > p_port_rudder_b.x() && p_tunnel_b.x() > p_stb_rudder_b.x(),

@@ -12,36 +12,40 @@ namespace dynpos::model {
 
 using detail::clamp_abs;
 using detail::kPi;
-using detail::require;
 
-void ThrusterParams::validate() const {
-  constexpr const char* o = "ThrusterParams";
-  require(detail::open_range(rho, 900.0, 1100.0), o, "rho", rho, "in (900, 1100) kg/m^3");
-  require(detail::open_range(diameter, 0.0, 10.0), o, "diameter", diameter, "in (0, 10) m");
-  require(detail::open_range(kt_forward, 0.0, 1.0), o, "kt_forward", kt_forward, "in (0, 1)");
-  require(detail::open_range(kt_reverse, 0.0, 1.0), o, "kt_reverse", kt_reverse, "in (0, 1)");
-  require(detail::open_range(kq_forward, 0.0, 0.5), o, "kq_forward", kq_forward, "in (0, 0.5)");
-  require(detail::open_range(kq_reverse, 0.0, 0.5), o, "kq_reverse", kq_reverse, "in (0, 0.5)");
-  require(detail::half_open_range(kt_slope, 0.0, 1.0), o, "kt_slope", kt_slope, "in [0, 1)");
-  require(detail::half_open_range(kq_slope, 0.0, 0.5), o, "kq_slope", kq_slope, "in [0, 0.5)");
-  require(detail::open_range(max_shaft_speed, 0.0, 50.0), o, "max_shaft_speed", max_shaft_speed,
-          "in (0, 50) rps");
-  require(detail::open_range(max_power, 0.0, 1e8), o, "max_power", max_power, "in (0, 1e8) W");
-  require(detail::open_range(max_torque, 0.0, 1e7), o, "max_torque", max_torque, "in (0, 1e7) N*m");
-  require(detail::open_range(shaft_inertia, 0.0, 1e6), o, "shaft_inertia", shaft_inertia,
-          "in (0, 1e6) kg*m^2");
-  require(detail::half_open_range(friction, 0.0, 1e5), o, "friction", friction,
-          "in [0, 1e5) N*m*s/rad");
-  require(detail::open_range(motor_time_constant, 0.0, 10.0), o, "motor_time_constant",
-          motor_time_constant, "in (0, 10) s");
-  require(detail::open_range(ref_rate_limit, 0.0, 100.0), o, "ref_rate_limit", ref_rate_limit,
-          "in (0, 100) rps/s");
-  require(detail::open_range(ref_time_constant, 0.005, 10.0), o, "ref_time_constant",
-          ref_time_constant, "in (0.005, 10) s");
-  require(detail::open_range(kp, 0.0, 1e7), o, "kp", kp, "in (0, 1e7) N*m*s/rad");
-  require(detail::half_open_range(ki, 0.0, 1e8), o, "ki", ki, "in [0, 1e8) N*m/rad");
-  require(detail::half_open_range(dead_time, 0.0, 20.0), o, "dead_time", dead_time, "in [0, 20) s");
+namespace {
+
+// The [propeller] table: every parameter with its range (core/param_range.hpp).
+template <typename P>
+std::vector<core::BasicParamField<core::ParamValue<P>>> fields(P& p) {
+  return {
+      {{"rho_kg_m3", "kg/m³", 900, 1100}, &p.rho},
+      {{"diameter_m", "m", 0.1, 10}, &p.diameter},
+      {{"kt_forward", "1", 1e-3, 1}, &p.kt_forward},
+      {{"kt_reverse", "1", 1e-3, 1}, &p.kt_reverse},
+      {{"kq_forward", "1", 1e-4, 0.5}, &p.kq_forward},
+      {{"kq_reverse", "1", 1e-4, 0.5}, &p.kq_reverse},
+      {{"kt_slope", "1", 0, 1}, &p.kt_slope},
+      {{"kq_slope", "1", 0, 0.5}, &p.kq_slope},
+      {{"max_shaft_speed_rps", "rps", 0.1, 50}, &p.max_shaft_speed},
+      {{"max_power_W", "W", 1, 1e8}, &p.max_power},
+      {{"max_torque_Nm", "N·m", 1, 1e7}, &p.max_torque},
+      {{"shaft_inertia_kgm2", "kg·m²", 1e-3, 1e6}, &p.shaft_inertia},
+      {{"friction_Nms", "N·m·s", 0, 1e5}, &p.friction},
+      {{"motor_time_constant_s", "s", 1e-3, 10}, &p.motor_time_constant},
+      {{"ref_rate_limit_rps_per_s", "rps/s", 1e-3, 100}, &p.ref_rate_limit},
+      {{"ref_time_constant_s", "s", 5e-3, 10}, &p.ref_time_constant},
+      {{"kp_Nms", "N·m·s", 1e-3, 1e7}, &p.kp},
+      {{"ki_Nm", "N·m", 0, 1e8}, &p.ki},
+      {{"dead_time_s", "s", 0, 20}, &p.dead_time},
+  };
 }
+
+}  // namespace
+
+std::vector<core::ParamField> param_fields(ThrusterParams& params) { return fields(params); }
+
+void ThrusterParams::validate() const { core::check_ranges("propeller", fields(*this)); }
 
 Thruster::Thruster(const ThrusterParams& params) : params_(params) { params_.validate(); }
 
@@ -167,14 +171,13 @@ ThrusterStepTruth thruster_step_truth(const Thruster& thruster, double n_from, d
 }
 
 void FirstOrderThrusterParams::validate() const {
-  constexpr const char* o = "FirstOrderThrusterParams";
-  require(detail::open_range(time_constant, 0.005, 100.0), o, "time_constant", time_constant,
-          "in (0.005, 100) s");
-  require(detail::half_open_range(dead_time, 0.0, 20.0), o, "dead_time", dead_time, "in [0, 20) s");
-  require(detail::open_range(max_thrust_forward, 0.0, 1e8), o, "max_thrust_forward",
-          max_thrust_forward, "in (0, 1e8) N");
-  require(detail::open_range(max_thrust_reverse, 0.0, 1e8), o, "max_thrust_reverse",
-          max_thrust_reverse, "in (0, 1e8) N");
+  const double* v[] = {&time_constant, &dead_time, &max_thrust_forward, &max_thrust_reverse};
+  core::check_ranges(
+      "FirstOrderThrusterParams",
+      std::vector<core::ConstParamField>{{{"time_constant", "s", 0.005, 100, true, true}, v[0]},
+                                         {{"dead_time", "s", 0, 20, false, true}, v[1]},
+                                         {{"max_thrust_forward", "N", 0, 1e8, true, true}, v[2]},
+                                         {{"max_thrust_reverse", "N", 0, 1e8, true, true}, v[3]}});
 }
 
 FirstOrderThruster::FirstOrderThruster(const FirstOrderThrusterParams& params) : params_(params) {

@@ -14,28 +14,33 @@ namespace dynpos::model {
 
 using detail::clamp_abs;
 using detail::kPi;
-using detail::require;
 
-void TunnelThrusterParams::validate() const {
-  constexpr const char* o = "TunnelThrusterParams";
-  require(detail::open_range(rho, 900.0, 1100.0), o, "rho", rho, "in (900, 1100) kg/m^3");
-  require(detail::open_range(diameter, 0.0, 5.0), o, "diameter", diameter, "in (0, 5) m");
-  require(detail::open_range(kt_starboard, 0.0, 1.0), o, "kt_starboard", kt_starboard, "in (0, 1)");
-  require(detail::open_range(kt_port, 0.0, 1.0), o, "kt_port", kt_port, "in (0, 1)");
-  require(detail::open_range(kq, 0.0, 0.5), o, "kq", kq, "in (0, 0.5)");
-  require(detail::open_range(max_shaft_speed, 0.0, 100.0), o, "max_shaft_speed", max_shaft_speed,
-          "in (0, 100) rps");
-  require(detail::open_range(time_constant, 0.005, 20.0), o, "time_constant", time_constant,
-          "in (0.005, 20) s");
-  require(detail::open_range(rate_limit, 0.0, 100.0), o, "rate_limit", rate_limit,
-          "in (0, 100) rps/s");
-  require(detail::half_open_range(dead_time, 0.0, 20.0), o, "dead_time", dead_time, "in [0, 20) s");
-  require(detail::closed_range(speed_factor_min, 0.0, 1.0), o, "speed_factor_min", speed_factor_min,
-          "in [0, 1]");
-  require(detail::open_range(speed_factor_scale, 0.0, 20.0), o, "speed_factor_scale",
-          speed_factor_scale, "in (0, 20) m/s");
-  require(detail::open_range(x, -50.0, 50.0), o, "x", x, "in (-50, 50) m");
+namespace {
+
+// The [tunnel] table: every parameter with its range (core/param_range.hpp).
+template <typename P>
+std::vector<core::BasicParamField<core::ParamValue<P>>> fields(P& p) {
+  return {
+      {{"rho_kg_m3", "kg/m³", 900, 1100}, &p.rho},
+      {{"diameter_m", "m", 0.1, 5}, &p.diameter},
+      {{"kt_starboard", "1", 1e-3, 1}, &p.kt_starboard},
+      {{"kt_port", "1", 1e-3, 1}, &p.kt_port},
+      {{"kq", "1", 1e-4, 0.5}, &p.kq},
+      {{"max_shaft_speed_rps", "rps", 0.1, 100}, &p.max_shaft_speed},
+      {{"time_constant_s", "s", 0.005, 20, true}, &p.time_constant},
+      {{"rate_limit_rps_per_s", "rps/s", 1e-3, 100}, &p.rate_limit},
+      {{"dead_time_s", "s", 0, 20}, &p.dead_time},
+      {{"speed_factor_min", "1", 0, 1}, &p.speed_factor_min},
+      {{"speed_factor_scale_mps", "m/s", 0.01, 20}, &p.speed_factor_scale},
+      {{"x_m", "m", -50, 50, true, true}, &p.x},
+  };
 }
+
+}  // namespace
+
+std::vector<core::ParamField> param_fields(TunnelThrusterParams& params) { return fields(params); }
+
+void TunnelThrusterParams::validate() const { core::check_ranges("tunnel", fields(*this)); }
 
 TunnelThruster::TunnelThruster(const TunnelThrusterParams& params) : params_(params) {
   params_.validate();

@@ -99,14 +99,9 @@ std::string points_attr(const std::vector<Point>& pts) {
   return s;
 }
 
-void render_panel(std::string& out, const PolarFigure& f, std::size_t index) {
-  const PolarPanel& p = f.panels[index];
-  const PolarLayout l = polar_layout(f, index);
-  const double x0 = static_cast<double>(index) * block_width(f);
-  const double R = l.r_max * l.scale;
+// The panel's title and radial-axis line above the circle.
+void render_titles(std::string& out, const PolarPanel& p, const PolarLayout& l) {
   const double y_title = kFigureTitleHeight + kPanelTitleHeight - 6.0;
-
-  out += fmt::format("<g class=\"polar-panel\" id=\"panel{}\">\n", index);
   if (!p.title.empty()) {
     out += fmt::format(
         "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\" font-weight=\"bold\">{}</text>\n", px(l.cx),
@@ -119,8 +114,11 @@ void render_panel(std::string& out, const PolarFigure& f, std::size_t index) {
         "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\" fill=\"#444\">radius: {}</text>\n",
         px(l.cx), px(y_title + kAxisLabelHeight), io::escape_markup(axis));
   }
+}
 
-  // Rings with labels along the 0° spoke, then the spokes with angle labels.
+// Rings with labels along the 0° spoke, then the spokes with angle labels.
+void render_grid(std::string& out, const PolarPanel& p, const PolarLayout& l) {
+  const double R = l.r_max * l.scale;
   const AxisTicks ticks = radial_ticks(p);
   out += "<g class=\"grid\" fill=\"none\" stroke=\"#ccc\">\n";
   for (const double r : l.rings) {
@@ -153,97 +151,114 @@ void render_panel(std::string& out, const PolarFigure& f, std::size_t index) {
                        io::escape_markup(name));
   }
   out += "</g>\n";
+}
 
-  // Series: runs of present points; a closed series wraps when both ends are present.
+std::string series_color(const PolarSeries& s, std::size_t si) {
+  return s.color.empty() ? kPalette[si % kPalette.size()] : s.color;
+}
+
+// One series: runs of present points; a closed series wraps when both ends are present.
+void render_series(std::string& out, const PolarSeries& s, const PolarLayout& l, std::size_t index,
+                   std::size_t si) {
+  const std::string color = series_color(s, si);
+  std::vector<std::vector<Point>> runs(1);
+  const std::size_t n = s.radius.size();
+  std::vector<Point> markers;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!std::isfinite(s.radius[i]) || !std::isfinite(s.angle_deg[i])) {
+      if (!runs.back().empty()) runs.emplace_back();
+      continue;
+    }
+    const Point q = to_px(l, s.angle_deg[i], s.radius[i]);
+    runs.back().push_back(q);
+    markers.push_back(q);
+  }
+  if (runs.back().empty()) runs.pop_back();
+  const bool ends_present = n > 2 && std::isfinite(s.radius.front()) &&
+                            std::isfinite(s.angle_deg.front()) && std::isfinite(s.radius.back()) &&
+                            std::isfinite(s.angle_deg.back());
+  if (s.closed && ends_present && !runs.empty()) {
+    if (runs.size() == 1) {
+      runs.front().push_back(runs.front().front());
+    } else {
+      std::vector<Point> joined = runs.back();
+      joined.insert(joined.end(), runs.front().begin(), runs.front().end());
+      runs.front() = std::move(joined);
+      runs.pop_back();
+    }
+  }
+  out += fmt::format("<g class=\"series\" id=\"panel{}-series{}\">\n", index, si);
+  for (const std::vector<Point>& run : runs) {
+    if (run.size() < 2) continue;
+    out +=
+        fmt::format("<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"{} points=\"{}\"/>\n",
+                    io::escape_markup(color), px(s.width_px),
+                    s.dashed ? " stroke-dasharray=\"6,4\"" : "", points_attr(run));
+  }
+  if (s.markers) {
+    for (const Point& q : markers) {
+      out += fmt::format("<circle class=\"marker\" cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{}\"/>\n",
+                         px(q.x), px(q.y), px(kMarkerRadius), io::escape_markup(color));
+    }
+  }
+  out += "</g>\n";
+}
+
+// An arrow from the centre, with a head and a label.
+void render_arrow(std::string& out, const PolarArrow& a, const PolarLayout& l) {
+  const double R = l.r_max * l.scale;
+  const double len = a.length * R;
+  const double s = std::sin(rad(a.angle_deg));
+  const double c = std::cos(rad(a.angle_deg));
+  const Point tip{l.cx + len * s, l.cy - len * c};
+  const double head = 10.0;
+  const double half = 4.5;
+  const Point base{tip.x - head * s, tip.y + head * c};
+  const Point left{base.x - half * c, base.y - half * s};
+  const Point right{base.x + half * c, base.y + half * s};
+  out += fmt::format(
+      "<g class=\"arrow\" stroke=\"{0}\" fill=\"{0}\">\n<line x1=\"{1}\" y1=\"{2}\" x2=\"{3}\" "
+      "y2=\"{4}\" stroke-width=\"2.5\"/>\n<polygon points=\"{5}\"/>\n",
+      io::escape_markup(a.color), px(l.cx), px(l.cy), px(base.x), px(base.y),
+      points_attr({tip, left, right}));
+  if (!a.label.empty()) {
+    const double d = len + 12.0;
+    out += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\" stroke=\"none\">{}</text>\n",
+                       px(l.cx + d * s), px(l.cy - d * c + kFontSize / 3.0),
+                       io::escape_markup(a.label));
+  }
+  out += "</g>\n";
+}
+
+// The legend below the circle, one row per labelled series; x0 is the panel block's left edge.
+void render_legend(std::string& out, const PolarPanel& p, const PolarLayout& l, double x0) {
+  const double R = l.r_max * l.scale;
+  double y = l.cy + R + kPad + 4.0;
+  out += "<g class=\"legend\">\n";
   for (std::size_t si = 0; si < p.series.size(); ++si) {
     const PolarSeries& s = p.series[si];
-    const std::string color = s.color.empty() ? kPalette[si % kPalette.size()] : s.color;
-    std::vector<std::vector<Point>> runs(1);
-    const std::size_t n = s.radius.size();
-    std::vector<Point> markers;
-    for (std::size_t i = 0; i < n; ++i) {
-      if (!std::isfinite(s.radius[i]) || !std::isfinite(s.angle_deg[i])) {
-        if (!runs.back().empty()) runs.emplace_back();
-        continue;
-      }
-      const Point q = to_px(l, s.angle_deg[i], s.radius[i]);
-      runs.back().push_back(q);
-      markers.push_back(q);
-    }
-    if (runs.back().empty()) runs.pop_back();
-    const bool ends_present = n > 2 && std::isfinite(s.radius.front()) &&
-                              std::isfinite(s.angle_deg.front()) &&
-                              std::isfinite(s.radius.back()) && std::isfinite(s.angle_deg.back());
-    if (s.closed && ends_present && !runs.empty()) {
-      if (runs.size() == 1) {
-        runs.front().push_back(runs.front().front());
-      } else {
-        std::vector<Point> joined = runs.back();
-        joined.insert(joined.end(), runs.front().begin(), runs.front().end());
-        runs.front() = std::move(joined);
-        runs.pop_back();
-      }
-    }
-    out += fmt::format("<g class=\"series\" id=\"panel{}-series{}\">\n", index, si);
-    for (const std::vector<Point>& run : runs) {
-      if (run.size() < 2) continue;
-      out += fmt::format(
-          "<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"{} points=\"{}\"/>\n",
-          io::escape_markup(color), px(s.width_px), s.dashed ? " stroke-dasharray=\"6,4\"" : "",
-          points_attr(run));
-    }
-    if (s.markers) {
-      for (const Point& q : markers) {
-        out += fmt::format("<circle class=\"marker\" cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{}\"/>\n",
-                           px(q.x), px(q.y), px(kMarkerRadius), io::escape_markup(color));
-      }
-    }
-    out += "</g>\n";
-  }
-
-  // Arrows from the centre, with a head and a label.
-  for (const PolarArrow& a : p.arrows) {
-    const double len = a.length * R;
-    const double s = std::sin(rad(a.angle_deg));
-    const double c = std::cos(rad(a.angle_deg));
-    const Point tip{l.cx + len * s, l.cy - len * c};
-    const double head = 10.0;
-    const double half = 4.5;
-    const Point base{tip.x - head * s, tip.y + head * c};
-    const Point left{base.x - half * c, base.y - half * s};
-    const Point right{base.x + half * c, base.y + half * s};
+    if (s.label.empty()) continue;
     out += fmt::format(
-        "<g class=\"arrow\" stroke=\"{0}\" fill=\"{0}\">\n<line x1=\"{1}\" y1=\"{2}\" x2=\"{3}\" "
-        "y2=\"{4}\" stroke-width=\"2.5\"/>\n<polygon points=\"{5}\"/>\n",
-        io::escape_markup(a.color), px(l.cx), px(l.cy), px(base.x), px(base.y),
-        points_attr({tip, left, right}));
-    if (!a.label.empty()) {
-      const double d = len + 12.0;
-      out += fmt::format(
-          "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\" stroke=\"none\">{}</text>\n",
-          px(l.cx + d * s), px(l.cy - d * c + kFontSize / 3.0), io::escape_markup(a.label));
-    }
-    out += "</g>\n";
+        "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{}\" stroke-width=\"2\"{}/>\n",
+        px(x0 + 20.0), px(y), px(x0 + 44.0), px(y), io::escape_markup(series_color(s, si)),
+        s.dashed ? " stroke-dasharray=\"6,4\"" : "");
+    out += fmt::format("<text x=\"{}\" y=\"{}\">{}</text>\n", px(x0 + 50.0),
+                       px(y + kFontSize / 3.0), io::escape_markup(s.label));
+    y += kLegendRow;
   }
+  out += "</g>\n";
+}
 
-  // Legend below the circle.
-  if (p.legend) {
-    double y = l.cy + R + kPad + 4.0;
-    out += "<g class=\"legend\">\n";
-    for (std::size_t si = 0; si < p.series.size(); ++si) {
-      const PolarSeries& s = p.series[si];
-      if (s.label.empty()) continue;
-      const std::string color = s.color.empty() ? kPalette[si % kPalette.size()] : s.color;
-      out += fmt::format(
-          "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{}\" stroke-width=\"2\"{}/>\n",
-          px(x0 + 20.0), px(y), px(x0 + 44.0), px(y), io::escape_markup(color),
-          s.dashed ? " stroke-dasharray=\"6,4\"" : "");
-      out += fmt::format("<text x=\"{}\" y=\"{}\">{}</text>\n", px(x0 + 50.0),
-                         px(y + kFontSize / 3.0), io::escape_markup(s.label));
-      y += kLegendRow;
-    }
-    out += "</g>\n";
-  }
+void render_panel(std::string& out, const PolarFigure& f, std::size_t index) {
+  const PolarPanel& p = f.panels[index];
+  const PolarLayout l = polar_layout(f, index);
+  out += fmt::format("<g class=\"polar-panel\" id=\"panel{}\">\n", index);
+  render_titles(out, p, l);
+  render_grid(out, p, l);
+  for (std::size_t si = 0; si < p.series.size(); ++si)
+    render_series(out, p.series[si], l, index, si);
+  for (const PolarArrow& a : p.arrows) render_arrow(out, a, l);
+  if (p.legend) render_legend(out, p, l, static_cast<double>(index) * block_width(f));
   out += "</g>\n";
 }
 

@@ -6,8 +6,12 @@
 #include <cmath>
 
 #include "dynpos/core/error.hpp"
+#include "dynpos/core/param_range.hpp"
 #include "dynpos/io/nmea.hpp"
+#include "dynpos/model/environment.hpp"
+#include "dynpos/model/sea_state.hpp"
 #include "dynpos/sim/sim_time.hpp"
+#include "param_fields.hpp"
 #include "toml_fields.hpp"
 
 namespace dynpos::scenario {
@@ -19,12 +23,34 @@ core::InputLocation at(const ScenarioSpec& spec, std::string field) {
   return {spec.source, {}, {}, std::move(field)};
 }
 
+// The ranges of the scenario file's numbers that validate() checks again after the command
+// line may have changed them (core/param_range.hpp).
+const core::ParamRange kDuration{"duration_s", "s", 1e-6, 1e6};
+const core::ParamRange kStep{"dt_s", "s", 1e-5, 1.0};
+const core::ParamRange kLogRate{"log_rate_hz", "Hz", 1e-3, 1000.0};
+const core::ParamRange kInitialSurge{"initial_surge_mps", "m/s", -4.0, 7.0};
+const core::ParamRange kSettle{"settle_s", "s", 0.0, 3600.0};
+const core::ParamRange kLeverPct{"pct", "%", -100.0, 100.0};
+const core::ParamRange kRudderAngle{"angle_deg", "deg", -90.0, 90.0};
+
+// `range` with another key (an entry of an array of tables).
+core::ParamRange keyed(const core::ParamRange& range, std::string key) {
+  core::ParamRange out = range;
+  out.key = std::move(key);
+  return out;
+}
+
+void check_range(const ScenarioSpec& spec, const std::string& field, double value,
+                 const core::ParamRange& range) {
+  if (!range.contains(value)) {
+    throw core::InputError(at(spec, field), fmt::format("value {} is out of range", value),
+                           "expected a number in " + range.interval());
+  }
+}
+
 void check_range(const ScenarioSpec& spec, const std::string& field, double value, double lo,
                  double hi) {
-  if (!(value >= lo && value <= hi)) {
-    throw core::InputError(at(spec, field), fmt::format("value {} is out of range", value),
-                           fmt::format("expected a number in [{}, {}]", lo, hi));
-  }
+  check_range(spec, field, value, core::ParamRange{field, "", lo, hi});
 }
 
 // A duration the simulator must step exactly: a whole number of dt_s (sim::TimeGrid's rule).
@@ -41,15 +67,15 @@ EnvironmentSpec read_environment(const TomlTable& t) {
   t.reject_unknown({"current_speed_mps", "current_to_deg", "wind_speed_mps", "wind_from_deg",
                     "hs_m", "tp_s", "wave_from_deg", "wave_components"});
   EnvironmentSpec env;
-  env.current_speed_mps = t.number_or("current_speed_mps", env.current_speed_mps, 0.0, 3.0);
+  env.current_speed_mps = t.number_or(env.current_speed_mps, model::kCurrentSpeedRange);
   env.current_to_deg = t.number_or("current_to_deg", env.current_to_deg, -360.0, 360.0);
-  env.wind_speed_mps = t.number_or("wind_speed_mps", env.wind_speed_mps, 0.0, 40.0);
+  env.wind_speed_mps = t.number_or(env.wind_speed_mps, model::kWindSpeedRange);
   env.wind_from_deg = t.number_or("wind_from_deg", env.wind_from_deg, -360.0, 360.0);
-  env.hs_m = t.number_or("hs_m", env.hs_m, 0.0, 8.0);
-  env.tp_s = t.number_or("tp_s", env.tp_s, 2.0, 20.0);
+  env.hs_m = t.number_or(env.hs_m, model::kSignificantWaveHeightRange);
+  env.tp_s = t.number_or(env.tp_s, model::kPeakPeriodRange);
   env.wave_from_deg = t.number_or("wave_from_deg", env.wave_from_deg, -360.0, 360.0);
   env.wave_components =
-      static_cast<int>(t.number_or("wave_components", env.wave_components, 10, 1000));
+      static_cast<int>(t.number_or(env.wave_components, model::kWaveComponentsRange));
   return env;
 }
 
@@ -72,6 +98,35 @@ void for_each_row(const toml::table& doc, const TomlTable& root, const char* key
   }
 }
 
+// The rules of a DP scenario ([[setpoint]] entries): no joystick modes, increasing times.
+void validate_dp_mode(const ScenarioSpec& spec) {
+  if (spec.heading_hold) {
+    throw core::InputError(at(spec, "heading_hold"), "heading_hold is a joystick mode",
+                           "DP setpoints hold the heading already; remove heading_hold");
+  }
+  if (spec.settle_s > 0.0) {
+    throw core::InputError(at(spec, "settle_s"), "settle_s is a joystick mode",
+                           "DP starts at its first setpoint from rest; remove settle_s");
+  }
+  if (!spec.joystick.empty()) {
+    throw core::InputError(at(spec, "setpoint"), "a scenario is either joystick or DP",
+                           "remove the [[joystick]] entries or the [[setpoint]] entries");
+  }
+  if (spec.setpoints.front().t_s < 0.0) {
+    throw core::InputError(at(spec, "setpoint[1].t_s"), "the first setpoint needs a time");
+  }
+  double last = -1.0;
+  for (std::size_t i = 0; i < spec.setpoints.size(); ++i) {
+    if (spec.setpoints[i].t_s < 0.0) continue;
+    const std::string field = fmt::format("setpoint[{}].t_s", i + 1);
+    check_range(spec, field, spec.setpoints[i].t_s, 0.0, spec.duration_s);
+    if (spec.setpoints[i].t_s <= last) {
+      throw core::InputError(at(spec, field), "setpoint times must increase");
+    }
+    last = spec.setpoints[i].t_s;
+  }
+}
+
 }  // namespace
 
 void ScenarioSpec::set_duration(double duration) {
@@ -84,10 +139,10 @@ void ScenarioSpec::set_duration(double duration) {
 
 void ScenarioSpec::validate() const {
   if (name.empty()) throw core::InputError(at(*this, "name"), "scenario has no name");
-  check_range(*this, "duration_s", duration_s, 1e-6, 1e6);
-  check_range(*this, "dt_s", dt_s, 1e-5, 1.0);
+  check_range(*this, "duration_s", duration_s, kDuration);
+  check_range(*this, "dt_s", dt_s, kStep);
   check_whole_steps(*this, "duration_s", duration_s);
-  check_range(*this, "log_rate_hz", log_rate_hz, 1e-3, 1000.0);
+  check_range(*this, "log_rate_hz", log_rate_hz, kLogRate);
   const double ticks_per_log = 1.0 / (log_rate_hz * dt_s);
   if (std::abs(ticks_per_log - std::round(ticks_per_log)) > 1e-9 * ticks_per_log ||
       std::round(ticks_per_log) < 1.0) {
@@ -96,8 +151,8 @@ void ScenarioSpec::validate() const {
         fmt::format("log period 1/{} s is not a multiple of dt_s = {} s", log_rate_hz, dt_s),
         "choose a log rate whose period is a whole number of steps");
   }
-  check_range(*this, "initial_surge_mps", initial_surge_mps, -4.0, 7.0);
-  check_range(*this, "settle_s", settle_s, 0.0, 3600.0);
+  check_range(*this, "initial_surge_mps", initial_surge_mps, kInitialSurge);
+  check_range(*this, "settle_s", settle_s, kSettle);
   if (settle_s != std::round(settle_s)) {
     throw core::InputError(at(*this, "settle_s"),
                            fmt::format("{} s is not a whole number of seconds", settle_s),
@@ -130,41 +185,15 @@ void ScenarioSpec::validate() const {
                              "list joystick commands in increasing time");
     }
     previous = c.t_s;
-    check_range(*this, field + ".surge_pct", c.surge_pct, -100.0, 100.0);
-    check_range(*this, field + ".sway_pct", c.sway_pct, -100.0, 100.0);
-    check_range(*this, field + ".yaw_pct", c.yaw_pct, -100.0, 100.0);
+    check_range(*this, field + ".surge_pct", c.surge_pct, kLeverPct);
+    check_range(*this, field + ".sway_pct", c.sway_pct, kLeverPct);
+    check_range(*this, field + ".yaw_pct", c.yaw_pct, kLeverPct);
   }
   if (hybrid_integral && setpoints.empty()) {
     throw core::InputError(at(*this, "hybrid"), "hybrid integral action needs DP setpoints",
                            "add [[setpoint]] entries or remove the [hybrid] section");
   }
-  if (!setpoints.empty()) {
-    if (heading_hold) {
-      throw core::InputError(at(*this, "heading_hold"), "heading_hold is a joystick mode",
-                             "DP setpoints hold the heading already; remove heading_hold");
-    }
-    if (settle_s > 0.0) {
-      throw core::InputError(at(*this, "settle_s"), "settle_s is a joystick mode",
-                             "DP starts at its first setpoint from rest; remove settle_s");
-    }
-    if (!joystick.empty()) {
-      throw core::InputError(at(*this, "setpoint"), "a scenario is either joystick or DP",
-                             "remove the [[joystick]] entries or the [[setpoint]] entries");
-    }
-    if (setpoints.front().t_s < 0.0) {
-      throw core::InputError(at(*this, "setpoint[1].t_s"), "the first setpoint needs a time");
-    }
-    double last = -1.0;
-    for (std::size_t i = 0; i < setpoints.size(); ++i) {
-      if (setpoints[i].t_s < 0.0) continue;
-      const std::string field = fmt::format("setpoint[{}].t_s", i + 1);
-      check_range(*this, field, setpoints[i].t_s, 0.0, duration_s);
-      if (setpoints[i].t_s <= last) {
-        throw core::InputError(at(*this, field), "setpoint times must increase");
-      }
-      last = setpoints[i].t_s;
-    }
-  }
+  if (!setpoints.empty()) validate_dp_mode(*this);
   previous = -1.0;
   for (std::size_t i = 0; i < rudder.size(); ++i) {
     const std::string field = fmt::format("rudder[{}]", i + 1);
@@ -176,7 +205,9 @@ void ScenarioSpec::validate() const {
           "list rudder commands in increasing time");
     }
     previous = rudder[i].t_s;
-    if (!rudder[i].release) check_range(*this, field + ".angle_deg", rudder[i].angle_deg, -90, 90);
+    if (!rudder[i].release) {
+      check_range(*this, field + ".angle_deg", rudder[i].angle_deg, kRudderAngle);
+    }
   }
   for (std::size_t i = 0; i < loads.size(); ++i) {
     if (!(loads[i].t_off_s > loads[i].t_on_s)) {
@@ -198,13 +229,13 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
   spec.source = file;
   spec.name = root.string("name");
   spec.description = root.string_or("description", "");
-  spec.duration_s = root.number("duration_s", 1e-6, 1e6);
-  spec.dt_s = root.number_or("dt_s", spec.dt_s, 1e-5, 1.0);
-  spec.log_rate_hz = root.number_or("log_rate_hz", spec.log_rate_hz, 1e-3, 1000.0);
+  spec.duration_s = root.number(kDuration);
+  spec.dt_s = root.number_or(spec.dt_s, kStep);
+  spec.log_rate_hz = root.number_or(spec.log_rate_hz, kLogRate);
   spec.initial_heading_deg = root.number_or("initial_heading_deg", 0.0, -360.0, 360.0);
-  spec.initial_surge_mps = root.number_or("initial_surge_mps", 0.0, -4.0, 7.0);
+  spec.initial_surge_mps = root.number_or(0.0, kInitialSurge);
   spec.heading_hold = root.boolean_or("heading_hold", false);
-  spec.settle_s = root.number_or("settle_s", 0.0, 0.0, 3600.0);
+  spec.settle_s = root.number_or(0.0, kSettle);
   spec.start_utc = root.string_or("start_utc", spec.start_utc);
   if (auto env = root.optional_table("environment")) spec.environment = read_environment(*env);
 
@@ -212,9 +243,9 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
     t.reject_unknown({"t_s", "surge_pct", "sway_pct", "yaw_pct"});
     JoystickCommand c;
     c.t_s = t.number("t_s", 0.0, 1e6);
-    c.surge_pct = t.number_or("surge_pct", 0.0, -100.0, 100.0);
-    c.sway_pct = t.number_or("sway_pct", 0.0, -100.0, 100.0);
-    c.yaw_pct = t.number_or("yaw_pct", 0.0, -100.0, 100.0);
+    c.surge_pct = t.number_or(0.0, keyed(kLeverPct, "surge_pct"));
+    c.sway_pct = t.number_or(0.0, keyed(kLeverPct, "sway_pct"));
+    c.yaw_pct = t.number_or(0.0, keyed(kLeverPct, "yaw_pct"));
     spec.joystick.push_back(c);
   });
   for_each_row(doc, root, "rudder", [&](const TomlTable& t) {
@@ -222,7 +253,7 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
     RudderCommand c;
     c.t_s = t.number("t_s", 0.0, 1e6);
     c.release = t.boolean_or("release", false);
-    if (!c.release) c.angle_deg = t.number("angle_deg", -90.0, 90.0);
+    if (!c.release) c.angle_deg = t.number(kRudderAngle);
     spec.rudder.push_back(c);
   });
   for_each_row(doc, root, "setpoint", [&](const TomlTable& t) {
@@ -246,16 +277,8 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
     spec.loads.push_back(e);
   });
   if (auto h = root.optional_table("hybrid")) {
-    h->reject_unknown({"enabled", "lambda_surge_Ns_m", "lambda_sway_Ns_m", "lambda_yaw_Nms_rad",
-                       "epsilon1", "epsilon2", "sigma", "dwell_s"});
     hybrid::IntegralJumpParams p;
-    p.lambda.x() = h->number_or("lambda_surge_Ns_m", p.lambda.x(), 1e-6, 1e12);
-    p.lambda.y() = h->number_or("lambda_sway_Ns_m", p.lambda.y(), 1e-6, 1e12);
-    p.lambda.z() = h->number_or("lambda_yaw_Nms_rad", p.lambda.z(), 1e-6, 1e14);
-    p.epsilon1 = h->number_or("epsilon1", p.epsilon1, 1e-9, 1e3);
-    p.epsilon2 = h->number_or("epsilon2", p.epsilon2, 1e-9, 1e3);
-    p.sigma = h->number_or("sigma", p.sigma, 0.0, 1e6);
-    p.dwell_s = h->number_or("dwell_s", p.dwell_s, 1e-3, 1e4);
+    detail::read_fields(*h, hybrid::param_fields(p), {"enabled"});
     if (h->boolean_or("enabled", true)) spec.hybrid_integral = p;
   }
   spec.validate();

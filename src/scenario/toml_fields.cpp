@@ -45,6 +45,11 @@ core::InputLocation TomlTable::where(std::string_view key) const {
 }
 
 double TomlTable::number(std::string_view key, double lo, double hi) const {
+  return number({std::string(key), "", lo, hi});
+}
+
+double TomlTable::number(const core::ParamRange& range) const {
+  const std::string& key = range.key;
   const toml::node* node = table_->get(key);
   if (node == nullptr) {
     throw core::InputError(where(key), "missing required key",
@@ -54,11 +59,15 @@ double TomlTable::number(std::string_view key, double lo, double hi) const {
   if (!value) {
     throw core::InputError(where(key), "expected a number");
   }
-  if (!std::isfinite(*value) || *value < lo || *value > hi) {
+  if (!range.contains(*value)) {
     throw core::InputError(where(key), fmt::format("value {} is out of range", *value),
-                           fmt::format("expected a number in [{}, {}]", lo, hi));
+                           "expected a number in " + range.interval());
   }
   return *value;
+}
+
+double TomlTable::number_or(double fallback, const core::ParamRange& range) const {
+  return has(range.key) ? number(range) : fallback;
 }
 
 double TomlTable::number_or(std::string_view key, double fallback, double lo, double hi) const {

@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "dynpos/core/error.hpp"
+#include "dynpos/core/param_range.hpp"
 
 namespace dynpos::scenario::detail {
 
@@ -31,6 +32,11 @@ class TomlTable {
 
   /// A required number in [lo, hi]; integers are accepted.
   double number(std::string_view key, double lo, double hi) const;
+  /// A required number within `range` (its key, bounds and open or closed ends), in the
+  /// key's unit.
+  double number(const core::ParamRange& range) const;
+  /// An optional number within `range` with a default.
+  double number_or(double fallback, const core::ParamRange& range) const;
   /// An optional number in [lo, hi] with a default.
   double number_or(std::string_view key, double fallback, double lo, double hi) const;
   std::string string(std::string_view key) const;

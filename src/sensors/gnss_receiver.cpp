@@ -1,27 +1,16 @@
 #include "dynpos/sensors/gnss_receiver.hpp"
 
 #include <cmath>
-#include <stdexcept>
+
+#include "param_tables.hpp"
 
 namespace dynpos::sensors {
 
 void GeodeticOrigin::validate() const {
-  if (!(std::abs(lat_deg) <= 90.0 && std::abs(lon_deg) <= 180.0 && std::isfinite(height_m))) {
-    throw std::invalid_argument("GeodeticOrigin: latitude in [-90, 90], longitude in [-180, 180]");
-  }
+  core::check_ranges("sensors", detail::origin_fields(*this));
 }
 
-void GnssParams::validate() const {
-  timing.validate(name.c_str());
-  if (!lever_arm_b.allFinite()) throw std::invalid_argument(name + ": lever arm must be finite");
-  const auto nonneg = [](double v) { return std::isfinite(v) && v >= 0.0; };
-  if (!nonneg(horizontal_std_m) || !nonneg(vertical_std_m) || !nonneg(bias_std_m)) {
-    throw std::invalid_argument(name + ": noise and bias std must be ≥ 0");
-  }
-  if (!(bias_time_constant_s > 0.0)) {
-    throw std::invalid_argument(name + ": bias time constant must be > 0");
-  }
-}
+void GnssParams::validate() const { core::check_ranges(name, detail::gnss_fields(*this)); }
 
 namespace {
 
@@ -34,7 +23,7 @@ sim::Rng stream(std::uint64_t seed, const std::string& name, const char* channel
 GnssReceiver::GnssReceiver(const GnssParams& params, const GeodeticOrigin& origin, double period_s,
                            std::uint64_t seed)
     : params_(params),
-      enu_(origin.lat_deg, origin.lon_deg, origin.height_m),
+      frame_({origin.lat_deg, origin.lon_deg, origin.height_m}),
       noise_{sim::WhiteNoise(params.horizontal_std_m, stream(seed, params.name, "noise.north")),
              sim::WhiteNoise(params.horizontal_std_m, stream(seed, params.name, "noise.east")),
              sim::WhiteNoise(params.vertical_std_m, stream(seed, params.name, "noise.down"))},
@@ -61,15 +50,15 @@ GnssFix GnssReceiver::measure(const RigidBodyMotion& m) {
   }
   GnssFix fix;
   fix.p_n = p_n;
-  // NED → ENU for GeographicLib: (e, n, u) = (y, x, −z).
-  enu_.Reverse(p_n.y(), p_n.x(), -p_n.z(), fix.lat_deg, fix.lon_deg, fix.height_m);
+  const core::GeodeticPoint point = frame_.to_geodetic(p_n);
+  fix.lat_deg = point.lat_deg;
+  fix.lon_deg = point.lon_deg;
+  fix.height_m = point.height_m;
   return fix;
 }
 
 Eigen::Vector3d GnssReceiver::to_local_n(double lat_deg, double lon_deg, double height_m) const {
-  double e = 0, n = 0, u = 0;
-  enu_.Forward(lat_deg, lon_deg, height_m, e, n, u);
-  return {n, e, -u};
+  return frame_.to_ned({lat_deg, lon_deg, height_m});
 }
 
 }  // namespace dynpos::sensors

@@ -1,8 +1,9 @@
 #include "dynpos/sensors/mru.hpp"
 
 #include <cmath>
-#include <stdexcept>
 #include <string>
+
+#include "param_tables.hpp"
 
 namespace dynpos::sensors {
 
@@ -16,19 +17,7 @@ std::optional<AccelerationConvention> parse_acceleration_convention(std::string_
   return std::nullopt;
 }
 
-void MruParams::validate() const {
-  timing.validate(name.c_str());
-  if (!lever_arm_b.allFinite()) throw std::invalid_argument(name + ": lever arm must be finite");
-  const auto nonneg = [](double v) { return std::isfinite(v) && v >= 0.0; };
-  if (!nonneg(angle_std_rad) || !nonneg(rate_std_rad_s) || !nonneg(accel_std_mps2) ||
-      !nonneg(accel_bias_std_mps2) || !nonneg(angle_bias_std_rad) || !nonneg(rate_bias_std_rad_s)) {
-    throw std::invalid_argument(name + ": noise and bias std must be ≥ 0");
-  }
-  if (!(accel_bias_time_constant_s > 0.0) || !(angle_bias_time_constant_s > 0.0) ||
-      !(rate_bias_time_constant_s > 0.0)) {
-    throw std::invalid_argument(name + ": bias time constant must be > 0");
-  }
-}
+void MruParams::validate() const { core::check_ranges(name, detail::mru_fields(*this)); }
 
 namespace {
 

@@ -3,18 +3,19 @@
 #include <fmt/core.h>
 
 #include <cmath>
-#include <stdexcept>
+
+#include "dynpos/core/error.hpp"
 
 namespace dynpos::sensors {
 
 void ScalarNoiseParams::validate(const char* what) const {
   const auto nonneg = [](double v) { return std::isfinite(v) && v >= 0.0; };
   if (!nonneg(noise_std) || !nonneg(bias_std) || !nonneg(resolution)) {
-    throw std::invalid_argument(
-        fmt::format("{}: noise std, bias std and resolution must be finite and ≥ 0", what));
+    throw core::InputError(
+        {}, fmt::format("{}: noise std, bias std and resolution must be finite and ≥ 0", what));
   }
   if (!(bias_time_constant_s > 0.0)) {
-    throw std::invalid_argument(fmt::format("{}: bias time constant must be > 0", what));
+    throw core::InputError({}, fmt::format("{}: bias time constant must be > 0", what));
   }
 }
 

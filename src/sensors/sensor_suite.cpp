@@ -1,7 +1,10 @@
 #include "dynpos/sensors/sensor_suite.hpp"
 
 #include <set>
-#include <stdexcept>
+#include <string>
+
+#include "dynpos/core/error.hpp"
+#include "param_tables.hpp"
 
 namespace dynpos::sensors {
 
@@ -27,16 +30,69 @@ std::vector<MruParams> SensorSuiteParams::default_mru() {
   return m;
 }
 
+namespace {
+
+using detail::ChannelUnit;
+using detail::kDegToRad;
+using detail::kRpmToRps;
+
+const ChannelUnit kDeg{"deg", "deg", kDegToRad, 180};
+const ChannelUnit kMps{"mps", "m/s", 1.0, 100};
+const ChannelUnit kRpm{"rpm", "rpm", kRpmToRps, 1000};
+const ChannelUnit kKw{"kW", "kW", 1e3, 1e4};
+
+// A channel sensor with its own timing: PREFIXrate_hz, PREFIXtime_offset_s and its noise keys.
+template <typename C>
+detail::Fields<C> channel_fields(C& c, const std::string& prefix, const ChannelUnit& unit) {
+  detail::Fields<C> f = detail::timing_fields(c.timing, prefix);
+  detail::append<C>(f, detail::noise_fields(c.noise, prefix, unit));
+  return f;
+}
+
+template <typename P>  // SensorSuiteParams, or const for checking
+std::vector<core::BasicParamSection<core::ParamValue<P>>> sections(P& s) {
+  using Fields = detail::Fields<P>;
+  std::vector<core::BasicParamSection<core::ParamValue<P>>> out;
+  out.push_back({"sensors", detail::origin_fields(s.origin)});
+  for (std::size_t i = 0; i < s.gnss.size(); ++i) {
+    out.push_back({"gnss" + std::to_string(i + 1), detail::gnss_fields(s.gnss[i])});
+  }
+  for (std::size_t i = 0; i < s.mru.size(); ++i) {
+    out.push_back({"mru" + std::to_string(i + 1), detail::mru_fields(s.mru[i])});
+  }
+  out.push_back({"gyro", channel_fields(s.gyro, "", kDeg)});
+  out.push_back({"speed_log", channel_fields(s.speed_log, "", kMps)});
+  Fields wind = detail::timing_fields(s.wind_speed.timing);  // one instrument, one timing
+  detail::append<P>(wind, detail::noise_fields(s.wind_speed.noise, "speed_", kMps));
+  detail::append<P>(wind, detail::noise_fields(s.wind_dir.noise, "dir_", kDeg));
+  out.push_back({"wind_sensor", wind});
+  Fields feedback;
+  detail::append<P>(feedback, channel_fields(s.propeller_rpm, "propeller_rpm_", kRpm));
+  detail::append<P>(feedback, channel_fields(s.propeller_power, "propeller_power_", kKw));
+  detail::append<P>(feedback, channel_fields(s.tunnel_rpm, "tunnel_rpm_", kRpm));
+  detail::append<P>(feedback, channel_fields(s.tunnel_power, "tunnel_power_", kKw));
+  const ChannelUnit rudder{"deg", "deg", kDegToRad, 90};
+  detail::append<P>(feedback, channel_fields(s.rudder_angle, "rudder_", rudder));
+  out.push_back({"feedback", feedback});
+  return out;
+}
+
+}  // namespace
+
+std::vector<core::ParamSection> param_sections(SensorSuiteParams& params) {
+  return sections(params);
+}
+
 void SensorSuiteParams::validate() const {
-  origin.validate();
+  for (const auto& section : sections(*this)) core::check_ranges(section.name, section.fields);
   std::set<std::string> names;
   for (const GnssParams& g : gnss) {
     g.validate();
-    if (!names.insert(g.name).second) throw std::invalid_argument("duplicate sensor " + g.name);
+    if (!names.insert(g.name).second) throw core::InputError({}, "duplicate sensor " + g.name);
   }
   for (const MruParams& m : mru) {
     m.validate();
-    if (!names.insert(m.name).second) throw std::invalid_argument("duplicate sensor " + m.name);
+    if (!names.insert(m.name).second) throw core::InputError({}, "duplicate sensor " + m.name);
   }
   const std::pair<const char*, const ChannelSensorParams*> channels[] = {
       {"gyro", &gyro},

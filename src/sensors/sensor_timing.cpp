@@ -5,16 +5,12 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "param_tables.hpp"
+
 namespace dynpos::sensors {
 
 void SensorTiming::validate(const char* what) const {
-  if (!(std::isfinite(rate_hz) && rate_hz >= 0.0)) {
-    throw std::invalid_argument(fmt::format("{}: rate_hz must be ≥ 0 (0 = off)", what));
-  }
-  if (!(std::isfinite(time_offset_s) && time_offset_s >= 0.0)) {
-    throw std::invalid_argument(fmt::format(
-        "{}: time_offset_s must be ≥ 0 (a latency; delay the other sensors instead)", what));
-  }
+  core::check_ranges(what, detail::timing_fields(*this));
 }
 
 SampleSchedule make_schedule(const SensorTiming& timing, double log_rate_hz, const char* what) {

@@ -7,6 +7,7 @@
 #include <random>
 
 #include "dynpos/control/dp_controller.hpp"
+#include "dynpos/core/error.hpp"
 
 namespace dynpos::hybrid {
 namespace {
@@ -70,10 +71,15 @@ TEST(IntegralJump, EstimateRecoversTheIntegralErrorOfTheClosedLoop) {
 TEST(IntegralJump, RejectsBadParameters) {
   IntegralJumpParams p;
   p.lambda.y() = 0.0;
-  EXPECT_THROW(p.validate(), std::invalid_argument);
+  EXPECT_THROW(p.validate(), core::InputError);
   p = IntegralJumpParams{};
   p.dwell_s = 0.0;
-  EXPECT_THROW(p.validate(), std::invalid_argument);
+  try {
+    p.validate();
+    ADD_FAILURE() << "no exception";
+  } catch (const core::InputError& e) {
+    EXPECT_EQ(e.where().column_name, "hybrid.dwell_s");  // the scenario file's key
+  }
 }
 
 }  // namespace

@@ -62,5 +62,31 @@ TEST(PeakAbs, LargestMagnitude) {
   EXPECT_TRUE(std::isnan(peak_abs(std::vector<double>{1.0, kNaN})));
 }
 
+TEST(StepBandScale, EachDofByItsOwnStepAndUnmovedDofsByTheLargest) {
+  // The DP bias step (5.91): (3000 N, 2000 N, 1000 N·m); a step in north only.
+  EXPECT_EQ(step_band_scale(Eigen::Vector3d(3000.0, -2000.0, 1000.0)),
+            Eigen::Vector3d(3000.0, 2000.0, 1000.0));
+  EXPECT_EQ(step_band_scale(Eigen::Vector3d(0.0, -2000.0, 0.0)),
+            Eigen::Vector3d(2000.0, 2000.0, 2000.0));
+  EXPECT_EQ(step_band_scale(Eigen::Matrix<double, 1, 1>(-50.0))(0), 50.0);
+}
+
+TEST(BandRatio, LargestErrorOverItsBand) {
+  const Eigen::Vector3d scale(3000.0, 2000.0, 1000.0);
+  // 5 % bands: 150, 100, 50. The yaw error 60 is 1.2 bands, the others inside.
+  EXPECT_DOUBLE_EQ(band_ratio(Eigen::Vector3d(-140.0, 20.0, 60.0), scale, 0.05), 1.2);
+  EXPECT_LE(band_ratio(Eigen::Vector3d(150.0, -100.0, 50.0), scale, 0.05), 1.0 + 1e-15);
+  EXPECT_EQ(band_ratio(Eigen::Vector3d::Zero().eval(), scale, 0.05), 0.0);
+}
+
+TEST(StepResidual, FractionOfTheStepLeftWithUnmovedDofsOnTheBandScale) {
+  const Eigen::Vector3d delta(0.0, 2000.0, 0.0);
+  const Eigen::Vector3d scale = step_band_scale(delta);
+  // Sway: 100 of 2000 left; north moved 300 by a step of none, judged on the 2000 scale.
+  EXPECT_DOUBLE_EQ(step_residual(Eigen::Vector3d(300.0, -100.0, 0.0), delta, scale), 0.15);
+  EXPECT_DOUBLE_EQ(step_residual(Eigen::Vector3d(0.0, -100.0, 0.0), delta, scale), 0.05);
+  EXPECT_EQ(step_residual(Eigen::Vector3d::Zero().eval(), delta, scale), 0.0);
+}
+
 }  // namespace
 }  // namespace dynpos::hybrid

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "dynpos/core/error.hpp"
+
 namespace dynpos::model {
 namespace {
 
@@ -114,10 +116,10 @@ TEST(Bias, ScaledForTheSeaStateIsTheSameSequenceTimesTheFactor) {
   }
   // Same seed, same white noise: the Gauss–Markov state is linear in its std.
   EXPECT_LT((scaled.value_n() - k * full.value_n()).norm(), 1e-9 * full.value_n().norm());
-  EXPECT_THROW(bias_for_sea_state(p, -1.0), std::invalid_argument);
+  EXPECT_THROW(bias_for_sea_state(p, -1.0), core::InputError);
   BiasParams bad = p;
   bad.calm_fraction = 1.5;
-  EXPECT_THROW(bias_for_sea_state(bad, 1.0), std::invalid_argument);
+  EXPECT_THROW(bias_for_sea_state(bad, 1.0), core::InputError);
 }
 
 TEST(StepLoads, SwitchOnAndOffAtTheirTimes) {

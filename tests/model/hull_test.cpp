@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "dynpos/core/error.hpp"
 #include "dynpos/sim/rk4.hpp"
 
 namespace dynpos::model {
@@ -133,8 +134,8 @@ TEST(HullParams, ValidateNamesTheField) {
   try {
     p.validate();
     FAIL() << "no exception";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("mass_kg"), std::string::npos);
+  } catch (const core::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("hull.mass_kg"), std::string::npos);
   }
 }
 

@@ -7,6 +7,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "dynpos/core/error.hpp"
 #include "dynpos/sim/rk4.hpp"
 
 namespace dynpos::model {
@@ -131,9 +132,9 @@ TEST(Rudder, LiftFallsOverThePostStallWidthAndStaysFlat) {
   EXPECT_NEAR(rudder.lift_coefficient(-89 * kDeg), -0.6 * peak, 1e-12);
   // Width and fraction are validated.
   p.post_stall_width = 0.0;
-  EXPECT_THROW(Rudder{p}, std::invalid_argument);
+  EXPECT_THROW(Rudder{p}, core::InputError);
   p.post_stall_width = 91 * kDeg;
-  EXPECT_THROW(Rudder{p}, std::invalid_argument);
+  EXPECT_THROW(Rudder{p}, core::InputError);
 }
 
 TEST(Rudder, SideForceInversionRoundTrips) {
@@ -155,11 +156,11 @@ TEST(Rudder, SideForceInversionRoundTrips) {
 TEST(Rudder, ValidateNamesTheField) {
   RudderParams p;
   p.rate_limit = 0.0;
-  EXPECT_THAT([&] { p.validate(); }, testing::ThrowsMessage<std::invalid_argument>(
-                                         testing::HasSubstr("RudderParams.rate_limit")));
+  EXPECT_THAT([&] { p.validate(); }, testing::ThrowsMessage<core::InputError>(
+                                         testing::HasSubstr("rudder.rate_limit_deg_per_s")));
   p = RudderParams{};
   p.max_angle = 2.0;
-  EXPECT_THROW(Rudder{p}, std::invalid_argument);
+  EXPECT_THROW(Rudder{p}, core::InputError);
 }
 
 }  // namespace

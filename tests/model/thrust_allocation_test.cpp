@@ -8,6 +8,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "dynpos/core/error.hpp"
+
 namespace dynpos::model {
 namespace {
 
@@ -394,12 +396,12 @@ TEST(ThrustAllocator, InvalidInputIsReportedNotThrown) {
   ThrustAllocationOptions bad;
   bad.weights[2] = 0.0;
   EXPECT_THROW(ThrustAllocator(Thruster{}, Rudder{}, TunnelThruster{}, ThrustConfiguration{}, bad),
-               std::invalid_argument);
+               core::InputError);
   ThrustAllocationOptions negative_hold;
   negative_hold.hold_weight = -1.0;
   EXPECT_THROW(
       ThrustAllocator(Thruster{}, Rudder{}, TunnelThruster{}, ThrustConfiguration{}, negative_hold),
-      std::invalid_argument);
+      core::InputError);
 }
 
 }  // namespace

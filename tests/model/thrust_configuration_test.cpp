@@ -7,6 +7,8 @@
 
 #include <Eigen/LU>
 
+#include "dynpos/core/error.hpp"
+
 namespace dynpos::model {
 namespace {
 
@@ -70,10 +72,10 @@ TEST(ThrustConfiguration, VelocityAtAPoint) {
 TEST(ThrustConfiguration, ValidateRejectsSwappedSides) {
   ThrustConfigurationParams p;
   p.p_port_propeller_b = {-13.0, 2.7};
-  EXPECT_THROW(ThrustConfiguration{p}, std::invalid_argument);
+  EXPECT_THROW(ThrustConfiguration{p}, core::InputError);
   p = ThrustConfigurationParams{};
   p.p_tunnel_b = {std::nan(""), 0.0};
-  EXPECT_THROW(p.validate(), std::invalid_argument);
+  EXPECT_THROW(p.validate(), core::InputError);
 }
 
 }  // namespace

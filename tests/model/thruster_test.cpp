@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "dynpos/core/error.hpp"
 #include "dynpos/model/delay_line.hpp"
 #include "dynpos/model/fopdt_truth.hpp"
 #include "dynpos/sim/rk4.hpp"
@@ -195,12 +196,12 @@ TEST(Thruster, LargerStepsAreSlower) {
 TEST(Thruster, ValidateNamesTheField) {
   ThrusterParams p;
   p.diameter = -1.0;
-  EXPECT_THAT([&] { p.validate(); }, testing::ThrowsMessage<std::invalid_argument>(
-                                         testing::HasSubstr("ThrusterParams.diameter")));
+  EXPECT_THAT([&] { p.validate(); },
+              testing::ThrowsMessage<core::InputError>(testing::HasSubstr("propeller.diameter_m")));
   p = ThrusterParams{};
   p.motor_time_constant = 0.0;
-  EXPECT_THAT([&] { Thruster{p}; }, testing::ThrowsMessage<std::invalid_argument>(
-                                        testing::HasSubstr("motor_time_constant")));
+  EXPECT_THAT([&] { Thruster{p}; },
+              testing::ThrowsMessage<core::InputError>(testing::HasSubstr("motor_time_constant")));
   EXPECT_NO_THROW(ThrusterParams{}.validate());
 }
 

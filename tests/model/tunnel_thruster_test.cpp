@@ -7,6 +7,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "dynpos/core/error.hpp"
+
 namespace dynpos::model {
 namespace {
 
@@ -78,12 +80,11 @@ TEST(TunnelThruster, RateLimitAndSmallStepClosedForm) {
 TEST(TunnelThruster, ValidateNamesTheField) {
   TunnelThrusterParams p;
   p.speed_factor_min = 1.5;
-  EXPECT_THAT([&] { p.validate(); },
-              testing::ThrowsMessage<std::invalid_argument>(
-                  testing::HasSubstr("TunnelThrusterParams.speed_factor_min")));
+  EXPECT_THAT([&] { p.validate(); }, testing::ThrowsMessage<core::InputError>(
+                                         testing::HasSubstr("tunnel.speed_factor_min")));
   p = TunnelThrusterParams{};
   p.time_constant = 0.0;
-  EXPECT_THROW(TunnelThruster{p}, std::invalid_argument);
+  EXPECT_THROW(TunnelThruster{p}, core::InputError);
 }
 
 }  // namespace

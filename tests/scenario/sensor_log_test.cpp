@@ -3,11 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
-#include <GeographicLib/LocalCartesian.hpp>
 #include <cmath>
 #include <filesystem>
 
 #include "dynpos/core/angle.hpp"
+#include "dynpos/core/local_ned_frame.hpp"
 #include "dynpos/core/rotation.hpp"
 #include "dynpos/io/csv_reader.hpp"
 #include "dynpos/io/csv_writer.hpp"
@@ -70,8 +70,8 @@ Eigen::Vector3d arm(const VesselConfig& v, const std::string& name) {
 TEST(SensorLog, NoiseFreeGnssReportsTheAntennaPositionGeodeticAndLocal) {
   const VesselConfig v = vessel(false);
   const ScenarioRun run = run_scenario(turning_in_waves(60.0, 10.0), v, 3);
-  const GeographicLib::LocalCartesian enu(v.sensors.origin.lat_deg, v.sensors.origin.lon_deg,
-                                          v.sensors.origin.height_m);
+  const core::LocalNedFrame frame(
+      {v.sensors.origin.lat_deg, v.sensors.origin.lon_deg, v.sensors.origin.height_m});
   std::size_t fixes = 0;
   for (const char* name : {"gnss1", "gnss2", "gnss3"}) {
     const std::string n(name);
@@ -85,11 +85,10 @@ TEST(SensorLog, NoiseFreeGnssReportsTheAntennaPositionGeodeticAndLocal) {
                                   run.log.values(n + ".down")[i]);
       // Same doubles through the same formula (4.2): agreement to rounding.
       EXPECT_LT((local - expected).norm(), 1e-9) << n << " t = " << run.log.time()[i];
-      double e = 0, nn = 0, u = 0;
-      enu.Forward(lat[i], run.log.values(n + ".lon")[i], run.log.values(n + ".height")[i], e, nn,
-                  u);
+      const Eigen::Vector3d back =
+          frame.to_ned({lat[i], run.log.values(n + ".lon")[i], run.log.values(n + ".height")[i]});
       // Geodetic round trip through GeographicLib: nanometres at 100 m from the origin.
-      EXPECT_LT((Eigen::Vector3d(nn, e, -u) - expected).norm(), 1e-6) << n;
+      EXPECT_LT((back - expected).norm(), 1e-6) << n;
     }
   }
   EXPECT_EQ(fixes, 3u * 61u);  // 1 Hz in a 10 Hz log, t = 0 … 60 s

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "dynpos/core/error.hpp"
+
 namespace dynpos::sensors {
 namespace {
 
@@ -49,7 +51,7 @@ TEST(ScalarSensor, SameStreamSameSamples) {
 }
 
 TEST(ScalarSensor, RejectsNegativeNoise) {
-  EXPECT_THROW(ScalarSensor({-1.0, 0.0, 600.0, 0.0}, 1.0, sim::Rng(1)), std::invalid_argument);
+  EXPECT_THROW(ScalarSensor({-1.0, 0.0, 600.0, 0.0}, 1.0, sim::Rng(1)), core::InputError);
 }
 
 }  // namespace

@@ -4,6 +4,8 @@
 
 #include <stdexcept>
 
+#include "dynpos/core/error.hpp"
+
 namespace dynpos::sensors {
 namespace {
 
@@ -34,7 +36,7 @@ TEST(SensorTiming, RejectsRatesThatDoNotDivideTheLoggerRate) {
 
 TEST(SensorTiming, RejectsOffsetsOffTheTickGridAndNegativeOffsets) {
   EXPECT_THROW(make_schedule({1.0, 0.15}, 10.0, "gnss1"), std::invalid_argument);
-  EXPECT_THROW(make_schedule({1.0, -0.1}, 10.0, "gnss1"), std::invalid_argument);
+  EXPECT_THROW(make_schedule({1.0, -0.1}, 10.0, "gnss1"), core::InputError);
   EXPECT_THROW(make_schedule({0.0, 0.0}, 10.0, "gnss1"), std::invalid_argument);
 }
 

@@ -5,6 +5,13 @@
 /// Our own bugs are asserts; anything a user can get wrong throws InputError, which carries
 /// where the problem is (file, line, column or channel) and how to fix it. The CLI catches it at
 /// the top, prints what(), and exits non-zero.
+///
+/// The convention for parameters: the validate() of a struct that users fill (vessel and
+/// scenario files, command-line options) throws InputError with column_name the key as the
+/// file spells it, "section.key" (core/param_range.hpp: check_ranges), and the reader that
+/// knows the file adds it. A precondition that only our own code can break (a figure without
+/// panels, a log written with rows of the wrong length, simulator options built by code) throws
+/// std::invalid_argument, a std::logic_error: our bug, not the user's.
 
 #include <cstddef>
 #include <optional>

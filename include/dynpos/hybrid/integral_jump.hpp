@@ -15,21 +15,28 @@
 /// ẋ₂. A dwell time between jumps keeps the rule away from Zeno behaviour.
 
 #include <Eigen/Core>
+#include <vector>
+
+#include "dynpos/core/param_range.hpp"
 
 namespace dynpos::hybrid {
 
 struct IntegralJumpParams {
-  /// Λ = diag(λ) [N·s/m, N·s/m, N·m·s/rad], each > 0.
+  /// Λ = diag(λ) [N·s/m, N·s/m, N·m·s/rad].
   /// Source: tuned on the virtual Gunnerus (λ/M ≈ 0.12, 0.06, 0.12 s⁻¹): the ice and mooring
   /// scenarios settle without overshoot for seeds 1–3; 4× larger values oscillate.
   Eigen::Vector3d lambda = Eigen::Vector3d(6.0e4, 5.0e4, 5.0e6);
-  double epsilon1 = 0.05;  ///< no jump while |x₁| < ε₁ (mixed m and rad), > 0 (5.54)
-  double epsilon2 = 0.01;  ///< no jump while |x₂| < ε₂ (mixed m/s and rad/s), > 0 (5.54)
-  double sigma = 0.0;      ///< decrease margin σ ≥ 0 (5.53)
-  double dwell_s = 2.0;    ///< minimum time between jumps [s], > 0
-  /// Throws std::invalid_argument naming the bad field.
+  double epsilon1 = 0.05;  ///< no jump while |x₁| < ε₁ (mixed m and rad) (5.54)
+  double epsilon2 = 0.01;  ///< no jump while |x₂| < ε₂ (mixed m/s and rad/s) (5.54)
+  double sigma = 0.0;      ///< decrease margin σ (5.53)
+  double dwell_s = 2.0;    ///< minimum time between jumps [s]
+  /// Throws core::InputError naming the first value outside its range (param_fields).
   void validate() const;
 };
+
+/// The parameters as the keys of a scenario file's [hybrid] section, each with its unit and
+/// range (core/param_range.hpp): the one table validate() and the scenario reader use.
+std::vector<core::ParamField> param_fields(IntegralJumpParams& params);
 
 /// The NED velocity error w = R(ψ)x₂ [m/s, m/s, rad/s].
 Eigen::Vector3d jump_direction(const Eigen::Vector3d& x2_b, double psi_rad);

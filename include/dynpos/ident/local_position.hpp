@@ -7,7 +7,7 @@
 
 namespace dynpos::ident {
 
-/// North/east [m] of each fix in the local NED frame (GeographicLib LocalCartesian on WGS84)
+/// North/east [m] of each fix in the local NED frame (core::LocalNedFrame, WGS84)
 /// whose origin is the first fix with both coordinates valid, at zero height. NaN stays NaN.
 struct LocalPositions {
   std::vector<double> north_m;

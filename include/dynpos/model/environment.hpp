@@ -11,20 +11,32 @@
 #include <cstdint>
 #include <vector>
 
+#include "dynpos/core/param_range.hpp"
 #include "dynpos/sim/noise.hpp"
 
 namespace dynpos::model {
 
+/// Range of the mean current speed a scenario sets (scenario file [environment]).
+inline const core::ParamRange kCurrentSpeedRange{"current_speed_mps", "m/s", 0, 3};
+/// Range of the mean wind speed at 10 m a scenario sets (scenario file [environment]).
+inline const core::ParamRange kWindSpeedRange{"wind_speed_mps", "m/s", 0, 40};
+
 /// Current parameters.
 struct CurrentParams {
-  double speed_mps = 0.0;       ///< mean speed [m/s], [0, 3]
-  double to_rad = 0.0;          ///< direction it flows to [rad]
-  double speed_std_mps = 0.02;  ///< std of the slow speed variation [m/s], ≥ 0. Source: reasoned.
-  double dir_std_rad = 0.05;  ///< std of the slow direction variation [rad], ≥ 0. Source: reasoned.
-  double time_constant_s = 600.0;  ///< correlation time of the variations [s], > 0. Source:
+  double speed_mps = 0.0;          ///< mean speed [m/s], range kCurrentSpeedRange
+  double to_rad = 0.0;             ///< direction it flows to [rad]
+  double speed_std_mps = 0.02;     ///< std of the slow speed variation [m/s]. Source: reasoned.
+  double dir_std_rad = 0.05;       ///< std of the slow direction variation [rad]. Source: reasoned.
+  double time_constant_s = 600.0;  ///< correlation time of the variations [s]. Source:
                                    ///< reasoned (tidal/wind-driven changes over tens of minutes).
+  /// Throws core::InputError naming the first value outside its range (param_fields).
   void validate() const;
 };
+
+/// The current's parameters as the keys of the vessel file's [current] section, each with its
+/// unit and range (core/param_range.hpp): the one table validate(), the file reader and the
+/// docs use.
+std::vector<core::ParamField> param_fields(CurrentParams& params);
 
 /// Current with slow Gauss–Markov variation of speed and direction.
 class Current {
@@ -43,7 +55,7 @@ class Current {
 
 /// Wind parameters: mean, gusts and the vessel's wind-force coefficients.
 struct WindParams {
-  double speed_mps = 0.0;             ///< mean wind speed at 10 m [m/s], [0, 50]
+  double speed_mps = 0.0;             ///< mean wind speed at 10 m [m/s], range kWindSpeedRange
   double from_rad = 0.0;              ///< direction it comes from [rad]
   double gust_std_fraction = 0.12;    ///< gust std / mean speed [-]. Source: reasoned, turbulence
                                       ///< intensity over open sea ≈ 0.1–0.15 (thesis table 3.3:
@@ -59,8 +71,12 @@ struct WindParams {
   double cy = 0.8;   ///< beam-wind coefficient [-]. Source: reasoned.
   double cn = 0.08;  ///< yaw-moment coefficient [-]. Source: reasoned.
   double rho_air = 1.226;  ///< air density [kg/m³].
+  /// Throws core::InputError naming the first value outside its range (param_fields).
   void validate() const;
 };
+
+/// The wind's parameters as the keys of the vessel file's [wind] section, with units and ranges.
+std::vector<core::ParamField> param_fields(WindParams& params);
 
 /// Wind with Gauss–Markov gusts; forces by smooth coefficient curves of the relative angle.
 class Wind {
@@ -94,18 +110,22 @@ struct BiasParams {
                                              ///< reasoned, checked against pure DP in Hs 2 m
                                              ///< (thesis tables 3.14–3.22).
   Eigen::Vector3d time_constant_s{300.0, 300.0, 300.0};  ///< T per axis [s]. Source: reasoned.
-  /// Reference significant wave height H_ref [m] at which `std` holds, range (0, 20). Source: the
+  /// Reference significant wave height H_ref [m] at which `std` holds. Source: the
   /// pure-DP trial's sea state, Hs ≈ 2 m (thesis tables 3.14–3.22).
   double reference_hs_m = 2.0;
-  /// Calm-water fraction c of the std [-], range [0, 1]; 1 disables the sea-state scaling.
+  /// Calm-water fraction c of the std [-]; 1 disables the sea-state scaling.
   /// Source: calibrated — the smallest surge step (0.37 kN, thesis table 3.24) is only seen
   /// with no bias in calm water (c = 0: 5 N at Hs 0.1 m); 0.05 (100 N) already doubles the
   /// scatter of its fits. Calm water keeps the current's and the wind's own variation.
   double calm_fraction = 0.0;
+  /// Throws core::InputError naming the first value outside its range (param_fields).
   void validate() const;
   /// k(H_s) above, for significant wave height H_s [m] ≥ 0.
   double sea_state_factor(double hs_m) const noexcept;
 };
+
+/// The bias' parameters as the keys of the vessel file's [bias] section, with units and ranges.
+std::vector<core::ParamField> param_fields(BiasParams& params);
 
 /// `params` with the stds scaled by params.sea_state_factor(H_s) for H_s [m].
 BiasParams bias_for_sea_state(const BiasParams& params, double hs_m);

@@ -17,6 +17,9 @@
 /// roll rate φ̇ [rad/s], pitch θ [rad], pitch rate θ̇ [rad/s] (low-frequency parts).
 
 #include <Eigen/Core>
+#include <vector>
+
+#include "dynpos/core/param_range.hpp"
 
 namespace dynpos::model {
 
@@ -86,9 +89,14 @@ struct HullParams {
   /// ≈ 0.3° at 0.05 m/s².
   double trim_per_surge_accel = 0.1;
 
-  /// Throws std::invalid_argument naming the first field out of range.
+  /// Throws core::InputError naming the first field outside its range (param_fields) or a
+  /// mass matrix that is not positive definite.
   void validate() const;
 };
+
+/// The parameters as the keys of the vessel file's [hull] section, each with its unit and
+/// range (core/param_range.hpp): the one table validate(), the file reader and the docs use.
+std::vector<core::ParamField> param_fields(HullParams& params);
 
 /// The hull: a const model.
 class Hull {

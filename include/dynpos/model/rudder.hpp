@@ -21,74 +21,80 @@
 /// rudder angle and the local flow direction. With no speed and no thrust, q = 0: no force.
 
 #include <Eigen/Core>
+#include <vector>
 
+#include "dynpos/core/param_range.hpp"
 #include "dynpos/model/fopdt_truth.hpp"
 
 namespace dynpos::model {
 
 /// Parameters of one rudder (servo and hydrodynamics). Defaults: one R/V Gunnerus rudder.
 struct RudderParams {
-  /// Maximum rudder angle |α| [rad], range (0, π/2). Source: thesis section 3.5 yaw step tests,
+  /// Maximum rudder angle |α| [rad]. Source: thesis section 3.5 yaw step tests,
   /// "maximum angle (about 47 degrees)".
   double max_angle = 47.0 * 3.14159265358979323846 / 180.0;
-  /// Servo rate limit |α̇| [rad/s], range (0, 1). Source: calibrated to tables 3.33–3.36 — for
+  /// Servo rate limit |α̇| [rad/s]. Source: calibrated to tables 3.33–3.36 — for
   /// a rate-limited ramp of Δα the Smith time constant is ≈ 0.525·Δα/r, so T = 4.2 s for 47°
   /// and 1.8 s for 20° both give r ≈ 6°/s; 5.9°/s gives Smith T = 1.77 s (0→20°), 2.39 s
   /// (20→47°), 4.17 s (47→0°). The SOLAS minimum of 2.3°/s would give T ≈ 4.6 s for the 0→20°
   /// step, outside the tables.
   double rate_limit = 5.9 * 3.14159265358979323846 / 180.0;
-  /// Servo time constant T_s inside the rate limit [s], range (0.005, 10). Source: reasoned —
+  /// Servo time constant T_s inside the rate limit [s]. Source: reasoned —
   /// hydraulic servo loop, rounds the ends of the ramp.
   double servo_time_constant = 0.3;
-  /// Command dead time [s], range [0, 10). Source: calibrated to tables 3.33–3.36 (δ 0.7–1.5 s);
+  /// Command dead time [s]. Source: calibrated to tables 3.33–3.36 (δ 0.7–1.5 s);
   /// the Smith dead time adds ≈ 0.1× the ramp duration to this: 1.02 s (0→20°), 1.15 s
   /// (20→47°), 1.52 s (47→0°).
   double dead_time = 0.65;
-  /// Movable rudder area A [m²], range (0, 50). Source: reasoned — span 1.8 m × chord 1.1 m,
+  /// Movable rudder area A [m²]. Source: reasoned — span 1.8 m × chord 1.1 m,
   /// about 1.2 % of L·T per rudder for a 31 m, 2.7 m draught twin-screw vessel.
   double area = 2.0;
-  /// Geometric aspect ratio Λ [-], range (0.2, 10). Source: reasoned — 1.8/1.1.
+  /// Geometric aspect ratio Λ [-]. Source: reasoned — 1.8/1.1.
   double aspect_ratio = 1.64;
-  /// Lift slope C_Lα [1/rad], range (0, 2π]. Source: reasoned — low-aspect-ratio wing
+  /// Lift slope C_Lα [1/rad]. Source: reasoned — low-aspect-ratio wing
   /// 2πΛ/(Λ + 2) ≈ 2.8 for Λ = 1.64.
   double lift_slope = 2.8;
-  /// Stall angle of attack α_stall [rad], range (0, π/2). Source: reasoned — 30°; rudders in a
+  /// Stall angle of attack α_stall [rad]. Source: reasoned — 30°; rudders in a
   /// slipstream stall late.
   double stall_angle = 30.0 * 3.14159265358979323846 / 180.0;
-  /// Lift retained after stall relative to the stall peak [-], range [0, 1]. Source: reasoned —
+  /// Lift retained after stall relative to the stall peak [-]. Source: reasoned —
   /// post-stall lift falls linearly from C_Lα·α_stall at α_stall to this fraction at
   /// α_stall + post_stall_width and stays there up to 90°.
   double post_stall_lift_fraction = 0.6;
-  /// Angle over which the lift falls from its stall peak to the post-stall fraction [rad], range
-  /// (0, π/2]. Source: calibrated to the thesis yaw tests (section 3.5, figures 3.15–3.18): the
-  /// rudder step 20°→47° gives "an initial pulse in yaw rate, but does not significantly change
-  /// the steady state". 10°, an abrupt stall as for a thick low-aspect-ratio section, raises the
-  /// steady rate by 9–18 % there, 14 % on average (60° spread the fall up to 90° and raised it
-  /// by 70–95 %); the pulse is the lift peak at α_stall passed on the way.
+  /// Angle over which the lift falls from its stall peak to the post-stall fraction [rad]. Source:
+  /// calibrated to the thesis yaw tests (section 3.5, figures 3.15–3.18): the rudder step 20°→47°
+  /// gives "an initial pulse in yaw rate, but does not significantly change the steady state". 10°,
+  /// an abrupt stall as for a thick low-aspect-ratio section, raises the steady rate by 9–18 %
+  /// there, 14 % on average (60° spread the fall up to 90° and raised it by 70–95 %); the pulse is
+  /// the lift peak at α_stall passed on the way.
   double post_stall_width = 10.0 * 3.14159265358979323846 / 180.0;
-  /// Zero-lift drag coefficient C_D0 [-], range [0, 1). Source: reasoned — NACA-type section.
+  /// Zero-lift drag coefficient C_D0 [-]. Source: reasoned — NACA-type section.
   double drag_zero = 0.013;
-  /// Angle-dependent drag C_D = C_D0 + k_D·sin²α_e, k_D [-], range [0, 3). Source: reasoned —
+  /// Angle-dependent drag C_D = C_D0 + k_D·sin²α_e, k_D [-]. Source: reasoned —
   /// flat-plate normal force ≈ 1.1 at 90°.
   double drag_angle = 1.1;
-  /// Fraction η of the rudder area inside the propeller slipstream [-], range [0, 1]. Source:
+  /// Fraction η of the rudder area inside the propeller slipstream [-]. Source:
   /// reasoned — a 2 m propeller slipstream covers most of a 1.8 m span rudder.
   double slipstream_fraction = 0.7;
-  /// Diameter D of the propeller ahead of the rudder [m], range (0, 10). Source: as
+  /// Diameter D of the propeller ahead of the rudder [m]. Source: as
   /// ThrusterParams::diameter.
   double propeller_diameter = 2.0;
-  /// Flow straightening γ of the local drift angle at the rudder [-], range [0, 1]. Source:
+  /// Flow straightening γ of the local drift angle at the rudder [-]. Source:
   /// reasoned — hull and propeller straighten the transverse flow; 0.5 is a usual value.
   double flow_straightening = 0.5;
-  /// Lift efficiency in astern flow relative to ahead [-], range [0, 1]. Source: reasoned —
+  /// Lift efficiency in astern flow relative to ahead [-]. Source: reasoned —
   /// the trailing edge leads, 0.5.
   double astern_lift_factor = 0.5;
-  /// Water density ρ [kg/m³], range (900, 1100). Source: standard sea water.
+  /// Water density ρ [kg/m³]. Source: standard sea water.
   double rho = 1025.0;
 
-  /// Throws std::invalid_argument naming the first field out of range.
+  /// Throws core::InputError naming the first field outside its range (param_fields).
   void validate() const;
 };
+
+/// The parameters as the keys of the vessel file's [rudder] section, each with its unit and
+/// range (core/param_range.hpp): the one table validate(), the file reader and the docs use.
+std::vector<core::ParamField> param_fields(RudderParams& params);
 
 /// Local flow conditions at one rudder.
 struct RudderInflow {
@@ -113,7 +119,7 @@ struct RudderForce {
 /// One rudder: const servo and force model.
 class Rudder {
  public:
-  /// A rudder with the given parameters (validated; throws std::invalid_argument).
+  /// A rudder with the given parameters (validated; throws core::InputError).
   explicit Rudder(const RudderParams& params = {});
 
   const RudderParams& params() const noexcept { return params_; }

@@ -17,17 +17,27 @@
 #include <cstdint>
 #include <vector>
 
+#include "dynpos/core/param_range.hpp"
+
 namespace dynpos::model {
+
+/// Range of the significant wave height a scenario sets (scenario file [environment]).
+inline const core::ParamRange kSignificantWaveHeightRange{"hs_m", "m", 0, 8};
+/// Range of the spectral peak period a scenario sets (scenario file [environment]).
+inline const core::ParamRange kPeakPeriodRange{"tp_s", "s", 2, 20};
+/// Range of the number of spectral components (scenario file [environment]).
+inline const core::ParamRange kWaveComponentsRange{"wave_components", "1", 10, 1000};
 
 /// Sea-state parameters.
 struct SeaStateParams {
-  double hs_m = 0.0;              ///< significant wave height H_s [m], [0, 15]; 0 = calm
-  double tp_s = 8.0;              ///< peak period T_p [s], [2, 25]
-  double gamma = 3.3;             ///< JONSWAP peak enhancement γ [-], [1, 7]; 3.3 = mean JONSWAP
+  double hs_m = 0.0;   ///< significant wave height H_s [m], kSignificantWaveHeightRange; 0 = calm
+  double tp_s = 8.0;   ///< peak period T_p [s], kPeakPeriodRange
+  double gamma = 3.3;  ///< JONSWAP peak enhancement γ [-], [1, 7]; 3.3 = mean JONSWAP
   double from_rad = 0.0;          ///< direction the waves come from, clockwise from north [rad]
-  int components = 60;            ///< number of spectral components, [1, 5000]
+  int components = 60;            ///< number of spectral components, kWaveComponentsRange
   double omega_min_factor = 0.5;  ///< lowest frequency as a multiple of ω_p, (0, 1)
-  double omega_max_factor = 3.0;  ///< highest frequency as a multiple of ω_p, > 1
+  double omega_max_factor = 3.0;  ///< highest frequency as a multiple of ω_p, (1, 20)
+  /// Throws core::InputError naming the first value outside its range.
   void validate() const;
 };
 
@@ -46,8 +56,13 @@ struct WaveResponseParams {
   /// 3.14–3.22: 0.15 gives ≈ 6 kN beam drift in Hs 2 m on a 31 m hull, so the mean thrust lands
   /// in their 2–45 kN (0.5, a bluff hull's full reflection, gave 60–85 kN beam on).
   double drift_coefficient = 0.15;
+  /// Throws core::InputError naming the first value outside its range (param_fields).
   void validate() const;
 };
+
+/// The wave response as the keys of the vessel file's [waves] section, with units and ranges
+/// (core/param_range.hpp): the one table validate(), the file reader and the docs use.
+std::vector<core::ParamField> param_fields(WaveResponseParams& params);
 
 /// JONSWAP spectral density S(ω) [m²·s/rad] at ω [rad/s] for H_s, T_p, γ (σ = 0.07 below the
 /// peak, 0.09 above; normalised so that ∫S dω = H_s²/16).

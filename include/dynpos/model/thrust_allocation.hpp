@@ -63,6 +63,7 @@
 
 #include <Eigen/Core>
 
+#include "dynpos/model/allocation_bounds.hpp"
 #include "dynpos/model/rudder.hpp"
 #include "dynpos/model/thrust_configuration.hpp"
 #include "dynpos/model/thruster.hpp"
@@ -72,37 +73,42 @@ namespace dynpos::model {
 
 /// Options of the allocation.
 struct ThrustAllocationOptions {
-  /// Weights W on the normalised variables (T₁, T₂, Y₁, Y₂, T₃) [-], each > 0. Source:
+  /// Weights W on the normalised variables (T₁, T₂, Y₁, Y₂, T₃) [-]. Source:
   /// reasoned — equal cost per fraction of capacity for thrusters; rudder force is cheap
   /// (only drag), so 0.3; tunnel 1.5 to prefer the more efficient main propellers.
   Eigen::Matrix<double, 5, 1> weights{1.0, 1.0, 0.3, 0.3, 1.5};
-  /// Priority Q on the normalised residual of (X, Y, N) [-], each > 0, used only when τ_d is
+  /// Priority Q on the normalised residual of (X, Y, N) [-], used only when τ_d is
   /// not attainable. Source: reasoned — heading (N) first, then sway, then surge, as in DP.
   Eigen::Vector3d priority{1.0, 3.0, 10.0};
-  /// Normalisation of τ for the priority: force scale [N] and moment scale [N·m], > 0.
+  /// Normalisation of τ for the priority: force scale [N] and moment scale [N·m].
   double force_scale = 1.0e5;
   double moment_scale = 1.3e6;
-  /// Largest usable rudder angle for allocation [rad], in (0, π/2). Source: reasoned — keep in
+  /// Largest usable rudder angle for allocation [rad]. Source: reasoned — keep in
   /// the linear lift region (the rudder stall angle, 30°).
   double max_rudder_angle = 30.0 * 3.14159265358979323846 / 180.0;
-  /// Rate limits [N/s] on (T₁, T₂, Y₁, Y₂, T₃), > 0, used only when a previous allocation and
+  /// Rate limits [N/s] on (T₁, T₂, Y₁, Y₂, T₃), used only when a previous allocation and
   /// Δt are given. Source: reasoned — full thrust in ≈ 10 s for the main propellers (the shaft
   /// reference rate 0.3 rps/s), ≈ 4 s for the tunnel thruster; rudder force from 0 to full
   /// in ≈ 5 s (servo 6.3°/s over 30°).
   Eigen::Matrix<double, 5, 1> rate_limits{7.5e3, 7.5e3, 8.0e3, 8.0e3, 6.0e3};
-  /// Fraction of the predicted rudder drag the allocation compensates [-], in [0, 1]; 0 leaves
+  /// Fraction of the predicted rudder drag the allocation compensates [-]; 0 leaves
   /// drag out (τ_achieved = B·f). Source: reasoned — 1, the rudder model is the plant's own;
   /// calibrated against the sway steps (tables 3.28, 3.30), whose surge drift it removes.
   double rudder_drag_compensation = 1.0;
-  /// Weight μ of the pull towards hold_forces [-], ≥ 0; 0 disables it (file comment). Each
+  /// Weight μ of the pull towards hold_forces [-]; 0 disables it (file comment). Each
   /// allocation moves μ/(1+μ) of the way to the held split, so μ = 4 keeps 80 % of the last
   /// split per step: at 10 Hz a split change is spread over ≈ 0.5 s, about the propellers'
   /// dead time. Source: reasoned, and measured with the weather from astern (pure DP at
   /// 180°, docs/virtual-gunnerus.md).
   double hold_weight = 4.0;
 
+  /// Throws core::InputError naming the first option outside its range (param_fields).
   void validate() const;
 };
+
+/// The options as the keys of the vessel file's [allocation] section, each with its unit and range
+/// (core/param_range.hpp): the one table validate(), the file reader and the docs use.
+std::vector<core::ParamField> param_fields(ThrustAllocationOptions& options);
 
 /// Inputs of one allocation.
 struct ThrustAllocationInput {
@@ -152,7 +158,7 @@ struct ThrustAllocationResult {
 /// The allocator: const, owns copies of the actuator models it inverts.
 class ThrustAllocator {
  public:
-  /// Throws std::invalid_argument on invalid options or models.
+  /// Throws core::InputError on invalid options.
   explicit ThrustAllocator(const Thruster& propeller = Thruster{}, const Rudder& rudder = Rudder{},
                            const TunnelThruster& tunnel = TunnelThruster{},
                            const ThrustConfiguration& configuration = ThrustConfiguration{},
@@ -168,9 +174,8 @@ class ThrustAllocator {
   const ThrustAllocationOptions& options() const noexcept { return options_; }
 
  private:
-  // Sign region of the main propellers' thrusts (T₁, T₂): 0 either sign, +1 ahead (T ≥ 0),
-  // −1 astern (T ≤ 0). Within one region the rudder cones are convex (file comment).
-  using SignRegion = std::array<int, 2>;
+  // Sign region of the main propellers' thrusts (allocation_bounds.hpp).
+  using SignRegion = ThrustSignRegion;
   // One allocation with the rudder-drag fixed point; `hold` applies input.hold_forces.
   ThrustAllocationResult allocate_with_drag(const ThrustAllocationInput& input, SignRegion region,
                                             bool hold) const;
@@ -186,6 +191,10 @@ class ThrustAllocator {
   Eigen::Vector3d normalised_unmet(const ThrustAllocationResult& r) const;
   // Marks r saturated, with a message, when τ_unmet is not within the tolerance of "met".
   void set_met_status(ThrustAllocationResult& r) const;
+  // The rudder cone at surge speed u [m/s] from the rudder model's linear lift.
+  RudderCone rudder_cone(double surge_speed) const noexcept;
+  // Shaft speed, rudder angle and tunnel commands for the forces of r at surge speed u [m/s].
+  void set_commands(ThrustAllocationResult& r, double surge_speed) const;
 
   Thruster propeller_;
   Rudder rudder_;

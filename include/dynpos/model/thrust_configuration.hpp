@@ -14,6 +14,9 @@
 /// BODY y at the rudders (rudder drag neglected), T₃ the tunnel side force; τ = B·f.
 
 #include <Eigen/Core>
+#include <vector>
+
+#include "dynpos/core/param_range.hpp"
 
 namespace dynpos::model {
 
@@ -32,10 +35,15 @@ struct ThrustConfigurationParams {
   /// Tunnel thruster position [m]. Source: as TunnelThrusterParams::x, on the centre line.
   Eigen::Vector2d p_tunnel_b{12.5, 0.0};
 
-  /// Throws std::invalid_argument naming the first bad field (non-finite, or a layout that is
-  /// not port/starboard symmetric in sign: port y < 0 < starboard y, tunnel x > rudder x).
+  /// Throws core::InputError naming the first bad field (outside its range, param_fields, or
+  /// a layout that is not port/starboard symmetric in sign: port y < 0 < starboard y, tunnel x >
+  /// rudder x).
   void validate() const;
 };
+
+/// The positions as the keys of the vessel file's [layout] section, each with its unit and range
+/// (core/param_range.hpp): the one table validate(), the file reader and the docs use.
+std::vector<core::ParamField> param_fields(ThrustConfigurationParams& params);
 
 /// Forces produced by the actuators, each at its own position.
 struct ActuatorForces {

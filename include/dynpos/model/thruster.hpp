@@ -18,7 +18,9 @@
 /// Sign conventions: n > 0 gives forward (ahead) thrust T_a > 0 along BODY x.
 
 #include <Eigen/Core>
+#include <vector>
 
+#include "dynpos/core/param_range.hpp"
 #include "dynpos/model/fopdt_truth.hpp"
 
 namespace dynpos::model {
@@ -26,72 +28,76 @@ namespace dynpos::model {
 /// Parameters of one fixed-pitch, speed-controlled main propeller. Defaults: one R/V Gunnerus
 /// main propeller (before the 2015 retrofit).
 struct ThrusterParams {
-  /// Water density ρ [kg/m³], range (900, 1100). Source: standard sea water.
+  /// Water density ρ [kg/m³]. Source: standard sea water.
   double rho = 1025.0;
-  /// Propeller diameter D [m], range (0, 10). Source: reasoned — a ≈ 500 kW open propeller on a
+  /// Propeller diameter D [m]. Source: reasoned — a ≈ 500 kW open propeller on a
   /// 31 m vessel with 2.7 m draught; 2.0 m fits under the hull with tip clearance.
   double diameter = 2.0;
-  /// Thrust coefficient K_T at J = 0 for n > 0 [-], range (0, 1). Source: Table 3.2,
+  /// Thrust coefficient K_T at J = 0 for n > 0 [-]. Source: Table 3.2,
   /// c = ρK_T D⁴ = 8.13 kN/rps² ⇒ K_T = 8130/(1025·2⁴) = 0.49573.
   double kt_forward = 8130.0 / (1025.0 * 16.0);
-  /// Thrust coefficient K_T at J = 0 for n < 0 [-], range (0, 1). Source: Table 3.2,
+  /// Thrust coefficient K_T at J = 0 for n < 0 [-]. Source: Table 3.2,
   /// c = 5.8 kN/rps² ⇒ K_T = 5800/(1025·2⁴) = 0.35366.
   double kt_reverse = 5800.0 / (1025.0 * 16.0);
-  /// Torque coefficient K_Q for n > 0 [-], range (0, 0.5). Source: reasoned — gives the rated
+  /// Torque coefficient K_Q for n > 0 [-]. Source: reasoned — gives the rated
   /// 500 kW shaft power at n_max = 3 rps (P = 2πρK_Q D⁵n³, (2.28)); K_T/K_Q ≈ 5.5 is typical of
   /// open fixed-pitch propellers.
   double kq_forward = 0.09;
-  /// Torque coefficient K_Q for n < 0 [-], range (0, 0.5). Source: reasoned — reverse running
+  /// Torque coefficient K_Q for n < 0 [-]. Source: reasoned — reverse running
   /// absorbs slightly less torque than ahead at equal |n| (≈ 0.94 of ahead).
   double kq_reverse = 0.085;
-  /// Slope k_T of the optional linear K_T(J) = K_T0 − k_T·J, J = V_a/(|n|D) (2.27) [-], range
-  /// [0, 1). Source: reasoned — 0 by default so the thrust map is exactly (3.17) with the
-  /// Table 3.2 coefficients, as the thrust-map back-calculation expects.
+  /// Slope k_T of the optional linear K_T(J) = K_T0 − k_T·J, J = V_a/(|n|D) (2.27) [-]. Source:
+  /// reasoned — 0 by default so the thrust map is exactly (3.17) with the Table 3.2 coefficients,
+  /// as the thrust-map back-calculation expects.
   double kt_slope = 0.0;
-  /// Slope k_Q of the optional linear K_Q(J) = K_Q0 − k_Q·J [-], range [0, 0.5). Source: as
+  /// Slope k_Q of the optional linear K_Q(J) = K_Q0 − k_Q·J [-]. Source: as
   /// kt_slope.
   double kq_slope = 0.0;
-  /// Maximum shaft speed magnitude |n| [rps], range (0, 50). Source: reasoned — 3 rps (180 rpm)
+  /// Maximum shaft speed magnitude |n| [rps]. Source: reasoned — 3 rps (180 rpm)
   /// gives 100 % thrust c·n² = 73 kN ahead, inside the 60–80 kN stated for Gunnerus.
   double max_shaft_speed = 3.0;
-  /// Maximum motor power P_max [W], range (0, 1e8). Source: Gunnerus main propulsion motors
+  /// Maximum motor power P_max [W]. Source: Gunnerus main propulsion motors
   /// ≈ 500 kW each; 10 % margin above the 500 kW needed at n_max so the limit is not active in
   /// calm water.
   double max_power = 550.0e3;
-  /// Maximum motor torque |Q_c| [N·m], range (0, 1e7). Source: reasoned — 1.25 × the 26.6 kN·m
+  /// Maximum motor torque |Q_c| [N·m]. Source: reasoned — 1.25 × the 26.6 kN·m
   /// absorbed at n_max; leaves margin for acceleration.
   double max_torque = 33.0e3;
   /// Shaft inertia I_s incl. motor, gear (referred to the shaft), propeller and entrained water
-  /// [kg·m²], range (0, 1e6). Source: reasoned — order of a 500 kW electric drive with a 2 m
+  /// [kg·m²]. Source: reasoned — order of a 500 kW electric drive with a 2 m
   /// propeller; only the closed-loop bandwidth matters, set by the PI gains below.
   double shaft_inertia = 2000.0;
-  /// Linear shaft friction K_ω [N·m·s/rad], range [0, 1e5). Source: reasoned — ≈ 2 % of rated
+  /// Linear shaft friction K_ω [N·m·s/rad]. Source: reasoned — ≈ 2 % of rated
   /// torque at rated speed.
   double friction = 30.0;
-  /// Motor torque time constant T_m in Q̇_m = (Q_c − Q_m)/T_m [s], range (0, 10). Source:
+  /// Motor torque time constant T_m in Q̇_m = (Q_c − Q_m)/T_m [s]. Source:
   /// reasoned — electric drive torque loop, 0.1–0.3 s; must be > 0.004 s for RK4 at h = 0.01 s.
   double motor_time_constant = 0.15;
-  /// Rate limit of the reference generator |ṅ_ref| [rps/s], range (0, 100). Source: calibrated
+  /// Rate limit of the reference generator |ṅ_ref| [rps/s]. Source: calibrated
   /// so Smith fits of 0→80 % and 0→100 % thrust steps give T_n ≈ 4.7 and 5.2 s (tables 3.23,
   /// 3.27, 3.29: 5.5, 4.7, 4.5 s; larger steps are slower because the reference ramps).
   double ref_rate_limit = 0.3;
   /// Time constant of the reference filter inside the rate limit, ṅ_ref = sat((n_c − n_ref)/T_r)
-  /// [s], range (0.005, 10). Source: calibrated — sets the Smith T_n of small steps (5–10 %,
+  /// [s]. Source: calibrated — sets the Smith T_n of small steps (5–10 %,
   /// 15–25 %) to ≈ 0.6 s, inside the thesis 0.5–1.4 s (tables 3.23, 3.25).
   double ref_time_constant = 0.8;
-  /// Proportional speed gain K_p [N·m·s/rad], range (0, 1e7). Source: reasoned — I_s/0.35 s, a
+  /// Proportional speed gain K_p [N·m·s/rad]. Source: reasoned — I_s/0.35 s, a
   /// closed-loop speed bandwidth of ≈ 3 rad/s, well below the motor bandwidth 1/T_m.
   double kp = 6000.0;
-  /// Integral speed gain K_i [N·m/rad], range [0, 1e8). Source: reasoned — K_p/T_i, T_i = 1 s.
+  /// Integral speed gain K_i [N·m/rad]. Source: reasoned — K_p/T_i, T_i = 1 s.
   double ki = 6000.0;
-  /// Command dead time δ [s], range [0, 20). Source: calibrated to tables 3.23–3.29 (δ_n
+  /// Command dead time δ [s]. Source: calibrated to tables 3.23–3.29 (δ_n
   /// 1.2–3.3 s): the Smith dead time is δ plus ≈ 0.2 s for small steps and ≈ 0.1× the ramp
   /// duration for large ones, giving δ_n 1.5–2.4 s.
   double dead_time = 1.3;
 
-  /// Throws std::invalid_argument naming the first field out of range.
+  /// Throws core::InputError naming the first field outside its range (param_fields).
   void validate() const;
 };
+
+/// The parameters as the keys of the vessel file's [propeller] section, each with its unit and
+/// range (core/param_range.hpp): the one table validate(), the file reader and the docs use.
+std::vector<core::ParamField> param_fields(ThrusterParams& params);
 
 /// The held input of the thruster over one integration step.
 struct ThrusterInput {
@@ -126,7 +132,7 @@ class Thruster {
   static constexpr int kMotorTorque = 2;  ///< Q_m [N·m]
   static constexpr int kOmega = 3;        ///< ω = 2πn [rad/s]
 
-  /// A thruster with the given parameters (validated; throws std::invalid_argument).
+  /// A thruster with the given parameters (validated; throws core::InputError).
   explicit Thruster(const ThrusterParams& params = {});
 
   const ThrusterParams& params() const noexcept { return params_; }
@@ -167,16 +173,17 @@ ThrusterStepTruth thruster_step_truth(const Thruster& thruster, double n_from, d
 
 /// Parameters of the first-order thrust model (2.29) for one thruster.
 struct FirstOrderThrusterParams {
-  /// Time constant T_thr [s], range (0.005, 100). Source: reasoned — between the small- and
+  /// Time constant T_thr [s]. Source: reasoned — between the small- and
   /// large-step T_thrust of tables 3.23–3.29 (0.3–4.7 s); 2 s.
   double time_constant = 2.0;
-  /// Command dead time [s], range [0, 20). Source: Table 3.27 δ_thrust 2.7–4.9 s; 3 s.
+  /// Command dead time [s]. Source: Table 3.27 δ_thrust 2.7–4.9 s; 3 s.
   double dead_time = 3.0;
-  /// Largest ahead thrust [N] (> 0). Source: as ThrusterParams, 8.13 kN/rps²·(3 rps)².
+  /// Largest ahead thrust [N]. Source: as ThrusterParams, 8.13 kN/rps²·(3 rps)².
   double max_thrust_forward = 8130.0 * 9.0;
-  /// Largest astern thrust magnitude [N] (> 0). Source: 5.8 kN/rps²·(3 rps)².
+  /// Largest astern thrust magnitude [N]. Source: 5.8 kN/rps²·(3 rps)².
   double max_thrust_reverse = 5800.0 * 9.0;
 
+  /// Throws core::InputError naming the first field outside its range.
   void validate() const;
 };
 

@@ -14,47 +14,55 @@
 /// Bjørheden 1966, summarised by Sørensen 2012), which show the side force falling to ≈ 0.3–0.5
 /// of bollard at 3–4 kn; the partial recovery above ≈ 6 kn is ignored, so η is monotone.
 
+#include <vector>
+
+#include "dynpos/core/param_range.hpp"
 #include "dynpos/model/fopdt_truth.hpp"
 
 namespace dynpos::model {
 
 /// Parameters of the bow tunnel thruster. Defaults: the R/V Gunnerus tunnel thruster.
 struct TunnelThrusterParams {
-  /// Water density ρ [kg/m³], range (900, 1100). Source: standard sea water.
+  /// Water density ρ [kg/m³]. Source: standard sea water.
   double rho = 1025.0;
-  /// Propeller diameter D [m], range (0, 5). Source: reasoned — ≈ 200 kW tunnel thruster.
+  /// Propeller diameter D [m]. Source: reasoned — ≈ 200 kW tunnel thruster.
   double diameter = 1.2;
-  /// K_T for n > 0 (thrust to starboard) [-], range (0, 1). Source: reasoned — typical
+  /// K_T for n > 0 (thrust to starboard) [-]. Source: reasoned — typical
   /// tunnel-thruster value; with D = 1.2 m and n_max it gives ≈ 25 kN.
   double kt_starboard = 0.40;
-  /// K_T for n < 0 (thrust to port) [-], range (0, 1). Source: reasoned — asymmetric blades,
+  /// K_T for n < 0 (thrust to port) [-]. Source: reasoned — asymmetric blades,
   /// ≈ 90 % of the starboard value.
   double kt_port = 0.36;
-  /// K_Q for either direction [-], range (0, 0.5). Source: reasoned — 200 kW at n_max.
+  /// K_Q for either direction [-]. Source: reasoned — 200 kW at n_max.
   double kq = 0.0785;
-  /// Maximum shaft speed |n| [rps], range (0, 100). Source: reasoned — 5.42 rps (325 rpm) gives
+  /// Maximum shaft speed |n| [rps]. Source: reasoned — 5.42 rps (325 rpm) gives
   /// ρK_T D⁴n² ≈ 25 kN starboard, inside the 20–30 kN stated for Gunnerus.
   double max_shaft_speed = 5.42;
-  /// Shaft speed time constant T_n [s], range (0.005, 20). Source: reasoned — no tunnel step
+  /// Shaft speed time constant T_n [s]. Source: reasoned — no tunnel step
   /// test in the thesis; a 200 kW electric drive, similar to the small-step main propeller T_n.
   double time_constant = 1.0;
-  /// Shaft speed rate limit |ṅ| [rps/s], range (0, 100). Source: reasoned — full reversal
+  /// Shaft speed rate limit |ṅ| [rps/s]. Source: reasoned — full reversal
   /// −n_max → +n_max in ≈ 8 s.
   double rate_limit = 1.4;
-  /// Command dead time [s], range [0, 20). Source: reasoned — like the main propellers' command
+  /// Command dead time [s]. Source: reasoned — like the main propellers' command
   /// path (tables 3.23–3.29, δ ≈ 1–3 s); the tunnel thruster is logged at 1 Hz only.
   double dead_time = 1.0;
-  /// Speed factor floor η_min [-], range [0, 1]. Source: reasoned (see file comment).
+  /// Speed factor floor η_min [-]. Source: reasoned (see file comment).
   double speed_factor_min = 0.3;
-  /// Speed factor scale u₀ [m/s], range (0, 20). Source: reasoned — η = 0.5 at 3 kn and ≈ 0.37
+  /// Speed factor scale u₀ [m/s]. Source: reasoned — η = 0.5 at 3 kn and ≈ 0.37
   /// at 4 kn.
   double speed_factor_scale = 1.38;
-  /// Position of the thruster in BODY, x [m], range (−50, 50). Source: reasoned — near the bow
+  /// Position of the thruster in BODY, x [m]. Source: reasoned — near the bow
   /// of a 31 m vessel, 12.5 m forward of the control origin amidships.
   double x = 12.5;
 
+  /// Throws core::InputError naming the first field outside its range (param_fields).
   void validate() const;
 };
+
+/// The parameters as the keys of the vessel file's [tunnel] section, each with its unit and range
+/// (core/param_range.hpp): the one table validate(), the file reader and the docs use.
+std::vector<core::ParamField> param_fields(TunnelThrusterParams& params);
 
 /// Instantaneous outputs of the tunnel thruster.
 struct TunnelThrusterOutput {
@@ -67,7 +75,7 @@ struct TunnelThrusterOutput {
 /// The bow tunnel thruster: const model.
 class TunnelThruster {
  public:
-  /// A tunnel thruster with the given parameters (validated; throws std::invalid_argument).
+  /// A tunnel thruster with the given parameters (validated; throws core::InputError).
   explicit TunnelThruster(const TunnelThrusterParams& params = {});
 
   const TunnelThrusterParams& params() const noexcept { return params_; }

@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "dynpos/core/error.hpp"
+#include "dynpos/core/param_range.hpp"
 #include "dynpos/model/environment.hpp"
 #include "dynpos/model/hull.hpp"
 #include "dynpos/model/sea_state.hpp"
@@ -37,6 +39,7 @@ struct JoystickParams {
   /// Source: reasoned — slow enough not to fight waves, fast enough to hold ±2° in sway tests.
   double heading_hold_omega_rad_s = 0.15;
   double heading_hold_zeta = 0.9;
+  /// Throws core::InputError naming the first value outside its range (vessel_param_sections).
   void validate() const;
 };
 
@@ -59,11 +62,21 @@ struct VesselConfig {
   /// [sensors], [gnss1]–[gnss3], [mru1]–[mru2], [gyro], [speed_log], [wind_sensor], [feedback]).
   sensors::SensorSuiteParams sensors;
 
-  /// Throws std::invalid_argument naming the bad field.
+  /// Throws core::InputError naming the first value outside its range or the rule between
+  /// values that does not hold (e.g. a mass matrix that is not positive definite).
   void validate() const;
   /// Every parameter in file units, section by section (the layout of the vessel file).
   nlohmann::json to_json() const;
 };
+
+/// The numeric keys of every vessel-file section in file order, each bound to its field in
+/// `config` with its unit and range: the tables validate() checks, load_vessel_config reads
+/// and docs/vessel-file.md lists.
+std::vector<core::ParamSection> vessel_param_sections(VesselConfig& config);
+
+/// The ranges of every vessel-file key as Markdown, one table per section (the generated part
+/// of docs/vessel-file.md).
+std::string vessel_param_tables_markdown();
 
 /// Reads a vessel TOML file; absent keys keep the built-in value. Throws core::InputError with
 /// file, line and key for syntax errors, unknown sections or keys and out-of-range values.

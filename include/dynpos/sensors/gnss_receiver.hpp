@@ -1,14 +1,15 @@
 #pragma once
 /// \file
 /// GnssReceiver: a GNSS antenna at lever arm l_b, reporting geodetic latitude, longitude and
-/// ellipsoidal height (WGS84, through GeographicLib) and the same position in a local NED frame
-/// about a fixed geodetic origin, with white noise and a slowly varying (multipath-like) bias.
+/// ellipsoidal height (WGS84, through core::LocalNedFrame) and the same position in a local NED
+/// frame about a fixed geodetic origin, with white noise and a slowly varying (multipath-like)
+/// bias.
 
 #include <Eigen/Core>
-#include <GeographicLib/LocalCartesian.hpp>
 #include <array>
 #include <string>
 
+#include "dynpos/core/local_ned_frame.hpp"
 #include "dynpos/sensors/rigid_body_motion.hpp"
 #include "dynpos/sensors/sensor_timing.hpp"
 #include "dynpos/sim/noise.hpp"
@@ -21,6 +22,8 @@ struct GeodeticOrigin {
   double lat_deg = 63.4400;  ///< Source: reasoned — Trondheimsfjord, Gunnerus' home waters.
   double lon_deg = 10.3500;  ///< [deg east]
   double height_m = 39.5;    ///< ellipsoidal height of mean sea level there (geoid ≈ 39.5 m)
+  /// Throws core::InputError naming the first value outside its range (the vessel file's
+  /// [sensors] origin_* keys, sensor_suite.hpp).
   void validate() const;
 };
 
@@ -32,6 +35,8 @@ struct GnssParams {
   double vertical_std_m = 0.02;         ///< white noise, vertical [m]; RTK 2–4 cm
   double bias_std_m = 0.0;              ///< stationary σ of a Gauss–Markov bias per axis [m]
   double bias_time_constant_s = 600.0;  ///< its correlation time [s]
+  /// Throws core::InputError naming NAME.KEY for the first value outside its range (the vessel
+  /// file's [gnssK] keys, sensor_suite.hpp).
   void validate() const;
 };
 
@@ -57,7 +62,7 @@ class GnssReceiver {
 
  private:
   GnssParams params_;
-  GeographicLib::LocalCartesian enu_;  // GeographicLib's local frame is ENU
+  core::LocalNedFrame frame_;
   std::array<sim::WhiteNoise, 3> noise_;
   std::array<sim::GaussMarkov, 3> bias_;
 };

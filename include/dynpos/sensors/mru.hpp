@@ -44,6 +44,8 @@ struct MruParams {
   /// Gyro bias left after the MRU's own filter (Gauss–Markov, per body axis) [rad/s].
   double rate_bias_std_rad_s = 0.0;
   double rate_bias_time_constant_s = 600.0;  ///< [s]
+  /// Throws core::InputError naming NAME.KEY for the first value outside its range (the vessel
+  /// file's [mruK] keys, sensor_suite.hpp).
   void validate() const;
 };
 

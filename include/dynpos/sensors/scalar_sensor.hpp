@@ -15,7 +15,8 @@ struct ScalarNoiseParams {
   double bias_time_constant_s = 600.0;  ///< T of the bias (> 0) [s]
   double resolution = 0.0;              ///< quantisation step, SI unit (≥ 0; 0: none)
 
-  /// Throws std::invalid_argument naming `what`.
+  /// Throws core::InputError naming `what` unless the sensor can run (the signs above); the
+  /// vessel file's ranges in the channel's unit are checked by SensorSuiteParams::validate.
   void validate(const char* what) const;
 };
 

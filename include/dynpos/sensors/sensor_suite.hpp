@@ -6,6 +6,8 @@
 
 #include <vector>
 
+#include "dynpos/core/param_range.hpp"
+
 #include "dynpos/core/angle.hpp"
 #include "dynpos/sensors/gnss_receiver.hpp"
 #include "dynpos/sensors/mru.hpp"
@@ -52,11 +54,18 @@ struct SensorSuiteParams {
   ChannelSensorParams rudder_angle{{100.0, 0.0},
                                    {core::deg_to_rad(0.1), 0.0, 600.0, core::deg_to_rad(0.1)}};
 
-  /// Throws std::invalid_argument naming the bad field.
+  /// Throws core::InputError naming the first value outside its range (param_sections) or a
+  /// sensor name used twice.
   void validate() const;
 
   static std::vector<GnssParams> default_gnss();
   static std::vector<MruParams> default_mru();
 };
+
+/// The suite as the vessel file's sensor sections, in file order: [sensors] (the origin),
+/// [gnss1]…, [mru1]…, [gyro], [speed_log], [wind_sensor] (its timing is the wind speed's) and
+/// [feedback]; each key with its unit and range (core/param_range.hpp): the one table
+/// validate(), the file reader and the docs use.
+std::vector<core::ParamSection> param_sections(SensorSuiteParams& params);
 
 }  // namespace dynpos::sensors

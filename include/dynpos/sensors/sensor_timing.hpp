@@ -12,11 +12,12 @@
 namespace dynpos::sensors {
 
 struct SensorTiming {
-  double rate_hz = 1.0;        ///< sample rate [Hz], > 0; 0 switches the sensor off
-  double time_offset_s = 0.0;  ///< latency δ [s], ≥ 0
+  double rate_hz = 1.0;        ///< sample rate [Hz]; 0 switches the sensor off
+  double time_offset_s = 0.0;  ///< latency δ [s]
 
   bool enabled() const noexcept { return rate_hz > 0.0; }
-  /// Throws std::invalid_argument naming `what` for a negative or non-finite value.
+  /// Throws core::InputError naming `what`.KEY for a value outside its range (the vessel file's
+  /// rate_hz and time_offset_s, sensor_suite.hpp).
   void validate(const char* what) const;
 };
 
@@ -29,9 +30,10 @@ struct SampleSchedule {
   bool fires(std::size_t tick) const noexcept { return tick % every == 0; }
 };
 
-/// The schedule of `timing` on a logger of rate log_rate_hz (> 0). Throws std::invalid_argument
-/// naming `what` if the rate does not divide the logger rate or the offset is not a whole
-/// number of logger ticks (within 1e-9 relative).
+/// The schedule of `timing` on a logger of rate log_rate_hz (> 0). Throws core::InputError for
+/// a timing outside its range (validate), std::invalid_argument naming `what` if the rate does
+/// not divide the logger rate or the offset is not a whole number of logger ticks (within 1e-9
+/// relative); the scenario runner reports the latter with the file and the log rate.
 SampleSchedule make_schedule(const SensorTiming& timing, double log_rate_hz, const char* what);
 
 }  // namespace dynpos::sensors
