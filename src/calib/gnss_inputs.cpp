@@ -1,7 +1,6 @@
 // Log adapters of the GNSS lever-arm estimators: the motion of a mixed-rate log and the
 // antennas' fixes in one local NED frame (gnss_lever_arm.hpp).
 
-#include <GeographicLib/LocalCartesian.hpp>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -9,6 +8,7 @@
 
 #include "dynpos/calib/gnss_lever_arm.hpp"
 #include "dynpos/core/error.hpp"
+#include "dynpos/core/local_ned_frame.hpp"
 
 namespace dynpos::calib {
 namespace {
@@ -133,7 +133,7 @@ std::vector<GnssSeries> gnss_from_logs(const std::vector<GnssSource>& sources) {
                            "give every antenna the same kind of position (both frames must share "
                            "one origin)");
   }
-  std::optional<GeographicLib::LocalCartesian> frame;
+  std::optional<core::LocalNedFrame> frame;
   const double deg = 180.0 / std::numbers::pi;
   std::vector<GnssSeries> out;
   for (const GnssSource& s : sources) {
@@ -155,10 +155,9 @@ std::vector<GnssSeries> gnss_from_logs(const std::vector<GnssSource>& sources) {
       if (ned) {
         p = Eigen::Vector3d(a[i], b[i], c[i]);
       } else {
-        if (!frame) frame.emplace(a[i] * deg, b[i] * deg, c[i]);
-        double x_east = 0, y_north = 0, z_up = 0;
-        frame->Forward(a[i] * deg, b[i] * deg, c[i], x_east, y_north, z_up);
-        p = Eigen::Vector3d(y_north, x_east, -z_up);
+        const core::GeodeticPoint fix{a[i] * deg, b[i] * deg, c[i]};
+        if (!frame) frame.emplace(fix);
+        p = frame->to_ned(fix);
       }
       g.t_s.push_back(t[i]);
       g.p_n_m.push_back(p);

@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
-#include <GeographicLib/LocalCartesian.hpp>
 #include <algorithm>
 #include <array>
 #include <cmath>

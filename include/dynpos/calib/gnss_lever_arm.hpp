@@ -138,8 +138,8 @@ struct GnssSource {
 };
 
 /// The antennas' fixes in one local NED frame: roles PREFIX.north/east/down when every source
-/// has them, else PREFIX.lat/lon/height [rad, rad, m] converted by GeographicLib's
-/// LocalCartesian with its origin at the first fix of the first antenna (shared by all).
+/// has them, else PREFIX.lat/lon/height [rad, rad, m] converted by core::LocalNedFrame
+/// (GeographicLib) with its origin at the first fix of the first antenna (shared by all).
 /// Rows with a component missing are skipped. Throws core::InputError if an antenna has
 /// neither set, fewer than 3 fixes, or an infinite value.
 std::vector<GnssSeries> gnss_from_logs(const std::vector<GnssSource>& sources);
