@@ -26,10 +26,6 @@ bool wanted_role(const std::string& role) {
   return role.rfind("thrust.", 0) == 0 || role.rfind("rpm.", 0) == 0;
 }
 
-std::vector<double> values_or_empty(const core::Log& log, const std::string& name) {
-  return log.has(name) ? log.values(name) : std::vector<double>{};
-}
-
 std::vector<double> to_pct(std::vector<double> v) {
   for (double& x : v) x *= 100.0;  // the log holds fractions (SI); the demands are in %
   return v;

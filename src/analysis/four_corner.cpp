@@ -22,10 +22,6 @@ bool wanted_role(const std::string& role) {
   return role.rfind("thrust.", 0) == 0 || role.rfind("power.", 0) == 0;
 }
 
-std::vector<double> values_or_empty(const core::Log& log, const std::string& name) {
-  return log.has(name) ? log.values(name) : std::vector<double>{};
-}
-
 // Rows [a, b) of a channel; a channel that is not logged stays empty.
 std::vector<double> slice(const std::vector<double>& x, std::size_t a, std::size_t b) {
   if (x.empty()) return x;
@@ -92,14 +88,7 @@ ident::FourCornerInput make_input(const FourCornerRequest& request, const core::
   in.setpoint_north_m = values_or_empty(log, "setpoint.north");
   in.setpoint_east_m = values_or_empty(log, "setpoint.east");
   in.setpoint_heading_rad = values_or_empty(log, "setpoint.heading");
-  std::vector<std::string> names = thruster_names(log, "thrust");
-  for (const std::string& n : thruster_names(log, "power")) {
-    if (std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);
-  }
-  for (const std::string& n : names) {
-    in.thrusters.push_back(
-        {n, values_or_empty(log, "thrust." + n), values_or_empty(log, "power." + n)});
-  }
+  in.thrusters = thrust_power_channels(log);
   cut_window(request, in);
   return in;
 }

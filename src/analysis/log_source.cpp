@@ -41,4 +41,20 @@ std::vector<std::string> thruster_names(const core::Log& log, const std::string&
   return names;
 }
 
+std::vector<double> values_or_empty(const core::Log& log, const std::string& name) {
+  return log.has(name) ? log.values(name) : std::vector<double>{};
+}
+
+std::vector<ident::ThrusterChannels> thrust_power_channels(const core::Log& log) {
+  std::vector<std::string> names = thruster_names(log, "thrust");
+  for (const std::string& n : thruster_names(log, "power")) {
+    if (std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);
+  }
+  std::vector<ident::ThrusterChannels> out;
+  for (const std::string& n : names) {
+    out.push_back({n, values_or_empty(log, "thrust." + n), values_or_empty(log, "power." + n)});
+  }
+  return out;
+}
+
 }  // namespace dynpos::analysis

@@ -21,10 +21,6 @@ bool wanted_role(const std::string& role) {
   return role.rfind("thrust.", 0) == 0 || role.rfind("power.", 0) == 0;
 }
 
-std::vector<double> values_or_empty(const core::Log& log, const std::string& name) {
-  return log.has(name) ? log.values(name) : std::vector<double>{};
-}
-
 // The position in metres: north/east as logged (any offset), else lat/lon about their first fix.
 ident::StationKeepingInput make_input(const core::Log& log) {
   ident::StationKeepingInput in;
@@ -40,14 +36,7 @@ ident::StationKeepingInput make_input(const core::Log& log) {
   in.heading_rad = values_or_empty(log, "heading");
   in.wind_speed_mps = values_or_empty(log, "wind_speed");
   in.wind_dir_rad = values_or_empty(log, "wind_dir");
-  std::vector<std::string> names = thruster_names(log, "thrust");
-  for (const std::string& n : thruster_names(log, "power")) {
-    if (std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);
-  }
-  for (const std::string& n : names) {
-    in.thrusters.push_back(
-        {n, values_or_empty(log, "thrust." + n), values_or_empty(log, "power." + n)});
-  }
+  in.thrusters = thrust_power_channels(log);
   return in;
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "dynpos/core/log.hpp"
+#include "dynpos/ident/station_keeping.hpp"
 #include "dynpos/io/column_map.hpp"
 
 namespace dynpos::analysis {
@@ -34,5 +35,12 @@ struct LogSource {
 
 /// Thruster names NAME of the channels "PREFIX.NAME" of a log, in channel order, unique.
 std::vector<std::string> thruster_names(const core::Log& log, const std::string& prefix);
+
+/// The channel's values, or empty when the log does not have it (missing, never zero).
+std::vector<double> values_or_empty(const core::Log& log, const std::string& name);
+
+/// Each thruster with a thrust.NAME or power.NAME channel (thrust names first, then power-only
+/// ones), with both series, empty where the log lacks one.
+std::vector<ident::ThrusterChannels> thrust_power_channels(const core::Log& log);
 
 }  // namespace dynpos::analysis
