@@ -2,6 +2,7 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -45,8 +46,8 @@ scenario::VesselConfig vessel() {
 }
 
 TEST(CampaignReport, WritesTheTableAndTheTitledSectionsInOrder) {
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / "dynpos_campaign_report_test";
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                    ("dynpos_campaign_report_test-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   const std::vector<ReportSection> sections = {

@@ -1,6 +1,7 @@
 #include "dynpos/analysis/demo.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include "dynpos/analysis/campaign_report.hpp"
 #include "dynpos/core/error.hpp"
@@ -41,8 +42,10 @@ TEST(Demo, TextIsTheCampaignsLinesAndWhereTheReportIs) {
 
 TEST(Demo, MissingDataFolderIsAnInputError) {
   DemoRequest r;
-  r.out_dir = std::filesystem::temp_directory_path() / "dynpos_demo_test";
-  r.data_dir = std::filesystem::temp_directory_path() / "dynpos_demo_test_no_data";
+  r.out_dir =
+      std::filesystem::temp_directory_path() / ("dynpos_demo_test-" + std::to_string(::getpid()));
+  r.data_dir = std::filesystem::temp_directory_path() /
+               ("dynpos_demo_test_no_data-" + std::to_string(::getpid()));
   std::filesystem::remove_all(*r.data_dir);
   EXPECT_THROW(run_demo(r), core::InputError);
   std::filesystem::remove_all(r.out_dir);

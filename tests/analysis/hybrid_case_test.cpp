@@ -2,6 +2,7 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <string>
@@ -147,8 +148,8 @@ TEST(HybridCase, DpWithoutJumpsReportsTheConventionalRunOnly) {
   EXPECT_THAT(to_text(r), StartsWith("dynpos hybrid dp: conventional only (--no-jumps)\n"
                                      "Theorem 7: satisfied"));
 
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / "dynpos_hybrid_case_test";
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                    ("dynpos_hybrid_case_test-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   const auto written = write_figures(r, dir / "plots");
   ASSERT_EQ(written.size(), 4u);
@@ -158,8 +159,8 @@ TEST(HybridCase, DpWithoutJumpsReportsTheConventionalRunOnly) {
 }
 
 TEST(HybridCaseOutputs, JsonMayGoIntoTheFigureFolderButNotIntoAMissingOne) {
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / "dynpos_hybrid_case_outputs";
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                    ("dynpos_hybrid_case_outputs-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   EXPECT_NO_THROW(check_hybrid_case_outputs(dir, (dir / "r.json").string()));
   EXPECT_NO_THROW(check_hybrid_case_outputs({}, "-"));

@@ -2,6 +2,7 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <string>
@@ -106,8 +107,8 @@ TEST(HybridVessel, AdaptersShowTheSameFigures) {
               StartsWith("| after the load | conventional | hybrid |\n|---|---:|---:|\n"));
   EXPECT_THAT(to_html(r), StartsWith("<table>\n<tr><th>after the load</th>"));
 
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / "dynpos_hybrid_vessel_test";
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                    ("dynpos_hybrid_vessel_test-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   const auto written = write_figures(r, dir);
   ASSERT_EQ(written.size(), 3u);

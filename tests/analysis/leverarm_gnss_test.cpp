@@ -4,6 +4,7 @@
 #include "dynpos/analysis/leverarm_gnss.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -26,7 +27,8 @@ const std::filesystem::path kSource = DYNPOS_SOURCE_DIR;
 class LeverarmGnss : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = std::filesystem::temp_directory_path() / "dynpos_analysis_leverarm_gnss";
+    dir_ = std::filesystem::temp_directory_path() /
+           ("dynpos_analysis_leverarm_gnss-" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir_);
     scenario::ScenarioSpec spec =
         scenario::load_scenario(kSource / "data" / "scenarios" / "turning-circle.toml");

@@ -4,6 +4,7 @@
 #include "dynpos/analysis/leverarm_mru.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -25,7 +26,8 @@ const std::filesystem::path kSource = DYNPOS_SOURCE_DIR;
 class LeverarmMru : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = std::filesystem::temp_directory_path() / "dynpos_analysis_leverarm_mru";
+    dir_ = std::filesystem::temp_directory_path() /
+           ("dynpos_analysis_leverarm_mru-" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir_);
     scenario::ScenarioSpec spec =
         scenario::load_scenario(kSource / "data" / "scenarios" / "turning-circle.toml");

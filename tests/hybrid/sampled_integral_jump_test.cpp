@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "dynpos/control/dp_controller.hpp"
+#include "dynpos/core/error.hpp"
 #include "dynpos/sim/sim_time.hpp"
 
 namespace dynpos::hybrid {
@@ -112,7 +113,8 @@ TEST(SampledIntegralJump, SameJumpsAsTheFormulasOverRandomStates) {
 TEST(SampledIntegralJump, RejectsBadParameters) {
   IntegralJumpParams p;
   p.dwell_s = 0.0;
-  EXPECT_THROW(SampledIntegralJump(p, control::DpControllerParams{}, 0.1), std::invalid_argument);
+  // The [hybrid] section is user input: InputError naming the key (core/error.hpp).
+  EXPECT_THROW(SampledIntegralJump(p, control::DpControllerParams{}, 0.1), core::InputError);
   EXPECT_THROW(SampledIntegralJump(IntegralJumpParams{}, control::DpControllerParams{}, 0.0),
                std::invalid_argument);
 }
