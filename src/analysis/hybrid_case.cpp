@@ -1,5 +1,9 @@
 #include "dynpos/analysis/hybrid_case.hpp"
 
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
 #include <stdexcept>
 
 #include "dynpos/analysis/options.hpp"
@@ -23,6 +27,20 @@ void apply_timing(const HybridCaseRequest& request, hybrid::CaseTiming& timing) 
   } catch (const std::invalid_argument& e) {
     throw option_error("dwell/sample_period/noise_power/end_time", e.what(),
                        "times must be multiples of the 1 ms step");
+  }
+}
+
+// The case's own checks (hybrid/case_study.hpp) as an option error under `key`: with the
+// timing and the theorem's conditions already checked, what is left is a step outside the run.
+template <typename CaseOptions>
+void check_case_options(const CaseOptions& o, const char* key) {
+  try {
+    o.validate();
+  } catch (const std::invalid_argument& e) {
+    const std::string text = e.what();
+    const std::size_t colon = text.find(": ");
+    throw option_error(key, colon == std::string::npos ? text : text.substr(colon + 2),
+                       "give a longer --end-time");
   }
 }
 
@@ -52,6 +70,7 @@ FirstOrderStudy first_order_study(const HybridCaseRequest& request) {
                        "the conditions of Theorem 6 fail: " + s.check.reason,
                        request.solve_p ? "" : "try --solve-p to compute P from A^T P + PA = -I");
   }
+  check_case_options(o, "end_time");  // the disturbance steps must fall within the run
   return s;
 }
 
@@ -66,6 +85,9 @@ DpStudy dp_study(const HybridCaseRequest& request) {
   apply_timing(request, o.timing);
   if (request.lambda) o.params.lambda = *request.lambda;
   if (request.heading_deg) {
+    if (!std::isfinite(*request.heading_deg)) {
+      throw option_error("heading", "the set-point heading must be a finite angle [deg]");
+    }
     o.params.eta_d.z() = core::wrap_pi(core::deg_to_rad(*request.heading_deg));
   }
   o.params.jump_set = hybrid_jump_set(request);
@@ -73,6 +95,7 @@ DpStudy dp_study(const HybridCaseRequest& request) {
   if (!s.check.ok()) {
     throw option_error("lambda", "the conditions of Theorem 7 fail: " + s.check.reason);
   }
+  check_case_options(o, "end_time");  // the bias steps must fall within the run
   return s;
 }
 

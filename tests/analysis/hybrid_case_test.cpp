@@ -2,7 +2,9 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
 #include <unistd.h>
+#include <cmath>
 
 #include <filesystem>
 #include <string>
@@ -79,6 +81,21 @@ TEST(HybridCaseRequest, ErrorsNameTheirOption) {
   r.lambda = -1.0;
   EXPECT_EQ(failing_key(r, &message), "lambda");
   EXPECT_THAT(message, HasSubstr("lambda = -1 must be > 0"));
+}
+
+TEST(HybridCaseRequest, StepsOutsideTheRunAndANonFiniteHeadingAreOptionErrors) {
+  // The first-order disturbance steps at 20 s and the DP bias steps lie beyond a 2 s run.
+  HybridCaseRequest r;
+  r.end_time_s = 2.0;
+  std::string message;
+  EXPECT_EQ(failing_key(r, &message), "end_time");
+  EXPECT_THAT(message, HasSubstr("step 1 time must be in [0, end_time)"));
+  r = dp_request();
+  r.end_time_s = 2.0;
+  EXPECT_EQ(failing_key(r), "end_time");
+  r = dp_request();
+  r.heading_deg = std::nan("");
+  EXPECT_EQ(failing_key(r), "heading");
 }
 
 TEST(HybridCaseRequest, ViolatedTheoremSixIsRefusedUnlessPIsSolvedFor) {
