@@ -9,6 +9,7 @@
 #include <string>
 
 #include "dynpos/core/error.hpp"
+#include "input_error_capture.hpp"
 
 namespace dynpos::analysis {
 namespace {
@@ -100,14 +101,7 @@ TEST(AgilityAnalysis, ParsesWindowsAndCurrents) {
 }
 
 TEST(AgilityAnalysis, BadOptionsNameTheirKey) {
-  const auto key_of = [](const auto& f) {
-    try {
-      f();
-    } catch (const core::InputError& e) {
-      return e.option();
-    }
-    return std::string("no error");
-  };
+  const auto key_of = [](const auto& f) { return testing::option_key_of(f); };
   EXPECT_EQ(key_of([] { parse_agility_window("10,20"); }), "window");
   EXPECT_EQ(key_of([] { parse_agility_window("10,x,90"); }), "window");
   EXPECT_EQ(key_of([] { parse_observed_current("0.2"); }), "current");

@@ -6,22 +6,13 @@
 
 #include "../io/io_test_util.hpp"
 #include "dynpos/core/error.hpp"
+#include "input_error_capture.hpp"
 
 namespace dynpos::analysis {
 namespace {
 
 using io::testing::TempDir;
-
-template <class F>
-core::InputError input_error(F&& f) {
-  try {
-    f();
-  } catch (const core::InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "expected a core::InputError";
-  return core::InputError({}, "");
-}
+using testing::input_error;
 
 // Two step results: the step at 20 s in A is the one at 20.5 s in B (T 2 → 2.5 s, delay 1.5 →
 // null); the step at 420 s is in A only. Binary fractions, so the differences are exact.

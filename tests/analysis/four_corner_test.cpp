@@ -9,6 +9,7 @@
 #include <string>
 
 #include "dynpos/core/error.hpp"
+#include "input_error_capture.hpp"
 
 namespace dynpos::analysis {
 namespace {
@@ -77,14 +78,7 @@ TEST(FourCornerAnalysis, TheWindowCutsTheLog) {
 }
 
 TEST(FourCornerAnalysis, BadOptionsNameTheirKey) {
-  const auto key_of = [](const auto& f) {
-    try {
-      f();
-    } catch (const core::InputError& e) {
-      return e.option();
-    }
-    return std::string("no error");
-  };
+  const auto key_of = [](const auto& f) { return testing::option_key_of(f); };
   EXPECT_EQ(key_of([] { parse_leg_segmentation("box"); }), "segment");
   EXPECT_EQ(parse_leg_segmentation("track"), ident::LegSegmentation::kTrack);
   FourCornerRequest r;

@@ -9,11 +9,13 @@
 
 #include "../io/io_test_util.hpp"
 #include "dynpos/core/error.hpp"
+#include "input_error_capture.hpp"
 
 namespace dynpos::analysis {
 namespace {
 
 using io::testing::TempDir;
+using testing::input_error;
 
 // 400 s at 1 Hz: the DP setpoint (and the heading) 0° for t < 200 s, then 90°. North alternates
 // 100.5 / 99.5 m (std 0.5 m), east is 200 m; wind 8 m/s from 350°; the port thruster gives
@@ -28,17 +30,6 @@ std::filesystem::path write_log(const TempDir& dir) {
                        heading);
   }
   return dir.write("log.csv", csv);
-}
-
-template <class F>
-core::InputError input_error(F&& f) {
-  try {
-    f();
-  } catch (const core::InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "expected a core::InputError";
-  return core::InputError({}, "");
 }
 
 TEST(StationKeepingAnalysis, PerSetpointWindowsOfAKnownLog) {
