@@ -31,13 +31,10 @@ std::vector<double> slice(const std::vector<double>& x, std::size_t a, std::size
 // The position [m]: north/east as logged, or lat/lon made local.
 void read_position(const FourCornerRequest& request, const core::Log& log,
                    ident::FourCornerInput& in) {
-  if (log.has("north") && log.has("east")) {
-    in.north_m = log.values("north");
-    in.east_m = log.values("east");
-  } else if (log.has("lat") && log.has("lon")) {
-    const ident::LocalPositions p = ident::local_north_east(log.values("lat"), log.values("lon"));
-    in.north_m = p.north_m;
-    in.east_m = p.east_m;
+  std::optional<ident::LocalPositions> p = local_position(log);
+  if (p) {
+    in.north_m = std::move(p->north_m);
+    in.east_m = std::move(p->east_m);
   } else {
     throw core::InputError({request.source.log.string(), {}, {}, "north/east"},
                            "no position in the log",

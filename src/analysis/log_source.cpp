@@ -45,6 +45,16 @@ std::vector<double> values_or_empty(const core::Log& log, const std::string& nam
   return log.has(name) ? log.values(name) : std::vector<double>{};
 }
 
+std::optional<ident::LocalPositions> local_position(const core::Log& log) {
+  if (log.has("north") && log.has("east")) {
+    return ident::LocalPositions{log.values("north"), log.values("east")};
+  }
+  if (log.has("lat") && log.has("lon")) {
+    return ident::local_north_east(log.values("lat"), log.values("lon"));
+  }
+  return std::nullopt;
+}
+
 std::vector<ident::ThrusterChannels> thrust_power_channels(const core::Log& log) {
   std::vector<std::string> names = thruster_names(log, "thrust");
   for (const std::string& n : thruster_names(log, "power")) {

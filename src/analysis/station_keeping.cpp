@@ -25,13 +25,9 @@ bool wanted_role(const std::string& role) {
 ident::StationKeepingInput make_input(const core::Log& log) {
   ident::StationKeepingInput in;
   in.t_s = log.time();
-  if (log.has("north") && log.has("east")) {
-    in.north_m = log.values("north");
-    in.east_m = log.values("east");
-  } else if (log.has("lat") && log.has("lon")) {
-    const ident::LocalPositions p = ident::local_north_east(log.values("lat"), log.values("lon"));
-    in.north_m = p.north_m;
-    in.east_m = p.east_m;
+  if (std::optional<ident::LocalPositions> p = local_position(log)) {
+    in.north_m = std::move(p->north_m);
+    in.east_m = std::move(p->east_m);
   }
   in.heading_rad = values_or_empty(log, "heading");
   in.wind_speed_mps = values_or_empty(log, "wind_speed");

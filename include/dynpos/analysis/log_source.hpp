@@ -6,10 +6,12 @@
 
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "dynpos/core/log.hpp"
+#include "dynpos/ident/local_position.hpp"
 #include "dynpos/ident/station_keeping.hpp"
 #include "dynpos/io/column_map.hpp"
 
@@ -38,6 +40,10 @@ std::vector<std::string> thruster_names(const core::Log& log, const std::string&
 
 /// The channel's values, or empty when the log does not have it (missing, never zero).
 std::vector<double> values_or_empty(const core::Log& log, const std::string& name);
+
+/// The position [m]: north/east as logged (any offset), else lat/lon made local about their
+/// first fix; nullopt when the log has neither pair.
+std::optional<ident::LocalPositions> local_position(const core::Log& log);
 
 /// Each thruster with a thrust.NAME or power.NAME channel (thrust names first, then power-only
 /// ones), with both series, empty where the log lacks one.
