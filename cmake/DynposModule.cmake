@@ -32,6 +32,10 @@ function(dynpos_add_module name)
     # private links ($<LINK_ONLY:...>), so the installed package must not name this target.
     target_link_libraries(dynpos_${name} PUBLIC ${ARG_DEPS}
       PRIVATE $<BUILD_INTERFACE:dynpos_warnings>)
+    # Eigen, fmt and the standard library are most of a source's parse time; every module has
+    # them through core. Precompiled per module, so each keeps its own flags and definitions.
+    target_precompile_headers(dynpos_${name} PRIVATE <Eigen/Dense> <fmt/format.h> <algorithm>
+      <cmath> <filesystem> <functional> <map> <optional> <string> <string_view> <vector>)
     # Code compiled with the sanitizers needs their runtimes wherever it is linked.
     if(DYNPOS_SANITIZE)
       target_link_options(dynpos_${name} INTERFACE

@@ -15,7 +15,7 @@ std::string num(double x) {
   return buffer;
 }
 
-std::string quoted(std::string_view name) { return "'" + std::string(name) + "'"; }
+std::string single_quoted(std::string_view name) { return "'" + std::string(name) + "'"; }
 
 // Throws std::invalid_argument unless every time is finite and strictly increasing.
 void check_time_axis(const std::vector<double>& time_s, std::string_view context) {
@@ -51,7 +51,7 @@ double median_spacing(const std::vector<double>& t) {
 std::vector<double> resample_channel(const std::vector<double>& time_s, const Channel& channel,
                                      const std::vector<double>& target_s, double max_gap_s) {
   if (channel.values.size() != time_s.size()) {
-    throw std::invalid_argument("resample: channel " + quoted(channel.name) + " has " +
+    throw std::invalid_argument("resample: channel " + single_quoted(channel.name) + " has " +
                                 std::to_string(channel.values.size()) + " values but the log has " +
                                 std::to_string(time_s.size()) + " time samples");
   }
@@ -109,11 +109,11 @@ void Log::add_channel(std::string name, std::string unit, std::vector<double> va
                       Interp interp) {
   if (name.empty()) throw std::invalid_argument("add_channel: the channel name is empty");
   if (has(name)) {
-    throw std::invalid_argument("add_channel: channel " + quoted(name) +
+    throw std::invalid_argument("add_channel: channel " + single_quoted(name) +
                                 " already exists; channel names must be unique");
   }
   if (values.size() != time_s_.size()) {
-    throw std::invalid_argument("add_channel: channel " + quoted(name) + " has " +
+    throw std::invalid_argument("add_channel: channel " + single_quoted(name) + " has " +
                                 std::to_string(values.size()) + " values but the log has " +
                                 std::to_string(time_s_.size()) + " time samples");
   }
@@ -122,8 +122,8 @@ void Log::add_channel(std::string name, std::string unit, std::vector<double> va
 
 void Log::declare_channel(std::string name, std::string unit, Interp interp) {
   if (!empty()) {
-    throw std::invalid_argument("declare_channel: channel " + quoted(name) + " declared after " +
-                                std::to_string(size()) +
+    throw std::invalid_argument("declare_channel: channel " + single_quoted(name) +
+                                " declared after " + std::to_string(size()) +
                                 " rows; declare before append_row() or use add_channel()");
   }
   add_channel(std::move(name), std::move(unit), {}, interp);
@@ -162,7 +162,7 @@ const Channel& Log::channel(std::string_view name) const {
   }
   std::string known;
   for (const Channel& c : channels_) known += (known.empty() ? "" : ", ") + c.name;
-  throw std::out_of_range("no channel " + quoted(name) +
+  throw std::out_of_range("no channel " + single_quoted(name) +
                           " in the log; channels are: " + (known.empty() ? "(none)" : known));
 }
 
@@ -206,7 +206,7 @@ Log Log::window(double t_from_s, double t_to_s) const {
   out.channels_.reserve(channels_.size());
   for (const Channel& c : channels_) {
     if (c.values.size() != time_s_.size()) {
-      throw std::invalid_argument("window: channel " + quoted(c.name) + " has " +
+      throw std::invalid_argument("window: channel " + single_quoted(c.name) + " has " +
                                   std::to_string(c.values.size()) + " values but the log has " +
                                   std::to_string(time_s_.size()) + " time samples");
     }
