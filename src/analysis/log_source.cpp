@@ -25,9 +25,47 @@ io::ColumnMap LogSource::column_map(const RoleFilter& wanted) const {
   return map;
 }
 
-core::Log LogSource::read(const RoleFilter& wanted) const {
-  return io::read_csv(log, column_map(wanted));
+namespace {
+
+// Median spacing of the valid samples of a channel → rate [Hz]; nullopt with fewer than two.
+std::optional<double> median_rate_hz(const core::Log& log, const core::Channel& channel) {
+  std::vector<double> dt;
+  double previous = core::kMissing;
+  for (std::size_t i = 0; i < log.size(); ++i) {
+    if (core::is_missing(channel.values[i])) continue;
+    if (!core::is_missing(previous)) dt.push_back(log.time()[i] - previous);
+    previous = log.time()[i];
+  }
+  if (dt.empty()) return std::nullopt;
+  const auto mid = dt.begin() + static_cast<std::ptrdiff_t>(dt.size() / 2);
+  std::nth_element(dt.begin(), mid, dt.end());
+  return *mid > 0.0 ? std::optional<double>(1.0 / *mid) : std::nullopt;
 }
+
+}  // namespace
+
+io::InputReport describe_input(const core::Log& log, const std::string& file,
+                               io::FileReport file_report) {
+  io::InputReport input;
+  file_report.path = file;
+  file_report.records = log.size();
+  input.files.push_back(std::move(file_report));
+  for (const core::Channel& c : log.channels()) {
+    input.roles.push_back({c.name, file, median_rate_hz(log, c)});
+  }
+  return input;
+}
+
+LoadedLog LogSource::load(const RoleFilter& wanted) const {
+  core::Log read_log = io::read_csv(log, column_map(wanted));
+  io::FileReport file;
+  file.format = "csv";
+  file.time_format = "seconds";
+  io::InputReport input = describe_input(read_log, log.string(), std::move(file));
+  return {std::move(read_log), std::move(input)};
+}
+
+core::Log LogSource::read(const RoleFilter& wanted) const { return load(wanted).log; }
 
 std::vector<std::string> thruster_names(const core::Log& log, const std::string& prefix) {
   std::vector<std::string> names;

@@ -14,11 +14,18 @@
 #include "dynpos/ident/local_position.hpp"
 #include "dynpos/ident/station_keeping.hpp"
 #include "dynpos/io/column_map.hpp"
+#include "dynpos/io/input_report.hpp"
 
 namespace dynpos::analysis {
 
 /// Accepts the roles an analysis wants to pick up by name from the log's header.
 using RoleFilter = std::function<bool(const std::string& role)>;
+
+/// A log as read, and what was read to make it.
+struct LoadedLog {
+  core::Log log;
+  io::InputReport input;
+};
 
 struct LogSource {
   std::filesystem::path log;         ///< the CSV log
@@ -31,9 +38,18 @@ struct LogSource {
   /// itself (so "thrust.port [kN]" in a dynpos log needs no --col).
   io::ColumnMap column_map(const RoleFilter& wanted) const;
 
-  /// Reads the log with column_map(wanted).
+  /// Reads the log with column_map(wanted), and reports the files, formats, skipped lines and
+  /// each role's origin and rate.
+  LoadedLog load(const RoleFilter& wanted) const;
+
+  /// load(wanted).log.
   core::Log read(const RoleFilter& wanted) const;
 };
+
+/// The InputReport of a log read from one file: `file_report` completed with the path and the
+/// record count, and every channel as a role from that file with its median rate.
+io::InputReport describe_input(const core::Log& log, const std::string& file,
+                               io::FileReport file_report);
 
 /// Thruster names NAME of the channels "PREFIX.NAME" of a log, in channel order, unique.
 std::vector<std::string> thruster_names(const core::Log& log, const std::string& prefix);
