@@ -158,12 +158,12 @@ SecondOrderFitResult fit_second_order(std::span<const double> t, std::span<const
   }
   const ThreePoint sol = solve_three_point(fractions, times);
   if (sol.clamped) {
-    result.warnings.push_back(
-        {WarningCode::kShapeOutOfRange,
-         sol.rho == 0.0
-             ? "response shape faster than first order: taken as first order (T₂ = 0)"
-             : "response more S-shaped than two equal time constants (underdamped or higher "
-               "order): taken as T₁ = T₂"});
+    const char* why =
+        sol.rho == 0.0
+            ? "response shape faster than first order: taken as first order (T₂ = 0)"
+            : "response more S-shaped than two equal time constants (underdamped or higher "
+              "order): taken as T₁ = T₂";
+    result.warnings.emplace_back(WarningCode::kShapeOutOfRange, why);
   }
   const double t1 = sol.t1;
   const double t2 = sol.rho * t1;
