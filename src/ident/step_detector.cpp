@@ -135,15 +135,37 @@ double median_of(const std::vector<double>& x, std::size_t begin, std::size_t en
                                             x.begin() + static_cast<std::ptrdiff_t>(end) + 1));
 }
 
-void set_levels(Plateau& p, const std::vector<double>& tv, const std::vector<double>& uv,
+// First index of the samples within `w` [s] before index `last` (dir −1), or last index of
+// those within `w` after `first` (dir +1).
+std::size_t reach(const std::vector<double>& tv, std::size_t from, std::size_t stop, double w,
+                  int dir) {
+  std::size_t k = from;
+  if (dir < 0) {
+    while (k > stop && tv[k - 1] >= tv[from] - w) --k;
+  } else {
+    while (k < stop && tv[k + 1] <= tv[from] + w) ++k;
+  }
+  return k;
+}
+
+// The levels of a plateau: its median, and the medians of its first and last w/2. A plateau
+// window may take in the first or last 2h of a ramp, so the edge samples more than h from the
+// median of the plateau's nearest w are left out of the edge levels.
+void set_levels(Plateau& p, const std::vector<double>& tv, const std::vector<double>& uv, double h,
                 double w) {
   p.level = median_of(uv, p.begin, p.end);
-  std::size_t k = p.begin;
-  while (k < p.end && tv[k + 1] <= tv[p.begin] + w) ++k;
-  p.start_level = median_of(uv, p.begin, k);
-  k = p.end;
-  while (k > p.begin && tv[k - 1] >= tv[p.end] - w) --k;
-  p.end_level = median_of(uv, k, p.end);
+  std::size_t first = p.begin;
+  std::size_t last = p.end;
+  while (tv[last] - tv[first] > w) {
+    if (std::abs(uv[last] - median_of(uv, reach(tv, last, first, w, -1), last)) <= h) break;
+    --last;
+  }
+  while (tv[last] - tv[first] > w) {
+    if (std::abs(uv[first] - median_of(uv, first, reach(tv, first, last, w, +1))) <= h) break;
+    ++first;
+  }
+  p.start_level = median_of(uv, first, reach(tv, first, last, 0.5 * w, +1));
+  p.end_level = median_of(uv, reach(tv, last, first, 0.5 * w, -1), last);
 }
 
 // Plateaus: unions of windows [tᵢ, tᵢ + w] in which the input varies by at most 2h, split where
@@ -167,7 +189,7 @@ std::vector<Plateau> find_plateaus(const std::vector<double>& tv, const std::vec
   });
   // Levels next to a transition over w/2: on a drift slow enough to hold plateaus (2h per w)
   // they differ by at most h, half the smallest threshold.
-  for (Plateau& p : plateaus) set_levels(p, tv, uv, 0.5 * w);
+  for (Plateau& p : plateaus) set_levels(p, tv, uv, h, w);
   return plateaus;
 }
 
@@ -175,7 +197,7 @@ std::vector<Plateau> find_plateaus(const std::vector<double>& tv, const std::vec
 // (a spike, a gap, wiggles or a drift split them); a short level left by a small change back
 // is the re-settling of the step into it.
 std::vector<Plateau> merge_levels(const std::vector<Plateau>& in, const std::vector<double>& tv,
-                                  const std::vector<double>& uv, double threshold,
+                                  const std::vector<double>& uv, double h, double threshold,
                                   const StepDetectorOptions& options) {
   std::vector<Plateau> out;
   for (const Plateau& p : in) {
@@ -191,8 +213,8 @@ std::vector<Plateau> merge_levels(const std::vector<Plateau>& in, const std::vec
       }
       if (merge || settle) {
         back.end = p.end;
-        back.end_level = p.end_level;
-        back.level = settle ? p.level : median_of(uv, back.begin, back.end);
+        set_levels(back, tv, uv, h, options.min_plateau_s);
+        if (settle) back.level = p.level;
         continue;
       }
     }
@@ -292,8 +314,8 @@ StepDetection detect_steps(std::span<const double> t, std::span<const double> u,
                   fmt(out.threshold);
     return out;
   }
-  const std::vector<Plateau> plateaus =
-      merge_levels(find_plateaus(tv, uv, h, options.min_plateau_s), tv, uv, out.threshold, options);
+  const std::vector<Plateau> plateaus = merge_levels(
+      find_plateaus(tv, uv, h, options.min_plateau_s), tv, uv, h, out.threshold, options);
   if (plateaus.size() < 2) {
     out.message = plateaus.empty() ? "no step found: the input never holds a level (±" + fmt(h) +
                                          ") for " + fmt(options.min_plateau_s) + " s"
