@@ -272,6 +272,39 @@ TEST(RunStep, EveryStepOfAnHourAndAHalfLogIsFoundSortedAndFitted) {
   }
 }
 
+TEST(RunStep, MinStepOverridesTheAdaptedThreshold) {
+  // Of the twenty orders, nine change by 25° or more; the others are not steps (their levels
+  // are one), and nothing below --min-step is reported.
+  TrialLog trial;
+  trial.orders = twenty_orders();
+  const TempDir dir;
+  StepRequest r = trial_request(dir.write("trial.csv", trial.csv(16)));
+  r.min_step = 25.0;
+  const StepReport report = run_step(r);
+  EXPECT_TRUE(report.threshold_from_min_step);
+  ASSERT_TRUE(report.step_threshold);
+  EXPECT_EQ(*report.step_threshold, 25.0);
+  ASSERT_EQ(report.steps.size(), 9u);
+  for (const StepFit& fit : report.steps) EXPECT_GE(std::abs(*fit.step.delta_u()), 25.0);
+  EXPECT_EQ(to_json(report)["step_threshold_source"], "min_step");
+}
+
+TEST(RunStep, AWindowAroundOneWiggledOrderHasOneStep) {
+  // 100 s around the order from 35° to −35° at 420 s, with ±1° held wiggles before and after:
+  // the whole log's threshold (3.5°) applies in the window, so the wiggles are not steps.
+  TrialLog trial;
+  trial.orders = twenty_orders();
+  trial.wiggle = 1.0;
+  const TempDir dir;
+  StepRequest r = trial_request(dir.write("trial.csv", trial.csv(17)));
+  r.from_s = 370.0;
+  r.to_s = 470.0;
+  const StepReport report = run_step(r);
+  ASSERT_EQ(report.steps.size(), 1u);
+  EXPECT_NEAR(report.steps[0].step.t_step, 420.0, 0.5);
+  EXPECT_EQ(report.steps[0].status, core::Status::kOk) << report.steps[0].message;
+}
+
 TEST(RunStep, ARampOverFourSamplesIsOneStepWithTheRightGainAndTimeConstant) {
   // One 30° order ramped over four 2 Hz samples, the output noise 1 % of Δy = 15.
   TrialLog trial;
