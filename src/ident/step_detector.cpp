@@ -125,9 +125,10 @@ double largest_change(const std::vector<double>& tv, const std::vector<double>& 
 struct Plateau {
   std::size_t begin = 0;  // first and last index into the valid samples
   std::size_t end = 0;
-  double level = 0.0;        // median of the whole plateau
-  double start_level = 0.0;  // median of its first min_plateau_s/2
+  double start_level = 0.0;  // median of its first min_plateau_s/2: the level next to a step
   double end_level = 0.0;    // median of its last min_plateau_s/2
+  double head_level = 0.0;   // median of its first 20·min_plateau_s: the level after a step
+  double tail_level = 0.0;   // median of its last 20·min_plateau_s: the level before a step
 };
 
 double median_of(const std::vector<double>& x, std::size_t begin, std::size_t end) {
@@ -148,12 +149,13 @@ std::size_t reach(const std::vector<double>& tv, std::size_t from, std::size_t s
   return k;
 }
 
-// The levels of a plateau: its median, and the medians of its first and last w/2. A plateau
-// window may take in the first or last 2h of a ramp, so the edge samples more than h from the
-// median of the plateau's nearest w are left out of the edge levels.
+// The levels of a plateau: the medians of its first and last w/2 (next to a transition) and of
+// its first and last 20w (the levels a step goes from and to: long enough to average the noise,
+// short enough that a drift or a merged small change far from the step does not move them). A
+// plateau window may take in the first or last 2h of a ramp, so the edge samples more than h
+// from the median of the plateau's nearest w are left out.
 void set_levels(Plateau& p, const std::vector<double>& tv, const std::vector<double>& uv, double h,
                 double w) {
-  p.level = median_of(uv, p.begin, p.end);
   std::size_t first = p.begin;
   std::size_t last = p.end;
   while (tv[last] - tv[first] > w) {
@@ -166,6 +168,8 @@ void set_levels(Plateau& p, const std::vector<double>& tv, const std::vector<dou
   }
   p.start_level = median_of(uv, first, reach(tv, first, last, 0.5 * w, +1));
   p.end_level = median_of(uv, reach(tv, last, first, 0.5 * w, -1), last);
+  p.head_level = median_of(uv, first, reach(tv, first, last, 20.0 * w, +1));
+  p.tail_level = median_of(uv, reach(tv, last, first, 20.0 * w, -1), last);
 }
 
 // Plateaus: unions of windows [tᵢ, tᵢ + w] in which the input varies by at most 2h, split where
@@ -214,7 +218,7 @@ std::vector<Plateau> merge_levels(const std::vector<Plateau>& in, const std::vec
       if (merge || settle) {
         back.end = p.end;
         set_levels(back, tv, uv, h, options.min_plateau_s);
-        if (settle) back.level = p.level;
+        if (settle) back.head_level = p.head_level;  // the settled level
         continue;
       }
     }
@@ -238,8 +242,8 @@ Step step_between(const Plateau& p0, const Plateau& p1, const std::vector<double
   while (i_new < p1.end && std::abs(uv[i_new] - l1) > h) ++i_new;
 
   Step step;
-  step.u_before = p0.level;
-  step.u_after = p1.level;
+  step.u_before = p0.tail_level;
+  step.u_after = p1.head_level;
   step.t_begin = tv[p0.begin];
   step.t_step = tv[i_old + 1];
   step.t_ramp_end = tv[i_new];

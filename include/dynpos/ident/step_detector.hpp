@@ -28,7 +28,9 @@
 /// not whole plateaus, keeps a drift of any length from adding up to a step. A level held less
 /// than `settle_s` after a step and left by a change back of less than `settle_fraction` of that
 /// step (an order set to 33.3° and re-settled to 30.7° a few seconds later) belongs to the step:
-/// its level after is the settled one.
+/// its level after is the settled one. A step goes from the median of the last 20·min_plateau_s
+/// before it to that of the first 20·min_plateau_s after it (the plateaus' edges on the ramps
+/// left out).
 ///
 /// Timing: the plateau before the step has level L₀, the one after L₁. For a command
 /// (StepTiming::kCommand) the samples of the transition between 10 % and 90 % of L₁ − L₀ are
