@@ -54,7 +54,11 @@ void add_identify_step(CLI::App& identify) {
                    "total-speed: fit sqrt(u^2 + v^2) (3.19) from the roles u and v (sway tests)");
   step->add_option("--min-step", r.min_step,
                    "Smallest input change counted as a step, in the input's SI unit (default: "
-                   "from the noise)");
+                   "adapted to the log from its noise and largest changes, and printed)");
+  step->add_option("--segments", r.segments_file,
+                   "CSV of named stretches 'name, start, end' [s, log clock], e.g. the tests of "
+                   "the bridge log: only steps inside them are analysed, and named")
+      ->check(CLI::ExistingFile);
   step->add_option("--min-plateau", r.min_plateau_s,
                    "Shortest time [s] the input holds a level to count as a step")
       ->capture_default_str();
@@ -63,6 +67,7 @@ void add_identify_step(CLI::App& identify) {
       "Finds every step of the input (or trigger) automatically, or takes the window given, and "
       "fits y = y0 + K*du*(1 - exp(-(t - t0 - delay)/T)) (3.7) to the output after each. Values "
       "are SI: y in the output's SI unit, K in output unit per input unit, T and delay in s. "
+      "A step that cannot be fitted is listed with status failed and the reason. "
       "Warnings: steady_state_not_reached, poor_fit, short_window, few_samples, ... "
       "Example on a virtual trial log: dynpos identify step DIR/log.csv "
       "--col input=command.rpm.stb --col output=rpm.stb");

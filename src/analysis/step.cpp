@@ -2,6 +2,10 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
+#include <cmath>
+#include <span>
+
 #include "dynpos/analysis/json_fields.hpp"
 #include "dynpos/analysis/options.hpp"
 #include "dynpos/core/log.hpp"
@@ -10,6 +14,7 @@
 #include "dynpos/ident/second_order_fit.hpp"
 #include "dynpos/io/column_map.hpp"
 #include "dynpos/io/csv_reader.hpp"
+#include "dynpos/io/segments.hpp"
 
 namespace dynpos::analysis {
 namespace {
@@ -65,26 +70,84 @@ StepSignals read_signals(const StepRequest& request) {
   return s;
 }
 
-std::vector<ident::Step> find_steps(const StepRequest& request, const StepSignals& s) {
+ident::StepDetectorOptions detector_options(const StepRequest& request, const StepSignals& s) {
   ident::StepDetectorOptions d;
   d.min_step = request.min_step;
   d.min_plateau_s = request.min_plateau_s;
-  const std::vector<double>& u = s.has_input ? s.input : s.trigger;
   d.timing = s.has_input ? ident::StepTiming::kCommand : ident::StepTiming::kTrigger;
   d.input_name = s.has_input ? "input" : "trigger";
-  if (request.from_s || request.to_s || request.step_at_s) {
-    const double from = request.from_s.value_or(s.t.front());
-    const double to = request.to_s.value_or(s.t.back());
-    const std::vector<double> none;
-    return {ident::step_from_window(s.t, s.has_input || s.has_trigger ? u : none,
-                                    {from, to, request.step_at_s}, d)};
+  return d;
+}
+
+// A step found in a stretch of the log, and the segment it belongs to.
+struct FoundStep {
+  ident::Step step;
+  std::string segment;
+};
+
+// The steps of the whole log, or of each segment; why a stretch has none goes to `notes`.
+std::vector<FoundStep> detect_in_stretches(const StepRequest& request, const StepSignals& s,
+                                           const ident::StepDetectorOptions& d,
+                                           std::vector<std::string>& notes) {
+  const std::vector<double>& u = s.has_input ? s.input : s.trigger;
+  std::vector<FoundStep> found;
+  if (request.segments_file.empty()) {
+    const ident::StepDetection r = ident::detect_steps(s.t, u, d);
+    if (!r.message.empty()) notes.push_back(r.message);
+    for (const ident::Step& step : r.steps) found.push_back({step, ""});
+    return found;
   }
-  if (!s.has_input && !s.has_trigger) {
+  const std::span<const double> t(s.t);
+  for (const io::Segment& seg : io::read_segments(request.segments_file)) {
+    const auto i0 =
+        static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), seg.start_s) - t.begin());
+    const auto i1 =
+        static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), seg.end_s) - t.begin());
+    const std::span<const double> useg = std::span<const double>(u).subspan(i0, i1 - i0);
+    const auto valid =
+        std::count_if(useg.begin(), useg.end(), [](double x) { return !std::isnan(x); });
+    const std::string where = "segment '" + seg.name + "' [" + fmt::format("{:g}", seg.start_s) +
+                              ", " + fmt::format("{:g}", seg.end_s) + "] s";
+    if (valid < 3) {
+      notes.push_back(where + ": fewer than 3 valid input samples in the log");
+      continue;
+    }
+    const ident::StepDetection r = ident::detect_steps(t.subspan(i0, i1 - i0), useg, d);
+    if (!r.message.empty()) notes.push_back(where + ": " + r.message);
+    for (const ident::Step& step : r.steps) found.push_back({step, seg.name});
+  }
+  return found;
+}
+
+// Finds the steps and sets the report's threshold and notes.
+std::vector<FoundStep> find_steps(const StepRequest& request, const StepSignals& s,
+                                  StepReport& report) {
+  ident::StepDetectorOptions d = detector_options(request, s);
+  const std::vector<double>& u = s.has_input ? s.input : s.trigger;
+  const bool window = request.from_s || request.to_s || request.step_at_s;
+  if (!s.has_input && !s.has_trigger && !window) {
     throw option_error("col:input", "no input or trigger column to find the steps in",
                        "map the command (--col input=...), a trigger such as power feedback "
                        "(--col trigger=...), or give the window with --from/--to/--step-at");
   }
-  return ident::detect_steps(s.t, u, d).steps;
+  if ((s.has_input || s.has_trigger) && !request.step_at_s) {
+    // One threshold for the whole log, whatever stretch is searched.
+    const ident::StepThreshold scale = ident::step_threshold(s.t, u, d);
+    report.step_threshold = scale.threshold;
+    report.threshold_from_min_step = scale.from_min_step;
+    report.input_noise_sigma = scale.noise_sigma;
+    d.min_step = scale.threshold;
+    d.band = scale.band;
+  }
+  if (window) {
+    const double from = request.from_s.value_or(s.t.front());
+    const double to = request.to_s.value_or(s.t.back());
+    const std::vector<double> none;
+    return {{ident::step_from_window(s.t, s.has_input || s.has_trigger ? u : none,
+                                     {from, to, request.step_at_s}, d),
+             ""}};
+  }
+  return detect_in_stretches(request, s, d, report.notes);
 }
 
 // FOPDT (3.7) by least squares or Smith's two-point method (3.8)-(3.9).
@@ -157,10 +220,27 @@ std::string_view timing_name(StepTimingSource timing) {
   return "window";
 }
 
-StepReport run_step(const StepRequest& request) {
-  request.validate();
+namespace {
+
+// A step the fit cannot take (too short, no valid output after it, no input change) is a row
+// with the reason: one bad step never costs the others.
+StepFit fit_step(const StepRequest& request, const StepSignals& s, const FoundStep& found) {
+  StepFit fit;
+  try {
+    fit = is_second_order(request.method) ? fit_second_order(request.method, s, found.step)
+                                          : fit_first_order(request.method, s, found.step);
+  } catch (const core::InputError& e) {
+    fit = StepFit{};
+    fit.step = found.step;
+    fit.status = core::Status::kFailed;
+    fit.message = e.problem() + (e.hint().empty() ? "" : "; " + e.hint());
+  }
+  fit.segment = found.segment;
+  return fit;
+}
+
+StepReport run_step_on_log(const StepRequest& request) {
   const StepSignals s = read_signals(request);
-  const std::vector<ident::Step> steps = find_steps(request, s);
   StepReport report;
   report.log = request.source.log;
   report.input = s.read;
@@ -170,12 +250,32 @@ StepReport run_step(const StepRequest& request) {
   report.timing = s.has_input     ? StepTimingSource::kCommand
                   : s.has_trigger ? StepTimingSource::kTrigger
                                   : StepTimingSource::kWindow;
-  for (const ident::Step& step : steps) {
-    report.steps.push_back(is_second_order(request.method)
-                               ? fit_second_order(request.method, s, step)
-                               : fit_first_order(request.method, s, step));
+  report.segments_file = request.segments_file;
+  for (const FoundStep& found : find_steps(request, s, report)) {
+    report.steps.push_back(fit_step(request, s, found));
   }
+  std::stable_sort(
+      report.steps.begin(), report.steps.end(),
+      [](const StepFit& a, const StepFit& b) { return a.step.t_step < b.step.t_step; });
   return report;
+}
+
+}  // namespace
+
+StepReport run_step(const StepRequest& request) {
+  request.validate();
+  const std::string log = request.source.log.string();
+  try {
+    return run_step_on_log(request);
+  } catch (const core::InputError& e) {
+    // Errors from inside the analysis name a channel or an option, not the file: add the log.
+    if (!e.where().file.empty()) throw;
+    if (!e.option().empty())
+      throw core::InputError::for_option(e.option(), e.problem(), e.hint(), log);
+    core::InputLocation where = e.where();
+    where.file = log;
+    throw core::InputError(where, e.problem(), e.hint());
+  }
 }
 
 nlohmann::json to_json(const StepReport& report) {
@@ -187,11 +287,17 @@ nlohmann::json to_json(const StepReport& report) {
   doc["input_unit"] =
       report.input_unit ? nlohmann::json(*report.input_unit) : nlohmann::json(nullptr);
   doc["timing"] = std::string(timing_name(report.timing));
+  doc["step_threshold"] = number_json(report.step_threshold);
+  doc["step_threshold_source"] = report.threshold_from_min_step ? "min_step" : "auto";
+  doc["input_noise_sigma"] = number_json(report.input_noise_sigma);
+  if (!report.segments_file.empty()) doc["segments"] = report.segments_file.string();
+  doc["notes"] = report.notes;
   doc["steps"] = nlohmann::json::array();
   for (const StepFit& fit : report.steps) {
     nlohmann::json j;
     j["t_step"] = fit.step.t_step;
     j["t_end"] = fit.step.t_end;
+    if (!report.segments_file.empty()) j["segment"] = fit.segment;
     j["u_before"] = number_json(fit.step.u_before);
     j["u_after"] = number_json(fit.step.u_after);
     if (fit.fopdt) {
@@ -227,7 +333,17 @@ std::string to_text(const StepReport& report) {
       report.steps.size(), report.method, report.output_unit.empty() ? "1" : report.output_unit,
       report.input_unit ? (report.input_unit->empty() ? std::string("1") : *report.input_unit)
                         : std::string("—"));
-  text += fmt::format("{:>9} {:>21} {:>11} {:>11} {:>9} {:>9} {:>9} {:>7}  {}\n", "t_step", "input",
+  if (report.step_threshold) {
+    text += fmt::format("step threshold {:.4g} ({}), input noise σ̂ {}\n", *report.step_threshold,
+                        report.threshold_from_min_step ? "--min-step" : "adapted to the log",
+                        number_cell(report.input_noise_sigma, "{:.3g}"));
+  }
+  if (!report.segments_file.empty())
+    text += "segments from " + report.segments_file.string() + "\n";
+  for (const std::string& note : report.notes) text += "note: " + note + "\n";
+  const bool segments = !report.segments_file.empty();
+  text += fmt::format("{}{:>9} {:>21} {:>11} {:>11} {:>9} {:>9} {:>9} {:>7}  {}\n",
+                      segments ? fmt::format("{:<16} ", "segment") : "", "t_step", "input",
                       "y before", "y after", "K", "T [s]", "δ [s]", "R²", "notes");
   for (const StepFit& fit : report.steps) {
     const std::string status(ident::fit_status_name(fit.status));
@@ -235,9 +351,13 @@ std::string to_text(const StepReport& report) {
     for (const ident::FitWarning& w : fit.warnings) {
       notes += (notes.empty() ? "" : ", ") + std::string(ident::warning_code_name(w.code));
     }
-    if (status != "ok") notes = status + (notes.empty() ? "" : ": " + notes);
+    // A step that is not ok says why: its status, the reason, then the warnings.
+    if (status != "ok") {
+      notes = status + ": " + fit.message + (notes.empty() ? "" : " [" + notes + "]");
+    }
     text += fmt::format(
-        "{:>9.2f} {:>21} {:>11} {:>11} {:>9} {:>9} {:>9} {:>7}  {}\n", fit.step.t_step,
+        "{}{:>9.2f} {:>21} {:>11} {:>11} {:>9} {:>9} {:>9} {:>7}  {}\n",
+        segments ? fmt::format("{:<16} ", fit.segment) : "", fit.step.t_step,
         number_cell(fit.step.u_before, "{:.4g}") + " → " + number_cell(fit.step.u_after, "{:.4g}"),
         number_cell(fit.y_before, "{:.4g}"), number_cell(fit.y_after, "{:.4g}"),
         number_cell(fit.gain, "{:.4g}"), number_cell(fit.time_constant_s, "{:.2f}"),

@@ -216,6 +216,12 @@ void smith_fit(const detail::StepResponse& r, const Step& step, const FopdtFitOp
          "negative dead time " + fmt(dead) + " s: the response starts before the step time"});
   }
   add_common_warnings(options, r, tc, std::max(dead, 0.0), q.r_squared, result.warnings);
+  if (q.r_squared < options.min_r_squared) {
+    result.status = FitStatus::kFailed;
+    result.message = "poor fit: Smith two-point fit with R² = " + fmt(q.r_squared) + " below " +
+                     fmt(options.min_r_squared);
+    return;
+  }
   result.status = FitStatus::kOk;
   result.message = "Smith two-point fit";
 }
@@ -270,6 +276,37 @@ Vec4 parameter_sigmas(const detail::StepResponse& r, const Vec4& p, const Bounds
   return sigma;
 }
 
+// Why a least-squares optimum is no estimate, "" when it is one: T beyond 10 times the window
+// after the dead time (under 10 % of the response seen: T and K are extrapolated; this takes in
+// T at its search limit, 100 × the window) or at its lower limit, δ at its upper search limit
+// (the data do not bound them), a standard deviation that cannot be computed (JᵀJ singular:
+// the window does not separate the parameters), or a poor R². δ = 0 is a physical limit, not a
+// search limit: a warning only.
+std::string degenerate_reasons(const FopdtFitOptions& options, const Bounds& bounds, double tau_end,
+                               const Vec4& p, const Vec4& sigma, double r_squared) {
+  std::string why;
+  const auto add = [&why](const std::string& reason) { why += (why.empty() ? "" : "; ") + reason; };
+  const double seen = tau_end - p(3);
+  if (p(2) > 10.0 * seen) {
+    add("time constant " + fmt(p(2)) + " s is over 10 times the " + fmt(seen) +
+        " s seen after the dead time: the output does not settle in the window");
+  } else if (p(2) <= bounds.t_min * (1.0 + 1e-3)) {
+    add("time constant " + fmt(p(2)) + " s at its lower search limit");
+  }
+  if (bounds.delta_free && p(3) >= bounds.delta_max * (1.0 - 1e-6)) {
+    add("dead time " + fmt(p(3)) + " s at its search limit " + fmt(bounds.delta_max) + " s");
+  }
+  const int n_par = bounds.delta_free ? 4 : 3;
+  if (!sigma.head(n_par).allFinite()) {
+    add("the standard deviations cannot be computed (the window does not separate the "
+        "parameters)");
+  }
+  if (r_squared < options.min_r_squared) {
+    add("R² = " + fmt(r_squared) + " is below " + fmt(options.min_r_squared));
+  }
+  return why;
+}
+
 // The estimates, fit quality, warnings and status of the best least-squares run.
 void set_lsq_result(const detail::StepResponse& r, const Step& step, const FopdtFitOptions& options,
                     const Bounds& bounds, const LmRun& best, FopdtFitResult& result) {
@@ -302,7 +339,12 @@ void set_lsq_result(const detail::StepResponse& r, const Step& step, const Fopdt
     }
   }
   add_common_warnings(options, r, best.p(2), best.p(3), q.r_squared, result.warnings);
-  if (best.converged) {
+  const std::string degenerate =
+      degenerate_reasons(options, bounds, r.tau_end, best.p, sigma, q.r_squared);
+  if (!degenerate.empty()) {
+    result.status = FitStatus::kFailed;
+    result.message = "degenerate fit: " + degenerate;
+  } else if (best.converged) {
     result.status = FitStatus::kOk;
     result.message =
         "least-squares fit converged in " + std::to_string(best.iterations) + " iterations";

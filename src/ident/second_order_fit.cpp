@@ -198,8 +198,9 @@ SecondOrderFitResult fit_second_order(std::span<const double> t, std::span<const
         {WarningCode::kPoorFit,
          "poor fit: R² = " + fmt(q.r_squared) + " is below " + fmt(options.min_r_squared)});
   }
-  result.status = FitStatus::kOk;
+  result.status = q.r_squared < options.min_r_squared ? FitStatus::kFailed : FitStatus::kOk;
   result.message = smith ? "Smith second-order fit" : "Rangaiah–Krishnaswamy three-point fit";
+  if (result.status == FitStatus::kFailed) result.message = "poor fit: " + result.message;
   return result;
 }
 

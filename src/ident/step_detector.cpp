@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <limits>
 
 #include "dynpos/core/error.hpp"
 #include "series.hpp"
@@ -32,31 +33,68 @@ void StepDetectorOptions::validate() const {
   if (!(min_plateau_s > 0.0 && std::isfinite(min_plateau_s))) {
     bad("minimum plateau " + fmt(min_plateau_s) + " s", "give a finite duration > 0 s");
   }
+  if (!(large_change_fraction >= 0.0 && large_change_fraction < 1.0)) {
+    bad("large-change fraction " + fmt(large_change_fraction), "give a fraction in [0, 1)");
+  }
+  if (!(change_window_s > 0.0 && std::isfinite(change_window_s))) {
+    bad("change window " + fmt(change_window_s) + " s", "give a finite duration > 0 s");
+  }
+  if (!(settle_s >= 0.0 && std::isfinite(settle_s))) {
+    bad("settling time " + fmt(settle_s) + " s", "give a finite duration ≥ 0 s");
+  }
+  if (!(settle_fraction >= 0.0 && settle_fraction < 1.0)) {
+    bad("settling fraction " + fmt(settle_fraction), "give a fraction in [0, 1)");
+  }
 }
 
 namespace {
 
-struct Plateau {
-  std::size_t begin = 0;  // first and last index into the valid samples
-  std::size_t end = 0;
-  double level = 0.0;
+// The valid (non-NaN) samples of an input, checked: equal lengths, increasing time, ≥ 3 valid.
+struct ValidSamples {
+  std::vector<double> t, u;
 };
 
-double median_of(const std::vector<double>& x, std::size_t begin, std::size_t end) {
-  return detail::median(std::vector<double>(x.begin() + static_cast<std::ptrdiff_t>(begin),
-                                            x.begin() + static_cast<std::ptrdiff_t>(end) + 1));
+ValidSamples valid_samples(std::span<const double> t, std::span<const double> u,
+                           const std::string& name) {
+  detail::check_same_length(t.size(), u.size(), name);
+  detail::check_time_axis(t, name);
+  ValidSamples v;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (!std::isnan(u[i])) {
+      v.t.push_back(t[i]);
+      v.u.push_back(u[i]);
+    }
+  }
+  if (v.u.size() < 3) {
+    throw core::InputError({"", {}, {}, name},
+                           "only " + std::to_string(v.u.size()) + " valid input samples",
+                           "check the column map; the input must be logged");
+  }
+  return v;
 }
 
-// Plateaus: unions of windows [tᵢ, tᵢ + w] in which the input varies by at most 2h, split where
-// the window level moves more than h from the plateau's first level (a slow drift).
-std::vector<Plateau> find_plateaus(const std::vector<double>& tv, const std::vector<double>& uv,
-                                   double h, double w) {
+// √(mean Δu²)/√2 over the differences of consecutive valid samples, the largest 2 % left out
+// (the steps and ramps of a log with up to a few percent of its samples in transitions).
+double trimmed_rms_sigma(const std::vector<double>& uv) {
+  std::vector<double> d2;
+  for (std::size_t i = 1; i < uv.size(); ++i)
+    d2.push_back((uv[i] - uv[i - 1]) * (uv[i] - uv[i - 1]));
+  const std::size_t keep = std::max<std::size_t>(1, d2.size() - d2.size() / 50);
+  std::nth_element(d2.begin(), d2.begin() + static_cast<std::ptrdiff_t>(keep - 1), d2.end());
+  double sum = 0.0;
+  for (std::size_t i = 0; i < keep; ++i) sum += d2[i];
+  return std::sqrt(sum / static_cast<double>(keep) / 2.0);
+}
+
+// Calls f(i, last, lo, hi) for each window [tᵢ, tᵢ + w] of the samples i … last, with the
+// smallest and largest value in it (monotone deques: linear time).
+template <class F>
+void for_each_window(const std::vector<double>& tv, const std::vector<double>& uv, double w,
+                     F&& f) {
   const std::size_t n = tv.size();
-  std::vector<Plateau> plateaus;
   std::deque<std::size_t> max_q;  // indices of decreasing values: front is the window maximum
   std::deque<std::size_t> min_q;
   std::size_t j = 0;  // one past the window end
-  double ref = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     while (j < n && tv[j] <= tv[i] + w) {
       while (!max_q.empty() && uv[max_q.back()] <= uv[j]) max_q.pop_back();
@@ -67,37 +105,124 @@ std::vector<Plateau> find_plateaus(const std::vector<double>& tv, const std::vec
     }
     while (max_q.front() < i) max_q.pop_front();
     while (min_q.front() < i) min_q.pop_front();
-    const std::size_t last = j - 1;
+    f(i, j - 1, uv[min_q.front()], uv[max_q.front()]);
+  }
+}
+
+// S: the largest range of the input within any window of w seconds, after a 3-sample running
+// median (one bad sample does not set the scale of the steps).
+double largest_change(const std::vector<double>& tv, const std::vector<double>& uv, double w) {
+  std::vector<double> m = uv;
+  for (std::size_t i = 1; i + 1 < uv.size(); ++i) {
+    m[i] = std::max(std::min(uv[i - 1], uv[i]), std::min(std::max(uv[i - 1], uv[i]), uv[i + 1]));
+  }
+  double s = 0.0;
+  for_each_window(
+      tv, m, w, [&](std::size_t, std::size_t, double lo, double hi) { s = std::max(s, hi - lo); });
+  return s;
+}
+
+struct Plateau {
+  std::size_t begin = 0;  // first and last index into the valid samples
+  std::size_t end = 0;
+  double start_level = 0.0;  // median of its first min_plateau_s/2: the level next to a step
+  double end_level = 0.0;    // median of its last min_plateau_s/2
+  double head_level = 0.0;   // median of its first 20·min_plateau_s: the level after a step
+  double tail_level = 0.0;   // median of its last 20·min_plateau_s: the level before a step
+};
+
+double median_of(const std::vector<double>& x, std::size_t begin, std::size_t end) {
+  return detail::median(std::vector<double>(x.begin() + static_cast<std::ptrdiff_t>(begin),
+                                            x.begin() + static_cast<std::ptrdiff_t>(end) + 1));
+}
+
+// First index of the samples within `w` [s] before index `last` (dir −1), or last index of
+// those within `w` after `first` (dir +1).
+std::size_t reach(const std::vector<double>& tv, std::size_t from, std::size_t stop, double w,
+                  int dir) {
+  std::size_t k = from;
+  if (dir < 0) {
+    while (k > stop && tv[k - 1] >= tv[from] - w) --k;
+  } else {
+    while (k < stop && tv[k + 1] <= tv[from] + w) ++k;
+  }
+  return k;
+}
+
+// The levels of a plateau: the medians of its first and last w/2 (next to a transition) and of
+// its first and last 20w (the levels a step goes from and to: long enough to average the noise,
+// short enough that a drift or a merged small change far from the step does not move them). A
+// plateau window may take in the first or last 2h of a ramp, so the edge samples more than h
+// from the median of the plateau's nearest w are left out.
+void set_levels(Plateau& p, const std::vector<double>& tv, const std::vector<double>& uv, double h,
+                double w) {
+  std::size_t first = p.begin;
+  std::size_t last = p.end;
+  while (tv[last] - tv[first] > w) {
+    if (std::abs(uv[last] - median_of(uv, reach(tv, last, first, w, -1), last)) <= h) break;
+    --last;
+  }
+  while (tv[last] - tv[first] > w) {
+    if (std::abs(uv[first] - median_of(uv, first, reach(tv, first, last, w, +1))) <= h) break;
+    ++first;
+  }
+  p.start_level = median_of(uv, first, reach(tv, first, last, 0.5 * w, +1));
+  p.end_level = median_of(uv, reach(tv, last, first, 0.5 * w, -1), last);
+  p.head_level = median_of(uv, first, reach(tv, first, last, 20.0 * w, +1));
+  p.tail_level = median_of(uv, reach(tv, last, first, 20.0 * w, -1), last);
+}
+
+// Plateaus: unions of windows [tᵢ, tᵢ + w] in which the input varies by at most 2h, split where
+// the window level moves more than h from the plateau's first level (a slow drift).
+std::vector<Plateau> find_plateaus(const std::vector<double>& tv, const std::vector<double>& uv,
+                                   double h, double w) {
+  std::vector<Plateau> plateaus;
+  double ref = 0.0;
+  for_each_window(tv, uv, w, [&](std::size_t i, std::size_t last, double lo, double hi) {
     // A window cut short by a gap or the end of the log must still span half the duration.
-    if (tv[last] - tv[i] < 0.5 * w) continue;
-    const double hi = uv[max_q.front()];
-    const double lo = uv[min_q.front()];
-    if (hi - lo > 2.0 * h) continue;
+    if (tv[last] - tv[i] < 0.5 * w || hi - lo > 2.0 * h) return;
     const double mid = 0.5 * (hi + lo);
     if (!plateaus.empty() && i <= plateaus.back().end + 1 && std::abs(mid - ref) <= h) {
       plateaus.back().end = std::max(plateaus.back().end, last);
     } else {
       const std::size_t begin = plateaus.empty() ? i : std::max(i, plateaus.back().end + 1);
-      if (begin > last) continue;
-      plateaus.push_back({begin, last, 0.0});
+      if (begin > last) return;
+      plateaus.push_back({begin, last});
       ref = mid;
     }
-  }
-  for (Plateau& p : plateaus) p.level = median_of(uv, p.begin, p.end);
+  });
+  // Levels next to a transition over w/2: on a drift slow enough to hold plateaus (2h per w)
+  // they differ by at most h, half the smallest threshold.
+  for (Plateau& p : plateaus) set_levels(p, tv, uv, h, w);
   return plateaus;
 }
 
-// Neighbouring plateaus closer than the threshold are one level (split by a spike or gap).
-std::vector<Plateau> merge_levels(const std::vector<Plateau>& in, const std::vector<double>& uv,
-                                  double threshold) {
+// Neighbouring plateaus are one level unless the input changes by the threshold between them
+// (a spike, a gap, wiggles or a drift split them); a short level left by a small change back
+// is the re-settling of the step into it.
+std::vector<Plateau> merge_levels(const std::vector<Plateau>& in, const std::vector<double>& tv,
+                                  const std::vector<double>& uv, double h, double threshold,
+                                  const StepDetectorOptions& options) {
   std::vector<Plateau> out;
   for (const Plateau& p : in) {
-    if (!out.empty() && std::abs(p.level - out.back().level) < threshold) {
-      out.back().end = p.end;
-      out.back().level = median_of(uv, out.back().begin, out.back().end);
-    } else {
-      out.push_back(p);
+    if (!out.empty()) {
+      Plateau& back = out.back();
+      const double change = p.start_level - back.end_level;
+      bool merge = std::abs(change) < threshold;
+      bool settle = false;
+      if (!merge && out.size() >= 2) {
+        const double step = back.start_level - out[out.size() - 2].end_level;
+        settle = tv[back.end] - tv[back.begin] < options.settle_s && change * step < 0.0 &&
+                 std::abs(change) < options.settle_fraction * std::abs(step);
+      }
+      if (merge || settle) {
+        back.end = p.end;
+        set_levels(back, tv, uv, h, options.min_plateau_s);
+        if (settle) back.head_level = p.head_level;  // the settled level
+        continue;
+      }
     }
+    out.push_back(p);
   }
   return out;
 }
@@ -105,99 +230,104 @@ std::vector<Plateau> merge_levels(const std::vector<Plateau>& in, const std::vec
 // Crossing of the line u = a + b·t with the level L.
 double line_time(const detail::LineFit& line, double level) { return (level - line.a) / line.b; }
 
+// The step between plateaus p0 and p1, timed from the levels next to the transition.
+Step step_between(const Plateau& p0, const Plateau& p1, const std::vector<double>& tv,
+                  const std::vector<double>& uv, double h, StepTiming timing) {
+  const double l0 = p0.end_level;
+  const double l1 = p1.start_level;
+  // Last sample in the band around the old level, first in the band around the new one.
+  std::size_t i_old = p1.begin - 1;
+  while (i_old > p0.begin && std::abs(uv[i_old] - l0) > h) --i_old;
+  std::size_t i_new = i_old + 1;
+  while (i_new < p1.end && std::abs(uv[i_new] - l1) > h) ++i_new;
+
+  Step step;
+  step.u_before = p0.tail_level;
+  step.u_after = p1.head_level;
+  step.t_begin = tv[p0.begin];
+  step.t_step = tv[i_old + 1];
+  step.t_ramp_end = tv[i_new];
+  const double jump = l1 - l0;
+  const bool trigger = timing == StepTiming::kTrigger;
+  // Command: the ramp between 10 % and 90 %; trigger: the onset, up to 30 %.
+  const double f_lo = trigger ? -1.0 : 0.1;
+  const double f_hi = trigger ? 0.3 : 0.9;
+  std::vector<double> xs;
+  std::vector<double> ys;
+  for (std::size_t i = i_old + 1; i < i_new; ++i) {
+    const double f = (uv[i] - l0) / jump;
+    if (f >= f_lo && f <= f_hi) {
+      xs.push_back(tv[i]);
+      ys.push_back(uv[i]);
+    }
+  }
+  const std::size_t needed = trigger ? 2 : 3;
+  if (xs.size() >= needed) {
+    const detail::LineFit line = detail::fit_line(xs, ys);
+    if (line.b * jump > 0.0) {
+      step.t_step = std::clamp(line_time(line, l0), step.t_begin, tv[i_old + 1]);
+      if (!trigger) {
+        step.t_ramp_end =
+            std::clamp(line_time(line, l1), std::max(tv[i_new - 1], step.t_step), tv[p1.end]);
+      }
+    }
+  }
+  return step;
+}
+
 }  // namespace
+
+StepThreshold step_threshold(std::span<const double> t, std::span<const double> u,
+                             const StepDetectorOptions& options) {
+  options.validate();
+  const ValidSamples v = valid_samples(t, u, options.input_name);
+  StepThreshold s;
+  s.noise_sigma = std::max(detail::difference_noise_sigma(u), trimmed_rms_sigma(v.u));
+  s.largest_change = largest_change(v.t, v.u, options.change_window_s);
+  const double h_noise = options.band ? *options.band : options.noise_factor * s.noise_sigma;
+  s.from_min_step = options.min_step > 0.0;
+  double threshold =
+      s.from_min_step ? std::max(options.min_step, 2.0 * h_noise)
+                      : std::max(2.0 * h_noise, options.large_change_fraction * s.largest_change);
+  double h = options.band ? *options.band : std::max(h_noise, 0.25 * threshold);
+  // A noise-free input: a band of round-off size only (and > 0 for an input of zeros).
+  const auto [min_it, max_it] = std::minmax_element(v.u.begin(), v.u.end());
+  h = std::max({h, 1e-9 * std::max({*max_it - *min_it, std::abs(*min_it), std::abs(*max_it)}),
+                std::numeric_limits<double>::min()});
+  s.band = h;
+  s.threshold = std::max(threshold, 2.0 * h);
+  return s;
+}
 
 StepDetection detect_steps(std::span<const double> t, std::span<const double> u,
                            const StepDetectorOptions& options) {
-  options.validate();
-  const std::string& name = options.input_name;
-  const core::InputLocation where{"", {}, {}, name};
-  detail::check_same_length(t.size(), u.size(), name);
-  detail::check_time_axis(t, name);
-  std::vector<double> tv;
-  std::vector<double> uv;
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    if (!std::isnan(u[i])) {
-      tv.push_back(t[i]);
-      uv.push_back(u[i]);
-    }
-  }
-  if (uv.size() < 3) {
-    throw core::InputError(where, "only " + std::to_string(uv.size()) + " valid input samples",
-                           "check the column map; the input must be logged");
-  }
+  const StepThreshold scale = step_threshold(t, u, options);
+  const ValidSamples v = valid_samples(t, u, options.input_name);
+  const std::vector<double>& tv = v.t;
+  const std::vector<double>& uv = v.u;
   const auto [min_it, max_it] = std::minmax_element(uv.begin(), uv.end());
   const double range = *max_it - *min_it;
+  const double h = scale.band;
 
   StepDetection out;
-  out.noise_sigma = detail::difference_noise_sigma(u);
-  double h = options.band
-                 ? *options.band
-                 : std::max(options.noise_factor * out.noise_sigma, 0.25 * options.min_step);
-  // A noise-free input: a band of round-off size only.
-  h = std::max(h, 1e-9 * std::max({range, std::abs(*min_it), std::abs(*max_it)}));
+  out.noise_sigma = scale.noise_sigma;
   out.band = h;
-  out.threshold = std::max(options.min_step, 2.0 * h);
+  out.threshold = scale.threshold;
   if (range <= out.threshold) {
-    throw core::InputError(where,
-                           "constant input: it varies by " + fmt(range) +
-                               ", less than the step threshold " + fmt(out.threshold),
-                           "check the input channel, or lower min_step / band");
+    out.message = "constant input: it varies by " + fmt(range) + ", less than the step threshold " +
+                  fmt(out.threshold);
+    return out;
   }
-
-  const std::vector<Plateau> plateaus =
-      merge_levels(find_plateaus(tv, uv, h, options.min_plateau_s), uv, out.threshold);
+  const std::vector<Plateau> plateaus = merge_levels(
+      find_plateaus(tv, uv, h, options.min_plateau_s), tv, uv, h, out.threshold, options);
   if (plateaus.size() < 2) {
-    throw core::InputError(where,
-                           plateaus.empty()
-                               ? "no step found: the input never holds a level (±" + fmt(h) +
-                                     ") for " + fmt(options.min_plateau_s) + " s"
-                               : "no step found: the input holds one level only",
-                           "check the input channel, or adjust min_plateau_s / band / min_step");
+    out.message = plateaus.empty() ? "no step found: the input never holds a level (±" + fmt(h) +
+                                         ") for " + fmt(options.min_plateau_s) + " s"
+                                   : "no step found: the input holds one level only";
+    return out;
   }
-
   for (std::size_t k = 0; k + 1 < plateaus.size(); ++k) {
-    const Plateau& p0 = plateaus[k];
-    const Plateau& p1 = plateaus[k + 1];
-    const double l0 = p0.level;
-    const double l1 = p1.level;
-    // Last sample in the band around the old level, first in the band around the new one.
-    std::size_t i_old = p1.begin - 1;
-    while (i_old > p0.begin && std::abs(uv[i_old] - l0) > h) --i_old;
-    std::size_t i_new = i_old + 1;
-    while (i_new < p1.end && std::abs(uv[i_new] - l1) > h) ++i_new;
-
-    Step step;
-    step.u_before = l0;
-    step.u_after = l1;
-    step.t_begin = tv[p0.begin];
-    step.t_step = tv[i_old + 1];
-    step.t_ramp_end = tv[i_new];
-    const double jump = l1 - l0;
-    const bool trigger = options.timing == StepTiming::kTrigger;
-    // Command: the ramp between 10 % and 90 %; trigger: the onset, up to 30 %.
-    const double f_lo = trigger ? -1.0 : 0.1;
-    const double f_hi = trigger ? 0.3 : 0.9;
-    std::vector<double> xs;
-    std::vector<double> ys;
-    for (std::size_t i = i_old + 1; i < i_new; ++i) {
-      const double f = (uv[i] - l0) / jump;
-      if (f >= f_lo && f <= f_hi) {
-        xs.push_back(tv[i]);
-        ys.push_back(uv[i]);
-      }
-    }
-    const std::size_t needed = trigger ? 2 : 3;
-    if (xs.size() >= needed) {
-      const detail::LineFit line = detail::fit_line(xs, ys);
-      if (line.b * jump > 0.0) {
-        step.t_step = std::clamp(line_time(line, l0), step.t_begin, tv[i_old + 1]);
-        if (!trigger) {
-          step.t_ramp_end =
-              std::clamp(line_time(line, l1), std::max(tv[i_new - 1], step.t_step), tv[p1.end]);
-        }
-      }
-    }
+    Step step = step_between(plateaus[k], plateaus[k + 1], tv, uv, h, options.timing);
     // The plateau may begin on the last ±2h of the previous ramp; the window starts after it,
     // but never after this step (a slow drift can end the previous ramp late).
     if (!out.steps.empty()) {
@@ -287,6 +417,10 @@ Step step_from_window(std::span<const double> t, std::span<const double> u,
     found = detect_steps(t.subspan(i0, i1 - i0), u.subspan(i0, i1 - i0), options);
   } catch (const core::InputError& e) {
     throw core::InputError(e.where(), e.problem() + " in the window " + window_text, e.hint());
+  }
+  if (found.steps.empty()) {
+    throw core::InputError(where, found.message + " in the window " + window_text,
+                           "check the input channel, or adjust min_plateau_s / band / min_step");
   }
   if (found.steps.size() > 1) {
     throw core::InputError(

@@ -4,9 +4,12 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
+#include "../ident/synthetic.hpp"
 #include "../io/io_test_util.hpp"
 #include "dynpos/core/error.hpp"
 
@@ -148,7 +151,8 @@ TEST(RunStep, MissingColumnsAreNamedByTheirRole) {
 TEST(StepReport, JsonHasTheContractKeys) {
   const TempDir dir;
   const nlohmann::json doc = to_json(run_step(request_for(dir.write("s.csv", fopdt_csv()))));
-  for (const char* key : {"log", "method", "output_unit", "input_unit", "timing", "steps"}) {
+  for (const char* key : {"log", "method", "output_unit", "input_unit", "timing", "step_threshold",
+                          "step_threshold_source", "input_noise_sigma", "notes", "steps"}) {
     EXPECT_TRUE(doc.contains(key)) << key;
   }
   EXPECT_EQ(doc["timing"], "command");
@@ -163,6 +167,234 @@ TEST(StepReport, JsonHasTheContractKeys) {
   EXPECT_EQ(step["status"], "ok");
   EXPECT_NEAR(step["T"].get<double>(), kTimeConstant, 0.03);
   EXPECT_TRUE(step["sigma"]["T"].is_number());
+}
+
+// A sea-trial order log at 2 Hz: orders [deg, written as plain numbers] that ramp over
+// `ramp_s`, an output that is the FOPDT (3.7) response to the order as ramped (K, T, δ), with
+// white noise, and optional held wiggles of the order (±wiggle, redrawn every 5 s, which the
+// output follows too). The response is integrated exactly for an input held over 0.01 s steps.
+struct Order {
+  double at;  // [s] start of the ramp
+  double to;  // new level
+};
+
+struct TrialLog {
+  std::vector<Order> orders;
+  double duration_s = 5400.0;
+  double ramp_s = 2.0;  // four samples at 2 Hz
+  double gain = 0.5, time_constant_s = 8.0, dead_time_s = 1.0;
+  double noise = 0.05;
+  double wiggle = 0.0;
+  double missing_from_s = -1.0, missing_to_s = -1.0;  // output not logged in between
+
+  double order(double t) const {
+    double u = 0.0;
+    double from = 0.0;
+    for (const Order& o : orders) {
+      if (t < o.at) break;
+      u = from + (o.to - from) * std::min((t - o.at) / ramp_s, 1.0);
+      from = o.to;
+    }
+    return u;
+  }
+
+  std::string csv(std::uint64_t seed) const {
+    ident::testing::Normal rng(seed);
+    std::string text = "time [s],order [1],response [1]\n";
+    double y = 0.0;
+    double offset = 0.0;
+    const double dt = 0.01;
+    const double a = 1.0 - std::exp(-dt / time_constant_s);
+    for (int k = 0; 0.5 * k <= duration_s; ++k) {
+      const double t = 0.5 * k;
+      if (k % 10 == 0) offset = wiggle * (2.0 * rng.uniform() - 1.0);
+      const auto held = [&](double x) {
+        const bool ramping = std::any_of(orders.begin(), orders.end(), [&](const Order& o) {
+          return x >= o.at && x <= o.at + ramp_s + 0.5;
+        });
+        return order(x) + (ramping ? 0.0 : offset);
+      };
+      const std::string out = t >= missing_from_s && t < missing_to_s
+                                  ? std::string("")
+                                  : fmt::format("{:.6f}", y + noise * rng());
+      text += fmt::format("{:.1f},{:.4f},{}\n", t, held(t), out);
+      for (int j = 0; j < 50; ++j) y += a * (gain * held(t + j * dt - dead_time_s) - y);
+    }
+    return text;
+  }
+};
+
+// Twenty orders in 1.5 h, one every 270 s: a zig-zag of ±35°, turning orders of ±20° and 10°
+// steps from several baselines.
+std::vector<Order> twenty_orders() {
+  const double levels[] = {35, -35, 35, -35, 0,   20,  -20, 0, 10, 20,
+                           30, 20,  10, 0,   -10, -30, -35, 0, 25, 0};
+  std::vector<Order> orders;
+  for (int k = 0; k < 20; ++k) orders.push_back({150.0 + 270.0 * k, levels[k]});
+  return orders;
+}
+
+StepRequest trial_request(const std::filesystem::path& log) {
+  StepRequest r;
+  r.source.log = log;
+  r.source.columns = {"input=order", "output=response"};
+  return r;
+}
+
+TEST(RunStep, EveryStepOfAnHourAndAHalfLogIsFoundSortedAndFitted) {
+  TrialLog trial;
+  trial.orders = twenty_orders();
+  trial.wiggle = 0.5;
+  const TempDir dir;
+  const StepReport report = run_step(trial_request(dir.write("trial.csv", trial.csv(11))));
+  // The largest change, 70°, sets the threshold to 3.5°; the wiggles move 1° at most.
+  ASSERT_TRUE(report.step_threshold);
+  EXPECT_NEAR(*report.step_threshold, 3.5, 0.1);
+  EXPECT_FALSE(report.threshold_from_min_step);
+  ASSERT_EQ(report.steps.size(), 20u);
+  for (std::size_t k = 0; k < 20; ++k) {
+    const StepFit& fit = report.steps[k];
+    SCOPED_TRACE(fit.step.t_step);
+    if (k > 0) {
+      EXPECT_LT(report.steps[k - 1].step.t_step, fit.step.t_step);
+    }
+    // Timed at the ramp's start, within one sample.
+    EXPECT_NEAR(fit.step.t_step, trial.orders[k].at, 0.5);
+    ASSERT_EQ(fit.status, core::Status::kOk) << fit.message;
+    // The held wiggles (±0.5°, σ = 0.29°) move the order's levels, medians of 12 of them in the
+    // 60 s next to the step, by about 0.1° each, and the output's levels through the response
+    // alike: K within 0.3°/|Δu| (two of those σ's, 6 % for the 5° order) + 1 % (the output
+    // noise); T within 10 %. The 2 s ramp
+    // delays the response by its mid-point, 1 s, which the dead time takes up: δ = 1 + 1 s, within
+    // one sample (0.5 s): the wiggles shift the levels a 10° ramp is timed against by up to 5 % of
+    // it (0.1 s), and the output's response to them is up to 5 % of the smallest Δy (measured: 0.39
+    // s at most).
+    EXPECT_NEAR(*fit.gain, trial.gain, trial.gain * (0.01 + 0.3 / std::abs(*fit.step.delta_u())));
+    EXPECT_NEAR(*fit.time_constant_s, trial.time_constant_s, 0.1 * trial.time_constant_s);
+    EXPECT_NEAR(*fit.dead_time_s, trial.dead_time_s + 0.5 * trial.ramp_s, 0.5);
+  }
+}
+
+TEST(RunStep, MinStepOverridesTheAdaptedThreshold) {
+  // Of the twenty orders, nine change by 25° or more; the others are not steps (their levels
+  // are one), and nothing below --min-step is reported.
+  TrialLog trial;
+  trial.orders = twenty_orders();
+  const TempDir dir;
+  StepRequest r = trial_request(dir.write("trial.csv", trial.csv(16)));
+  r.min_step = 25.0;
+  const StepReport report = run_step(r);
+  EXPECT_TRUE(report.threshold_from_min_step);
+  ASSERT_TRUE(report.step_threshold);
+  EXPECT_EQ(*report.step_threshold, 25.0);
+  ASSERT_EQ(report.steps.size(), 9u);
+  for (const StepFit& fit : report.steps) EXPECT_GE(std::abs(*fit.step.delta_u()), 25.0);
+  EXPECT_EQ(to_json(report)["step_threshold_source"], "min_step");
+}
+
+TEST(RunStep, AWindowAroundOneWiggledOrderHasOneStep) {
+  // 100 s around the order from 35° to −35° at 420 s, with ±1° held wiggles before and after:
+  // the whole log's threshold (3.5°) applies in the window, so the wiggles are not steps.
+  TrialLog trial;
+  trial.orders = twenty_orders();
+  trial.wiggle = 1.0;
+  const TempDir dir;
+  StepRequest r = trial_request(dir.write("trial.csv", trial.csv(17)));
+  r.from_s = 370.0;
+  r.to_s = 470.0;
+  const StepReport report = run_step(r);
+  ASSERT_EQ(report.steps.size(), 1u);
+  EXPECT_NEAR(report.steps[0].step.t_step, 420.0, 0.5);
+  EXPECT_EQ(report.steps[0].status, core::Status::kOk) << report.steps[0].message;
+}
+
+TEST(RunStep, ARampOverFourSamplesIsOneStepWithTheRightGainAndTimeConstant) {
+  // One 30° order ramped over four 2 Hz samples, the output noise 1 % of Δy = 15.
+  TrialLog trial;
+  trial.orders = {{100.4, 30.0}};
+  trial.duration_s = 300.0;
+  trial.noise = 0.15;
+  const TempDir dir;
+  const StepReport report = run_step(trial_request(dir.write("ramp.csv", trial.csv(12))));
+  ASSERT_EQ(report.steps.size(), 1u);
+  const StepFit& fit = report.steps[0];
+  ASSERT_EQ(fit.status, core::Status::kOk) << fit.message;
+  EXPECT_NEAR(fit.step.t_step, 100.4, 1e-6);  // the ramp samples are exact
+  // 600 samples with σ = 1 % of Δy: K within 2 %, T within 5 % (about 5 of their σ's);
+  // δ takes up half the ramp, as above.
+  EXPECT_NEAR(*fit.gain, 0.5, 0.01);
+  EXPECT_NEAR(*fit.time_constant_s, 8.0, 0.4);
+  EXPECT_NEAR(*fit.dead_time_s, 2.0, 0.3);
+}
+
+TEST(RunStep, AStepThatCannotBeFittedIsARowAndTheRunGoesOn) {
+  // The output logger drops out 2 s after the second order until the third: four valid
+  // samples after that step.
+  TrialLog trial;
+  trial.orders = {{100.0, 20.0}, {400.0, -20.0}, {700.0, 0.0}};
+  trial.duration_s = 1000.0;
+  trial.missing_from_s = 402.0;
+  trial.missing_to_s = 700.0;
+  const TempDir dir;
+  const StepReport report = run_step(trial_request(dir.write("gap.csv", trial.csv(13))));
+  ASSERT_EQ(report.steps.size(), 3u);
+  EXPECT_EQ(report.steps[0].status, core::Status::kOk) << report.steps[0].message;
+  EXPECT_EQ(report.steps[1].status, core::Status::kFailed);
+  EXPECT_THAT(report.steps[1].message, HasSubstr("too short"));
+  EXPECT_FALSE(report.steps[1].gain.has_value());
+  EXPECT_EQ(report.steps[2].status, core::Status::kOk) << report.steps[2].message;
+  const nlohmann::json doc = to_json(report);
+  EXPECT_EQ(doc["steps"][1]["status"], "failed");
+  EXPECT_THAT(doc["steps"][1]["message"].get<std::string>(), HasSubstr("too short"));
+  EXPECT_THAT(to_text(report), HasSubstr("failed: step too short"));
+}
+
+TEST(RunStep, SegmentsNameAndLimitTheSteps) {
+  // The fixture names three stretches: the zig-zag orders at 420 and 690 s, the order at
+  // 1 230 s and a stretch without an order; the other seventeen orders are outside them.
+  TrialLog trial;
+  trial.orders = twenty_orders();
+  const TempDir dir;
+  StepRequest r = trial_request(dir.write("trial.csv", trial.csv(14)));
+  r.segments_file = std::filesystem::path(DYNPOS_SOURCE_DIR) / "tests/data/step_segments.csv";
+  const StepReport report = run_step(r);
+  ASSERT_EQ(report.steps.size(), 3u);
+  EXPECT_EQ(report.steps[0].segment, "zigzag 35/35");
+  EXPECT_EQ(report.steps[1].segment, "zigzag 35/35");
+  EXPECT_EQ(report.steps[2].segment, "turn stb");
+  EXPECT_NEAR(report.steps[2].step.t_step, 1230.0, 0.5);
+  // The first order of a segment has the segment's start as its window start.
+  EXPECT_GE(report.steps[0].step.t_begin, 250.0);
+  ASSERT_EQ(report.notes.size(), 1u);
+  EXPECT_THAT(report.notes[0], HasSubstr("drift check"));
+  const nlohmann::json doc = to_json(report);
+  EXPECT_EQ(doc["steps"][2]["segment"], "turn stb");
+  EXPECT_THAT(to_text(report), HasSubstr("zigzag 35/35"));
+}
+
+TEST(RunStep, NoStepIsAnEmptyReportWithTheReason) {
+  TrialLog trial;
+  trial.duration_s = 300.0;
+  const TempDir dir;
+  const StepReport report = run_step(trial_request(dir.write("flat.csv", trial.csv(15))));
+  EXPECT_TRUE(report.steps.empty());
+  ASSERT_EQ(report.notes.size(), 1u);
+  EXPECT_THAT(report.notes[0], HasSubstr("constant input"));
+}
+
+TEST(RunStep, ErrorsFromInsideTheAnalysisNameTheLog) {
+  const TempDir dir;
+  const auto log = dir.write("steps.csv", fopdt_csv());
+  StepRequest r = request_for(log);
+  r.from_s = 100.0;
+  r.to_s = 200.0;
+  EXPECT_THAT(option_error_of([&] { run_step(r); }).second,
+              HasSubstr(log.string() + " (input): window [100, 200] s is outside the log"));
+  // A bad segment file is named with its line and column.
+  r = request_for(log);
+  r.segments_file = dir.write("segments.csv", "name,start,end\nfirst,10,20\nsecond,30,x\n");
+  EXPECT_THAT(option_error_of([&] { run_step(r); }).second,
+              HasSubstr(r.segments_file.string() + ":3:3"));
 }
 
 TEST(StepReport, TextHasAHeaderAndARowPerStep) {

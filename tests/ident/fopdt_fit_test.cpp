@@ -293,11 +293,36 @@ TEST(FopdtFit, WarnsOnPoorFitAndFewSamples) {
   const FopdtFitResult noisy = fit_fopdt(t, sample(t, kTruth, 6.0, 5), reference_step());
   EXPECT_TRUE(has_warning(noisy.warnings, WarningCode::kPoorFit));
   EXPECT_LT(*noisy.r_squared, 0.9);
+  // A poor fit is no estimate of the system: never ok, the reason in the message.
+  EXPECT_EQ(noisy.status, FitStatus::kFailed);
+  EXPECT_THAT(noisy.message, ::testing::HasSubstr("is below 0.9"));
   // 0.2 Hz: 18 samples after the step, fewer than the default 20.
   const std::vector<double> t_slow = time_axis(0.0, 5.0, 21);
   const FopdtFitResult sparse = fit_fopdt(t_slow, sample(t_slow, kTruth), reference_step());
   EXPECT_TRUE(has_warning(sparse.warnings, WarningCode::kFewSamples));
   EXPECT_FALSE(has_warning(sparse.warnings, WarningCode::kPoorFit));
+  EXPECT_EQ(sparse.status, FitStatus::kOk) << sparse.message;
+}
+
+TEST(FopdtFit, ADegenerateFitIsNeverOk) {
+  // The output still climbs in a straight line at the end of the window: the response of a
+  // time constant far beyond the window. Least squares runs T towards its search limit (100 ×
+  // the 90 s after the step) with A growing with it: the window does not bound T or K.
+  const std::vector<double> t = time_axis(0.0, 0.5, 201);
+  const std::vector<double> y = sample(
+      t, [](double x) { return x < 10.0 ? 1.0 : 1.0 + 0.05 * (x - 10.0); }, 0.01, 7);
+  const FopdtFitResult r = fit_fopdt(t, y, reference_step());
+  EXPECT_EQ(r.status, FitStatus::kFailed);
+  EXPECT_THAT(r.message, ::testing::HasSubstr("degenerate fit"));
+  EXPECT_THAT(r.message, ::testing::ContainsRegex("over 10 times|cannot be computed"));
+  // The values stay for diagnosis; there is no model.
+  ASSERT_TRUE(r.time_constant.has_value());
+  EXPECT_GT(r.time_constant->value, 900.0);
+  EXPECT_FALSE(r.model().has_value());
+  // A dead time held at its search limit: the response starts after 80 % of the window.
+  const std::vector<double> late = sample(t, [](double x) { return x < 90.0 ? 1.0 : 2.0; });
+  const FopdtFitResult d = fit_fopdt(t, late, reference_step());
+  EXPECT_NE(d.status, FitStatus::kOk) << d.message;
 }
 
 TEST(FopdtFit, NoResponseIsAFailedStatus) {

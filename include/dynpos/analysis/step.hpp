@@ -32,10 +32,14 @@ struct StepRequest {
   std::optional<double> step_at_s;  ///< step time [s], with or without a window
   /// "" or "total-speed": fit √(u² + v²) (3.19) from the roles u and v (sway tests).
   std::string derive;
-  /// Smallest input change counted as a step, in the input's SI unit; 0: from the noise.
+  /// Smallest input change counted as a step, in the input's SI unit; 0: adapted to the log
+  /// (ident/step_detector.hpp: from its noise and its largest changes).
   double min_step = 0.0;
   /// Shortest time [s] the input holds a level to count as a step.
   double min_plateau_s = 3.0;
+  /// Segment file (io/segments.hpp): only steps inside its named stretches are analysed; "" for
+  /// the whole log.
+  std::filesystem::path segments_file;
 
   /// Throws option_error naming "method" or "derive" for a value it does not know.
   void validate() const;
@@ -78,8 +82,9 @@ struct StepFit {
   std::optional<double> dead_time_s;      ///< δ [s]
   std::optional<double> r_squared;
   core::Status status = core::Status::kFailed;
-  std::string message;
+  std::string message;  ///< how the fit went, or why the step could not be fitted
   std::vector<ident::FitWarning> warnings;
+  std::string segment;  ///< name of the segment the step is in; "" without a segment file
   std::optional<FopdtFitDetails> fopdt;               ///< set for lsq and smith
   std::optional<SecondOrderFitDetails> second_order;  ///< set for smith2 and rk
 };
@@ -92,20 +97,29 @@ struct StepReport {
   std::string output_unit;                ///< SI unit of the output; "" is dimensionless
   std::optional<std::string> input_unit;  ///< SI unit of the input; absent without one
   StepTimingSource timing = StepTimingSource::kCommand;
-  std::vector<StepFit> steps;
+  /// Smallest input change counted as a step [input unit]; absent when the steps were not
+  /// detected (a step time given, or no input or trigger).
+  std::optional<double> step_threshold;
+  bool threshold_from_min_step = false;     ///< true: --min-step; false: adapted to the log
+  std::optional<double> input_noise_sigma;  ///< σ̂ of the input (or trigger) [input unit]
+  std::filesystem::path segments_file;      ///< "" without one
+  std::vector<StepFit> steps;               ///< sorted by step time
+  std::vector<std::string> notes;           ///< e.g. why a segment has no step
 };
 
 /// Validates, reads the log, finds the steps and fits each by FOPDT (3.7):
 /// y = y₀ + K·Δu·(1 − e^{−(t−t₀−δ)/T}), or by the second-order model of the method.
-/// Throws option_error("col:output") without an output, option_error("col:input") without
-/// an input, a trigger or a window to find the steps in, and InputError naming the log for a
-/// bad file.
+/// A step that cannot be fitted (too short, no response, a degenerate fit, ...) is a row with
+/// status kFailed and the reason, never an error. Throws option_error("col:output") without an
+/// output, option_error("col:input") without an input, a trigger or a window to find the steps
+/// in, and InputError naming the log (or the segment file) for a bad file or window.
 StepReport run_step(const StepRequest& request);
 
 /// The `identify step --json` document: {log, method, output_unit, input_unit, timing,
-/// steps: [{t_step, t_end, u_before, u_after, y_before, y_after, K, T, delay, r_squared,
-/// status, message?, warnings, ...}]} with sigma, K_levels and rms_residual (first order) or
-/// T1, T2 and damping_ratio (second order).
+/// step_threshold, step_threshold_source ("auto" or "min_step"), input_noise_sigma, segments?,
+/// notes, steps: [{t_step, t_end, segment?, u_before, u_after, y_before, y_after, K, T, delay,
+/// r_squared, status, message?, warnings, ...}]} with sigma, K_levels and rms_residual (first
+/// order) or T1, T2 and damping_ratio (second order).
 nlohmann::json to_json(const StepReport& report);
 
 /// A header line and one table row per step, as `identify step` prints them.

@@ -23,6 +23,15 @@
 /// changes by more than max(2·σ_tail, steady_state_tolerance·|Δy|) over the tail), short window
 /// (less than 3T after the dead time: under 95 % of the response seen), poor fit (R² below
 /// min_r_squared), few samples, dead time at its bound.
+///
+/// Status: a fit is kFailed, with the reason in the message, when it is no estimate of the
+/// system: T over 10 times the window after the dead time (under 10 % of the response seen: the
+/// output does not settle, T and K are extrapolated) or at its lower search limit, δ at its
+/// upper search limit, a standard deviation that cannot be computed (least squares), or R²
+/// below min_r_squared (default 0.9: the model explains less than 90 % of the output's variance
+/// over the window, so the shape is not a first-order step response or the step is lost in
+/// the noise: with white noise σ, R² ≈ 1 − σ²/(σ² + var(model))). Such a result keeps its
+/// values for diagnosis; model() is nullopt. δ = 0 is a physical limit: a warning only.
 
 #include <cstddef>
 #include <optional>
@@ -70,7 +79,7 @@ struct FopdtFitOptions {
   double tail_fraction = 0.2;
   /// Steady-state drift tolerance as a fraction of |Δy|, ≥ 0.
   double steady_state_tolerance = 0.02;
-  /// R² below this (in [0, 1]) raises WarningCode::kPoorFit.
+  /// R² below this (in [0, 1]) raises WarningCode::kPoorFit and fails the fit.
   double min_r_squared = 0.9;
   /// Fewer valid samples after the step than this (≥ 5) raises WarningCode::kFewSamples.
   std::size_t min_samples = 20;
@@ -83,7 +92,8 @@ struct FopdtFitOptions {
   void validate() const;
 };
 
-/// Result of fit_fopdt(). Estimates are absent when status is kFailed.
+/// Result of fit_fopdt(). Estimates are absent when no fit could be made (kFailed), and kept
+/// for diagnosis when the fit is degenerate (kFailed, see the file comment).
 struct FopdtFitResult {
   FitStatus status = FitStatus::kFailed;
   std::string message;

@@ -9,15 +9,36 @@
 /// `min_plateau_s`) and transitions between them; every transition between two plateaus whose
 /// levels differ by at least the step threshold is one step, up or down, from any baseline.
 ///
-/// Noise level: σ̂ = 1.4826·MAD(Δu)/√2 from the first differences Δu of consecutive valid
-/// samples (robust to the few large differences at steps, and to ramps, which only shift Δu).
-/// Band: h = max(noise_factor·σ̂, min_step/4), or `band` when given.
+/// Noise level: σ̂ is the larger of 1.4826·MAD(Δu)/√2 and √(mean Δu²)/√2 over the differences
+/// Δu of consecutive valid samples, the largest 2 % left out. The first is robust to the few
+/// large differences at steps and to ramps; the second sees the wiggles of a held order that
+/// changes in only a few samples (MAD = 0 for an order that mostly holds its value exactly).
+///
+/// Threshold (the smallest level change that is a step): with `min_step` given, max(min_step,
+/// 2h); otherwise max(2·noise_factor·σ̂, large_change_fraction·S), S the largest change of the
+/// input within any `change_window_s` (after a 3-sample running median, so one bad sample does
+/// not set it). The large changes of a log set the scale of its steps: a 5 % fraction keeps
+/// sub-degree wiggles and re-settling of a 30–70° azimuth programme, and a few rpm of dither on
+/// a 150 rpm programme, out, and still finds 5 % lever steps. Band: h = max(noise_factor·σ̂,
+/// threshold/4), or `band` when given.
+///
+/// Levels: neighbouring plateaus are one level (a spike, a gap, wiggles or a slow drift split
+/// them) unless the input changes by at least the threshold between the end of the one and the
+/// start of the next (medians over min_plateau_s/2): comparing the levels next to the transition,
+/// not whole plateaus, keeps a drift of any length from adding up to a step. A level held less
+/// than `settle_s` after a step and left by a change back of less than `settle_fraction` of that
+/// step (an order set to 33.3° and re-settled to 30.7° a few seconds later) belongs to the step:
+/// its level after is the settled one. A step goes from the median of the last 20·min_plateau_s
+/// before it to that of the first 20·min_plateau_s after it (the plateaus' edges on the ramps
+/// left out).
 ///
 /// Timing: the plateau before the step has level L₀, the one after L₁. For a command
 /// (StepTiming::kCommand) the samples of the transition between 10 % and 90 % of L₁ − L₀ are
 /// fitted by a straight line, and its crossings of L₀ and L₁ give the step time (start of the
 /// ramp) and the end of the ramp; with fewer than 3 such samples (an ideal step) the step time
-/// is the first sample that left the band around L₀. For a trigger (StepTiming::kTrigger, e.g.
+/// is the first sample that left the band around L₀. A ramp is one step, timed at its start: a
+/// FOPDT fitted from there sees the ramp's delay to its mid-point, R/2, in the dead time, K and
+/// T unchanged to first order in R/T. For a trigger (StepTiming::kTrigger, e.g.
 /// power feedback, which the thesis used to time steps when no setpoint was logged, section
 /// 3.5.4) the onset of change is wanted: the line is fitted to the transition samples between
 /// leaving the band and 30 % of the change, and extended back to L₀; this is exact for a
@@ -40,9 +61,18 @@ enum class StepTiming {
 
 /// Options for detect_steps() and step_from_window().
 struct StepDetectorOptions {
-  /// Smallest level change counted as a step [input unit], ≥ 0. 0 = set by the noise alone
-  /// (threshold 2h, h the band half-width).
+  /// Smallest level change counted as a step [input unit], ≥ 0. 0 = adapted to the log from
+  /// its noise and its largest changes (see the file comment).
   double min_step = 0.0;
+  /// Fraction of the largest change that the adapted threshold is at least, in [0, 1).
+  double large_change_fraction = 0.05;
+  /// Window [s] > 0 over which the largest change of the input is measured (a ramp shorter than
+  /// this counts whole).
+  double change_window_s = 20.0;
+  /// A level held less than this [s] ≥ 0 after a step can be re-settling (0: no re-settling).
+  double settle_s = 10.0;
+  /// Re-settling is a change back of less than this fraction of the step, in [0, 1).
+  double settle_fraction = 0.25;
   /// Band half-width h in noise standard deviations, > 0 (used when `band` is not given).
   double noise_factor = 5.0;
   /// Band half-width h [input unit], > 0; overrides the noise estimate (use for a trigger with
@@ -74,18 +104,34 @@ struct Step {
   double ramp_duration() const { return t_ramp_end - t_step; }
 };
 
+/// The scale of an input's steps: its noise, the band and the step threshold.
+struct StepThreshold {
+  double noise_sigma = 0.0;     ///< σ̂ of the input noise [input unit]
+  double largest_change = 0.0;  ///< S, the largest change within change_window_s [input unit]
+  double band = 0.0;            ///< band half-width h [input unit]
+  double threshold = 0.0;       ///< smallest level change counted as a step [input unit]
+  bool from_min_step = false;   ///< true when min_step set the threshold, false when adapted
+};
+
+/// The threshold and band of detect_steps() for an input u (see the file comment).
+/// Throws core::InputError like detect_steps().
+StepThreshold step_threshold(std::span<const double> t, std::span<const double> u,
+                             const StepDetectorOptions& options = {});
+
 /// Result of detect_steps().
 struct StepDetection {
-  std::vector<Step> steps;   ///< in time order, at least one
+  std::vector<Step> steps;   ///< in time order; empty when none was found
   double noise_sigma = 0.0;  ///< σ̂ of the input noise [input unit]
   double band = 0.0;         ///< band half-width h used [input unit]
   double threshold = 0.0;    ///< smallest level change counted as a step [input unit]
+  std::string message;       ///< why no step was found; empty when steps were found
 };
 
 /// Finds every step in an input u(t) (see the file comment for the method).
 /// t [s] strictly increasing and finite; u same length, NaN = missing.
-/// Throws core::InputError if the lengths differ, t is not increasing, u has fewer than 3
-/// valid samples, u is constant, or no step is found.
+/// Finding no step (a constant input, one level only) is a result: `steps` is empty and
+/// `message` says why. Throws core::InputError if the lengths differ, t is not increasing, or
+/// u has fewer than 3 valid samples.
 StepDetection detect_steps(std::span<const double> t, std::span<const double> u,
                            const StepDetectorOptions& options = {});
 
