@@ -47,7 +47,8 @@ LoadedLog read_log_files(const std::filesystem::path& main_log, const io::Column
   map.validate();
   io::FileLog main = io::read_log_file(main_log, map.for_file(""));
   LoadedLog out{std::move(main.log), {}};
-  out.input = describe_input(out.log, main.report.path, std::move(main.report));
+  const std::string main_path = main.report.path;
+  out.input = describe_input(out.log, main_path, std::move(main.report));
   for (const std::string& file : map.other_files()) {
     const io::LogFileOptions file_options = map.file_options(file);
     io::FileLog part = io::read_log_file(file, map.for_file(file));
@@ -65,7 +66,8 @@ LoadedLog read_log_files(const std::filesystem::path& main_log, const io::Column
       }
     }
     // Rates on the file's own clock: a 1 Hz role stays 1 Hz on a 10 Hz main log.
-    io::InputReport part_input = describe_input(part.log, part.report.path, part.report);
+    const std::string part_path = part.report.path;
+    io::InputReport part_input = describe_input(part.log, part_path, std::move(part.report));
     out.input.files.push_back(std::move(part_input.files.front()));
     for (io::RoleOrigin& role : part_input.roles) out.input.roles.push_back(std::move(role));
   }

@@ -101,7 +101,9 @@ TEST_F(LogFiles, RolesOfOtherFilesLandOnTheMainTimeAxis) {
     // r: 1.5 °/s, NaN inside the 4 s gap (104, 108) s, wider than 2.5 × 1 s.
     const bool in_gap = t > 104.0 + 1e-9 && t < 108.0 - 1e-9;
     EXPECT_EQ(std::isnan(log.values("r")[i]), in_gap);
-    if (!in_gap) EXPECT_DOUBLE_EQ(log.values("r")[i], 1.5 * kDeg);
+    if (!in_gap) {
+      EXPECT_DOUBLE_EQ(log.values("r")[i], 1.5 * kDeg);
+    }
   }
   // The bound is nearly reached (so it is not vacuous): at 105.5 s, where |u''| is largest, the
   // error is 1/8 · 0.045 · sin(1.65) ≈ 5.6e-3 m/s.
