@@ -55,6 +55,7 @@ class LogFiles : public ::testing::Test {
     for (int k = 0; k <= 9; ++k) gps += fmt::format("{},{}\n", k, 10 * k);
     write("gps.csv", gps);
     write("late.csv", "time,N\n500,1\n501,2\n");
+    write("sparse.csv", "time,E\n99.95,1\n110.05,2\n");
   }
   void TearDown() override {
     std::error_code ignored;
@@ -136,6 +137,20 @@ TEST_F(LogFiles, MaxGapBridgesWhatItIsToldTo) {
   for (double r : log.values("r")) EXPECT_DOUBLE_EQ(r, 1.5 * kDeg);
   s.max_gap_s = -1.0;
   EXPECT_EQ(input_error([&] { load(s); }).option(), "max_gap");
+}
+
+TEST_F(LogFiles, ARoleWithNoSampleOnTheMainAxisIsNoted) {
+  // sparse.csv spans the main log but its only two samples are 10.1 s apart: with --max-gap 5
+  // every main-log time is inside the gap. Not an error, but never a silent all-missing role.
+  LogSource s = source();
+  s.columns.push_back("east=E@" + path("sparse.csv"));
+  s.max_gap_s = 5.0;
+  const LoadedLog loaded = load(s);
+  for (double e : loaded.log.values("east")) EXPECT_TRUE(std::isnan(e));
+  const io::FileReport* sparse = loaded.input.file(path("sparse.csv"));
+  ASSERT_NE(sparse, nullptr);
+  ASSERT_EQ(sparse->notes.size(), 1u);
+  EXPECT_THAT(sparse->notes[0], HasSubstr("role 'east' has no sample on the main log's time axis"));
 }
 
 TEST_F(LogFiles, TheReportListsEachFileAndEachRolesOriginAndRate) {
