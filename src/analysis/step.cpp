@@ -3,13 +3,13 @@
 #include <fmt/core.h>
 
 #include "dynpos/analysis/json_fields.hpp"
+#include "dynpos/analysis/log_source.hpp"
 #include "dynpos/analysis/options.hpp"
 #include "dynpos/core/log.hpp"
 #include "dynpos/ident/derived_signals.hpp"
 #include "dynpos/ident/fopdt_fit.hpp"
 #include "dynpos/ident/second_order_fit.hpp"
 #include "dynpos/io/column_map.hpp"
-#include "dynpos/io/csv_reader.hpp"
 
 namespace dynpos::analysis {
 namespace {
@@ -27,6 +27,7 @@ StepSignals read_signals(const StepRequest& request) {
   const LogSource& src = request.source;
   io::ColumnMap map = src.map_file.empty() ? io::ColumnMap{} : io::load_column_map(src.map_file);
   io::apply_overrides(map, src.columns, src.units);
+  for (const std::string& offset : src.clock_offsets) io::apply_clock_offset_override(map, offset);
   if (map.find("time") == nullptr) map.set_column("time", "time");  // our own logs' name
   const bool total_speed = request.derive == "total-speed";
   if (total_speed) {
@@ -38,7 +39,12 @@ StepSignals read_signals(const StepRequest& request) {
                        "map the measured response, e.g. --col output=rpm.stb, or use "
                        "--derive total-speed with u and v");
   }
-  const core::Log log = io::read_csv(src.log, map);
+  if (!(src.max_gap_s >= 0.0)) {
+    throw option_error("max_gap",
+                       fmt::format("the largest gap must be >= 0 s, got {}", src.max_gap_s));
+  }
+  const core::Log log =
+      read_log_files(src.log, map, core::ResampleOptions{.max_gap_s = src.max_gap_s}).log;
   StepSignals s;
   s.t = log.time();
   if (total_speed) {
