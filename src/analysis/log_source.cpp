@@ -63,11 +63,15 @@ io::InputReport describe_input(const core::Log& log, const std::string& file,
 }
 
 LoadedLog LogSource::load(const RoleFilter& wanted) const {
+  return read_log_files(log, column_map(wanted), resample_options());
+}
+
+core::ResampleOptions LogSource::resample_options() const {
   if (!(max_gap_s >= 0.0)) {
     throw option_error("max_gap", fmt::format("the largest gap must be >= 0 s, got {}", max_gap_s),
                        "0 = automatic: 2.5 times each role's median spacing");
   }
-  return read_log_files(log, column_map(wanted), core::ResampleOptions{.max_gap_s = max_gap_s});
+  return core::ResampleOptions{.max_gap_s = max_gap_s};
 }
 
 core::Log LogSource::read(const RoleFilter& wanted) const { return load(wanted).log; }

@@ -39,12 +39,7 @@ StepSignals read_signals(const StepRequest& request) {
                        "map the measured response, e.g. --col output=rpm.stb, or use "
                        "--derive total-speed with u and v");
   }
-  if (!(src.max_gap_s >= 0.0)) {
-    throw option_error("max_gap",
-                       fmt::format("the largest gap must be >= 0 s, got {}", src.max_gap_s));
-  }
-  const core::Log log =
-      read_log_files(src.log, map, core::ResampleOptions{.max_gap_s = src.max_gap_s}).log;
+  const core::Log log = read_log_files(src.log, map, src.resample_options()).log;
   StepSignals s;
   s.t = log.time();
   if (total_speed) {

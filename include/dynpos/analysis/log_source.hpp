@@ -29,11 +29,12 @@ struct LoadedLog {
 };
 
 struct LogSource {
-  std::filesystem::path log;               ///< the CSV log
-  std::filesystem::path map_file;          ///< column map (TOML), or empty
-  std::vector<std::string> columns;        ///< ROLE=COLUMN
-  std::vector<std::string> units;          ///< ROLE=UNIT
-  std::vector<std::string> clock_offsets;  ///< FILE=SECONDS, added to FILE's times
+  std::filesystem::path log;         ///< the CSV log
+  std::filesystem::path map_file;    ///< column map (TOML), or empty
+  std::vector<std::string> columns;  ///< ROLE=COLUMN
+  std::vector<std::string> units;    ///< ROLE=UNIT
+  /// FILE=SECONDS, added to the times of FILE (named by a ROLE=COLUMN@FILE).
+  std::vector<std::string> clock_offsets;
   /// Largest gap [s] between two samples of a role from another file that is bridged when it
   /// is put on the main log's time axis; 0 = automatic (2.5 × that role's median spacing).
   double max_gap_s = 0.0;
@@ -49,6 +50,9 @@ struct LogSource {
 
   /// load(wanted).log.
   core::Log read(const RoleFilter& wanted) const;
+
+  /// {max_gap_s}, checked: throws option_error("max_gap") if it is negative or NaN.
+  core::ResampleOptions resample_options() const;
 };
 
 /// Reads the roles `map` assigns to the main log (time axis of the result) and to each other
