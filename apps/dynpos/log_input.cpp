@@ -6,8 +6,17 @@ void LogInput::add_options(CLI::App& sub, const std::string& roles_help) {
   sub.add_option("log", log, "CSV log")->required()->check(CLI::ExistingFile);
   sub.add_option("--map", map_file, "Column map (TOML): roles → columns, units, scales")
       ->check(CLI::ExistingFile);
-  sub.add_option("--col", columns, "ROLE=COLUMN (repeatable). Roles: " + roles_help);
+  sub.add_option("--col", columns,
+                 "ROLE=COLUMN or ROLE=COLUMN@FILE for a column of another file (repeatable; "
+                 "time=COLUMN@FILE names FILE's time column). Roles: " +
+                     roles_help);
   sub.add_option("--unit", units, "ROLE=UNIT (repeatable), e.g. thrust.port=kN");
+  sub.add_option("--clock-offset", clock_offsets,
+                 "FILE=SECONDS (repeatable): added to FILE's times to put them on LOG's clock");
+  sub.add_option("--max-gap", max_gap_s,
+                 "Largest gap [s] bridged when a role of another file is put on LOG's time "
+                 "axis (default: 2.5 x that role's median spacing)")
+      ->check(CLI::NonNegativeNumber);
 }
 
 }  // namespace dynpos::cli

@@ -1,6 +1,6 @@
 #pragma once
-// The log options every analysis subcommand shares: LOG, --map, --col and --unit, filling an
-// analysis::LogSource.
+// The log options every analysis subcommand shares: LOG, --map, --col, --unit, --clock-offset
+// and --max-gap, filling an analysis::LogSource.
 
 #include <CLI/CLI.hpp>
 #include <string>
@@ -11,7 +11,7 @@
 namespace dynpos::cli {
 
 struct LogInput : analysis::LogSource {
-  /// Adds LOG (positional, required), --map, --col and --unit to `sub`.
+  /// Adds LOG (positional, required), --map, --col, --unit, --clock-offset and --max-gap.
   void add_options(CLI::App& sub, const std::string& roles_help);
 };
 

@@ -212,7 +212,9 @@ void read_inputs(const LeverarmGnssRequest& q, Inputs& in) {
   in.extra.reserve(q.gnss_log.size() + q.nmea.size());
   for (const std::string& g : q.gnss_log) {
     const auto [prefix, file] = split_eq(g, "gnss_log", "gnss1=FILE.csv");
-    LogSource li{file, q.source.map_file, {}, {}};
+    LogSource li;
+    li.log = file;
+    li.map_file = q.source.map_file;
     for (const std::string& c : q.source.columns)
       if (c.rfind(prefix + ".", 0) == 0) li.columns.push_back(c);
     for (const std::string& u : q.source.units)

@@ -279,7 +279,9 @@ ReportSection leverarm_mru_demo_section(const std::filesystem::path& campaign_di
   if (!reference) {
     q.source.columns = {"roll=mru1.roll", "pitch=mru1.pitch", "p=mru1.p", "q=mru1.q", "r=mru1.r"};
   }
-  const core::Log probe = LogSource{log, {}, {}, {}}.read(is_mru_accel_role);
+  LogSource probe_source;
+  probe_source.log = log;
+  const core::Log probe = probe_source.read(is_mru_accel_role);
   for (const std::string& name : mru_names(probe)) q.mru_log.push_back(name + "=" + log.string());
   const LeverarmMruReport report = run_leverarm_mru(q);
   const auto truth = true_mru_arms(dir / "truth.json");

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 
+#include <fmt/format.h>
+
+#include "dynpos/analysis/options.hpp"
 #include "dynpos/io/csv_reader.hpp"
 #include "dynpos/io/roles.hpp"
 
@@ -10,8 +13,11 @@ namespace dynpos::analysis {
 io::ColumnMap LogSource::column_map(const RoleFilter& wanted) const {
   io::ColumnMap map = map_file.empty() ? io::ColumnMap{} : io::load_column_map(map_file);
   io::apply_overrides(map, columns, units);
+  for (const std::string& offset : clock_offsets) io::apply_clock_offset_override(map, offset);
   std::vector<std::string> mapped_columns;
-  for (const auto& [role, entry] : map.roles()) mapped_columns.push_back(entry.column);
+  for (const auto& [role, entry] : map.roles()) {
+    if (entry.file.empty()) mapped_columns.push_back(entry.column);
+  }
   if (map.find("time") == nullptr) map.set_column("time", "time");
   for (const std::string& cell : io::read_csv_header(log)) {
     const std::string name = io::split_header_cell(cell).name;
@@ -57,12 +63,15 @@ io::InputReport describe_input(const core::Log& log, const std::string& file,
 }
 
 LoadedLog LogSource::load(const RoleFilter& wanted) const {
-  core::Log read_log = io::read_csv(log, column_map(wanted));
-  io::FileReport file;
-  file.format = "csv";
-  file.time_format = "seconds";
-  io::InputReport input = describe_input(read_log, log.string(), std::move(file));
-  return {std::move(read_log), std::move(input)};
+  return read_log_files(log, column_map(wanted), resample_options());
+}
+
+core::ResampleOptions LogSource::resample_options() const {
+  if (!(max_gap_s >= 0.0)) {
+    throw option_error("max_gap", fmt::format("the largest gap must be >= 0 s, got {}", max_gap_s),
+                       "0 = automatic: 2.5 times each role's median spacing");
+  }
+  return core::ResampleOptions{.max_gap_s = max_gap_s};
 }
 
 core::Log LogSource::read(const RoleFilter& wanted) const { return load(wanted).log; }

@@ -7,6 +7,7 @@
 #include <span>
 
 #include "dynpos/analysis/json_fields.hpp"
+#include "dynpos/analysis/log_source.hpp"
 #include "dynpos/analysis/options.hpp"
 #include "dynpos/core/log.hpp"
 #include "dynpos/ident/derived_signals.hpp"

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -46,6 +48,30 @@ double median_spacing(const std::vector<double>& t) {
   return 0.5 * (lower + upper);
 }
 
+// The range [lo, lo + 2π) an angle channel's interpolated values are put back in, from its valid
+// samples (see Interp::kAngle); nullopt for an unwrapped series, which is left as it comes.
+std::optional<double> angle_range_start(const std::vector<double>& values) {
+  constexpr double kPi = std::numbers::pi;
+  const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+  if (*lo >= 0.0 && *hi <= 2.0 * kPi) return 0.0;
+  if (*lo >= -kPi && *hi <= kPi) return -kPi;
+  return std::nullopt;
+}
+
+// Linear interpolation of an angle along the shorter arc, wrapped into [range_start,
+// range_start + 2π) when there is a range. For |ψ₁ − ψ₀| < π the difference is unchanged
+// (std::remainder is exact), so a series that never jumps gets the kLinear values bit for bit.
+double interpolate_angle(double v0, double v1, double fraction,
+                         const std::optional<double>& range_start) {
+  constexpr double kTwoPi = 2.0 * std::numbers::pi;
+  double v = v0 + std::remainder(v1 - v0, kTwoPi) * fraction;
+  if (range_start) {
+    if (v < *range_start) v += kTwoPi;
+    if (v >= *range_start + kTwoPi) v -= kTwoPi;
+  }
+  return v;
+}
+
 // One channel onto the target axis in O(N + M): the valid samples are gathered once, then a
 // single pointer into them advances monotonically as the (increasing) target times advance.
 std::vector<double> resample_channel(const std::vector<double>& time_s, const Channel& channel,
@@ -69,6 +95,8 @@ std::vector<double> resample_channel(const std::vector<double>& time_s, const Ch
   // The spacing rule applies to this channel's own valid samples, so a 1 Hz channel blank on
   // the rows of a 100 Hz log sees 1 s spacing and bridges its blank rows.
   const double max_gap = (max_gap_s == 0.0 && n >= 2) ? 2.5 * median_spacing(valid_t) : max_gap_s;
+  const std::optional<double> angle_start =
+      channel.interp == Interp::kAngle ? angle_range_start(valid_v) : std::nullopt;
 
   std::size_t j = 0;  // invariant: valid_t[j] <= t once t >= valid_t[0]
   for (std::size_t k = 0; k < target_s.size(); ++k) {
@@ -93,6 +121,9 @@ std::vector<double> resample_channel(const std::vector<double>& time_s, const Ch
         break;
       case Interp::kHold:
         out[k] = valid_v[j];
+        break;
+      case Interp::kAngle:
+        out[k] = interpolate_angle(valid_v[j], valid_v[j + 1], (t - t0) / (t1 - t0), angle_start);
         break;
     }
   }

@@ -1,5 +1,7 @@
 #include "dynpos/io/column_map.hpp"
 
+#include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -55,6 +57,52 @@ std::pair<std::string, std::string> split_assignment(std::string_view argument,
                      fmt::format("for example {} {}", option, example));
   }
   return {std::string(role), std::string(value)};
+}
+
+// A file named in the map: relative to the folder of the map file `source_name`.
+std::string resolve_file(std::string_view text, const std::string& source_name) {
+  const std::filesystem::path path(text);
+  const std::filesystem::path folder = std::filesystem::path(source_name).parent_path();
+  if (path.is_absolute() || folder.empty()) return path.lexically_normal().string();
+  return (folder / path).lexically_normal().string();
+}
+
+std::string file_name(const toml::node& node, const std::string& source_name) {
+  const auto text = node.value<std::string>();
+  if (!text || text->empty()) {
+    throw InputError(at(source_name, node.source()), "file must be a non-empty string",
+                     "for example file = \"nav.csv\" (relative to the map file's folder)");
+  }
+  return resolve_file(*text, source_name);
+}
+
+// [files."nav.csv"]: time = "t", clock_offset = 0.25.
+void read_files_table(const toml::table& table, ColumnMap& map, const std::string& source_name) {
+  for (auto&& [key, node] : table) {
+    const std::string file = resolve_file(key.str(), source_name);
+    const toml::table* options = node.as_table();
+    if (options == nullptr || key.str().empty()) {
+      throw InputError(at(source_name, key.source()),
+                       fmt::format("files.\"{}\" must be a table", key.str()),
+                       "for example [files.\"nav.csv\"] with time and clock_offset");
+    }
+    for (auto&& [name, value] : *options) {
+      const InputLocation where = at(source_name, value.source());
+      if (name.str() == "time") {
+        const auto column = value.value<std::string>();
+        if (!column || !value.is_string()) throw InputError(where, "time must be a column name");
+        map.set_time_column(file, *column, where);
+      } else if (name.str() == "clock_offset") {
+        const auto offset = value.value<double>();
+        if (!offset) throw InputError(where, "clock_offset must be a number of seconds");
+        map.set_clock_offset(file, *offset, where);
+      } else {
+        throw InputError(at(source_name, name.source()),
+                         fmt::format("unknown key '{}' in [files.\"{}\"]", name.str(), key.str()),
+                         "the keys are time and clock_offset");
+      }
+    }
+  }
 }
 
 char parse_delimiter(const toml::node& node, const std::string& file) {
@@ -113,10 +161,25 @@ void read_role_table(const std::string& role, const toml::table& table, ColumnMa
     throw InputError(at(file, where), fmt::format("role '{}' needs column = \"NAME\"", role),
                      fmt::format("for example {} = {{ column = \"HDG\", unit = \"deg\" }}", role));
   }
+  const toml::node* in_file = table.get("file");
+  if (role == "time" && in_file != nullptr) {
+    // The time column of another file: that file's, not the main log's.
+    if (table.size() > 2) {
+      throw InputError(at(file, where), "the time of another file takes only column and file",
+                       "a time unit comes from the header, e.g. \"t [ms]\"");
+    }
+    map.set_time_column(file_name(*in_file, file), *column->value<std::string>(),
+                        at(file, column->source()));
+    return;
+  }
   map.set_column(role, *column->value<std::string>(), at(file, column->source()));
   for (auto&& [key, node] : table) {
     const std::string_view name = key.str();
     if (name == "column") continue;
+    if (name == "file") {
+      map.set_file(role, file_name(node, file), at(file, node.source()));
+      continue;
+    }
     if (name == "unit") {
       const auto unit = node.value<std::string>();
       if (!unit) throw InputError(at(file, node.source()), "unit must be a string");
@@ -128,7 +191,7 @@ void read_role_table(const std::string& role, const toml::table& table, ColumnMa
     } else {
       throw InputError(at(file, key.source()),
                        fmt::format("unknown key '{}' for role '{}'", name, role),
-                       "the keys are column, unit and scale");
+                       "the keys are column, unit, scale and file");
     }
   }
 }
@@ -235,6 +298,75 @@ void ColumnMap::set_scale(std::string_view role, double scale, InputLocation whe
   e.scale = scale;
 }
 
+LogFileOptions& ColumnMap::file_entry(std::string_view file, const InputLocation& where) {
+  if (detail::trim(file).empty()) throw InputError(where, "empty file name");
+  auto it = files_.find(file);
+  if (it == files_.end()) {
+    it = files_.emplace(std::string(file), LogFileOptions{}).first;
+    it->second.source = where;
+  }
+  return it->second;
+}
+
+void ColumnMap::set_file(std::string_view role, std::string_view file, InputLocation where) {
+  if (role == "time" && !file.empty()) {
+    throw InputError(
+        where, "the main log's time cannot come from another file",
+        fmt::format("to name the time column of {} write --col time=COLUMN@{}", file, file));
+  }
+  if (!file.empty() && detail::trim(file).empty()) throw InputError(where, "empty file name");
+  entry(role, where).file = std::string(file);
+}
+
+void ColumnMap::set_time_column(std::string_view file, std::string_view column,
+                                InputLocation where) {
+  const std::string_view name = detail::trim(column);
+  if (name.empty()) throw InputError(where, fmt::format("empty time column for file '{}'", file));
+  file_entry(file, where).time_column = std::string(name);
+}
+
+void ColumnMap::set_clock_offset(std::string_view file, double offset_s, InputLocation where) {
+  if (!std::isfinite(offset_s)) {
+    throw InputError(where,
+                     fmt::format("clock offset {} s for '{}' is not finite", offset_s, file));
+  }
+  file_entry(file, where).clock_offset_s = offset_s;
+}
+
+ColumnMap ColumnMap::for_file(std::string_view file) const {
+  ColumnMap out;
+  out.format_ = format_;
+  for (const auto& [role, e] : roles_) {
+    if (e.file != file || (role == "time" && !file.empty())) continue;
+    RoleColumn copy = e;
+    copy.file.clear();
+    out.roles_.emplace(role, std::move(copy));
+  }
+  if (!file.empty()) {
+    const LogFileOptions options = file_options(file);
+    RoleColumn time;
+    time.column = options.time_column;
+    time.source = options.source;
+    out.roles_.insert_or_assign("time", std::move(time));
+  }
+  return out;
+}
+
+std::vector<std::string> ColumnMap::other_files() const {
+  std::vector<std::string> files;
+  for (const auto& [role, e] : roles_) {
+    if (!e.file.empty() && std::find(files.begin(), files.end(), e.file) == files.end()) {
+      files.push_back(e.file);
+    }
+  }
+  return files;
+}
+
+LogFileOptions ColumnMap::file_options(std::string_view file) const {
+  const auto it = files_.find(file);
+  return it == files_.end() ? LogFileOptions{} : it->second;
+}
+
 const RoleColumn* ColumnMap::find(std::string_view role) const {
   const auto it = roles_.find(role);
   return it == roles_.end() ? nullptr : &it->second;
@@ -247,6 +379,16 @@ void ColumnMap::validate() const {
       throw InputError(
           e.source, fmt::format("role '{}' has a unit or scale but no column", role),
           fmt::format("map it with --col {}=COLUMN or in [roles] of the map file", role));
+    }
+  }
+  for (const auto& [file, options] : files_) {
+    const bool used = std::any_of(roles_.begin(), roles_.end(),
+                                  [&](const auto& role) { return role.second.file == file; });
+    if (!used) {
+      throw InputError(options.source, fmt::format("no role is read from '{}'", file),
+                       fmt::format("map a role with --col ROLE=COLUMN@{} or file = \"...\" in "
+                                   "[roles], or check the file name",
+                                   file));
     }
   }
   if (find("time") == nullptr) {
@@ -267,7 +409,7 @@ ColumnMap parse_column_map(std::string_view toml_text, const std::string& source
   for (auto&& [key, node] : root) {
     const std::string_view name = key.str();
     const toml::table* table = node.as_table();
-    if ((name == "csv" || name == "roles") && table == nullptr) {
+    if ((name == "csv" || name == "roles" || name == "files") && table == nullptr) {
       throw InputError(at(source_name, key.source()), fmt::format("'{}' must be a table", name),
                        fmt::format("write it as [{}]", name));
     }
@@ -275,10 +417,12 @@ ColumnMap parse_column_map(std::string_view toml_text, const std::string& source
       read_csv_table(*table, map.format(), source_name);
     } else if (name == "roles") {
       read_roles_table("", *table, map, source_name);
+    } else if (name == "files") {
+      read_files_table(*table, map, source_name);
     } else {
       throw InputError(at(source_name, key.source()),
                        fmt::format("unknown table or key '{}' in the column map", name),
-                       "the tables are [csv] and [roles]");
+                       "the tables are [csv], [roles] and [files]");
     }
   }
   return map;
@@ -299,7 +443,38 @@ ColumnMap load_column_map(const std::filesystem::path& path) {
 void apply_column_override(ColumnMap& map, std::string_view argument) {
   auto [role, column] = split_assignment(argument, "--col", "COLUMN", "heading=HDG");
   const InputLocation where = command_line("--col " + std::string(argument));
+  std::string file;
+  if (const auto at_sign = column.rfind('@'); at_sign != std::string::npos) {
+    file = std::string(detail::trim(std::string_view(column).substr(at_sign + 1)));
+    column = std::string(detail::trim(std::string_view(column).substr(0, at_sign)));
+    if (file.empty() || column.empty()) {
+      throw InputError(where,
+                       fmt::format("malformed argument '{}': expected ROLE=COLUMN@FILE", argument),
+                       "for example --col heading=HDG@nav.csv");
+    }
+    if (role == "time") {
+      map.set_time_column(file, column, where);
+      return;
+    }
+  }
   map.replace_column(role, column, where);
+  map.set_file(role, file, where);
+}
+
+void apply_clock_offset_override(ColumnMap& map, std::string_view argument) {
+  const InputLocation where = command_line("--clock-offset " + std::string(argument));
+  const auto eq = argument.rfind('=');
+  const std::string_view file =
+      eq == std::string_view::npos ? std::string_view{} : detail::trim(argument.substr(0, eq));
+  const std::string_view text =
+      eq == std::string_view::npos ? std::string_view{} : detail::trim(argument.substr(eq + 1));
+  double offset_s = 0.0;
+  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), offset_s);
+  if (file.empty() || text.empty() || ec != std::errc() || ptr != text.data() + text.size()) {
+    throw InputError(where, fmt::format("malformed argument '{}': expected FILE=SECONDS", argument),
+                     "for example --clock-offset nav.csv=0.25 (added to that file's times)");
+  }
+  map.set_clock_offset(file, offset_s, where);
 }
 
 void apply_unit_override(ColumnMap& map, std::string_view argument) {

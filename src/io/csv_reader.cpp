@@ -488,6 +488,13 @@ core::Log read_csv(const std::filesystem::path& path, const ColumnMap& map,
                    const CsvReadOptions& options) {
   map.validate();
   options.validate();
+  for (const auto& [role, entry] : map.roles()) {
+    if (!entry.file.empty()) {
+      throw InputError(entry.source,
+                       fmt::format("role '{}' is mapped to another file, {}", role, entry.file),
+                       "this reads a single file: map the role to one of its columns");
+    }
+  }
   const CsvFormat& format = map.format();
   LineReader reader(path, format.comment_prefix);
   const Header header = read_header(reader, format);

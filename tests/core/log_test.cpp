@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -149,9 +150,49 @@ TEST(LogResample, HoldAndNearestSemantics) {
             (std::vector<double>{10.0, 10.0, 10.0, 20.0, 20.0, 20.0, 40.0, 40.0, 40.0}));
 }
 
+TEST(LogResample, AngleTakesTheShorterArcAcrossZero) {
+  constexpr double kDeg = std::numbers::pi / 180.0;
+  constexpr double kTwoPi = 2.0 * std::numbers::pi;
+  Log log(std::vector<double>{0.0, 1.0, 2.0});
+  // [0, 2π) heading 359° → 1° → 3°; the same in [−π, π): 179° → −179° → −177°.
+  log.add_channel("heading", "rad", {359.0 * kDeg, 1.0 * kDeg, 3.0 * kDeg}, Interp::kAngle);
+  log.add_channel("signed", "rad", {179.0 * kDeg, -179.0 * kDeg, -177.0 * kDeg}, Interp::kAngle);
+  log.add_channel("linear", "rad", {359.0 * kDeg, 1.0 * kDeg, 3.0 * kDeg});
+  const Log r = log.resample({0.25, 0.5, 0.75, 1.5});
+  // Across 0: 359.5°, 0°, 0.5° (not 269.5°, 180°, 90.5° as a straight line gives); a few
+  // roundings of numbers ≈ 2π: 1e-14 rad.
+  const std::vector<double> heading_deg{359.5, 0.0, 0.5, 2.0};
+  const std::vector<double> signed_deg{179.5, -180.0, -179.5, -178.0};
+  for (std::size_t k = 0; k < heading_deg.size(); ++k) {
+    SCOPED_TRACE(k);
+    // Compared modulo 2π: 360° may come out as 2π − ε or 0, both the same heading.
+    EXPECT_NEAR(std::remainder(r.values("heading")[k] - heading_deg[k] * kDeg, kTwoPi), 0.0, 1e-14);
+    EXPECT_NEAR(std::remainder(r.values("signed")[k] - signed_deg[k] * kDeg, kTwoPi), 0.0, 1e-14);
+  }
+  EXPECT_NEAR(r.values("linear")[1], 180.0 * kDeg, 1e-14);  // the long way, for contrast
+  // Values stay in the channel's range: [0, 2π) and [−π, π).
+  for (double v : r.values("heading")) EXPECT_TRUE(v >= 0.0 && v < 2.0 * std::numbers::pi);
+  for (double v : r.values("signed")) EXPECT_TRUE(v >= -std::numbers::pi && v < std::numbers::pi);
+}
+
+TEST(LogResample, AngleWithoutAJumpEqualsLinearBitForBit) {
+  // An unwrapped heading (beyond 2π) and one that never crosses a wrap: exactly kLinear.
+  const std::vector<double> t{0.0, 0.9, 2.1, 3.0};
+  Log log(t);
+  const std::vector<double> unwrapped{6.0, 6.5, 7.2, 7.9};
+  const std::vector<double> inside{0.1, 0.4, 1.3, 3.0};
+  log.add_channel("unwrapped", "rad", unwrapped, Interp::kAngle);
+  log.add_channel("unwrapped_lin", "rad", unwrapped);
+  log.add_channel("inside", "rad", inside, Interp::kAngle);
+  log.add_channel("inside_lin", "rad", inside);
+  const Log r = log.resample(range(0.0, 0.1, 31));
+  EXPECT_EQ(r.values("unwrapped"), r.values("unwrapped_lin"));
+  EXPECT_EQ(r.values("inside"), r.values("inside_lin"));
+}
+
 TEST(LogResample, NoExtrapolationOutsideTheValidRange) {
   Log log(std::vector<double>{0.0, 1.0, 2.0, 3.0, 4.0});
-  for (Interp mode : {Interp::kLinear, Interp::kNearest, Interp::kHold}) {
+  for (Interp mode : {Interp::kLinear, Interp::kNearest, Interp::kHold, Interp::kAngle}) {
     const std::string name = std::string("c") + std::to_string(static_cast<int>(mode));
     log.add_channel(name, "m", {kNaN, 1.0, 2.0, 3.0, kNaN}, mode);
   }

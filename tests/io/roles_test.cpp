@@ -43,12 +43,12 @@ INSTANTIATE_TEST_SUITE_P(
                       FixedCase{"down", Quantity::kLength, "m", Interp::kLinear},
                       FixedCase{"lat", Quantity::kAngle, "deg", Interp::kLinear},
                       FixedCase{"height", Quantity::kLength, "m", Interp::kLinear},
-                      FixedCase{"heading", Quantity::kAngle, "deg", Interp::kLinear},
-                      FixedCase{"pitch", Quantity::kAngle, "deg", Interp::kLinear},
+                      FixedCase{"heading", Quantity::kAngle, "deg", Interp::kAngle},
+                      FixedCase{"pitch", Quantity::kAngle, "deg", Interp::kAngle},
                       FixedCase{"r", Quantity::kAngularRate, "deg/s", Interp::kLinear},
                       FixedCase{"w", Quantity::kSpeed, "m/s", Interp::kLinear},
                       FixedCase{"wind_speed", Quantity::kSpeed, "m/s", Interp::kLinear},
-                      FixedCase{"wind_dir", Quantity::kAngle, "deg", Interp::kLinear},
+                      FixedCase{"wind_dir", Quantity::kAngle, "deg", Interp::kAngle},
                       FixedCase{"setpoint.east", Quantity::kLength, "m", Interp::kHold},
                       FixedCase{"setpoint.heading", Quantity::kAngle, "deg", Interp::kHold},
                       FixedCase{"input", std::nullopt, "1", Interp::kHold},
@@ -57,7 +57,7 @@ INSTANTIATE_TEST_SUITE_P(
                       FixedCase{"command.rpm.port", Quantity::kShaftSpeed, "rpm", Interp::kHold},
                       FixedCase{"command.thrust.tunnel", Quantity::kForce, "kN", Interp::kHold},
                       FixedCase{"command.rudder.stb", Quantity::kAngle, "deg", Interp::kHold},
-                      FixedCase{"mru2.roll", Quantity::kAngle, "deg", Interp::kLinear},
+                      FixedCase{"mru2.roll", Quantity::kAngle, "deg", Interp::kAngle},
                       FixedCase{"mru1.q", Quantity::kAngularRate, "deg/s", Interp::kLinear}),
     // Test names from the role name ("command.rpm.port" → "command_rpm_port").
     [](const ::testing::TestParamInfo<FixedCase>& info) {
@@ -85,6 +85,12 @@ TEST(Roles, PatternRolesTakeTheirNamePart) {
 
   EXPECT_EQ(find_role("power.bow")->default_unit, "kW");
   EXPECT_EQ(find_role("rudder.port")->quantity, Quantity::kAngle);
+  // An angle interpolates along the shorter arc and is continuous; its command is held.
+  EXPECT_EQ(find_role("rudder.port")->interp, Interp::kAngle);
+  EXPECT_FALSE(find_role("rudder.port")->discrete());
+  EXPECT_EQ(find_role("command.rudder.port")->interp, Interp::kHold);
+  EXPECT_EQ(find_role("gnss2.lon")->interp, Interp::kAngle);
+  EXPECT_EQ(find_role("gnss2.lat")->interp, Interp::kLinear);
 }
 
 TEST(Roles, SensorRolesTakeAPositiveIndex) {

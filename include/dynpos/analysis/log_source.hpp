@@ -2,7 +2,8 @@
 /// \file
 /// Where an analysis reads its log from: a CSV file, a column map file, and ROLE=COLUMN /
 /// ROLE=UNIT overrides; for logs whose header already uses role names (dynpos' own logs), the
-/// roles found by name.
+/// roles found by name. Roles may come from other files (ROLE=COLUMN@FILE), each with its own
+/// time column and clock offset, aligned on the main log's time axis (read_log_files).
 
 #include <filesystem>
 #include <functional>
@@ -32,19 +33,38 @@ struct LogSource {
   std::filesystem::path map_file;    ///< column map (TOML), or empty
   std::vector<std::string> columns;  ///< ROLE=COLUMN
   std::vector<std::string> units;    ///< ROLE=UNIT
+  /// FILE=SECONDS, added to the times of FILE (named by a ROLE=COLUMN@FILE).
+  std::vector<std::string> clock_offsets;
+  /// Largest gap [s] between two samples of a role from another file that is bridged when it
+  /// is put on the main log's time axis; 0 = automatic (2.5 × that role's median spacing).
+  double max_gap_s = 0.0;
 
   /// The map from map_file, then columns/units; `time` defaults to the column "time". Then every
   /// header column whose name is a role accepted by `wanted` and not yet mapped is mapped to
   /// itself (so "thrust.port [kN]" in a dynpos log needs no --col).
   io::ColumnMap column_map(const RoleFilter& wanted) const;
 
-  /// Reads the log with column_map(wanted), and reports the files, formats, skipped lines and
-  /// each role's origin and rate.
+  /// Reads the log with column_map(wanted) and read_log_files(), and reports the files, formats,
+  /// skipped lines and each role's origin and rate.
   LoadedLog load(const RoleFilter& wanted) const;
 
   /// load(wanted).log.
   core::Log read(const RoleFilter& wanted) const;
+
+  /// {max_gap_s}, checked: throws option_error("max_gap") if it is negative or NaN.
+  core::ResampleOptions resample_options() const;
 };
+
+/// Reads the roles `map` assigns to the main log (time axis of the result) and to each other
+/// file (ColumnMap::other_files), each on its own time column + clock offset, resampled onto
+/// the main log's times by the role's Interp (angles along the shorter arc, commands held, the
+/// rest linear; NaN outside a file's range and across gaps wider than options.max_gap_s). The
+/// report lists every file (the main log first) and each role's file and rate on its own clock.
+/// Throws core::InputError naming the file for a missing file or column, and for a file whose
+/// times do not overlap the main log's; a partial overlap, or a role with no sample on the
+/// main log's axis, is a note in the file's report.
+LoadedLog read_log_files(const std::filesystem::path& main_log, const io::ColumnMap& map,
+                         const core::ResampleOptions& options = {});
 
 /// The InputReport of a log read from one file: `file_report` completed with the path and the
 /// record count, and every channel as a role from that file with its median rate.

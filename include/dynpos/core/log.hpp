@@ -28,6 +28,10 @@ enum class Interp {
   kLinear,   ///< continuous signals: linear between the two valid neighbours
   kNearest,  ///< discrete signals: the valid sample nearest in time (a tie takes the earlier)
   kHold,     ///< discrete signals: the last valid sample at or before t (zero-order hold)
+  /// angles [rad]: linear along the shorter arc, ψ = ψ₀ + wrap(ψ₁ − ψ₀)·(t − t₀)/(t₁ − t₀) with
+  /// wrap to [−π, π), then put back in the channel's range: [0, 2π) when every valid sample is
+  /// in [0, 2π], else [−π, π) when every one is in [−π, π], else (an unwrapped series) as is.
+  kAngle,
 };
 
 /// One named signal: values on the owning Log's time axis.

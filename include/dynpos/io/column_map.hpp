@@ -17,6 +17,15 @@
 ///     time = "Time [s]"                              # just the column name
 ///     heading = { column = "HDG", unit = "deg" }     # column and unit
 ///     "thrust.port" = { column = "PS thrust", unit = "kN", scale = 1.0 }
+///     heading = { column = "HDG", file = "nav.csv" }  # a column of another file
+///
+///     [files."nav.csv"]            # optional, for a file other than the main log
+///     time = "t"                   # its time column; default "time"
+///     clock_offset = 0.25          # [s] added to its times to put them on the main log's clock
+///
+/// A relative `file` (and a [files] key) is relative to the folder of the map file; on the
+/// command line (--col ROLE=COLUMN@FILE) it is relative to the working directory, like LOG.
+/// How the files are aligned on the main log's clock: analysis/log_source.hpp, read_log_files.
 ///
 /// Unit resolution for a mapped column, first match wins:
 ///   1. the declared unit (--unit ROLE=UNIT, else `unit` in the map file);
@@ -62,6 +71,16 @@ struct RoleColumn {
   std::optional<std::string> unit;  ///< declared unit spelling (checked against the role)
   double scale = 1.0;               ///< multiplies the raw number before unit conversion
   core::InputLocation source;       ///< where the column was declared, for error messages
+  std::string file;                 ///< the file holding the column; empty = the main log
+};
+
+/// A file other than the main log that roles are read from.
+struct LogFileOptions {
+  std::string time_column = "time";  ///< its time column (header name)
+  /// [s] added to the file's times to put them on the main log's clock: t_main = t_file + offset;
+  /// finite, any sign.
+  double clock_offset_s = 0.0;
+  core::InputLocation source;  ///< where the file was first named, for error messages
 };
 
 /// Roles → columns, plus the CSV format options.
@@ -78,24 +97,45 @@ class ColumnMap {
   void set_unit(std::string_view role, std::string_view unit, core::InputLocation where = {});
   /// Sets the scale of `role`. Throws core::InputError if it is not finite or is zero.
   void set_scale(std::string_view role, double scale, core::InputLocation where = {});
+  /// Reads `role` from `file` (empty = the main log). Throws core::InputError for an unknown
+  /// role or for `time` with a file (use set_time_column).
+  void set_file(std::string_view role, std::string_view file, core::InputLocation where = {});
+  /// The time column of `file`, another file than the main log. Throws core::InputError for an
+  /// empty file or column name.
+  void set_time_column(std::string_view file, std::string_view column,
+                       core::InputLocation where = {});
+  /// The clock offset [s] of `file`. Throws core::InputError if it is not finite.
+  void set_clock_offset(std::string_view file, double offset_s, core::InputLocation where = {});
 
   /// The role's entry, or nullptr if the role is not mapped.
   const RoleColumn* find(std::string_view role) const;
   /// All entries, by role name.
   const std::map<std::string, RoleColumn, std::less<>>& roles() const noexcept { return roles_; }
   bool empty() const noexcept { return roles_.empty(); }
+  /// The files other than the main log that roles are read from, by path as given, in the
+  /// order of their first role by name.
+  std::vector<std::string> other_files() const;
+  /// The time column and clock offset of `file`; the defaults when none were given.
+  LogFileOptions file_options(std::string_view file) const;
+  /// The map of one file's roles, as read_csv() takes it: the roles whose file is `file` (no
+  /// longer marked with it), `time` mapped to the file's time column, the same CSV format.
+  /// for_file("") is the main log's map.
+  ColumnMap for_file(std::string_view file) const;
 
   const CsvFormat& format() const noexcept { return format_; }
   CsvFormat& format() noexcept { return format_; }
 
-  /// Throws core::InputError if `time` is not mapped or a role has a unit or scale but no
-  /// column (e.g. --unit heading=rad without a column for heading).
+  /// Throws core::InputError if `time` is not mapped, a role has a unit or scale but no
+  /// column (e.g. --unit heading=rad without a column for heading), or a file has options but
+  /// no role is read from it (e.g. a misspelt --clock-offset FILE).
   void validate() const;
 
  private:
   RoleColumn& entry(std::string_view role, const core::InputLocation& where);
+  LogFileOptions& file_entry(std::string_view file, const core::InputLocation& where);
 
   std::map<std::string, RoleColumn, std::less<>> roles_;
+  std::map<std::string, LogFileOptions, std::less<>> files_;
   CsvFormat format_;
 };
 
@@ -107,10 +147,16 @@ ColumnMap parse_column_map(std::string_view toml_text, const std::string& source
 /// Reads and parses a TOML column map file. Throws core::InputError if it cannot be read.
 ColumnMap load_column_map(const std::filesystem::path& path);
 
-/// Applies one `--col ROLE=COLUMN` argument (the text after the option). Replacing a role's
-/// column also drops the unit and scale the map file declared for it, since they described
-/// the old column. Throws core::InputError for a malformed argument or an unknown role.
+/// Applies one `--col ROLE=COLUMN` or `--col ROLE=COLUMN@FILE` argument (the text after the
+/// option; the last '@' separates the file, so a column whose name has an '@' is mapped in the
+/// map file). `time=COLUMN@FILE` sets the time column of FILE. Replacing a role's column also
+/// drops the unit and scale the map file declared for it, since they described the old column.
+/// Throws core::InputError for a malformed argument or an unknown role.
 void apply_column_override(ColumnMap& map, std::string_view argument);
+
+/// Applies one `--clock-offset FILE=SECONDS` argument. Throws core::InputError for a malformed
+/// argument or an offset that is not a finite number.
+void apply_clock_offset_override(ColumnMap& map, std::string_view argument);
 
 /// Applies one `--unit ROLE=UNIT` argument. Throws core::InputError for a malformed argument,
 /// an unknown role, an unknown unit or a unit of the wrong quantity.

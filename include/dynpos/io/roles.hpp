@@ -35,14 +35,17 @@ struct RoleSpec {
   /// The unit assumed when neither the map nor the CSV header gives one (a core::find_unit
   /// spelling, e.g. "deg", "kN", "1").
   std::string default_unit;
-  /// Continuous signals interpolate linearly (kLinear); discrete ones (setpoints, commands,
-  /// triggers) hold their last value (kHold).
+  /// Continuous signals interpolate linearly (kLinear), angles that may wrap (heading, roll,
+  /// pitch, lon, wind_dir, rudder.NAME, gnssK.lon, mruK.roll|pitch) along the shorter arc
+  /// (kAngle); discrete ones (setpoints, commands, triggers) hold their last value (kHold).
   core::Interp interp = core::Interp::kLinear;
   /// One line for help texts, e.g. "heading ψ, clockwise from north".
   std::string description;
 
   /// True for a discrete (sample-and-hold) signal.
-  bool discrete() const noexcept { return interp != core::Interp::kLinear; }
+  bool discrete() const noexcept {
+    return interp == core::Interp::kHold || interp == core::Interp::kNearest;
+  }
 };
 
 /// The spec of a role name, or nullopt if it is not a role (names are case-sensitive).

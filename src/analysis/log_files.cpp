@@ -1,0 +1,77 @@
+// read_log_files (analysis/log_source.hpp): a log spread over several files, aligned on the
+// main log's clock.
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "dynpos/analysis/log_source.hpp"
+#include "dynpos/core/log_align.hpp"
+#include "dynpos/io/log_file.hpp"
+
+namespace dynpos::analysis {
+namespace {
+
+// Throws if `part` (on the main clock after `offset_s`) does not overlap `main`'s time range;
+// notes a partial overlap in the part's report.
+void check_overlap(const core::Log& main, io::FileLog& part, double offset_s) {
+  const double main_from = main.time().front();
+  const double main_to = main.time().back();
+  const double from = part.log.time().front() + offset_s;
+  const double to = part.log.time().back() + offset_s;
+  if (to < main_from || from > main_to) {
+    core::InputLocation where;
+    where.file = part.report.path;
+    throw core::InputError(
+        where,
+        fmt::format("its times span [{}, {}] s on the main log's clock (clock offset {} s), "
+                    "outside the main log's [{}, {}] s",
+                    from, to, offset_s, main_from, main_to),
+        fmt::format("both files must count time from the same origin; set the offset with "
+                    "--clock-offset {}=SECONDS or clock_offset in [files.\"{}\"] of the map",
+                    part.report.path, part.report.path));
+  }
+  if (from > main_from || to < main_to) {
+    part.report.notes.push_back(
+        fmt::format("covers [{}, {}] s of the main log's [{}, {}] s; its roles are missing "
+                    "outside",
+                    std::max(from, main_from), std::min(to, main_to), main_from, main_to));
+  }
+}
+
+}  // namespace
+
+LoadedLog read_log_files(const std::filesystem::path& main_log, const io::ColumnMap& map,
+                         const core::ResampleOptions& options) {
+  map.validate();
+  io::FileLog main = io::read_log_file(main_log, map.for_file(""));
+  LoadedLog out{std::move(main.log), {}};
+  const std::string main_path = main.report.path;
+  out.input = describe_input(out.log, main_path, std::move(main.report));
+  for (const std::string& file : map.other_files()) {
+    const io::LogFileOptions file_options = map.file_options(file);
+    io::FileLog part = io::read_log_file(file, map.for_file(file));
+    part.report.clock_offset_s = file_options.clock_offset_s;
+    check_overlap(out.log, part, file_options.clock_offset_s);
+    const std::size_t first_channel = out.log.channels().size();
+    core::add_aligned(out.log, part.log, file_options.clock_offset_s, options);
+    for (std::size_t i = first_channel; i < out.log.channels().size(); ++i) {
+      const core::Channel& c = out.log.channels()[i];
+      if (std::all_of(c.values.begin(), c.values.end(), core::is_missing)) {
+        part.report.notes.push_back(
+            fmt::format("role '{}' has no sample on the main log's time axis (no valid value "
+                        "inside it, or only gaps wider than the largest gap)",
+                        c.name));
+      }
+    }
+    // Rates on the file's own clock: a 1 Hz role stays 1 Hz on a 10 Hz main log.
+    const std::string part_path = part.report.path;
+    io::InputReport part_input = describe_input(part.log, part_path, std::move(part.report));
+    out.input.files.push_back(std::move(part_input.files.front()));
+    for (io::RoleOrigin& role : part_input.roles) out.input.roles.push_back(std::move(role));
+  }
+  return out;
+}
+
+}  // namespace dynpos::analysis
