@@ -4,6 +4,7 @@
 
 #include "dynpos/io/csv_reader.hpp"
 #include "dynpos/io/roles.hpp"
+#include "log_source_nmea.hpp"
 
 namespace dynpos::analysis {
 
@@ -57,6 +58,7 @@ io::InputReport describe_input(const core::Log& log, const std::string& file,
 }
 
 LoadedLog LogSource::load(const RoleFilter& wanted) const {
+  if (reads_nmea(*this)) return load_nmea(*this, wanted);
   core::Log read_log = io::read_csv(log, column_map(wanted));
   io::FileReport file;
   file.format = "csv";

@@ -71,7 +71,8 @@ void StationKeepingRequest::validate() const {
 
 StationKeepingReport run_station_keeping(const StationKeepingRequest& request) {
   request.validate();
-  const core::Log log = request.source.read(wanted_role);
+  LoadedLog loaded = request.source.load(wanted_role);
+  const core::Log& log = loaded.log;
   if (!(log.has("north") && log.has("east")) && !(log.has("lat") && log.has("lon"))) {
     throw core::InputError({request.source.log.string(), {}, {}, "north/east"},
                            "no position in the log",
@@ -84,6 +85,7 @@ StationKeepingReport run_station_keeping(const StationKeepingRequest& request) {
   report.waves = request.waves;
   report.current = request.current;
   report.per_setpoint = request.per_setpoint;
+  report.input = std::move(loaded.input);
   for (const ident::TimeWindow& w : windows_of(request, log, in)) {
     report.windows.push_back(ident::analyse_station_keeping(in, w));
   }

@@ -88,6 +88,7 @@ nlohmann::json to_json(const StationKeepingReport& report) {
   nlohmann::json doc;
   doc["analysis"] = "station-keeping";
   doc["log"] = report.log.string();
+  doc["input"] = io::to_json(report.input);
   doc["observed"] = {
       {"waves", report.waves.empty() ? nlohmann::json(nullptr) : nlohmann::json(report.waves)},
       {"current",
@@ -170,6 +171,7 @@ std::string to_text(const StationKeepingReport& report) {
   }
   if (!report.waves.empty()) out += fmt::format("waves (observed): {}\n", report.waves);
   if (!report.current.empty()) out += fmt::format("current (observed): {}\n", report.current);
+  out += io::to_text(report.input);
   return out + report::render_text(station_keeping_table(report));
 }
 

@@ -32,13 +32,16 @@ struct LogSource {
   std::filesystem::path map_file;    ///< column map (TOML), or empty
   std::vector<std::string> columns;  ///< ROLE=COLUMN
   std::vector<std::string> units;    ///< ROLE=UNIT
+  std::string format = "auto";       ///< "auto" (by content), "csv" or "nmea" (NMEA 0183 capture)
+  bool strict = false;               ///< an NMEA line that cannot be used is an error
 
   /// The map from map_file, then columns/units; `time` defaults to the column "time". Then every
   /// header column whose name is a role accepted by `wanted` and not yet mapped is mapped to
   /// itself (so "thrust.port [kN]" in a dynpos log needs no --col).
   io::ColumnMap column_map(const RoleFilter& wanted) const;
 
-  /// Reads the log with column_map(wanted), and reports the files, formats, skipped lines and
+  /// Reads the log with column_map(wanted) (an NMEA capture: its default role mapping,
+  /// io/nmea_log.hpp), and reports the files, formats, skipped lines and
   /// each role's origin and rate.
   LoadedLog load(const RoleFilter& wanted) const;
 

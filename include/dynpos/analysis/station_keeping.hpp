@@ -42,6 +42,7 @@ struct StationKeepingReport {
   std::string current;        ///< as observed; empty = not given
   bool per_setpoint = false;  ///< the windows were asked per setpoint hold
   std::vector<ident::StationKeepingResult> windows;
+  io::InputReport input;  ///< what was read to make the log
 };
 
 /// Validates the request, reads the log and analyses each window. core::InputError naming the
