@@ -144,7 +144,7 @@ void CaptureReader::skip(std::string_view kind, std::size_t line, const std::str
   report_.skipped.add(kind);
   if (options_.strict) {
     throw core::InputError({file_, line, {}, {}},
-                           fmt::format("{} line{}", kind, detail.empty() ? "" : ": " + detail),
+                           fmt::format("line not usable ({}){}", kind, detail.empty() ? "" : ": " + detail),
                            "strict reading stops at the first line it cannot use; without "
                            "--strict such lines are skipped and counted in the report");
   }
@@ -324,7 +324,6 @@ NmeaLog CaptureReader::finish() {
         "the capture needs GGA, RMC or GLL (position), HDT, THS, HDG or PSXN,23 (heading, "
         "attitude) or ROT (rate of turn), one sentence a line; is this the right file?");
   }
-  report_.notes.push_back(roles_note(chosen));
   if (chosen[kHeight] >= 0 && report_.accepted.count("empty geoid separation") > 0) {
     report_.notes.push_back(
         "GGA with an empty geoid separation (as Seapath 200 and OxTS write it): height = "
@@ -359,6 +358,10 @@ NmeaLog CaptureReader::build(const std::array<int, kRoleCount>& chosen) {
     for (const Sample& x : samples) times.push_back(x.t_ns);
     columns.push_back({std::move(name), static_cast<Role>(role), std::move(samples)});
   }
+  std::array<int, kRoleCount> kept;
+  kept.fill(-1);
+  for (const Column& c : columns) kept[c.role] = chosen[c.role];
+  if (!columns.empty()) report_.notes.insert(report_.notes.begin(), roles_note(kept));
   std::sort(times.begin(), times.end());
   times.erase(std::unique(times.begin(), times.end()), times.end());
 

@@ -5,7 +5,7 @@ dynpos_cli_test(nmea_capture_station_keeping
           ${CLI_OUT}/nmea_capture
   PASS "^ok")
 dynpos_cli_test(nmea_capture_strict
-  COMMAND bash ${EXPECT_EXIT} 2 "station\\.nmea:1: truncated line"
+  COMMAND bash ${EXPECT_EXIT} 2 "station\\.nmea:1: line not usable \\(truncated\\)"
           ${DYNPOS_EXE} identify station-keeping ${NMEA_DATA}/station.nmea --strict)
 dynpos_cli_test(nmea_capture_nothing_usable
   COMMAND bash ${EXPECT_EXIT} 2
