@@ -143,10 +143,11 @@ class CaptureReader {
 void CaptureReader::skip(std::string_view kind, std::size_t line, const std::string& detail) {
   report_.skipped.add(kind);
   if (options_.strict) {
-    throw core::InputError({file_, line, {}, {}},
-                           fmt::format("line not usable ({}){}", kind, detail.empty() ? "" : ": " + detail),
-                           "strict reading stops at the first line it cannot use; without "
-                           "--strict such lines are skipped and counted in the report");
+    throw core::InputError(
+        {file_, line, {}, {}},
+        fmt::format("line not usable ({}){}", kind, detail.empty() ? "" : ": " + detail),
+        "strict reading stops at the first line it cannot use; without "
+        "--strict such lines are skipped and counted in the report");
   }
 }
 
