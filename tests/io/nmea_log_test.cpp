@@ -157,6 +157,7 @@ TEST(NmeaLog, IsoStampsWithZoneAndWantedFilter) {
   TempDir dir;
   const auto file =
       dir.write("zone.nmea", lines({"2024-05-01T12:00:00.5+02:00 " + framed("HEHDT,10.0,T"),
+                                    "2024-05-01T10:00:00.75Z " + framed("HEHDT,11.0,T"),
                                     "2024-05-01T12:00:01.5+02:00 " + framed("TIROT,60.0,A")}));
   NmeaLogOptions options;
   options.wanted = [](const std::string& channel) { return channel == "heading"; };
