@@ -307,6 +307,46 @@ void parse_psxn(NmeaSentence& out, bool lenient, const core::InputLocation& wher
   }
 }
 
+// Decodes the standard (non-proprietary) types this module knows into out.data.
+void decode(NmeaSentence& out, const Fields& f, bool lenient) {
+  std::vector<std::string>& fs = out.fields;
+  if (out.type == "GGA") {
+    check_count(f, fs, "GGA", {14}, 10, lenient);
+    out.data = parse_gga(f);
+  } else if (out.type == "RMC") {
+    check_count(f, fs, "RMC", {11, 12, 13}, 9, lenient);
+    out.data = parse_rmc(f, fs.size());
+  } else if (out.type == "VTG") {
+    check_count(f, fs, "VTG", {8, 9}, 6, lenient);
+    out.data = parse_vtg(f, fs.size());
+  } else if (out.type == "GLL") {
+    check_count(f, fs, "GLL", {6, 7}, 6, lenient);
+    out.data = parse_gll(f);
+  } else if (out.type == "ZDA") {
+    check_count(f, fs, "ZDA", {6}, 4, lenient);
+    out.data = parse_zda(f);
+  } else if (out.type == "HDT") {
+    check_count(f, fs, "HDT", {2}, 1, lenient);
+    NmeaHdt h;
+    h.heading_rad = f.number(0, "heading") * kDegToRad;
+    if (!f.empty(0)) f.letter(1, "heading_reference", "T");
+    out.data = h;
+  } else if (out.type == "THS") {
+    check_count(f, fs, "THS", {2}, 2, lenient);
+    out.data = NmeaThs{f.number(0, "heading") * kDegToRad, f.letter(1, "mode", "AEMSV")};
+  } else if (out.type == "HDG") {
+    check_count(f, fs, "HDG", {5}, 1, lenient);
+    out.data = NmeaHdg{f.number(0, "heading") * kDegToRad, east_west(f, 1, "deviation"),
+                       east_west(f, 3, "variation")};
+  } else if (out.type == "ROT") {
+    check_count(f, fs, "ROT", {2}, 2, lenient);
+    NmeaRot r;
+    r.rate_rad_s = f.number(0, "rate") * kDegToRad / 60.0;
+    r.valid = f.letter(1, "status", "AV") == 'A';
+    out.data = r;
+  }
+}
+
 }  // namespace
 
 std::string to_iso(const UtcDate& date) {
@@ -419,42 +459,7 @@ NmeaSentence parse_nmea_sentence(std::string_view line, const core::InputLocatio
     if (out.type == "SXN") parse_psxn(out, lenient, where);
     return out;
   }
-  std::vector<std::string>& fs = out.fields;
-  if (out.type == "GGA") {
-    check_count(f, fs, "GGA", {14}, 10, lenient);
-    out.data = parse_gga(f);
-  } else if (out.type == "RMC") {
-    check_count(f, fs, "RMC", {11, 12, 13}, 9, lenient);
-    out.data = parse_rmc(f, fs.size());
-  } else if (out.type == "VTG") {
-    check_count(f, fs, "VTG", {8, 9}, 6, lenient);
-    out.data = parse_vtg(f, fs.size());
-  } else if (out.type == "GLL") {
-    check_count(f, fs, "GLL", {6, 7}, 6, lenient);
-    out.data = parse_gll(f);
-  } else if (out.type == "ZDA") {
-    check_count(f, fs, "ZDA", {6}, 4, lenient);
-    out.data = parse_zda(f);
-  } else if (out.type == "HDT") {
-    check_count(f, fs, "HDT", {2}, 1, lenient);
-    NmeaHdt h;
-    h.heading_rad = f.number(0, "heading") * kDegToRad;
-    if (!f.empty(0)) f.letter(1, "heading_reference", "T");
-    out.data = h;
-  } else if (out.type == "THS") {
-    check_count(f, fs, "THS", {2}, 2, lenient);
-    out.data = NmeaThs{f.number(0, "heading") * kDegToRad, f.letter(1, "mode", "AEMSV")};
-  } else if (out.type == "HDG") {
-    check_count(f, fs, "HDG", {5}, 1, lenient);
-    out.data = NmeaHdg{f.number(0, "heading") * kDegToRad, east_west(f, 1, "deviation"),
-                       east_west(f, 3, "variation")};
-  } else if (out.type == "ROT") {
-    check_count(f, fs, "ROT", {2}, 2, lenient);
-    NmeaRot r;
-    r.rate_rad_s = f.number(0, "rate") * kDegToRad / 60.0;
-    r.valid = f.letter(1, "status", "AV") == 'A';
-    out.data = r;
-  }
+  decode(out, f, lenient);
   return out;
 }
 
