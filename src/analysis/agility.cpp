@@ -188,9 +188,11 @@ std::optional<double> thrust_envelope_s(const ident::AgilityStep& step) {
 
 AgilityReport run_agility(const AgilityRequest& request) {
   request.validate();
-  const core::Log log = request.source.read(wanted_role);
+  LoadedLog loaded = request.source.load(wanted_role);
+  const core::Log& log = loaded.log;
   AgilityReport report;
   report.log = request.source.log;
+  report.input = std::move(loaded.input);
   report.current = request.current;
   report.min_demand_pct = request.min_demand_pct;
   const std::vector<std::string> thrust = thruster_names(log, "thrust");

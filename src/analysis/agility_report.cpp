@@ -136,6 +136,7 @@ nlohmann::json to_json(const AgilityReport& report) {
   nlohmann::json doc;
   doc["analysis"] = "agility";
   doc["log"] = report.log.string();
+  doc["input"] = io::to_json(report.input);
   doc["definition"] =
       "time from the step to 63.2 % of the response, dead time included (thesis 3.5.1)";
   doc["channel"] = report.channel;
@@ -169,7 +170,7 @@ std::string to_text(const AgilityReport& report) {
   if (report.result.status == core::Status::kFailed) {
     out += fmt::format("warning: {}\n", report.result.message);
   }
-  return out;
+  return out + io::to_text(report.input);
 }
 
 void write_plot(const AgilityReport& report, const std::filesystem::path& svg,

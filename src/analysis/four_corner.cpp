@@ -117,9 +117,11 @@ void FourCornerRequest::validate() const { options(); }
 
 FourCornerReport run_four_corner(const FourCornerRequest& request) {
   const ident::FourCornerOptions options = request.options();
-  const core::Log log = request.source.read(wanted_role);
+  LoadedLog loaded = request.source.load(wanted_role);
+  const core::Log& log = loaded.log;
   FourCornerReport report;
   report.log = request.source.log;
+  report.input = std::move(loaded.input);
   report.radius_m = request.radius_m;
   report.heading_tol_deg = request.heading_tol_deg;
   report.arm_m = request.arm_m;

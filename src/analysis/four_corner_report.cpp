@@ -91,6 +91,7 @@ nlohmann::json to_json(const FourCornerReport& report) {
   nlohmann::json doc;
   doc["analysis"] = "four-corner";
   doc["log"] = report.log.string();
+  doc["input"] = io::to_json(report.input);
   doc["segmentation"] = r.segmentation;
   doc["radius_m"] = report.radius_m;
   doc["arm_m"] = report.arm_m ? nlohmann::json(*report.arm_m) : nlohmann::json(nullptr);
@@ -119,7 +120,8 @@ report::Table four_corner_table(const FourCornerReport& report) {
 std::string to_text(const FourCornerReport& report) {
   return fmt::format("{}: DP 4-corner, {} legs from the {}\n{}", report.log.string(),
                      report.result.legs.size(), report.result.segmentation,
-                     report::render_text(four_corner_table(report)));
+                     report::render_text(four_corner_table(report))) +
+         io::to_text(report.input);
 }
 
 void write_plot(const FourCornerReport& report, const std::filesystem::path& svg,

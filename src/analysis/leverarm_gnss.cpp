@@ -156,6 +156,7 @@ std::vector<Vec3> initial_arms(const std::vector<std::string>& init,
 // (pointers into the logs: an Inputs is not copied or moved once filled).
 struct Inputs {
   core::Log log;
+  io::InputReport input;
   std::vector<core::Log> extra;  // kept alive for the GnssSource pointers
   std::vector<calib::GnssSource> sources;
   std::vector<std::string> notes;
@@ -203,7 +204,10 @@ std::vector<std::string> antenna_names(
 
 // Fills `in` in place: its sources point into it.
 void read_inputs(const LeverarmGnssRequest& q, Inputs& in) {
-  in.log = q.source.read([](const std::string& r) { return motion_role(r) || gnss_role(r); });
+  LoadedLog loaded =
+      q.source.load([](const std::string& r) { return motion_role(r) || gnss_role(r); });
+  in.log = std::move(loaded.log);
+  in.input = std::move(loaded.input);
   std::map<std::string, std::pair<std::size_t, std::string>> external;  // prefix → (extra, file)
   in.extra.reserve(q.gnss_log.size() + q.nmea.size());
   for (const std::string& g : q.gnss_log) {
@@ -213,8 +217,9 @@ void read_inputs(const LeverarmGnssRequest& q, Inputs& in) {
       if (c.rfind(prefix + ".", 0) == 0) li.columns.push_back(c);
     for (const std::string& u : q.source.units)
       if (u.rfind(prefix + ".", 0) == 0) li.units.push_back(u);
-    in.extra.push_back(
-        li.read([&](const std::string& r) { return r.rfind(prefix + ".", 0) == 0; }));
+    LoadedLog extra = li.load([&](const std::string& r) { return r.rfind(prefix + ".", 0) == 0; });
+    in.extra.push_back(std::move(extra.log));
+    in.input.append(std::move(extra.input));
     external[prefix] = {in.extra.size() - 1, file};
   }
   std::optional<double> utc0;
@@ -223,6 +228,12 @@ void read_inputs(const LeverarmGnssRequest& q, Inputs& in) {
     const auto [prefix, file] = split_eq(g, "nmea", "gnss1=FILE.nmea");
     const io::NmeaGnssLog nl = io::read_nmea_gnss(file, prefix);
     in.extra.push_back(nmea_on_log_clock(nl, in.log, utc0, file));
+    io::FileReport nmea_file;
+    nmea_file.format = "nmea";
+    nmea_file.time_format = utc0 ? "UTC time of day, --utc-at-zero" : "UTC time of day";
+    nmea_file.skipped.add("unusable sentence", nl.skipped);
+    in.input.append(describe_input(in.extra.back(), file, std::move(nmea_file)));
+    in.input.files.back().records = nl.sentences;
     external[prefix] = {in.extra.size() - 1, file};
     in.notes.push_back(fmt::format("{}: {} NMEA sentences from {} ({} skipped)", prefix,
                                    nl.sentences, file, nl.skipped));
@@ -294,6 +305,7 @@ LeverarmGnssReport run_leverarm_gnss(const LeverarmGnssRequest& q) {
   lo.initial_arms_b_m = initial_arms(q.init, names);
   LeverarmGnssReport report;
   report.log = q.source.log;
+  report.input = std::move(in.input);
   report.pe_window_s = q.pe_window;
   report.gnss_rate_hz = fix_rate_hz(gnss[0]);
   lo.excitation.gnss_rate_hz = report.gnss_rate_hz;

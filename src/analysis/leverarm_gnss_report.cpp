@@ -152,6 +152,7 @@ nlohmann::json to_json(const LeverarmGnssReport& report) {
   j["epochs"] = r.epochs_used;
   j["notes"] = r.notes;
   j["log"] = report.log.string();
+  j["input"] = io::to_json(report.input);
   for (const std::string& n : report.input_notes) j["notes"].push_back(n);
   return j;
 }
@@ -200,7 +201,7 @@ std::string to_text(const LeverarmGnssReport& report) {
   for (const std::string& a : e.advice) out += fmt::format("  advice: {}\n", a);
   for (const std::string& n : r.notes) out += fmt::format("note: {}\n", n);
   for (const std::string& n : report.input_notes) out += fmt::format("note: {}\n", n);
-  return out;
+  return out + io::to_text(report.input);
 }
 
 std::vector<std::filesystem::path> write_figures(const LeverarmGnssReport& report,

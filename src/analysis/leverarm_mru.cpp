@@ -45,6 +45,7 @@ std::vector<std::string> mru_names(const core::Log& log) {
 struct MruFile {
   std::string name, file;
   core::Log log;
+  io::InputReport input;
 };
 
 // The files of mru_log, each read with its own role mapping NAME.ax/ay/az by header name.
@@ -55,9 +56,10 @@ std::vector<MruFile> read_mru_files(const LeverarmMruRequest& q) {
     const std::string name = spec.substr(0, eq);
     LogSource in = q.source;
     in.log = spec.substr(eq + 1);
-    out.push_back({name, in.log.string(), in.read([name](const std::string& role) {
-                     return role == name + ".ax" || role == name + ".ay" || role == name + ".az";
-                   })});
+    LoadedLog loaded = in.load([name](const std::string& role) {
+      return role == name + ".ax" || role == name + ".ay" || role == name + ".az";
+    });
+    out.push_back({name, in.log.string(), std::move(loaded.log), std::move(loaded.input)});
   }
   return out;
 }
@@ -87,10 +89,14 @@ void LeverarmMruRequest::validate() const {
 
 LeverarmMruReport run_leverarm_mru(const LeverarmMruRequest& q) {
   q.validate();
-  const core::Log motion = q.source.read(wanted_role);
+  LoadedLog loaded = q.source.load(wanted_role);
+  const core::Log& motion = loaded.log;
   const std::vector<MruFile> files = read_mru_files(q);
   std::vector<calib::MruSource> sources;
-  for (const MruFile& e : files) sources.push_back({e.name, &e.log, e.file});
+  for (const MruFile& e : files) {
+    sources.push_back({e.name, &e.log, e.file});
+    loaded.input.append(e.input);
+  }
   for (const std::string& name : mru_names(motion)) {
     bool dup = false;
     for (const auto& s : sources) dup = dup || s.name == name;
@@ -106,6 +112,7 @@ LeverarmMruReport run_leverarm_mru(const LeverarmMruRequest& q) {
   eo.w1_per_s = q.w1;
   LeverarmMruReport report;
   report.log = q.source.log;
+  report.input = std::move(loaded.input);
   report.result = calib::estimate_mru_arms(signals, eo);
   if (report.result.status != core::Status::kOk) {
     throw core::InputError({q.source.log.string(), {}, {}, "time"}, report.result.message,
@@ -119,6 +126,7 @@ nlohmann::json to_json(const LeverarmMruReport& report) {
   const calib::MruEstimateResult& r = report.result;
   nlohmann::json doc;
   doc["method"] = std::string(calib::to_string(r.method));
+  doc["input"] = io::to_json(report.input);
   doc["arms"] = nlohmann::json::array();
   for (const calib::ArmEstimate& a : r.arms) {
     nlohmann::json arm;
@@ -194,7 +202,7 @@ std::string to_text(const LeverarmMruReport& report) {
   }
   for (const std::string& a : e.advice) out += fmt::format("advice: {}\n", a);
   for (const std::string& n : report.notes) out += fmt::format("note: {}\n", n);
-  return out;
+  return out + io::to_text(report.input);
 }
 
 std::vector<std::filesystem::path> write_figures(const LeverarmMruReport& report,

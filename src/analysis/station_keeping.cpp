@@ -82,10 +82,10 @@ StationKeepingReport run_station_keeping(const StationKeepingRequest& request) {
   const ident::StationKeepingInput in = make_input(log);
   StationKeepingReport report;
   report.log = request.source.log;
+  report.input = std::move(loaded.input);
   report.waves = request.waves;
   report.current = request.current;
   report.per_setpoint = request.per_setpoint;
-  report.input = std::move(loaded.input);
   for (const ident::TimeWindow& w : windows_of(request, log, in)) {
     report.windows.push_back(ident::analyse_station_keeping(in, w));
   }

@@ -21,8 +21,6 @@ ReportSection station_keeping_demo_section(const std::filesystem::path& campaign
   request.current = "0.2 m/s towards 180° (simulated)";
   StationKeepingReport result = run_station_keeping(request);
   result.log = "pure-dp/log.csv";  // relative to the report, so the report is relocatable
-  for (io::FileReport& f : result.input.files) f.path = result.log.string();
-  for (io::RoleOrigin& r : result.input.roles) r.file = result.log.string();
   const std::filesystem::path dir = campaign_dir / "analysis" / "station-keeping";
   std::filesystem::create_directories(dir);
   io::write_json((dir / "pure-dp.json").string(), to_json(result));

@@ -171,8 +171,7 @@ std::string to_text(const StationKeepingReport& report) {
   }
   if (!report.waves.empty()) out += fmt::format("waves (observed): {}\n", report.waves);
   if (!report.current.empty()) out += fmt::format("current (observed): {}\n", report.current);
-  out += io::to_text(report.input);
-  return out + report::render_text(station_keeping_table(report));
+  return out + report::render_text(station_keeping_table(report)) + io::to_text(report.input);
 }
 
 }  // namespace dynpos::analysis

@@ -21,25 +21,30 @@ struct StepSignals {
   std::vector<double> t, input, output, trigger;
   bool has_input = false, has_trigger = false;
   std::string output_unit, input_unit;
+  io::InputReport read;  // what was read
 };
 
 StepSignals read_signals(const StepRequest& request) {
   const LogSource& src = request.source;
-  io::ColumnMap map = src.map_file.empty() ? io::ColumnMap{} : io::load_column_map(src.map_file);
-  io::apply_overrides(map, src.columns, src.units);
-  if (map.find("time") == nullptr) map.set_column("time", "time");  // our own logs' name
   const bool total_speed = request.derive == "total-speed";
-  if (total_speed) {
-    for (const char* role : {"u", "v"}) {
-      if (map.find(role) == nullptr) map.set_column(role, role);
-    }
-  } else if (map.find("output") == nullptr) {
+  // Only the step roles are picked up by name: u and v for the total speed (3.19), else the
+  // input, output and trigger the user mapped.
+  const RoleFilter wanted = [total_speed](const std::string& role) {
+    return total_speed && (role == "u" || role == "v");
+  };
+  if (!total_speed && src.column_map(wanted).find("output") == nullptr) {
     throw option_error("col:output", "no output column",
                        "map the measured response, e.g. --col output=rpm.stb, or use "
                        "--derive total-speed with u and v");
   }
-  const core::Log log = io::read_csv(src.log, map);
+  LoadedLog loaded = src.load(wanted);
+  const core::Log& log = loaded.log;
+  if (total_speed && !(log.has("u") && log.has("v"))) {
+    throw core::InputError({src.log.string(), {}, {}, "u, v"}, "no surge and sway speed columns",
+                           "map them, e.g. --col u=SOG_surge --col v=SOG_sway");
+  }
   StepSignals s;
+  s.read = std::move(loaded.input);
   s.t = log.time();
   if (total_speed) {
     s.output = ident::total_speed(log.values("u"), log.values("v"));  // (3.19)
@@ -158,6 +163,7 @@ StepReport run_step(const StepRequest& request) {
   const std::vector<ident::Step> steps = find_steps(request, s);
   StepReport report;
   report.log = request.source.log;
+  report.input = s.read;
   report.method = request.method;
   report.output_unit = s.output_unit;
   if (s.has_input) report.input_unit = s.input_unit;
@@ -175,6 +181,7 @@ StepReport run_step(const StepRequest& request) {
 nlohmann::json to_json(const StepReport& report) {
   nlohmann::json doc;
   doc["log"] = report.log.string();
+  doc["input"] = io::to_json(report.input);
   doc["method"] = report.method;
   doc["output_unit"] = report.output_unit;
   doc["input_unit"] =
@@ -236,7 +243,7 @@ std::string to_text(const StepReport& report) {
         number_cell(fit.gain, "{:.4g}"), number_cell(fit.time_constant_s, "{:.2f}"),
         number_cell(fit.dead_time_s, "{:.2f}"), number_cell(fit.r_squared, "{:.3f}"), notes);
   }
-  return text;
+  return text + io::to_text(report.input);
 }
 
 }  // namespace dynpos::analysis

@@ -29,8 +29,9 @@ std::map<std::string, ident::ThrustMap> vessel_maps(const scenario::VesselConfig
   return {{"port", propeller}, {"stb", propeller}, {"tunnel", tunnel}};
 }
 
-std::vector<ThrusterMapFit> fit_maps(const ThrustMapRequest& request) {
-  const core::Log log = request.source.read(is_rpm_or_thrust);
+bool is_rpm(const std::string& role) { return role.rfind("rpm.", 0) == 0; }
+
+std::vector<ThrusterMapFit> fit_maps(const ThrustMapRequest& request, const core::Log& log) {
   std::vector<ThrusterMapFit> fits;
   for (const std::string& name : thruster_names(log, "rpm")) {
     if (!log.has("thrust." + name)) continue;
@@ -56,12 +57,10 @@ std::vector<ThrusterMapFit> fit_maps(const ThrustMapRequest& request) {
   return fits;
 }
 
-AppliedThrust apply_maps(const ThrustMapRequest& request) {
+AppliedThrust apply_maps(const ThrustMapRequest& request, const core::Log& log) {
   const scenario::VesselConfig vessel = scenario::load_vessel_config(
       request.vessel.empty() ? find_data_dir() / "vessels" / "gunnerus.toml" : request.vessel);
   const auto maps = vessel_maps(vessel);
-  const core::Log log =
-      request.source.read([](const std::string& role) { return role.rfind("rpm.", 0) == 0; });
   AppliedThrust out{core::Log(log.time()), 0, vessel.source, request.abs_speed};
   for (const std::string& name : thruster_names(log, "rpm")) {
     const auto it = maps.find(name);
@@ -110,10 +109,12 @@ ThrustMapReport run_thrust_map(const ThrustMapRequest& request) {
   ThrustMapReport report;
   report.log = request.source.log;
   report.min_speed_rpm = request.min_speed_rpm;
+  LoadedLog loaded = request.source.load(request.apply ? RoleFilter(is_rpm) : is_rpm_or_thrust);
+  report.input = std::move(loaded.input);
   if (request.apply) {
-    report.applied = apply_maps(request);
+    report.applied = apply_maps(request, loaded.log);
   } else {
-    report.thrusters = fit_maps(request);
+    report.thrusters = fit_maps(request, loaded.log);
   }
   return report;
 }
@@ -122,6 +123,7 @@ nlohmann::json to_json(const ThrustMapReport& report) {
   nlohmann::json doc;
   doc["analysis"] = "thrust-map";
   doc["log"] = report.log.string();
+  doc["input"] = io::to_json(report.input);
   doc["unit"] = "N/rps^2";
   doc["thrusters"] = nlohmann::json::array();
   for (const ThrusterMapFit& t : report.thrusters) {
@@ -161,7 +163,7 @@ std::string to_text(const ThrustMapReport& report, const std::filesystem::path& 
                     t.c_mean ? fmt::format("{:.3f}", *t.c_mean / 1000.0) : "—", r.samples_forward,
                     r.samples_reverse, r.r_squared ? fmt::format("{:.4f}", *r.r_squared) : "—");
   }
-  return text;
+  return text + io::to_text(report.input);
 }
 
 }  // namespace dynpos::analysis

@@ -32,6 +32,11 @@ const FileReport* InputReport::file(std::string_view path) const noexcept {
   return nullptr;
 }
 
+void InputReport::append(InputReport other) {
+  for (FileReport& f : other.files) files.push_back(std::move(f));
+  for (RoleOrigin& r : other.roles) roles.push_back(std::move(r));
+}
+
 namespace {
 
 nlohmann::json counts_json(const LineCounts& counts) {

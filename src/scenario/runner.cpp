@@ -101,6 +101,7 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
   }
   run.truth = trial_truth(spec, vessel, seed, plant, control);
   run.start_utc = spec.start_utc;
+  run.device_files = spec.device_files;
   run.geoid_separation_m = vessel.sensors.origin.height_m;
   return run;
 }

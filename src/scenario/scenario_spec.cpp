@@ -151,6 +151,16 @@ void ScenarioSpec::validate() const {
         fmt::format("log period 1/{} s is not a multiple of dt_s = {} s", log_rate_hz, dt_s),
         "choose a log rate whose period is a whole number of steps");
   }
+  if (device_files) {
+    const double logs_per_feedback = log_rate_hz / device_files->feedback_rate_hz;
+    if (std::abs(logs_per_feedback - std::round(logs_per_feedback)) > 1e-9 * logs_per_feedback ||
+        std::round(logs_per_feedback) < 1.0) {
+      throw core::InputError(at(*this, "device_files.feedback_rate_hz"),
+                             fmt::format("{} Hz does not divide the log rate {} Hz",
+                                         device_files->feedback_rate_hz, log_rate_hz),
+                             "choose a rate whose period is a whole number of log periods");
+    }
+  }
   check_range(*this, "initial_surge_mps", initial_surge_mps, kInitialSurge);
   check_range(*this, "settle_s", settle_s, kSettle);
   if (settle_s != std::round(settle_s)) {
@@ -224,7 +234,7 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
   root.reject_unknown({"name", "description", "duration_s", "dt_s", "log_rate_hz",
                        "initial_heading_deg", "initial_surge_mps", "heading_hold", "settle_s",
                        "start_utc", "environment", "joystick", "hybrid", "rudder", "setpoint",
-                       "load"});
+                       "load", "device_files"});
   ScenarioSpec spec;
   spec.source = file;
   spec.name = root.string("name");
@@ -280,6 +290,16 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
     hybrid::IntegralJumpParams p;
     detail::read_fields(*h, hybrid::param_fields(p), {"enabled"});
     if (h->boolean_or("enabled", true)) spec.hybrid_integral = p;
+  }
+  if (auto d = root.optional_table("device_files")) {
+    d->reject_unknown({"enabled", "feedback_rate_hz", "order_wiggle_rpm", "order_wiggle_deg",
+                       "order_wiggle_pct"});
+    DeviceFilesSpec f;
+    f.feedback_rate_hz = d->number_or("feedback_rate_hz", f.feedback_rate_hz, 0.01, 100.0);
+    f.order_wiggle_rpm = d->number_or("order_wiggle_rpm", f.order_wiggle_rpm, 0.0, 50.0);
+    f.order_wiggle_deg = d->number_or("order_wiggle_deg", f.order_wiggle_deg, 0.0, 10.0);
+    f.order_wiggle_pct = d->number_or("order_wiggle_pct", f.order_wiggle_pct, 0.0, 10.0);
+    if (d->boolean_or("enabled", true)) spec.device_files = f;
   }
   spec.validate();
   return spec;

@@ -32,6 +32,28 @@ std::filesystem::path write_log(const TempDir& dir) {
   return dir.write("log.csv", csv);
 }
 
+TEST(StationKeepingAnalysis, ReportsWhatWasRead) {
+  TempDir dir;
+  StationKeepingRequest request;
+  request.source.log = write_log(dir);
+  const StationKeepingReport report = run_station_keeping(request);
+  ASSERT_EQ(report.input.files.size(), 1u);
+  EXPECT_EQ(report.input.files[0].path, request.source.log.string());
+  EXPECT_EQ(report.input.files[0].format, "csv");
+  EXPECT_EQ(report.input.files[0].records, 400u);
+  // Every channel is a role of the one file, logged at 1 Hz.
+  ASSERT_FALSE(report.input.roles.empty());
+  for (const io::RoleOrigin& r : report.input.roles) {
+    EXPECT_EQ(r.file, request.source.log.string()) << r.role;
+    ASSERT_TRUE(r.rate_hz) << r.role;
+    EXPECT_DOUBLE_EQ(*r.rate_hz, 1.0) << r.role;
+  }
+  const nlohmann::json j = to_json(report);
+  EXPECT_EQ(j.at("input").at("files").at(0).at("records"), 400);
+  EXPECT_NE(to_text(report).find("input: " + request.source.log.string() + " (csv"),
+            std::string::npos);
+}
+
 TEST(StationKeepingAnalysis, PerSetpointWindowsOfAKnownLog) {
   TempDir dir;
   StationKeepingRequest request;

@@ -73,6 +73,7 @@ struct AgilityCase {
 /// The agility of every step, with what the outputs need to show it.
 struct AgilityReport {
   std::filesystem::path log;            ///< the log, as given
+  io::InputReport input;                ///< the files read, their formats and skipped lines
   std::string channel;                  ///< the timed channel: "thrust" or "rpm"
   std::vector<std::string> thrusters;   ///< thruster names NAME of the channels, in log order
   bool has_speed = false;               ///< u (and v) logged: the speed response is timed

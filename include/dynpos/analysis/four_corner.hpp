@@ -48,6 +48,7 @@ ident::LegSegmentation parse_leg_segmentation(const std::string& name);
 /// The legs of the maneuver, with what the outputs need to show them.
 struct FourCornerReport {
   std::filesystem::path log;  ///< the log, as given
+  io::InputReport input;      ///< the files read, their formats and skipped lines
   double radius_m = 2.0;
   double heading_tol_deg = 2.0;
   std::optional<std::array<double, 2>> arm_m;

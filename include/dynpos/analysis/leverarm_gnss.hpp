@@ -54,6 +54,7 @@ struct LeverarmGnssRequest {
 /// The estimate and the resolved inputs its outputs need.
 struct LeverarmGnssReport {
   std::filesystem::path log;             ///< the motion log as given
+  io::InputReport input;                 ///< the files read, their formats and skipped lines
   double pe_window_s = 60.0;             ///< the PE window used [s]
   double gnss_rate_hz = 1.0;             ///< from the median fix spacing of the first antenna
   calib::GnssArmResult result;           ///< status kOk (failures throw)

@@ -37,6 +37,7 @@ struct LeverarmMruRequest {
 /// The estimate and the resolved inputs its outputs need.
 struct LeverarmMruReport {
   std::filesystem::path log;        ///< the motion log as given
+  io::InputReport input;            ///< the files read, their formats and skipped lines
   calib::MruEstimateResult result;  ///< status kOk (failures throw)
   std::vector<std::string> notes;   ///< assumptions made preparing the signals
 };

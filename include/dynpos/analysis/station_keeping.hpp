@@ -38,11 +38,11 @@ struct StationKeepingRequest {
 /// The statistics of each window, with the inputs the outputs name.
 struct StationKeepingReport {
   std::filesystem::path log;  ///< the log as given
+  io::InputReport input;      ///< the files read, their formats and skipped lines
   std::string waves;          ///< as observed; empty = not given
   std::string current;        ///< as observed; empty = not given
   bool per_setpoint = false;  ///< the windows were asked per setpoint hold
   std::vector<ident::StationKeepingResult> windows;
-  io::InputReport input;  ///< what was read to make the log
 };
 
 /// Validates the request, reads the log and analyses each window. core::InputError naming the

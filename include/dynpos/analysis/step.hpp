@@ -87,6 +87,7 @@ struct StepFit {
 /// The steps of one log and their fits.
 struct StepReport {
   std::filesystem::path log;
+  io::InputReport input;  ///< the files read, their formats and skipped lines
   std::string method;
   std::string output_unit;                ///< SI unit of the output; "" is dimensionless
   std::optional<std::string> input_unit;  ///< SI unit of the input; absent without one

@@ -53,6 +53,7 @@ struct AppliedThrust {
 /// The result of run_thrust_map(): the fits, or with apply the applied thrust.
 struct ThrustMapReport {
   std::filesystem::path log;
+  io::InputReport input;  ///< the files read, their formats and skipped lines
   double min_speed_rpm = 3.0;
   std::vector<ThrusterMapFit> thrusters;  ///< every thruster with shaft speed and thrust
   std::optional<AppliedThrust> applied;   ///< set with apply

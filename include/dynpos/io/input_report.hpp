@@ -63,6 +63,10 @@ struct InputReport {
 
   /// The report's file entry for `path`, or nullptr.
   const FileReport* file(std::string_view path) const noexcept;
+
+  /// Appends the files and roles of `other` (read for the same analysis, e.g. a second
+  /// receiver's file); the origin stays this report's.
+  void append(InputReport other);
 };
 
 /// {files: [{path, format, time_format, clock_offset_s, records, skipped: {kind: n},

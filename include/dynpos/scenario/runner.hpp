@@ -33,6 +33,8 @@ struct ScenarioRun {
   /// [m] geoid (mean sea level) above the WGS84 ellipsoid at the GNSS origin: the origin's
   /// ellipsoidal height, the vessel's sea level. NMEA GGA splits the height with it.
   double geoid_separation_m = 0.0;
+  /// Write the device files too (ScenarioSpec::device_files).
+  std::optional<DeviceFilesSpec> device_files;
 };
 
 /// Simulates `spec` on `vessel` with master seed `seed`. Deterministic: the same inputs give

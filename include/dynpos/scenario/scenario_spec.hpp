@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "dynpos/hybrid/integral_jump.hpp"
+#include "dynpos/scenario/device_files.hpp"
 
 namespace dynpos::scenario {
 
@@ -100,6 +101,9 @@ struct ScenarioSpec {
   /// practical rule (5.64)–(5.67) (file section [hybrid], enabled = true). Absent: the
   /// conventional continuous integral action only.
   std::optional<hybrid::IntegralJumpParams> hybrid_integral;
+  /// Also write the logs as real loggers do, one file per device (section [device_files],
+  /// enabled = true; device_files.hpp). Absent: log.csv, truth and NMEA files only.
+  std::optional<DeviceFilesSpec> device_files;
   /// Shortens (or lengthens) the run to duration [s], dropping commands after the new end.
   void set_duration(double duration);
   /// Throws core::InputError (naming source and the bad field) if a value is out of range, the
