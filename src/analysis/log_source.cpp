@@ -7,6 +7,7 @@
 #include "dynpos/analysis/options.hpp"
 #include "dynpos/io/csv_reader.hpp"
 #include "dynpos/io/roles.hpp"
+#include "log_source_nmea.hpp"
 
 namespace dynpos::analysis {
 
@@ -63,6 +64,7 @@ io::InputReport describe_input(const core::Log& log, const std::string& file,
 }
 
 LoadedLog LogSource::load(const RoleFilter& wanted) const {
+  if (reads_nmea(*this)) return load_nmea(*this, wanted);
   return read_log_files(log, column_map(wanted), resample_options());
 }
 

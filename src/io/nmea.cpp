@@ -40,6 +40,22 @@ double parse_clock(const std::string& text, std::size_t& pos, const auto& bad) {
   return hh * 3600.0 + mm * 60.0 + ss;
 }
 
+// The sentence, or nullopt for one of a type the epochs do not use (ZDA, GLL, PSXN, …) whose
+// fields are malformed: it would be skipped anyway. A bad checksum or address is an error.
+std::optional<NmeaSentence> parse_for_epochs(std::string_view text,
+                                             const core::InputLocation& where) {
+  try {
+    return parse_nmea_sentence(text, where);
+  } catch (const core::InputError& e) {
+    const std::string& field = e.where().column_name;
+    const std::string type = field.substr(0, field.find('.'));
+    const bool used = type == "GGA" || type == "RMC" || type == "VTG" || type == "HDT" ||
+                      type == "ROT" || field.find('.') == std::string::npos;
+    if (used) throw;
+    return std::nullopt;
+  }
+}
+
 }  // namespace
 
 UtcTimestamp parse_utc_timestamp(const std::string& text) {
@@ -100,7 +116,8 @@ NmeaGnssLog read_nmea_gnss(const std::filesystem::path& file, const std::string&
       ++out.skipped;
       continue;
     }
-    if (!epochs.add(parse_nmea_sentence(text, {name, line_no, {}, {}}), line_no)) ++out.skipped;
+    const std::optional<NmeaSentence> s = parse_for_epochs(text, {name, line_no, {}, {}});
+    if (!s || !epochs.add(*s, line_no)) ++out.skipped;
   }
   if (in.bad()) {
     throw core::InputError({name, line_no, {}, {}}, "reading the file failed",

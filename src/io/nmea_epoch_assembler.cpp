@@ -61,7 +61,8 @@ bool merge(NmeaEpoch& e, const NmeaRot& rot) {
   return true;
 }
 
-bool merge(NmeaEpoch&, const NmeaOther&) { return false; }
+// Types the GNSS epochs do not use (NmeaOther, ZDA, GLL, THS, HDG, PSXN).
+bool merge(NmeaEpoch&, const auto&) { return false; }
 
 }  // namespace
 

@@ -159,8 +159,22 @@ class Fields {
   std::string type_;
 };
 
-void check_count(const Fields& f, const std::vector<std::string>& fields, const std::string& type,
-                 std::initializer_list<std::size_t> allowed) {
+// Checks the field count against the counts NMEA versions use (`allowed`, ascending). Lenient:
+// any count reaching `needed` fields passes, padded with empty fields to the next allowed count
+// or cut to the largest.
+void check_count(const Fields& f, std::vector<std::string>& fields, const std::string& type,
+                 std::initializer_list<std::size_t> allowed, std::size_t needed, bool lenient) {
+  if (lenient && fields.size() >= needed) {
+    std::size_t target = *(allowed.end() - 1);
+    for (const std::size_t n : allowed) {
+      if (n >= fields.size()) {
+        target = n;
+        break;
+      }
+    }
+    fields.resize(target);
+    return;
+  }
   for (const std::size_t n : allowed) {
     if (fields.size() == n) return;
   }
@@ -227,6 +241,112 @@ NmeaVtg parse_vtg(const Fields& f, std::size_t count) {
   return v;
 }
 
+NmeaGll parse_gll(const Fields& f) {
+  NmeaGll g;
+  g.lat_rad = f.angle(0, "latitude", 90, 'N', 'S');
+  g.lon_rad = f.angle(2, "longitude", 180, 'E', 'W');
+  g.utc_s = f.time_of_day(4);
+  g.valid = f.letter(5, "status", "AV") == 'A';
+  return g;
+}
+
+NmeaZda parse_zda(const Fields& f) {
+  NmeaZda z;
+  z.utc_s = f.time_of_day(0);
+  const double day = f.number(1, "day"), month = f.number(2, "month"), year = f.number(3, "year");
+  if (core::is_missing(day) || core::is_missing(month) || core::is_missing(year)) return z;
+  const UtcDate d{static_cast<int>(year), static_cast<int>(month), static_cast<int>(day)};
+  if (day != std::floor(day) || month != std::floor(month) || year != std::floor(year) ||
+      year < 1000 || !is_valid(d)) {
+    f.fail(1, "date",
+           fmt::format("'{},{},{}' is not a date dd,mm,yyyy", f.text(1), f.text(2), f.text(3)),
+           "day 01-31, month 01-12, four-digit year");
+  }
+  z.date = d;
+  return z;
+}
+
+// "d.dd" degrees with an east/west letter at i + 1 → rad, + east; empty → NaN.
+double east_west(const Fields& f, std::size_t i, const std::string& name) {
+  const double deg = f.number(i, name);
+  const char direction = f.letter(i + 1, name + "_direction", "EW");
+  return (direction == 'W' ? -deg : deg) * kDegToRad;
+}
+
+// Seapath quality flag 0 normal, 1 reduced, 2 invalid; −1 if empty.
+int seapath_quality(const Fields& f, std::size_t i, const std::string& name) {
+  const double q = f.number(i, name);
+  if (core::is_missing(q)) return -1;
+  if (q != 0.0 && q != 1.0 && q != 2.0) {
+    f.fail(i, name, fmt::format("quality '{}' is not 0, 1 or 2", f.text(i)),
+           "Seapath quality: 0 normal, 1 reduced, 2 invalid");
+  }
+  return static_cast<int>(q);
+}
+
+// Kongsberg Seapath PSXN,20/22/23 (Seapath 200 installation manual, appendix B); others stay
+// NmeaOther.
+void parse_psxn(NmeaSentence& out, bool lenient, const core::InputLocation& where) {
+  if (out.fields.empty()) return;
+  const std::string id = out.fields.front();
+  std::vector<std::string> rest(out.fields.begin() + 1, out.fields.end());
+  const Fields f(rest, where, "PSXN," + id);
+  if (id == "20") {
+    check_count(f, rest, "PSXN,20", {4}, 4, lenient);
+    out.data =
+        NmeaPsxnQuality{seapath_quality(f, 0, "horizontal"), seapath_quality(f, 1, "height"),
+                        seapath_quality(f, 2, "heading"), seapath_quality(f, 3, "roll_pitch")};
+  } else if (id == "22") {
+    check_count(f, rest, "PSXN,22", {2}, 2, lenient);
+    out.data = NmeaPsxnGyro{f.number(0, "gyro_calibration") * kDegToRad,
+                            f.number(1, "gyro_offset") * kDegToRad};
+  } else if (id == "23") {
+    check_count(f, rest, "PSXN,23", {4}, 4, lenient);
+    out.data = NmeaPsxnAttitude{f.number(0, "roll") * kDegToRad, f.number(1, "pitch") * kDegToRad,
+                                f.number(2, "heading") * kDegToRad, f.number(3, "heave")};
+  }
+}
+
+// Decodes the standard (non-proprietary) types this module knows into out.data.
+void decode(NmeaSentence& out, const Fields& f, bool lenient) {
+  std::vector<std::string>& fs = out.fields;
+  if (out.type == "GGA") {
+    check_count(f, fs, "GGA", {14}, 10, lenient);
+    out.data = parse_gga(f);
+  } else if (out.type == "RMC") {
+    check_count(f, fs, "RMC", {11, 12, 13}, 9, lenient);
+    out.data = parse_rmc(f, fs.size());
+  } else if (out.type == "VTG") {
+    check_count(f, fs, "VTG", {8, 9}, 6, lenient);
+    out.data = parse_vtg(f, fs.size());
+  } else if (out.type == "GLL") {
+    check_count(f, fs, "GLL", {6, 7}, 6, lenient);
+    out.data = parse_gll(f);
+  } else if (out.type == "ZDA") {
+    check_count(f, fs, "ZDA", {6}, 4, lenient);
+    out.data = parse_zda(f);
+  } else if (out.type == "HDT") {
+    check_count(f, fs, "HDT", {2}, 1, lenient);
+    NmeaHdt h;
+    h.heading_rad = f.number(0, "heading") * kDegToRad;
+    if (!f.empty(0)) f.letter(1, "heading_reference", "T");
+    out.data = h;
+  } else if (out.type == "THS") {
+    check_count(f, fs, "THS", {2}, 2, lenient);
+    out.data = NmeaThs{f.number(0, "heading") * kDegToRad, f.letter(1, "mode", "AEMSV")};
+  } else if (out.type == "HDG") {
+    check_count(f, fs, "HDG", {5}, 1, lenient);
+    out.data = NmeaHdg{f.number(0, "heading") * kDegToRad, east_west(f, 1, "deviation"),
+                       east_west(f, 3, "variation")};
+  } else if (out.type == "ROT") {
+    check_count(f, fs, "ROT", {2}, 2, lenient);
+    NmeaRot r;
+    r.rate_rad_s = f.number(0, "rate") * kDegToRad / 60.0;
+    r.valid = f.letter(1, "status", "AV") == 'A';
+    out.data = r;
+  }
+}
+
 }  // namespace
 
 std::string to_iso(const UtcDate& date) {
@@ -275,7 +395,8 @@ std::uint8_t nmea_checksum(std::string_view body) {
   return sum;
 }
 
-NmeaSentence parse_nmea_sentence(std::string_view line, const core::InputLocation& where) {
+NmeaSentence parse_nmea_sentence(std::string_view line, const core::InputLocation& where,
+                                 const NmeaParseOptions& options) {
   const std::string_view text = detail::trim(line);
   const auto fail = [&](std::optional<std::size_t> column, const std::string& name,
                         const std::string& problem, const std::string& hint) {
@@ -333,30 +454,12 @@ NmeaSentence parse_nmea_sentence(std::string_view line, const core::InputLocatio
   out.type = proprietary ? address.substr(1) : address.substr(2);
   out.fields.assign(parts.begin() + 1, parts.end());
   const Fields f(out.fields, where, out.type);
-  const std::size_t n = out.fields.size();
-  if (proprietary) return out;
-  if (out.type == "GGA") {
-    check_count(f, out.fields, "GGA", {14});
-    out.data = parse_gga(f);
-  } else if (out.type == "RMC") {
-    check_count(f, out.fields, "RMC", {11, 12, 13});
-    out.data = parse_rmc(f, n);
-  } else if (out.type == "VTG") {
-    check_count(f, out.fields, "VTG", {8, 9});
-    out.data = parse_vtg(f, n);
-  } else if (out.type == "HDT") {
-    check_count(f, out.fields, "HDT", {2});
-    NmeaHdt h;
-    h.heading_rad = f.number(0, "heading") * kDegToRad;
-    if (!f.empty(0)) f.letter(1, "heading_reference", "T");
-    out.data = h;
-  } else if (out.type == "ROT") {
-    check_count(f, out.fields, "ROT", {2});
-    NmeaRot r;
-    r.rate_rad_s = f.number(0, "rate") * kDegToRad / 60.0;
-    r.valid = f.letter(1, "status", "AV") == 'A';
-    out.data = r;
+  const bool lenient = options.lenient_field_count;
+  if (proprietary) {
+    if (out.type == "SXN") parse_psxn(out, lenient, where);
+    return out;
   }
+  decode(out, f, lenient);
   return out;
 }
 

@@ -237,6 +237,75 @@ INSTANTIATE_TEST_SUITE_P(
       return "case" + std::to_string(info.index);
     });
 
+TEST(NmeaSentence, GllPositionTimeAndStatus) {
+  const auto g = parsed<NmeaGll>(framed("GPGLL,4916.45,N,12311.12,W,225444.50,A,A"));
+  EXPECT_NEAR(g.lat_rad, (49.0 + 16.45 / 60.0) * kDeg, kExact);
+  EXPECT_NEAR(g.lon_rad, -(123.0 + 11.12 / 60.0) * kDeg, kExact);
+  EXPECT_NEAR(g.utc_s, 22 * 3600.0 + 54 * 60.0 + 44.5, kExact);
+  EXPECT_TRUE(g.valid);
+  EXPECT_FALSE(parsed<NmeaGll>(framed("GPGLL,4916.45,N,12311.12,W,225444,V")).valid);
+}
+
+TEST(NmeaSentence, ZdaTimeAndFourDigitDate) {
+  const auto z = parsed<NmeaZda>(framed("GPZDA,235959.50,31,12,2023,00,00"));
+  EXPECT_NEAR(z.utc_s, 86399.5, kExact);
+  ASSERT_TRUE(z.date);
+  EXPECT_EQ(*z.date, (UtcDate{2023, 12, 31}));
+  EXPECT_FALSE(parsed<NmeaZda>(framed("GPZDA,120000,,,,,")).date);  // no date yet: absent
+  const std::string message = input_error_message([] {
+    parse_nmea_sentence(framed("GPZDA,120000,30,02,2024,,"), {"z.nmea", 4, {}, {}});
+  });
+  EXPECT_THAT(message, HasSubstr("z.nmea:4:2 (ZDA.date): '30,02,2024' is not a date"));
+}
+
+TEST(NmeaSentence, ThsAndHdgHeadings) {
+  const auto t = parsed<NmeaThs>(framed("INTHS,123.45,A"));
+  EXPECT_NEAR(t.heading_rad, 123.45 * kDeg, kExact);
+  EXPECT_EQ(t.mode, 'A');
+  EXPECT_EQ(parsed<NmeaThs>(framed("INTHS,,V")).mode, 'V');
+  // Deviation east +, variation west −.
+  const auto h = parsed<NmeaHdg>(framed("HCHDG,98.3,1.5,E,2.0,W"));
+  EXPECT_NEAR(h.sensor_heading_rad, 98.3 * kDeg, kExact);
+  EXPECT_NEAR(h.deviation_rad, 1.5 * kDeg, kExact);
+  EXPECT_NEAR(h.variation_rad, -2.0 * kDeg, kExact);
+  EXPECT_TRUE(std::isnan(parsed<NmeaHdg>(framed("HCHDG,98.3,,,,")).variation_rad));
+}
+
+TEST(NmeaSentence, SeapathProprietaryAttitudeQualityGyro) {
+  const auto a = parsed<NmeaPsxnAttitude>(framed("PSXN,23,1.28,-1.93,104.68,-0.24"));
+  EXPECT_NEAR(a.roll_rad, 1.28 * kDeg, kExact);
+  EXPECT_NEAR(a.pitch_rad, -1.93 * kDeg, kExact);
+  EXPECT_NEAR(a.heading_rad, 104.68 * kDeg, kExact);
+  EXPECT_NEAR(a.heave_m, -0.24, kExact);
+  const auto q = parsed<NmeaPsxnQuality>(framed("PSXN,20,0,1,2,"));
+  EXPECT_EQ(q.horizontal, 0);
+  EXPECT_EQ(q.height, 1);
+  EXPECT_EQ(q.heading, 2);
+  EXPECT_EQ(q.roll_pitch, -1);
+  const auto g = parsed<NmeaPsxnGyro>(framed("PSXN,22,0.12,-0.01"));
+  EXPECT_NEAR(g.offset_rad, -0.01 * kDeg, kExact);
+  EXPECT_TRUE(std::holds_alternative<NmeaOther>(parse_nmea_sentence(framed("PSXN,21,1")).data));
+  EXPECT_TRUE(std::holds_alternative<NmeaOther>(parse_nmea_sentence(framed("PSXX,23,1")).data));
+  const std::string message =
+      input_error_message([] { parse_nmea_sentence(framed("PSXN,20,0,0,3,0")); });
+  EXPECT_THAT(message, HasSubstr("(PSXN,20.heading): quality '3' is not 0, 1 or 2"));
+}
+
+TEST(NmeaSentence, LenientFieldCountPadsAndCuts) {
+  const NmeaParseOptions lenient{.lenient_field_count = true};
+  // Without the trailing age and station fields (12 instead of 14), and with an extra field.
+  const std::string short_gga = framed("GPGGA,120000,6000.0,N,01000.0,E,1,08,0.9,10.0,M,40.0,M");
+  EXPECT_THROW(parse_nmea_sentence(short_gga), core::InputError);
+  const auto g = std::get<NmeaGga>(parse_nmea_sentence(short_gga, {}, lenient).data);
+  EXPECT_NEAR(g.altitude_m + g.geoid_separation_m, 50.0, kExact);
+  EXPECT_TRUE(std::isnan(g.age_s));
+  const std::string long_hdt = framed("HEHDT,12.5,T,extra");
+  EXPECT_NEAR(std::get<NmeaHdt>(parse_nmea_sentence(long_hdt, {}, lenient).data).heading_rad,
+              12.5 * kDeg, kExact);
+  // Fewer than the fields the record needs: still an error.
+  EXPECT_THROW(parse_nmea_sentence(framed("GPGGA,120000,6000.0,N"), {}, lenient), core::InputError);
+}
+
 TEST(UtcDate, CalendarArithmetic) {
   EXPECT_EQ(days_since_epoch({1970, 1, 1}), 0);
   EXPECT_EQ(days_since_epoch({2000, 3, 1}), 11017);  // 30 years incl. 7 leap days + Jan, Feb

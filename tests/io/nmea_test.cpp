@@ -97,6 +97,21 @@ TEST(ReadNmeaGnss, OptionalChannelsOnlyWhenTheirSentencesArePresent) {
   EXPECT_EQ(r.log.time(), (std::vector<double>{1.0, 2.0}));
 }
 
+TEST(ReadNmeaGnss, MalformedSentencesOfUnusedTypesAreSkipped) {
+  TempDir dir;
+  // A ZDA with an impossible date and a Seapath PSXN,20 with quality 7: not used, so skipped;
+  // a bad checksum is still an error whatever the type.
+  const auto file = dir.write(
+      "unused.nmea", lines({gga("GP", "120000", "0000000"), framed("GPZDA,120000,30,02,2024,,"),
+                            framed("PSXN,20,0,0,7,0")}));
+  const NmeaGnssLog r = read_nmea_gnss(file, "g");
+  EXPECT_EQ(r.skipped, 2u);
+  EXPECT_EQ(r.log.size(), 1u);
+  const auto bad = dir.write("bad.nmea", lines({gga("GP", "120000", "0000000"), "$GPGSV,1*00"}));
+  EXPECT_THAT(input_error_message([&] { read_nmea_gnss(bad, "g"); }),
+              HasSubstr("bad.nmea:2 (checksum)"));
+}
+
 TEST(ReadNmeaGnss, NoFixAndUnknownSeparationAreMissingNotErrors) {
   TempDir dir;
   const auto file = dir.write(

@@ -3,9 +3,10 @@
 /// One NMEA 0183 sentence: "$TTSSS,f1,f2,…*hh" parsed into a typed record.
 ///
 /// The address is a two-letter talker ID (GP, GN, GL, GA, IN, HE, …; any is accepted) and a
-/// sentence type. GGA, RMC, VTG, HDT and ROT are decoded into records in SI units (angles in
-/// rad, speeds in m/s, rates in rad/s, time in seconds since 00:00 UTC); other types keep only
-/// their address and raw fields. The checksum (XOR of the bytes between '$' and '*', two hex
+/// sentence type. GGA, RMC, VTG, GLL, ZDA, HDT, THS, HDG, ROT and the Kongsberg Seapath
+/// proprietary PSXN,20/22/23 are decoded into records in SI units (angles in rad, speeds in m/s,
+/// rates in rad/s, time in seconds since 00:00 UTC); other types keep only their address and
+/// raw fields. The checksum (XOR of the bytes between '$' and '*', two hex
 /// digits) is verified when present. An empty field is missing (NaN), never zero.
 /// Rules and error cases are in docs/log-format.md, "NMEA 0183 input".
 
@@ -85,7 +86,53 @@ struct NmeaRot {
   bool valid = false;       ///< status 'A'
 };
 
-/// A sentence of a type this module does not decode (GSV, GSA, ZDA, proprietary, …).
+/// GLL, geographic position with time.
+struct NmeaGll {
+  double lat_rad = 0.0;  ///< [rad], NaN if empty
+  double lon_rad = 0.0;  ///< [rad], NaN if empty
+  double utc_s = 0.0;    ///< [s] since 00:00 UTC, NaN if empty
+  bool valid = false;    ///< status 'A'
+};
+
+/// ZDA, UTC time and date.
+struct NmeaZda {
+  double utc_s = 0.0;           ///< [s] since 00:00 UTC, NaN if empty
+  std::optional<UtcDate> date;  ///< day, month, four-digit year; absent if any is empty
+};
+
+/// THS, true heading with a mode. It carries no time.
+struct NmeaThs {
+  double heading_rad = 0.0;  ///< [rad] clockwise from true north, NaN if empty
+  char mode = '\0';          ///< A autonomous, E estimated, M manual, S simulator, V not valid
+};
+
+/// HDG, magnetic sensor heading with deviation and variation. It carries no time.
+struct NmeaHdg {
+  double sensor_heading_rad = 0.0;  ///< [rad] as the magnetic sensor reads it, NaN if empty
+  double deviation_rad = 0.0;       ///< [rad] + east, NaN if empty
+  double variation_rad = 0.0;       ///< [rad] + east, NaN if empty
+};
+
+/// PSXN,20: Kongsberg Seapath quality flags, each 0 normal, 1 reduced, 2 invalid (−1 if empty).
+struct NmeaPsxnQuality {
+  int horizontal = -1, height = -1, heading = -1, roll_pitch = -1;
+};
+
+/// PSXN,22: Kongsberg Seapath gyro calibration.
+struct NmeaPsxnGyro {
+  double calibration_rad = 0.0;  ///< [rad] gyro calibration since start-up, NaN if empty
+  double offset_rad = 0.0;       ///< [rad] short-term gyro offset, NaN if empty
+};
+
+/// PSXN,23: Kongsberg Seapath attitude, Seapath 200/320 manual conventions. It carries no time.
+struct NmeaPsxnAttitude {
+  double roll_rad = 0.0;     ///< [rad] + port side up (= starboard down), NaN if empty
+  double pitch_rad = 0.0;    ///< [rad] + bow up, NaN if empty
+  double heading_rad = 0.0;  ///< [rad] true, clockwise from north, NaN if empty
+  double heave_m = 0.0;      ///< [m] + down, NaN if empty
+};
+
+/// A sentence of a type this module does not decode (GSV, GSA, other proprietary, …).
 struct NmeaOther {};
 
 /// One parsed sentence.
@@ -94,7 +141,17 @@ struct NmeaSentence {
   std::string type;                 ///< "GGA", "RMC", …
   std::vector<std::string> fields;  ///< the raw fields after the address
   bool has_checksum = false;
-  std::variant<NmeaOther, NmeaGga, NmeaRmc, NmeaVtg, NmeaHdt, NmeaRot> data;
+  std::variant<NmeaOther, NmeaGga, NmeaRmc, NmeaVtg, NmeaHdt, NmeaRot, NmeaGll, NmeaZda, NmeaThs,
+               NmeaHdg, NmeaPsxnQuality, NmeaPsxnGyro, NmeaPsxnAttitude>
+      data;
+};
+
+/// How strictly parse_nmea_sentence() takes field counts.
+struct NmeaParseOptions {
+  /// false: only the counts NMEA 0183 2.0–4.1 uses for the type. true: any count that reaches
+  /// the last field the record needs; missing trailing fields are empty, extra ones ignored
+  /// (what many receivers write in practice).
+  bool lenient_field_count = false;
 };
 
 /// XOR of all bytes of `body` (the text between '$' and '*').
@@ -105,6 +162,7 @@ std::uint8_t nmea_checksum(std::string_view body);
 /// "TYPE.field" name for: a line not starting with '$', a malformed address, a bad or
 /// malformed checksum, a field count that no NMEA version uses for a decoded type, text in a
 /// number, a bad hemisphere, unit letter or status, an impossible time, angle or date.
-NmeaSentence parse_nmea_sentence(std::string_view line, const core::InputLocation& where = {});
+NmeaSentence parse_nmea_sentence(std::string_view line, const core::InputLocation& where = {},
+                                 const NmeaParseOptions& options = {});
 
 }  // namespace dynpos::io

@@ -1,0 +1,60 @@
+#pragma once
+/// \file
+/// A raw NMEA 0183 capture (what a logger or a serial terminal records) read as a log for any
+/// analysis: sentences mapped to roles, one time axis, every unusable line skipped and counted.
+///
+/// Rules, in brief (the full mapping and examples are in docs/log-format.md, "NMEA captures"):
+/// - roles: lat/lon from GGA (else RMC, else GLL), height from GGA (altitude + geoid
+///   separation), heading from HDT (else THS, PSXN,23, HDG), roll/pitch/down (heave) from
+///   PSXN,23, r from ROT; for each role the first source in that order that the file has;
+/// - time: a logger time stamp before the '$' when the first used sentence has one, else the
+///   sentence UTC (GGA, RMC, GLL, ZDA) with untimed sentences at the last sentence time and the
+///   date from ZDA or RMC; t = 0 s at the first sample, its instant in `origin`;
+/// - a line that cannot be used is skipped and counted by kind in FileReport::skipped; a
+///   benign defect is counted in FileReport::accepted; strict reading makes any skipped line an
+///   error.
+
+#include <cstddef>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "dynpos/core/log.hpp"
+#include "dynpos/io/input_report.hpp"
+
+namespace dynpos::io {
+
+/// Options of read_nmea_log().
+struct NmeaLogOptions {
+  /// Channel names become PREFIX.ROLE when not empty (e.g. "gnss2" → gnss2.lat, gnss2.lon,
+  /// gnss2.height), for a second receiver read beside the main log.
+  std::string prefix;
+  /// Keeps only the channels (named as in the log, prefix included) it accepts; empty: all.
+  std::function<bool(const std::string& channel)> wanted;
+  /// Any skipped line throws core::InputError naming file:line and the kind.
+  bool strict = false;
+};
+
+/// An NMEA 0183 capture as a log.
+struct NmeaLog {
+  /// time [s] from the first sample; channels lat, lon [rad], height [m], heading, roll,
+  /// pitch [rad], down [m], r [rad/s], each only when the capture has it; NaN where a sentence
+  /// did not give the role at that time.
+  core::Log log;
+  /// format "nmea", time_format, records = sentences used, skipped and accepted lines by kind,
+  /// notes on how the sentences were read; `path` is the file as given.
+  FileReport report;
+  std::optional<std::string> origin;  ///< UTC of t = 0 s, ISO 8601; absent without a date
+};
+
+/// Reads an NMEA capture. Throws core::InputError if the file cannot be read, holds no
+/// sentence giving any role (the message counts what it found by kind), or, when strict, at
+/// the first skipped line.
+NmeaLog read_nmea_log(const std::filesystem::path& file, const NmeaLogOptions& options = {});
+
+/// True when more than half of the first 200 non-blank lines hold an NMEA sentence ('$' or
+/// '!', an address of letters and digits, a comma), with or without text before it.
+bool looks_like_nmea(const std::filesystem::path& file);
+
+}  // namespace dynpos::io

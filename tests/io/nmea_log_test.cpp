@@ -1,0 +1,209 @@
+#include "dynpos/io/nmea_log.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "io_test_util.hpp"
+
+namespace dynpos::io {
+namespace {
+
+using ::testing::ElementsAre;
+using ::testing::HasSubstr;
+using testing::input_error_message;
+using testing::TempDir;
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+// Decimal fields are parsed to within a few ulp.
+constexpr double kExact = 1e-12;
+// Log time is (t − t₀)·10⁻⁹ of integer nanoseconds: exact to the double's spacing near 100 s.
+constexpr double kTime = 1e-12;
+
+std::filesystem::path capture(std::string_view name) {
+  return std::filesystem::path(DYNPOS_SOURCE_DIR) / "tests" / "data" / "nmea" / name;
+}
+
+std::string framed(const std::string& body) {
+  unsigned sum = 0;
+  for (const char c : body) sum ^= static_cast<unsigned char>(c);
+  const char* hex = "0123456789ABCDEF";
+  return "$" + body + "*" + hex[sum >> 4] + hex[sum & 15];
+}
+
+std::string lines(const std::vector<std::string>& text) {
+  std::string out;
+  for (const std::string& s : text) out += s + "\r\n";
+  return out;
+}
+
+// The station-keeping capture (tests/data/nmea/station.nmea): 20 GNGGA fixes at 1 Hz from
+// 23:59:50 on 2024-05-01 across midnight, the antenna 1 m north and 0.5 m east of 63.44° N
+// 10.40° E, then as far south and west, alternately; HEHDT 91° and 89° alternately; and the
+// traps of a real capture.
+TEST(NmeaLog, StationCaptureCountsEveryTrap) {
+  const NmeaLog read = read_nmea_log(capture("station.nmea"));
+  const FileReport& r = read.report;
+  EXPECT_EQ(r.format, "nmea");
+  EXPECT_EQ(r.time_format, "nmea utc");
+  EXPECT_EQ(r.records, 44u);                    // 20 GGA + 20 HDT + 4 ZDA
+  EXPECT_EQ(r.skipped.count("truncated"), 2u);  // the first and the last line
+  EXPECT_EQ(r.skipped.count("comment"), 1u);
+  EXPECT_EQ(r.skipped.count("bad checksum"), 1u);
+  EXPECT_EQ(r.skipped.count("other talker"), 1u);      // GPGGA after GNGGA
+  EXPECT_EQ(r.skipped.count("unknown sentence"), 1u);  // GSV
+  EXPECT_EQ(r.skipped.total(), 6u);
+  EXPECT_EQ(r.accepted.count("no checksum"), 1u);
+  EXPECT_THAT(r.notes, ::testing::Contains(HasSubstr("lat from GGA")));
+  ASSERT_TRUE(read.origin);
+  EXPECT_EQ(*read.origin, "2024-05-01T23:59:50.000Z");
+
+  const core::Log& log = read.log;
+  EXPECT_THAT(log.channel_names(), ElementsAre("lat", "lon", "height", "heading"));
+  ASSERT_EQ(log.size(), 20u);
+  // Midnight: 23:59:59 → 00:00:00 continues the time axis.
+  for (std::size_t i = 0; i < log.size(); ++i) EXPECT_NEAR(log.time()[i], double(i), kTime);
+  EXPECT_NEAR(log.values("height")[0], 12.345 + 39.5, kExact);
+  EXPECT_NEAR(log.values("heading")[0], 91.0 * kDeg, kExact);
+  EXPECT_NEAR(log.values("heading")[1], 89.0 * kDeg, kExact);
+  EXPECT_NEAR(log.values("lat")[0], (63.0 + 26.4005383 / 60.0) * kDeg, kExact);
+}
+
+// The Seapath capture (tests/data/nmea/seapath_logger.nmea): logger stamps without a zone,
+// INGGA with an empty geoid separation, PSXN,20/22/23, ROT and a line of binary noise.
+TEST(NmeaLog, SeapathLoggerStampsAttitudeAndQualityFlags) {
+  const NmeaLog read = read_nmea_log(capture("seapath_logger.nmea"));
+  const FileReport& r = read.report;
+  EXPECT_EQ(r.time_format, "iso8601 (logger)");
+  EXPECT_EQ(r.records, 12u);
+  EXPECT_EQ(r.skipped.count("binary"), 1u);
+  EXPECT_EQ(r.skipped.count("comment"), 1u);
+  EXPECT_EQ(r.skipped.count("unknown sentence"), 1u);  // PSXN,21
+  EXPECT_EQ(r.accepted.count("empty geoid separation"), 2u);
+  EXPECT_THAT(r.notes, ::testing::Contains(HasSubstr("without a zone")));
+  EXPECT_THAT(r.notes, ::testing::Contains(HasSubstr("separation taken as 0")));
+  ASSERT_TRUE(read.origin);
+  EXPECT_EQ(*read.origin, "2024-05-01T10:00:00.000Z");
+
+  const core::Log& log = read.log;
+  EXPECT_THAT(log.channel_names(),
+              ElementsAre("lat", "lon", "height", "heading", "roll", "pitch", "down", "r"));
+  const std::vector<double> t = {0.0, 0.01, 0.03, 0.23, 0.43, 0.5, 1.0, 1.01};
+  ASSERT_EQ(log.size(), t.size());
+  for (std::size_t i = 0; i < t.size(); ++i) EXPECT_NEAR(log.time()[i], t[i], kTime);
+  EXPECT_NEAR(log.values("lat")[0], 63.44 * kDeg, kExact);
+  EXPECT_NEAR(log.values("lon")[0], 10.40 * kDeg, kExact);
+  EXPECT_NEAR(log.values("height")[6], 7.35, kExact);  // altitude + an empty (0) separation
+  EXPECT_TRUE(std::isnan(log.values("height")[1]));    // no GGA at 0.01 s: missing, not 0
+  // Heading from HDT (first in the order), not from PSXN,23.
+  EXPECT_NEAR(log.values("heading")[1], 104.68 * kDeg, kExact);
+  EXPECT_TRUE(std::isnan(log.values("heading")[2]));
+  // Seapath signs equal ours: roll + starboard down, pitch + bow up, heave + down.
+  EXPECT_NEAR(log.values("roll")[2], 1.28 * kDeg, kExact);
+  EXPECT_NEAR(log.values("pitch")[3], -1.90 * kDeg, kExact);
+  EXPECT_NEAR(log.values("down")[2], -0.24, kExact);
+  // PSXN,20 roll/pitch quality 2 (invalid) drops roll and pitch, keeps heave.
+  EXPECT_TRUE(std::isnan(log.values("roll")[4]));
+  EXPECT_NEAR(log.values("down")[4], 0.10, kExact);
+  // ROT −6 °/min: bow turning to port at 0.1 °/s.
+  EXPECT_NEAR(log.values("r")[5], -0.1 * kDeg, kExact);
+}
+
+TEST(NmeaLog, NoUsableSentenceSaysWhatWasFound) {
+  const std::string message = input_error_message([] { read_nmea_log(capture("nothing.nmea")); });
+  EXPECT_THAT(message, HasSubstr("nothing.nmea: no usable NMEA sentence"));
+  EXPECT_THAT(message, HasSubstr("1 bad checksum, 1 comment, 3 unknown sentence"));
+}
+
+TEST(NmeaLog, StrictNamesFileAndLineOfTheFirstSkippedLine) {
+  NmeaLogOptions strict;
+  strict.strict = true;
+  const std::string message =
+      input_error_message([&] { read_nmea_log(capture("station.nmea"), strict); });
+  EXPECT_THAT(message, HasSubstr("station.nmea:1: line not usable (truncated)"));
+  const std::string bad_checksum = input_error_message([&] {
+    TempDir dir;
+    read_nmea_log(
+        dir.write("c.nmea", lines({framed("GPZDA,080000,01,05,2024,,"), "$HEHDT,2.0,T*00"})),
+        strict);
+  });
+  EXPECT_THAT(bad_checksum, HasSubstr("c.nmea:2 (checksum): checksum mismatch"));
+}
+
+TEST(NmeaLog, EpochSecondsStampsGllThsAndPrefix) {
+  TempDir dir;
+  const auto file = dir.write(
+      "gll.nmea", lines({"1714557600.000;" + framed("GPGLL,6326.4000,N,01024.0000,E,100000,A"),
+                         "1714557600.125;" + framed("INTHS,123.4,A"),
+                         "1714557600.250;" + framed("INTHS,123.6,V"),  // not valid: no sample
+                         "1714557601.000;" + framed("GPGLL,6326.4000,S,01024.0000,W,100001,A")}));
+  NmeaLogOptions options;
+  options.prefix = "gnss2";
+  const NmeaLog read = read_nmea_log(file, options);
+  EXPECT_EQ(read.report.time_format, "epoch seconds (logger)");
+  EXPECT_EQ(*read.origin, "2024-05-01T10:00:00.000Z");
+  EXPECT_THAT(read.log.channel_names(), ElementsAre("gnss2.lat", "gnss2.lon", "gnss2.heading"));
+  ASSERT_EQ(read.log.size(), 3u);
+  EXPECT_NEAR(read.log.time()[1], 0.125, kTime);
+  EXPECT_NEAR(read.log.values("gnss2.lat")[2], -63.44 * kDeg, kExact);
+  EXPECT_NEAR(read.log.values("gnss2.heading")[1], 123.4 * kDeg, kExact);
+}
+
+TEST(NmeaLog, IsoStampsWithZoneAndWantedFilter) {
+  TempDir dir;
+  const auto file =
+      dir.write("zone.nmea", lines({"2024-05-01T12:00:00.5+02:00 " + framed("HEHDT,10.0,T"),
+                                    "2024-05-01T10:00:00.75Z " + framed("HEHDT,11.0,T"),
+                                    "2024-05-01T12:00:01.5+02:00 " + framed("TIROT,60.0,A")}));
+  NmeaLogOptions options;
+  options.wanted = [](const std::string& channel) { return channel == "heading"; };
+  const NmeaLog read = read_nmea_log(file, options);
+  EXPECT_EQ(*read.origin, "2024-05-01T10:00:00.500Z");
+  EXPECT_THAT(read.log.channel_names(), ElementsAre("heading"));
+  ASSERT_EQ(read.log.size(), 2u);  // the ROT time is not on the axis of the wanted channels
+  EXPECT_NEAR(read.log.time()[1], 0.25, kTime);
+}
+
+TEST(NmeaLog, HdgIsMagneticPlusDeviationPlusVariation) {
+  TempDir dir;
+  const auto file = dir.write(
+      "hdg.nmea", lines({framed("GPZDA,080000,01,05,2024,,"), framed("HCHDG,100.0,1.5,E,2.0,W"),
+                         framed("GPZDA,080001,01,05,2024,,"), framed("HCHDG,100.0,,,,")}));
+  const NmeaLog read = read_nmea_log(file);
+  EXPECT_NEAR(read.log.values("heading")[0], 99.5 * kDeg, kExact);
+  EXPECT_NEAR(read.log.values("heading")[1], 100.0 * kDeg, kExact);
+  EXPECT_THAT(read.report.notes, ::testing::Contains(HasSubstr("magnetic, not true")));
+}
+
+TEST(NmeaLog, UntimedRepeatsAndSentencesBeforeTheFirstTime) {
+  TempDir dir;
+  const auto file =
+      dir.write("untimed.nmea",
+                lines({framed("HEHDT,1.0,T"),             // before any UTC time
+                       framed("GPGGA,,,,,,0,00,,,,,,,"),  // receiver without a fix: no time yet
+                       framed("GPRMC,120000.00,A,6000.0,N,01000.0,E,0.0,0.0,010524,,,A"),
+                       framed("HEHDT,2.0,T"), framed("HEHDT,3.0,T"),  // a 2nd in the epoch
+                       framed("GPRMC,120001.00,V,,,,,,,010524,,,N"), framed("HEHDT,4.0,T")}));
+  const NmeaLog read = read_nmea_log(file);
+  EXPECT_EQ(read.report.skipped.count("no time"), 2u);
+  EXPECT_EQ(read.report.skipped.count("repeat in epoch"), 1u);
+  EXPECT_EQ(read.report.accepted.count("no fix"), 1u);
+  EXPECT_EQ(*read.origin, "2024-05-01T12:00:00.000Z");
+  EXPECT_THAT(read.log.channel_names(), ElementsAre("lat", "lon", "heading"));
+  EXPECT_NEAR(read.log.values("heading")[1], 4.0 * kDeg, kExact);
+  EXPECT_TRUE(std::isnan(read.log.values("lat")[1]));  // RMC status V: no position
+}
+
+TEST(NmeaLog, SniffsCapturesNotCsv) {
+  TempDir dir;
+  EXPECT_TRUE(looks_like_nmea(capture("station.nmea")));
+  EXPECT_TRUE(looks_like_nmea(capture("seapath_logger.nmea")));
+  EXPECT_FALSE(looks_like_nmea(dir.write("log.csv", "time,north\n0,1\n1,2\n")));
+}
+
+}  // namespace
+}  // namespace dynpos::io
