@@ -36,11 +36,13 @@ function(dynpos_add_module name)
     # them through core. Precompiled per module, so each keeps its own flags and definitions.
     target_precompile_headers(dynpos_${name} PRIVATE <Eigen/Dense> <fmt/format.h> <algorithm>
       <cmath> <filesystem> <functional> <map> <optional> <string> <string_view> <vector>)
-    # GCC 12 then reports its known false -Warray-bounds on inlined std::string moves (GCC bug
-    # 105651), which it hides while <string> is parsed as a system header rather than loaded
-    # from a precompiled one. Real out-of-bounds accesses are the sanitizer pass's job.
+    # GCC 12 then reports its known false bounds warnings on inlined std::string copies and
+    # moves (GCC bugs 105651, 105329), which it hides while <string> is parsed as a system
+    # header rather than loaded from a precompiled one. Real out-of-bounds accesses are the
+    # sanitizer pass's job.
     if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND CMAKE_CXX_COMPILER_VERSION VERSION_LESS 13)
-      target_compile_options(dynpos_${name} PRIVATE -Wno-array-bounds)
+      target_compile_options(dynpos_${name} PRIVATE -Wno-array-bounds -Wno-stringop-overread
+        -Wno-stringop-overflow -Wno-restrict)
     endif()
     # Code compiled with the sanitizers needs their runtimes wherever it is linked.
     if(DYNPOS_SANITIZE)
