@@ -87,6 +87,7 @@ ReportSection agility_demo_section(const std::filesystem::path& campaign_dir) {
   const AgilityReport report = run_agility(request);
   nlohmann::json doc = to_json(report);
   doc["log"] = "agility/log.csv";  // relative, so the report is relocatable
+  doc["input"] = io::to_json(relative_to(report.input, campaign_dir));
   const std::filesystem::path dir = campaign_dir / "analysis" / "agility";
   std::filesystem::create_directories(dir);
   io::write_json((dir / "agility.json").string(), doc);

@@ -75,6 +75,7 @@ ReportSection four_corner_demo_section(const std::filesystem::path& campaign_dir
   const FourCornerReport report = run_four_corner(request);
   nlohmann::json doc = to_json(report);
   doc["log"] = "four-corner/log.csv";  // relative to the report, so it is relocatable
+  doc["input"] = io::to_json(relative_to(report.input, campaign_dir));
   const std::filesystem::path dir = campaign_dir / "analysis" / "four-corner";
   std::filesystem::create_directories(dir);
   io::write_json((dir / "four-corner.json").string(), doc);

@@ -57,6 +57,7 @@ ReportSection leverarm_gnss_demo_section(const std::filesystem::path& campaign_d
   const LeverarmGnssReport report = run_leverarm_gnss(q);
   nlohmann::json doc = to_json(report);
   doc["log"] = "turning-circle/log.csv";
+  doc["input"] = io::to_json(relative_to(report.input, campaign_dir));
   const std::map<std::string, Vec3> truth =
       true_gnss_arms(campaign_dir / "turning-circle" / "truth.json");
   const std::filesystem::path dir = campaign_dir / "analysis" / "leverarm";

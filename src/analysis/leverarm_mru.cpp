@@ -290,6 +290,7 @@ ReportSection leverarm_mru_demo_section(const std::filesystem::path& campaign_di
   const auto plots = write_figures(report, out, truth);
   nlohmann::json doc = to_json(report);
   doc["log"] = "turning-circle/log.csv";
+  doc["input"] = io::to_json(relative_to(report.input, campaign_dir));
   io::write_json(out / "mru.json", doc);
   const report::Table table = arm_table(report, truth);
   const std::string intro = fmt::format(

@@ -78,6 +78,16 @@ core::ResampleOptions LogSource::resample_options() const {
 
 core::Log LogSource::read(const RoleFilter& wanted) const { return load(wanted).log; }
 
+io::InputReport relative_to(io::InputReport input, const std::filesystem::path& base) {
+  const auto relative = [&base](std::string& path) {
+    const std::filesystem::path r = std::filesystem::path(path).lexically_relative(base);
+    if (!r.empty() && *r.begin() != "..") path = r.generic_string();
+  };
+  for (io::FileReport& f : input.files) relative(f.path);
+  for (io::RoleOrigin& r : input.roles) relative(r.file);
+  return input;
+}
+
 std::vector<std::string> thruster_names(const core::Log& log, const std::string& prefix) {
   std::vector<std::string> names;
   const std::string head = prefix + ".";

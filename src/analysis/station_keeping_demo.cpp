@@ -21,6 +21,7 @@ ReportSection station_keeping_demo_section(const std::filesystem::path& campaign
   request.current = "0.2 m/s towards 180° (simulated)";
   StationKeepingReport result = run_station_keeping(request);
   result.log = "pure-dp/log.csv";  // relative to the report, so the report is relocatable
+  result.input = relative_to(std::move(result.input), campaign_dir);
   const std::filesystem::path dir = campaign_dir / "analysis" / "station-keeping";
   std::filesystem::create_directories(dir);
   io::write_json((dir / "pure-dp.json").string(), to_json(result));

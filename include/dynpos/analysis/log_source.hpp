@@ -74,6 +74,10 @@ LoadedLog read_log_files(const std::filesystem::path& main_log, const io::Column
 io::InputReport describe_input(const core::Log& log, const std::string& file,
                                io::FileReport file_report);
 
+/// `input` with each file path below `base` made relative to it, e.g. for a report folder that
+/// moves with its logs; other paths stay as they are.
+io::InputReport relative_to(io::InputReport input, const std::filesystem::path& base);
+
 /// Thruster names NAME of the channels "PREFIX.NAME" of a log, in channel order, unique.
 std::vector<std::string> thruster_names(const core::Log& log, const std::string& prefix);
 
