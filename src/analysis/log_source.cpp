@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "dynpos/analysis/options.hpp"
+#include "dynpos/core/time_spacing.hpp"
 #include "dynpos/io/csv_reader.hpp"
 #include "dynpos/io/roles.hpp"
 #include "log_source_nmea.hpp"
@@ -34,19 +35,15 @@ io::ColumnMap LogSource::column_map(const RoleFilter& wanted) const {
 
 namespace {
 
-// Median spacing of the valid samples of a channel → rate [Hz]; nullopt with fewer than two.
+// The rate [Hz] of a channel's valid samples, from their median spacing; nullopt with fewer
+// than two.
 std::optional<double> median_rate_hz(const core::Log& log, const core::Channel& channel) {
-  std::vector<double> dt;
-  double previous = core::kMissing;
+  std::vector<double> valid_t;
   for (std::size_t i = 0; i < log.size(); ++i) {
-    if (core::is_missing(channel.values[i])) continue;
-    if (!core::is_missing(previous)) dt.push_back(log.time()[i] - previous);
-    previous = log.time()[i];
+    if (!core::is_missing(channel.values[i])) valid_t.push_back(log.time()[i]);
   }
-  if (dt.empty()) return std::nullopt;
-  const auto mid = dt.begin() + static_cast<std::ptrdiff_t>(dt.size() / 2);
-  std::nth_element(dt.begin(), mid, dt.end());
-  return *mid > 0.0 ? std::optional<double>(1.0 / *mid) : std::nullopt;
+  if (valid_t.size() < 2) return std::nullopt;
+  return 1.0 / core::median_spacing_s(valid_t);
 }
 
 }  // namespace

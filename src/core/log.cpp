@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "dynpos/core/time_spacing.hpp"
+
 namespace dynpos::core {
 namespace {
 
@@ -33,19 +35,6 @@ void check_time_axis(const std::vector<double>& time_s, std::string_view context
           " s); sort the samples and drop duplicate times");
     }
   }
-}
-
-// The median of the spacings of a strictly increasing sequence with at least two entries.
-double median_spacing(const std::vector<double>& t) {
-  std::vector<double> dt(t.size() - 1);
-  for (std::size_t i = 0; i + 1 < t.size(); ++i) dt[i] = t[i + 1] - t[i];
-  const std::size_t mid = dt.size() / 2;
-  std::nth_element(dt.begin(), dt.begin() + static_cast<std::ptrdiff_t>(mid), dt.end());
-  const double upper = dt[mid];
-  if (dt.size() % 2 == 1) return upper;
-  // After nth_element the lower middle is the largest element before `mid`.
-  const double lower = *std::max_element(dt.begin(), dt.begin() + static_cast<std::ptrdiff_t>(mid));
-  return 0.5 * (lower + upper);
 }
 
 // The range [lo, lo + 2π) an angle channel's interpolated values are put back in, from its valid
@@ -94,7 +83,7 @@ std::vector<double> resample_channel(const std::vector<double>& time_s, const Ch
   if (n == 0) return out;
   // The spacing rule applies to this channel's own valid samples, so a 1 Hz channel blank on
   // the rows of a 100 Hz log sees 1 s spacing and bridges its blank rows.
-  const double max_gap = (max_gap_s == 0.0 && n >= 2) ? 2.5 * median_spacing(valid_t) : max_gap_s;
+  const double max_gap = (max_gap_s == 0.0 && n >= 2) ? 2.5 * median_spacing_s(valid_t) : max_gap_s;
   const std::optional<double> angle_start =
       channel.interp == Interp::kAngle ? angle_range_start(valid_v) : std::nullopt;
 

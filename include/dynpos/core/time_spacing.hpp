@@ -1,0 +1,14 @@
+#pragma once
+/// \file
+/// The typical sample spacing of a time series: the median of its spacings, robust to gaps.
+
+#include <vector>
+
+namespace dynpos::core {
+
+/// The median of the spacings t[i+1] − t[i] [s] of a strictly increasing sequence (the mean of
+/// the two middle ones for an even count). Throws std::invalid_argument with fewer than two
+/// times.
+double median_spacing_s(const std::vector<double>& time_s);
+
+}  // namespace dynpos::core
