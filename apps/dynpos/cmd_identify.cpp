@@ -11,6 +11,7 @@
 #include "dynpos/analysis/options.hpp"
 #include "dynpos/analysis/step.hpp"
 #include "dynpos/io/json_writer.hpp"
+#include "log_input.hpp"
 
 namespace dynpos::cli {
 namespace {
@@ -42,6 +43,7 @@ void add_identify_step(CLI::App& identify) {
                    "ROLE=COLUMN (repeatable): time, input (the command), output (the "
                    "response), trigger (e.g. power feedback, to time steps without a command)");
   step->add_option("--unit", r.source.units, "ROLE=UNIT (repeatable), e.g. output=rpm");
+  add_time_options(*step, r.source);
   step->add_option("--method", r.method,
                    "lsq: least squares with the dead time (default); smith: Smith's two-point "
                    "method (3.8)-(3.9); smith2: Smith's second-order 20/60 %; rk: "

@@ -7,12 +7,20 @@
 
 namespace dynpos::analysis {
 
-io::ColumnMap LogSource::column_map(const RoleFilter& wanted) const {
+io::ColumnMap LogSource::base_map() const {
   io::ColumnMap map = map_file.empty() ? io::ColumnMap{} : io::load_column_map(map_file);
   io::apply_overrides(map, columns, units);
+  io::apply_time_overrides(map, time_format, date, time_order);
+  if (map.find("time") == nullptr && map.find("time.sec") == nullptr) {
+    map.set_column("time", "time");
+  }
+  return map;
+}
+
+io::ColumnMap LogSource::column_map(const RoleFilter& wanted) const {
+  io::ColumnMap map = base_map();
   std::vector<std::string> mapped_columns;
   for (const auto& [role, entry] : map.roles()) mapped_columns.push_back(entry.column);
-  if (map.find("time") == nullptr) map.set_column("time", "time");
   for (const std::string& cell : io::read_csv_header(log)) {
     const std::string name = io::split_header_cell(cell).name;
     if (map.find(name) != nullptr || !wanted(name) || !io::find_role(name)) continue;
@@ -57,12 +65,16 @@ io::InputReport describe_input(const core::Log& log, const std::string& file,
 }
 
 LoadedLog LogSource::load(const RoleFilter& wanted) const {
-  core::Log read_log = io::read_csv(log, column_map(wanted));
+  io::CsvLog read = io::read_csv_log(log, column_map(wanted));
   io::FileReport file;
   file.format = "csv";
-  file.time_format = "seconds";
-  io::InputReport input = describe_input(read_log, log.string(), std::move(file));
-  return {std::move(read_log), std::move(input)};
+  file.time_format = read.time.format;
+  file.notes = read.time.notes;
+  file.skipped = read.time.skipped;
+  io::InputReport input = describe_input(read.log, log.string(), std::move(file));
+  input.origin = read.time.origin;
+  input.origin_zone = read.time.origin_zone;
+  return {std::move(read.log), std::move(input)};
 }
 
 core::Log LogSource::read(const RoleFilter& wanted) const { return load(wanted).log; }

@@ -25,9 +25,7 @@ struct StepSignals {
 
 StepSignals read_signals(const StepRequest& request) {
   const LogSource& src = request.source;
-  io::ColumnMap map = src.map_file.empty() ? io::ColumnMap{} : io::load_column_map(src.map_file);
-  io::apply_overrides(map, src.columns, src.units);
-  if (map.find("time") == nullptr) map.set_column("time", "time");  // our own logs' name
+  io::ColumnMap map = src.base_map();
   const bool total_speed = request.derive == "total-speed";
   if (total_speed) {
     for (const char* role : {"u", "v"}) {

@@ -32,14 +32,21 @@ struct LogSource {
   std::filesystem::path map_file;    ///< column map (TOML), or empty
   std::vector<std::string> columns;  ///< ROLE=COLUMN
   std::vector<std::string> units;    ///< ROLE=UNIT
+  std::string time_format = {};      ///< --time-format; empty = the map's (auto)
+  std::string date = {};             ///< --date YYYY-MM-DD; empty = the map's (none)
+  std::string time_order = {};       ///< --time-order; empty = the map's (error)
 
-  /// The map from map_file, then columns/units; `time` defaults to the column "time". Then every
+  /// The map from map_file, then columns/units and the time options; `time` defaults to the
+  /// column "time" unless time.sec is mapped.
+  io::ColumnMap base_map() const;
+
+  /// base_map(). Then every
   /// header column whose name is a role accepted by `wanted` and not yet mapped is mapped to
   /// itself (so "thrust.port [kN]" in a dynpos log needs no --col).
   io::ColumnMap column_map(const RoleFilter& wanted) const;
 
-  /// Reads the log with column_map(wanted), and reports the files, formats, skipped lines and
-  /// each role's origin and rate.
+  /// Reads the log with column_map(wanted), and reports the files, formats, time stamps
+  /// (form, notes, origin), skipped lines and each role's origin and rate.
   LoadedLog load(const RoleFilter& wanted) const;
 
   /// load(wanted).log.
