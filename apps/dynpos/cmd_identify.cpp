@@ -11,6 +11,7 @@
 #include "dynpos/analysis/options.hpp"
 #include "dynpos/analysis/step.hpp"
 #include "dynpos/io/json_writer.hpp"
+#include "log_input.hpp"
 
 namespace dynpos::cli {
 namespace {
@@ -51,6 +52,7 @@ void add_identify_step(CLI::App& identify) {
                    "Largest gap [s] bridged when a role of another file is put on LOG's time axis "
                    "(default: 2.5 x that role's median spacing)")
       ->check(CLI::NonNegativeNumber);
+  add_time_options(*step, r.source);
   step->add_option("--method", r.method,
                    "lsq: least squares with the dead time (default); smith: Smith's two-point "
                    "method (3.8)-(3.9); smith2: Smith's second-order 20/60 %; rk: "

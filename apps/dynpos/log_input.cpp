@@ -2,6 +2,16 @@
 
 namespace dynpos::cli {
 
+void add_time_options(CLI::App& sub, analysis::LogSource& source) {
+  sub.add_option("--time-format", source.time_format,
+                 "Time stamps: auto (default), seconds, epoch-s|ms|us|ns, iso8601, time-of-day, "
+                 "sec-nsec");
+  sub.add_option("--date", source.date, "Date of time-of-day stamps, YYYY-MM-DD");
+  sub.add_option("--time-order", source.time_order,
+                 "Repeated or backward times: error (default), drop-duplicates, "
+                 "drop-non-increasing");
+}
+
 void LogInput::add_options(CLI::App& sub, const std::string& roles_help) {
   sub.add_option("log", log, "Log: CSV, or an NMEA 0183 capture (detected by content)")
       ->required()
@@ -22,6 +32,7 @@ void LogInput::add_options(CLI::App& sub, const std::string& roles_help) {
   sub.add_option("--format", format, "Log format: auto (by content), csv or nmea")
       ->default_str("auto");
   sub.add_flag("--strict", strict, "An NMEA line that cannot be used is an error (file:line)");
+  add_time_options(sub, *this);
 }
 
 }  // namespace dynpos::cli

@@ -1,6 +1,6 @@
 #pragma once
-// The log options every analysis subcommand shares: LOG, --map, --col, --unit, --clock-offset
-// and --max-gap, filling an analysis::LogSource.
+// The log options every analysis subcommand shares: LOG, --map, --col, --unit, --clock-offset,
+// --max-gap, --format, --strict and the time-stamp options, filling an analysis::LogSource.
 
 #include <CLI/CLI.hpp>
 #include <string>
@@ -11,9 +11,13 @@
 namespace dynpos::cli {
 
 struct LogInput : analysis::LogSource {
-  /// Adds LOG (positional, required), --map, --col, --unit, --clock-offset and --max-gap.
+  /// Adds LOG (positional, required), --map, --col, --unit, --clock-offset, --max-gap, --format,
+  /// --strict and the time-stamp options to `sub`.
   void add_options(CLI::App& sub, const std::string& roles_help);
 };
+
+/// Adds --time-format, --date and --time-order to `sub`, filling `source`.
+void add_time_options(CLI::App& sub, analysis::LogSource& source);
 
 using analysis::thruster_names;
 

@@ -40,6 +40,21 @@ void check_overlap(const core::Log& main, io::FileLog& part, double offset_s) {
   }
 }
 
+// The offset [s] that puts `part`'s times on the main log's clock: the difference of their
+// absolute origins when both files have absolute time stamps, plus the user's clock offset.
+double clock_offset_s(const io::FileLog& main, io::FileLog& part, double user_offset_s) {
+  if (main.origin_ns && part.origin_ns) {
+    part.report.notes.push_back("aligned on the main log by its absolute time stamps");
+    return static_cast<double>(*part.origin_ns - *main.origin_ns) * 1e-9 + user_offset_s;
+  }
+  if (main.origin_ns.has_value() != part.origin_ns.has_value()) {
+    part.report.notes.push_back(
+        "one of this file and the main log has absolute time stamps, the other relative "
+        "seconds: aligned by the clock offset only");
+  }
+  return user_offset_s;
+}
+
 }  // namespace
 
 LoadedLog read_log_files(const std::filesystem::path& main_log, const io::ColumnMap& map,
@@ -49,13 +64,16 @@ LoadedLog read_log_files(const std::filesystem::path& main_log, const io::Column
   LoadedLog out{std::move(main.log), {}};
   const std::string main_path = main.report.path;
   out.input = describe_input(out.log, main_path, std::move(main.report));
+  out.input.origin = main.origin;
+  out.input.origin_zone = main.origin_zone;
   for (const std::string& file : map.other_files()) {
     const io::LogFileOptions file_options = map.file_options(file);
     io::FileLog part = io::read_log_file(file, map.for_file(file));
-    part.report.clock_offset_s = file_options.clock_offset_s;
-    check_overlap(out.log, part, file_options.clock_offset_s);
+    const double offset_s = clock_offset_s(main, part, file_options.clock_offset_s);
+    part.report.clock_offset_s = offset_s;
+    check_overlap(out.log, part, offset_s);
     const std::size_t first_channel = out.log.channels().size();
-    core::add_aligned(out.log, part.log, file_options.clock_offset_s, options);
+    core::add_aligned(out.log, part.log, offset_s, options);
     for (std::size_t i = first_channel; i < out.log.channels().size(); ++i) {
       const core::Channel& c = out.log.channels()[i];
       if (std::all_of(c.values.begin(), c.values.end(), core::is_missing)) {

@@ -12,15 +12,23 @@
 
 namespace dynpos::analysis {
 
-io::ColumnMap LogSource::column_map(const RoleFilter& wanted) const {
+io::ColumnMap LogSource::base_map() const {
   io::ColumnMap map = map_file.empty() ? io::ColumnMap{} : io::load_column_map(map_file);
   io::apply_overrides(map, columns, units);
   for (const std::string& offset : clock_offsets) io::apply_clock_offset_override(map, offset);
+  io::apply_time_overrides(map, time_format, date, time_order);
+  if (map.find("time") == nullptr && map.find("time.sec") == nullptr) {
+    map.set_column("time", "time");
+  }
+  return map;
+}
+
+io::ColumnMap LogSource::column_map(const RoleFilter& wanted) const {
+  io::ColumnMap map = base_map();
   std::vector<std::string> mapped_columns;
   for (const auto& [role, entry] : map.roles()) {
     if (entry.file.empty()) mapped_columns.push_back(entry.column);
   }
-  if (map.find("time") == nullptr) map.set_column("time", "time");
   for (const std::string& cell : io::read_csv_header(log)) {
     const std::string name = io::split_header_cell(cell).name;
     if (map.find(name) != nullptr || !wanted(name) || !io::find_role(name)) continue;

@@ -115,6 +115,41 @@ char parse_delimiter(const toml::node& node, const std::string& file) {
                    "csv.delimiter must be \"auto\", \",\", \";\", \"\\t\" or \"tab\"");
 }
 
+// [time]: format, date and order of the time stamps (time_stamp.hpp).
+void read_time_table(const toml::table& table, TimeStampOptions& time, const std::string& file) {
+  for (auto&& [key, node] : table) {
+    const std::string_view name = key.str();
+    const std::optional<std::string> text = node.value<std::string>();
+    const InputLocation where = at(file, node.source());
+    if (name != "format" && name != "date" && name != "order") {
+      throw InputError(at(file, key.source()), fmt::format("unknown key '{}' in [time]", name),
+                       "the keys are format, date and order");
+    }
+    if (!text) throw InputError(where, fmt::format("time.{} must be a string", name));
+    if (name == "format") {
+      const std::optional<TimeFormat> format = find_time_format(*text);
+      if (!format) {
+        throw InputError(where, fmt::format("unknown time format '{}'", *text),
+                         fmt::format("the formats are: {}", time_format_names()));
+      }
+      time.format = *format;
+    } else if (name == "date") {
+      if (!parse_date_days(*text)) {
+        throw InputError(where, fmt::format("'{}' is not a date", *text),
+                         "write it as \"YYYY-MM-DD\"");
+      }
+      time.date = *text;
+    } else {
+      const std::optional<TimeOrder> order = find_time_order(*text);
+      if (!order) {
+        throw InputError(where, fmt::format("unknown time order '{}'", *text),
+                         "the policies are: error, drop-duplicates, drop-non-increasing");
+      }
+      time.order = *order;
+    }
+  }
+}
+
 void read_csv_table(const toml::table& table, CsvFormat& format, const std::string& file) {
   for (auto&& [key, node] : table) {
     const std::string_view name = key.str();
@@ -391,9 +426,18 @@ void ColumnMap::validate() const {
                                    file));
     }
   }
-  if (find("time") == nullptr) {
+  const bool two_column = find("time.sec") != nullptr || find("time.nsec") != nullptr;
+  if (find("time") == nullptr && !two_column) {
     throw InputError({}, "the column map has no 'time' column",
                      "map it with --col time=COLUMN or time = \"COLUMN\" in [roles]");
+  }
+  if (two_column && (find("time.sec") == nullptr || find("time.nsec") == nullptr)) {
+    throw InputError({}, "time.sec and time.nsec go together",
+                     "map both: --col time.sec=COLUMN --col time.nsec=COLUMN");
+  }
+  if (two_column && find("time") != nullptr) {
+    throw InputError({}, "both 'time' and time.sec/time.nsec are mapped",
+                     "map either one time column or the two-column form");
   }
 }
 
@@ -409,7 +453,8 @@ ColumnMap parse_column_map(std::string_view toml_text, const std::string& source
   for (auto&& [key, node] : root) {
     const std::string_view name = key.str();
     const toml::table* table = node.as_table();
-    if ((name == "csv" || name == "roles" || name == "files") && table == nullptr) {
+    if ((name == "csv" || name == "roles" || name == "files" || name == "time") &&
+        table == nullptr) {
       throw InputError(at(source_name, key.source()), fmt::format("'{}' must be a table", name),
                        fmt::format("write it as [{}]", name));
     }
@@ -419,10 +464,12 @@ ColumnMap parse_column_map(std::string_view toml_text, const std::string& source
       read_roles_table("", *table, map, source_name);
     } else if (name == "files") {
       read_files_table(*table, map, source_name);
+    } else if (name == "time") {
+      read_time_table(*table, map.time(), source_name);
     } else {
       throw InputError(at(source_name, key.source()),
                        fmt::format("unknown table or key '{}' in the column map", name),
-                       "the tables are [csv], [roles] and [files]");
+                       "the tables are [csv], [roles], [files] and [time]");
     }
   }
   return map;
@@ -480,6 +527,33 @@ void apply_clock_offset_override(ColumnMap& map, std::string_view argument) {
 void apply_unit_override(ColumnMap& map, std::string_view argument) {
   auto [role, unit] = split_assignment(argument, "--unit", "UNIT", "heading=deg");
   map.set_unit(role, unit, command_line("--unit " + std::string(argument)));
+}
+
+void apply_time_overrides(ColumnMap& map, std::string_view format, std::string_view date,
+                          std::string_view order) {
+  if (!format.empty()) {
+    const std::optional<TimeFormat> f = find_time_format(format);
+    if (!f) {
+      throw InputError::for_option("time-format", fmt::format("unknown time format '{}'", format),
+                                   fmt::format("the formats are: {}", time_format_names()));
+    }
+    map.time().format = *f;
+  }
+  if (!date.empty()) {
+    if (!parse_date_days(date)) {
+      throw InputError::for_option("date", fmt::format("'{}' is not a date", date),
+                                   "write it as YYYY-MM-DD, e.g. 2024-05-01");
+    }
+    map.time().date = std::string(date);
+  }
+  if (!order.empty()) {
+    const std::optional<TimeOrder> o = find_time_order(order);
+    if (!o) {
+      throw InputError::for_option("time-order", fmt::format("unknown time order '{}'", order),
+                                   "the policies are: error, drop-duplicates, drop-non-increasing");
+    }
+    map.time().order = *o;
+  }
 }
 
 void apply_overrides(ColumnMap& map, const std::vector<std::string>& column_arguments,

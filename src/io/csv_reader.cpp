@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "dynpos/io/time_stamp.hpp"
 #include "text_util.hpp"
 
 namespace dynpos::io {
@@ -20,6 +21,11 @@ using core::InputError;
 using core::InputLocation;
 
 constexpr std::size_t kNoSlot = std::numeric_limits<std::size_t>::max();
+
+// Roles that make the time axis rather than channels.
+bool is_time_role(std::string_view role) {
+  return role == "time" || role == "time.sec" || role == "time.nsec" || role == "date";
+}
 
 // Reads physical lines and assembles records: skips blank and comment lines, strips CR and a
 // UTF-8 byte-order mark, and joins lines while a quoted field is open.
@@ -278,129 +284,219 @@ InputLocation cell_location(const std::string& file, std::size_t line, const Col
   }
 }
 
-// Streams the data rows after the header into the plans' vectors; returns the time axis.
-std::vector<double> stream_rows(LineReader& reader, const Header& header, const CsvFormat& format,
-                                ColumnPlan& time, std::vector<ColumnPlan>& channels,
-                                const CsvReadOptions& options) {
-  // Field index → slot in `cells` (several roles may share a column).
-  std::vector<std::size_t> slot_of_field(header.cells.size(), kNoSlot);
-  std::size_t slots = 0;
-  auto assign = [&](ColumnPlan& plan) {
-    if (slot_of_field[plan.field] == kNoSlot) slot_of_field[plan.field] = slots++;
-    plan.slot = slot_of_field[plan.field];
-  };
-  assign(time);
-  for (auto& plan : channels) assign(plan);
-  std::vector<std::string_view> cells(slots);
-  std::vector<std::string> buffers(slots);
-  std::string junk;
+// The time column and its optional companions (time.nsec, date).
+struct TimePlans {
+  ColumnPlan time;
+  std::optional<ColumnPlan> nsec, date;
+};
 
-  const double t_from = options.t_from_s.value_or(-std::numeric_limits<double>::infinity());
-  const double t_to = options.t_to_s.value_or(std::numeric_limits<double>::infinity());
-  std::vector<double> time_s;
-  double last_t = 0.0;
-  std::size_t last_line = 0;
-  std::size_t rows = 0;
-  std::optional<double> first_t;
+// Splits records into the cells of the planned fields (views into the record or `buffers_`).
+class RowSplitter {
+ public:
+  RowSplitter(const Header& header, TimePlans& time, std::vector<ColumnPlan>& channels)
+      : header_(header), slot_of_field_(header.cells.size(), kNoSlot) {
+    // Field index → slot in `cells` (several roles may share a column).
+    auto assign = [&](ColumnPlan& plan) {
+      if (slot_of_field_[plan.field] == kNoSlot) slot_of_field_[plan.field] = slots_++;
+      plan.slot = slot_of_field_[plan.field];
+    };
+    assign(time.time);
+    if (time.nsec) assign(*time.nsec);
+    if (time.date) assign(*time.date);
+    for (auto& plan : channels) assign(plan);
+    cells_.resize(slots_);
+    buffers_.resize(slots_);
+  }
 
-  std::string record;
-  std::size_t line = 0;
-  while (reader.next(record, line)) {
+  const std::vector<std::string_view>& cells() const noexcept { return cells_; }
+
+  // Splits `record` (joining the next physical lines through `reader` while a quoted field is
+  // open; null for a complete record) and checks its field count.
+  void split(std::string& record, std::size_t line, LineReader* reader) {
     std::size_t field_count = 0;
     std::size_t pos = 0;
     for (;;) {
       const std::size_t slot =
-          field_count < slot_of_field.size() ? slot_of_field[field_count] : kNoSlot;
+          field_count < slot_of_field_.size() ? slot_of_field_[field_count] : kNoSlot;
       const Field field =
-          scan_field(record, pos, header.delimiter, slot == kNoSlot ? junk : buffers[slot]);
+          scan_field(record, pos, header_.delimiter, slot == kNoSlot ? junk_ : buffers_[slot]);
       if (!field.closed) {
-        if (reader.continue_record(record)) {
+        if (reader != nullptr && reader->continue_record(record)) {
           field_count = 0;
           pos = 0;
           continue;
         }
         InputLocation where;
-        where.file = reader.path();
+        where.file = path_of(reader);
         where.line = line;
         where.column = field_count + 1;
         throw InputError(where, "unterminated quoted field", "close the quote (\") or remove it");
       }
-      if (slot != kNoSlot) cells[slot] = field.text;
+      if (slot != kNoSlot) cells_[slot] = field.text;
       ++field_count;
       if (field.next == std::string_view::npos) break;
       pos = field.next;
     }
-    if (field_count != header.cells.size()) {
+    if (field_count != header_.cells.size()) {
       InputLocation where;
-      where.file = reader.path();
+      where.file = path_of(reader);
       where.line = line;
       throw InputError(where,
                        fmt::format("the row has {} fields but the header (line {}) has {}",
-                                   field_count, header.line, header.cells.size()),
+                                   field_count, header_.line, header_.cells.size()),
                        fmt::format("check the delimiter (using {}) and quoting",
-                                   delimiter_name(header.delimiter)));
-    }
-
-    double raw = 0.0;
-    const std::string_view time_cell = cells[time.slot];
-    const CellKind kind = parse_cell(time_cell, format.missing_tokens, raw);
-    if (kind == CellKind::kMissing) {
-      throw InputError(cell_location(reader.path(), line, time), "the time cell is blank",
-                       "every row needs a time; remove the row or fill in its time");
-    }
-    if (kind != CellKind::kNumber) {
-      throw_bad_cell(kind, time_cell, cell_location(reader.path(), line, time), header.delimiter);
-    }
-    const double t = to_si(time.unit, raw * time.scale);
-    if (rows > 0 && !(t > last_t)) {
-      throw InputError(cell_location(reader.path(), line, time),
-                       fmt::format("time {} s {} the previous row's {} s (line {})", t,
-                                   t == last_t ? "repeats" : "goes back from", last_t, last_line),
-                       "time must be strictly increasing; sort the log or remove duplicated rows");
-    }
-    if (!first_t) first_t = t;
-    last_t = t;
-    last_line = line;
-    ++rows;
-    if (t < t_from) continue;
-    if (t > t_to) break;
-
-    time_s.push_back(t);
-    for (auto& plan : channels) {
-      double value = core::kMissing;
-      const std::string_view cell = cells[plan.slot];
-      const CellKind cell_kind = parse_cell(cell, format.missing_tokens, raw);
-      if (cell_kind == CellKind::kNumber) {
-        value = to_si(plan.unit, raw * plan.scale);
-        if (plan.state == ColumnPlan::State::kUnknown) plan.state = ColumnPlan::State::kNumeric;
-      } else if (cell_kind != CellKind::kMissing) {
-        if (plan.may_be_text && cell_kind == CellKind::kText &&
-            plan.state != ColumnPlan::State::kNumeric) {
-          plan.state = ColumnPlan::State::kText;
-          plan.values.clear();
-          plan.values.shrink_to_fit();
-        }
-        if (plan.state != ColumnPlan::State::kText) {
-          throw_bad_cell(cell_kind, cell, cell_location(reader.path(), line, plan),
-                         header.delimiter);
-        }
-      }
-      if (plan.state != ColumnPlan::State::kText) plan.values.push_back(value);
+                                   delimiter_name(header_.delimiter)));
     }
   }
 
-  if (time_s.empty()) {
+  std::string path;  // the file, for messages
+
+ private:
+  std::string path_of(const LineReader* reader) const {
+    return reader != nullptr ? reader->path() : path;
+  }
+
+  const Header& header_;
+  std::vector<std::size_t> slot_of_field_;
+  std::size_t slots_ = 0;
+  std::vector<std::string_view> cells_;
+  std::vector<std::string> buffers_;
+  std::string junk_;
+};
+
+// Rows read so far and the time axis of the rows kept inside the window.
+struct RowStream {
+  std::vector<double> time_s;
+  std::size_t rows = 0;
+  std::optional<double> first_t;
+  double last_t = 0.0;
+};
+
+// The time of the row in `cells` [s]: plain seconds parsed here (fast path, unit and scale),
+// other forms by `stamps`.
+double row_time_s(const std::vector<std::string_view>& cells, const TimePlans& time,
+                  const CsvFormat& format, char delimiter, TimeStampReader& stamps,
+                  const std::string& path, std::size_t line) {
+  const std::string_view time_cell = cells[time.time.slot];
+  if (!stamps.plain_seconds()) {
+    return stamps.time_s({time_cell, time.nsec ? cells[time.nsec->slot] : std::string_view(),
+                          time.date ? cells[time.date->slot] : std::string_view()},
+                         line);
+  }
+  double raw = 0.0;
+  const CellKind kind = parse_cell(time_cell, format.missing_tokens, raw);
+  if (kind == CellKind::kMissing) {
+    throw InputError(cell_location(path, line, time.time), "the time cell is blank",
+                     "every row needs a time; remove the row or fill in its time");
+  }
+  if (kind != CellKind::kNumber) {
+    throw_bad_cell(kind, time_cell, cell_location(path, line, time.time), delimiter);
+  }
+  return to_si(time.time.unit, raw * time.time.scale);
+}
+
+// Stores one split row: its time (if the order policy keeps it and it is inside the window)
+// and its channel values. False once the row is after the window: reading stops.
+bool store_row(const std::vector<std::string_view>& cells, const TimePlans& time,
+               std::vector<ColumnPlan>& channels, const CsvFormat& format, char delimiter,
+               TimeStampReader& stamps, const std::string& path, std::size_t line,
+               const CsvReadOptions& options, RowStream& out) {
+  const double t = row_time_s(cells, time, format, delimiter, stamps, path, line);
+  if (!stamps.accept(t, cells[time.time.slot], line)) return true;
+  if (!out.first_t) out.first_t = t;
+  out.last_t = t;
+  ++out.rows;
+  if (options.t_from_s && t < *options.t_from_s) return true;
+  if (options.t_to_s && t > *options.t_to_s) return false;
+
+  out.time_s.push_back(t);
+  double raw = 0.0;
+  for (auto& plan : channels) {
+    double value = core::kMissing;
+    const std::string_view cell = cells[plan.slot];
+    const CellKind cell_kind = parse_cell(cell, format.missing_tokens, raw);
+    if (cell_kind == CellKind::kNumber) {
+      value = to_si(plan.unit, raw * plan.scale);
+      if (plan.state == ColumnPlan::State::kUnknown) plan.state = ColumnPlan::State::kNumeric;
+    } else if (cell_kind != CellKind::kMissing) {
+      if (plan.may_be_text && cell_kind == CellKind::kText &&
+          plan.state != ColumnPlan::State::kNumeric) {
+        plan.state = ColumnPlan::State::kText;
+        plan.values.clear();
+        plan.values.shrink_to_fit();
+      }
+      if (plan.state != ColumnPlan::State::kText) {
+        throw_bad_cell(cell_kind, cell, cell_location(path, line, plan), delimiter);
+      }
+    }
+    if (plan.state != ColumnPlan::State::kText) plan.values.push_back(value);
+  }
+  return true;
+}
+
+// Streams the data rows after the header into the plans' vectors; returns the time axis. The
+// first kTimeDetectionRows rows are held back until their time cells have fixed the format.
+std::vector<double> stream_rows(LineReader& reader, const Header& header, const CsvFormat& format,
+                                TimePlans& time, std::vector<ColumnPlan>& channels,
+                                const CsvReadOptions& options, TimeStampReader& stamps,
+                                const InputError* time_unit_error) {
+  RowSplitter splitter(header, time, channels);
+  splitter.path = reader.path();
+  RowStream out;
+  auto store = [&](std::size_t line) {
+    return store_row(splitter.cells(), time, channels, format, header.delimiter, stamps,
+                     reader.path(), line, options, out);
+  };
+  std::vector<std::pair<std::string, std::size_t>> held;  // record, line
+  std::vector<std::string> held_time;
+  bool more = true;
+  // Fixes the time format from the held rows, then stores them.
+  auto release = [&] {
+    std::vector<std::string_view> cells(held_time.begin(), held_time.end());
+    std::vector<std::size_t> lines;
+    for (const auto& row : held) lines.push_back(row.second);
+    stamps.start(cells, lines);
+    if (stamps.plain_seconds() && time_unit_error != nullptr) throw *time_unit_error;
+    for (auto& [held_record, held_line] : held) {
+      splitter.split(held_record, held_line, nullptr);
+      if (!(more = store(held_line))) break;
+    }
+    held.clear();
+    held.shrink_to_fit();
+  };
+
+  std::string record;
+  std::size_t line = 0;
+  bool started = false;
+  while (more && reader.next(record, line)) {
+    splitter.split(record, line, &reader);
+    if (started) {
+      more = store(line);
+      continue;
+    }
+    held.emplace_back(record, line);
+    held_time.emplace_back(splitter.cells()[time.time.slot]);
+    if (held.size() == kTimeDetectionRows) {
+      release();
+      started = true;
+    }
+  }
+  if (!started && !held.empty()) release();
+
+  if (out.time_s.empty()) {
     InputLocation where;
     where.file = reader.path();
-    if (rows == 0) {
+    if (out.rows == 0) {
       throw InputError(where, "the log has a header but no data rows");
     }
-    throw InputError(
-        where, fmt::format("no rows inside the window [{}, {}] s", t_from, t_to),
-        fmt::format("the log starts at {} s{}", *first_t,
-                    last_t > t_to ? std::string() : fmt::format(" and ends at {} s", last_t)));
+    const double t_from = options.t_from_s.value_or(-std::numeric_limits<double>::infinity());
+    const double t_to = options.t_to_s.value_or(std::numeric_limits<double>::infinity());
+    throw InputError(where, fmt::format("no rows inside the window [{}, {}] s", t_from, t_to),
+                     fmt::format("the log starts at {} s{}", *out.first_t,
+                                 out.last_t > t_to ? std::string()
+                                                   : fmt::format(" and ends at {} s", out.last_t)));
   }
-  return time_s;
+  return std::move(out.time_s);
 }
 
 // Index of the header cell for `column`: the full header text first, then the name without a
@@ -484,8 +580,8 @@ std::vector<std::string> read_csv_header(const std::filesystem::path& path,
   return read_header(reader, format).cells;
 }
 
-core::Log read_csv(const std::filesystem::path& path, const ColumnMap& map,
-                   const CsvReadOptions& options) {
+CsvLog read_csv_log(const std::filesystem::path& path, const ColumnMap& map,
+                    const CsvReadOptions& options) {
   map.validate();
   options.validate();
   for (const auto& [role, entry] : map.roles()) {
@@ -500,10 +596,12 @@ core::Log read_csv(const std::filesystem::path& path, const ColumnMap& map,
   const Header header = read_header(reader, format);
 
   std::vector<ColumnPlan> plans;
-  ColumnPlan time;
+  TimePlans time;
+  std::optional<InputError> time_unit_error;
   for (const auto& [role, entry] : map.roles()) {
     const std::optional<RoleSpec> spec = find_role(role);
     assert(spec && "ColumnMap only holds known roles");
+    const bool time_role = is_time_role(role);
     ColumnPlan plan;
     plan.field = find_column(header, entry.column, role, entry, reader.path());
     plan.header = header.cells[plan.field];
@@ -512,7 +610,8 @@ core::Log read_csv(const std::filesystem::path& path, const ColumnMap& map,
     plan.scale = entry.scale;
     if (entry.unit) {
       plan.unit = unit_for_role(*spec, *entry.unit, entry.source);
-    } else if (const HeaderCell cell = split_header_cell(plan.header); !cell.unit.empty()) {
+    } else if (const HeaderCell cell = split_header_cell(plan.header);
+               !cell.unit.empty() && (!time_role || role == "time")) {
       InputLocation where;
       where.file = reader.path();
       where.line = header.line;
@@ -521,10 +620,14 @@ core::Log read_csv(const std::filesystem::path& path, const ColumnMap& map,
       try {
         plan.unit = unit_for_role(*spec, cell.unit, where);
       } catch (const InputError& e) {
-        throw InputError(e.where(), e.problem() + " (from the header)",
+        InputError error(e.where(), e.problem() + " (from the header)",
                          e.hint() + fmt::format("; or declare the unit with --unit {}=UNIT or "
                                                 "unit = \"...\" in the column map",
                                                 role));
+        if (role != "time") throw error;
+        // "Time (UTC)" names no unit, but matters only if the stamps are plain seconds.
+        time_unit_error = std::move(error);
+        plan.unit = core::si_unit(core::Quantity::kTime);
       }
     } else {
       const auto unit = core::find_unit(spec->default_unit);
@@ -532,8 +635,12 @@ core::Log read_csv(const std::filesystem::path& path, const ColumnMap& map,
       plan.unit = *unit;
     }
     plan.unit_symbol = core::si_unit(plan.unit.quantity).symbol;
-    if (role == "time") {
-      time = std::move(plan);
+    if (role == "time" || role == "time.sec") {
+      time.time = std::move(plan);
+    } else if (role == "time.nsec") {
+      time.nsec = std::move(plan);
+    } else if (role == "date") {
+      time.date = std::move(plan);
     } else {
       plans.push_back(std::move(plan));
     }
@@ -541,12 +648,20 @@ core::Log read_csv(const std::filesystem::path& path, const ColumnMap& map,
   std::stable_sort(plans.begin(), plans.end(),
                    [](const ColumnPlan& a, const ColumnPlan& b) { return a.field < b.field; });
 
-  std::vector<double> time_s = stream_rows(reader, header, format, time, plans, options);
-  core::Log log(std::move(time_s));
+  TimeStampReader stamps(map.time(), {reader.path(), time.time.header, time.time.field,
+                                      time.nsec.has_value(), time.date.has_value()});
+  std::vector<double> time_s = stream_rows(reader, header, format, time, plans, options, stamps,
+                                           time_unit_error ? &*time_unit_error : nullptr);
+  CsvLog out{core::Log(std::move(time_s)), stamps.info()};
   for (auto& plan : plans) {
-    log.add_channel(plan.channel, plan.unit_symbol, std::move(plan.values), plan.interp);
+    out.log.add_channel(plan.channel, plan.unit_symbol, std::move(plan.values), plan.interp);
   }
-  return log;
+  return out;
+}
+
+core::Log read_csv(const std::filesystem::path& path, const ColumnMap& map,
+                   const CsvReadOptions& options) {
+  return read_csv_log(path, map, options).log;
 }
 
 core::Log read_csv_all(const std::filesystem::path& path, const CsvReadOptions& options,
@@ -565,7 +680,7 @@ core::Log read_csv_all(const std::filesystem::path& path, const CsvReadOptions& 
     return where;
   };
 
-  ColumnPlan time;
+  TimePlans time;
   std::vector<ColumnPlan> plans;
   std::map<std::string, std::size_t> seen;
   for (std::size_t i = 0; i < header.cells.size(); ++i) {
@@ -591,7 +706,7 @@ core::Log read_csv_all(const std::filesystem::path& path, const CsvReadOptions& 
                                      detail::join(core::unit_spellings(core::Quantity::kTime))));
       }
       plan.unit = *time_unit;
-      time = std::move(plan);
+      time.time = std::move(plan);
       continue;
     }
     if (const auto [it, inserted] = seen.emplace(cell.name, i); !inserted) {
@@ -615,7 +730,9 @@ core::Log read_csv_all(const std::filesystem::path& path, const CsvReadOptions& 
     plans.push_back(std::move(plan));
   }
 
-  std::vector<double> time_s = stream_rows(reader, header, format, time, plans, options);
+  TimeStampReader stamps({}, {reader.path(), time.time.header, 0, false, false});
+  std::vector<double> time_s =
+      stream_rows(reader, header, format, time, plans, options, stamps, nullptr);
   core::Log log(std::move(time_s));
   for (auto& plan : plans) {
     if (plan.state == ColumnPlan::State::kText) continue;

@@ -23,6 +23,10 @@ std::vector<RoleSpec> build_catalogue() {
   const auto angle = Interp::kAngle;
   return {
       make("time", Quantity::kTime, "s", cont, "time axis, strictly increasing"),
+      make("time.sec", Quantity::kTime, "s", cont, "whole seconds of a two-column time stamp"),
+      make("time.nsec", std::nullopt, "1", cont,
+           "nanoseconds (integer) of a two-column time stamp, with time.sec"),
+      make("date", std::nullopt, "1", hold, "date (YYYY-MM-DD) of time-of-day stamps"),
       make("north", Quantity::kLength, "m", cont, "position north of the local origin (NED x)"),
       make("east", Quantity::kLength, "m", cont, "position east of the local origin (NED y)"),
       make("down", Quantity::kLength, "m", cont, "position down (NED z)"),

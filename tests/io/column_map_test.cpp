@@ -115,7 +115,7 @@ TEST(ColumnMap, ErrorsInTheFileNameLineAndColumn) {
       ContainsRegex("^map\\.toml:2:[0-9]+: scale 0 for role 'heading' must be finite"));
   EXPECT_THAT(input_error_message([&] { parse("[column]\ntime = \"t\"\n"); }),
               ContainsRegex("^map\\.toml:1:2: unknown table or key 'column'.*\\[csv\\], "
-                            "\\[roles\\] and \\[files\\]"));
+                            "\\[roles\\], \\[files\\] and \\[time\\]"));
   EXPECT_THAT(input_error_message([&] { parse("[csv]\ndelimiter = \"|\"\n"); }),
               ContainsRegex("^map\\.toml:2:13: csv.delimiter must be"));
   EXPECT_THAT(input_error_message([&] { parse("[roles]\ntime = \"t\n"); }),

@@ -257,7 +257,7 @@ TEST_F(CsvReaderErrors, TimeMissingRepeatedOrDecreasing) {
               ContainsRegex("bad\\.csv:4:1 \\(t\\): time 1 s goes back from the previous row's "
                             "2 s \\(line 3\\)"));
   EXPECT_THAT(error_for("t,x [m]\nstart,1\n", time_and_x()),
-              ContainsRegex("bad\\.csv:2:1 \\(t\\): 'start' is not a number"));
+              ContainsRegex("bad\\.csv:2:1 \\(t\\): 'start' is not a time stamp"));
 }
 
 TEST_F(CsvReaderErrors, EmptyFileHeaderOnlyAndCommentsOnly) {

@@ -38,17 +38,24 @@ struct LogSource {
   /// Largest gap [s] between two samples of a role from another file that is bridged when it
   /// is put on the main log's time axis; 0 = automatic (2.5 × that role's median spacing).
   double max_gap_s = 0.0;
-  std::string format = "auto";  ///< "auto" (by content), "csv" or "nmea" (NMEA 0183 capture)
-  bool strict = false;          ///< an NMEA line that cannot be used is an error
+  std::string format = "auto";   ///< "auto" (by content), "csv" or "nmea" (NMEA 0183 capture)
+  bool strict = false;           ///< an NMEA line that cannot be used is an error
+  std::string time_format = {};  ///< --time-format; empty = the map's (auto)
+  std::string date = {};         ///< --date YYYY-MM-DD; empty = the map's (none)
+  std::string time_order = {};   ///< --time-order; empty = the map's (error)
 
-  /// The map from map_file, then columns/units; `time` defaults to the column "time". Then every
+  /// The map from map_file, then columns/units and the time options; `time` defaults to the
+  /// column "time" unless time.sec is mapped.
+  io::ColumnMap base_map() const;
+
+  /// base_map(). Then every
   /// header column whose name is a role accepted by `wanted` and not yet mapped is mapped to
   /// itself (so "thrust.port [kN]" in a dynpos log needs no --col).
   io::ColumnMap column_map(const RoleFilter& wanted) const;
 
   /// Reads the log with column_map(wanted) and read_log_files() (an NMEA capture: its default
-  /// role mapping, io/nmea_log.hpp), and reports the files, formats, skipped lines and each
-  /// role's origin and rate.
+  /// role mapping, io/nmea_log.hpp), and reports the files, formats, time stamps (form, notes,
+  /// origin), skipped lines and each role's origin and rate.
   LoadedLog load(const RoleFilter& wanted) const;
 
   /// load(wanted).log.

@@ -13,6 +13,11 @@
 ///     comment = "#"                # lines starting with this are skipped; "" = none
 ///     missing = []                 # tokens read as missing, besides the empty cell
 ///
+///     [time]                       # optional; the defaults are shown
+///     format = "auto"              # or seconds, epoch-s|ms|us|ns, iso8601, time-of-day, sec-nsec
+///     date = ""                    # "YYYY-MM-DD": the date of time-of-day stamps
+///     order = "error"              # or drop-duplicates, drop-non-increasing
+///
 ///     [roles]
 ///     time = "Time [s]"                              # just the column name
 ///     heading = { column = "HDG", unit = "deg" }     # column and unit
@@ -46,6 +51,7 @@
 #include "dynpos/core/error.hpp"
 #include "dynpos/core/units.hpp"
 #include "dynpos/io/roles.hpp"
+#include "dynpos/io/time_stamp.hpp"
 
 namespace dynpos::io {
 
@@ -125,9 +131,14 @@ class ColumnMap {
   const CsvFormat& format() const noexcept { return format_; }
   CsvFormat& format() noexcept { return format_; }
 
-  /// Throws core::InputError if `time` is not mapped, a role has a unit or scale but no
-  /// column (e.g. --unit heading=rad without a column for heading), or a file has options but
-  /// no role is read from it (e.g. a misspelt --clock-offset FILE).
+  /// How the time stamps are read (form, date, order policy).
+  const TimeStampOptions& time() const noexcept { return time_; }
+  TimeStampOptions& time() noexcept { return time_; }
+
+  /// Throws core::InputError if neither `time` nor time.sec + time.nsec (exactly one form) is
+  /// mapped, a role has a unit or scale but no column (e.g. --unit heading=rad without a column
+  /// for heading), or a file has options but no role is read from it (e.g. a misspelt
+  /// --clock-offset FILE).
   void validate() const;
 
  private:
@@ -137,6 +148,7 @@ class ColumnMap {
   std::map<std::string, RoleColumn, std::less<>> roles_;
   std::map<std::string, LogFileOptions, std::less<>> files_;
   CsvFormat format_;
+  TimeStampOptions time_;
 };
 
 /// Parses a TOML column map; `source_name` (a path) is used in error messages.
@@ -166,6 +178,11 @@ void apply_unit_override(ColumnMap& map, std::string_view argument);
 /// line always survives a column given there too.
 void apply_overrides(ColumnMap& map, const std::vector<std::string>& column_arguments,
                      const std::vector<std::string>& unit_arguments);
+
+/// Applies --time-format, --date and --time-order (each ignored when empty) to map.time().
+/// Throws core::InputError::for_option for an unknown format or policy or an invalid date.
+void apply_time_overrides(ColumnMap& map, std::string_view format, std::string_view date,
+                          std::string_view order);
 
 /// The unit `spelling` for `role`, checked: throws core::InputError at `where` if the
 /// spelling is unknown (hint: the accepted spellings for the role's quantity) or measures

@@ -12,7 +12,9 @@
 /// - a blank cell, or one equal to a declared missing token, is missing (NaN), never zero;
 /// - text in a number cell, or a literal nan/inf that is not a declared missing token, is an
 ///   error naming file:line:column and the header;
-/// - time must be present in every row and strictly increasing;
+/// - time must be present in every row and strictly increasing (or the rows that are not are
+///   dropped, as TimeStampOptions::order says); its form (seconds, epoch, ISO 8601, time of
+///   day, seconds + nanoseconds) is detected from the first rows or forced (time_stamp.hpp);
 /// - every row has as many fields as the header.
 /// Every error is a core::InputError with file, line, column number and header name.
 
@@ -24,6 +26,7 @@
 
 #include "dynpos/core/log.hpp"
 #include "dynpos/io/column_map.hpp"
+#include "dynpos/io/time_stamp.hpp"
 
 namespace dynpos::io {
 
@@ -48,18 +51,30 @@ struct HeaderCell {
 };
 HeaderCell split_header_cell(std::string_view cell);
 
+/// A CSV log as read, with what its time stamps turned out to be.
+struct CsvLog {
+  core::Log log;
+  TimeStampInfo time;
+};
+
 /// Reads the mapped columns of a CSV log. Channels are named after their roles, in the order
 /// of their columns in the file, converted to SI (unit: declared > header bracket > role
-/// default) with the role's interpolation. Throws core::InputError (see the file comment).
+/// default) with the role's interpolation; time (or time.sec + time.nsec, with date for times
+/// of day) is read as map.time() says. The window applies to the log's time axis (seconds
+/// since the first row for absolute stamps). Throws core::InputError (see the file comment).
+CsvLog read_csv_log(const std::filesystem::path& path, const ColumnMap& map,
+                    const CsvReadOptions& options = {});
+
+/// read_csv_log(path, map, options).log.
 core::Log read_csv(const std::filesystem::path& path, const ColumnMap& map,
                    const CsvReadOptions& options = {});
 
 /// Reads every numeric column of a CSV log, such as the ones write_csv() produces: the first
-/// column is time, each other column becomes a channel named after its header name (without
-/// the unit). A known bracket unit is converted to SI; an unknown one is kept as logged with
-/// its text as the channel unit; no bracket gives an empty unit. A column whose first value is
-/// text is skipped as a whole; text later in a numeric column is an error. Channels whose name
-/// is a role get the role's interpolation, others are linear.
+/// column is time (its form detected), each other column becomes a channel named after its header
+/// name (without the unit). A known bracket unit is converted to SI; an unknown one is kept as
+/// logged with its text as the channel unit; no bracket gives an empty unit. A column whose first
+/// value is text is skipped as a whole; text later in a numeric column is an error. Channels whose
+/// name is a role get the role's interpolation, others are linear.
 core::Log read_csv_all(const std::filesystem::path& path, const CsvReadOptions& options = {},
                        const CsvFormat& format = {});
 

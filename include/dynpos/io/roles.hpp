@@ -7,12 +7,12 @@
 /// quantity its unit must measure, the unit assumed when none is declared, and how the channel
 /// is interpolated between samples.
 ///
-/// Fixed roles: time, north, east, down, lat, lon, height, heading, roll, pitch, p, q, r, u, v,
-/// w, wind_speed, wind_dir, setpoint.north, setpoint.east, setpoint.heading, input, output,
-/// trigger. Pattern roles: thrust.NAME, power.NAME, rpm.NAME, rudder.NAME, command.NAME (NAME:
-/// letters, digits, '_' or '-', e.g. "port", "tunnel"), gnssK.lat|lon|height|north|east|down
-/// and mruK.ax|ay|az (K: a positive integer without leading zeros, e.g. "gnss2.lat").
-/// The full table is in docs/log-format.md.
+/// Fixed roles: time (or time.sec + time.nsec, and date for times of day), north, east, down, lat,
+/// lon, height, heading, roll, pitch, p, q, r, u, v, w, wind_speed, wind_dir, setpoint.north,
+/// setpoint.east, setpoint.heading, input, output, trigger. Pattern roles: thrust.NAME, power.NAME,
+/// rpm.NAME, rudder.NAME, command.NAME (NAME: letters, digits, '_' or '-', e.g. "port", "tunnel"),
+/// gnssK.lat|lon|height|north|east|down and mruK.ax|ay|az (K: a positive integer without leading
+/// zeros, e.g. "gnss2.lat"). The full table is in docs/log-format.md.
 
 #include <optional>
 #include <string>
