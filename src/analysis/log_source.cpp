@@ -17,7 +17,8 @@ io::ColumnMap LogSource::base_map() const {
   io::apply_overrides(map, columns, units);
   for (const std::string& offset : clock_offsets) io::apply_clock_offset_override(map, offset);
   io::apply_time_overrides(map, time_format, date, time_order);
-  if (map.find("time") == nullptr && map.find("time.sec") == nullptr) {
+  const io::RoleColumn* sec = map.find("time.sec");
+  if (map.find("time") == nullptr && (sec == nullptr || !sec->file.empty())) {
     map.set_column("time", "time");
   }
   return map;

@@ -286,10 +286,13 @@ StepThreshold step_threshold(std::span<const double> t, std::span<const double> 
   s.largest_change = largest_change(v.t, v.u, options.change_window_s);
   const double h_noise = options.band ? *options.band : options.noise_factor * s.noise_sigma;
   s.from_min_step = options.min_step > 0.0;
-  double threshold =
-      s.from_min_step ? std::max(options.min_step, 2.0 * h_noise)
+  const double threshold =
+      s.from_min_step ? options.min_step
                       : std::max(2.0 * h_noise, options.large_change_fraction * s.largest_change);
   double h = options.band ? *options.band : std::max(h_noise, 0.25 * threshold);
+  // The user's min_step overrides the noise: the band narrows to half of it, so a step of
+  // min_step leaves the band of its old level (a dithered order, whose dither is bounded).
+  if (s.from_min_step && !options.band) h = std::min(h, 0.5 * threshold);
   // A noise-free input: a band of round-off size only (and > 0 for an input of zeros).
   const auto [min_it, max_it] = std::minmax_element(v.u.begin(), v.u.end());
   h = std::max({h, 1e-9 * std::max({*max_it - *min_it, std::abs(*min_it), std::abs(*max_it)}),

@@ -371,13 +371,18 @@ void ColumnMap::set_clock_offset(std::string_view file, double offset_s, InputLo
 ColumnMap ColumnMap::for_file(std::string_view file) const {
   ColumnMap out;
   out.format_ = format_;
+  // The date and the order rule hold for every file; a forced form is the main log's, and
+  // each further file's form is detected from its own cells.
+  out.time_ = time_;
+  if (!file.empty()) out.time_.format = TimeFormat::kAuto;
   for (const auto& [role, e] : roles_) {
     if (e.file != file || (role == "time" && !file.empty())) continue;
     RoleColumn copy = e;
     copy.file.clear();
     out.roles_.emplace(role, std::move(copy));
   }
-  if (!file.empty()) {
+  const bool two_column = out.find("time.sec") != nullptr || out.find("time.nsec") != nullptr;
+  if (!file.empty() && !two_column) {
     const LogFileOptions options = file_options(file);
     RoleColumn time;
     time.column = options.time_column;
@@ -426,16 +431,20 @@ void ColumnMap::validate() const {
                                    file));
     }
   }
-  const bool two_column = find("time.sec") != nullptr || find("time.nsec") != nullptr;
-  if (find("time") == nullptr && !two_column) {
+  // Each file has one time axis: the main log its `time` column or time.sec with time.nsec;
+  // a further file its time column (set_time_column) or time.sec with time.nsec of its own.
+  const RoleColumn* sec = find("time.sec");
+  const RoleColumn* nsec = find("time.nsec");
+  if ((sec == nullptr) != (nsec == nullptr) || (sec != nullptr && sec->file != nsec->file)) {
+    throw InputError({}, "time.sec and time.nsec go together",
+                     "map both, from the same file: --col time.sec=COLUMN --col time.nsec=COLUMN");
+  }
+  const bool main_two_column = sec != nullptr && sec->file.empty();
+  if (find("time") == nullptr && !main_two_column) {
     throw InputError({}, "the column map has no 'time' column",
                      "map it with --col time=COLUMN or time = \"COLUMN\" in [roles]");
   }
-  if (two_column && (find("time.sec") == nullptr || find("time.nsec") == nullptr)) {
-    throw InputError({}, "time.sec and time.nsec go together",
-                     "map both: --col time.sec=COLUMN --col time.nsec=COLUMN");
-  }
-  if (two_column && find("time") != nullptr) {
+  if (main_two_column && find("time") != nullptr) {
     throw InputError({}, "both 'time' and time.sec/time.nsec are mapped",
                      "map either one time column or the two-column form");
   }

@@ -2,13 +2,16 @@
 // clean log.csv they were written from, within the resolution of the device formats.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
 #include <string>
 
 #include "../io/io_test_util.hpp"
+#include "dynpos/analysis/leverarm_mru.hpp"
 #include "dynpos/analysis/station_keeping.hpp"
+#include "dynpos/analysis/step.hpp"
 #include "dynpos/scenario/campaign.hpp"
 #include "dynpos/scenario/runner.hpp"
 #include "dynpos/scenario/scenario_spec.hpp"
@@ -29,6 +32,19 @@ void write_pure_dp(const fs::path& dir) {
   scenario::ScenarioSpec spec = scenario::load_scenario(source("data/scenarios/pure-dp.toml"));
   spec.set_duration(300.0);
   scenario::write_scenario_run(scenario::run_scenario(spec, vessel, 21), dir);
+}
+
+// A built-in scenario, shortened to `duration_s` (0: as written), with device files at the
+// rates of `files`, run with seed 3 into `dir`.
+void write_with_devices(const std::string& name, double duration_s,
+                        const scenario::DeviceFilesSpec& files, const fs::path& dir) {
+  const scenario::VesselConfig vessel =
+      scenario::load_vessel_config(source("data/vessels/gunnerus.toml"));
+  scenario::ScenarioSpec spec =
+      scenario::load_scenario(source("data/scenarios/" + name + ".toml"));
+  if (duration_s > 0.0) spec.set_duration(duration_s);
+  spec.device_files = files;
+  scenario::write_scenario_run(scenario::run_scenario(spec, vessel, 3), dir);
 }
 
 StationKeepingReport station_keeping(LogSource source) {
@@ -71,6 +87,83 @@ TEST(DeviceFiles, StationKeepingFromTheNmeaCaptureMatchesTheCleanLog) {
   EXPECT_GE(b.input.files[0].skipped.total(), 2u);  // first and last line cut mid-sentence
   ASSERT_TRUE(b.input.origin);
   EXPECT_EQ(*b.input.origin, "2014-08-27T10:00:00.000Z");
+}
+
+TEST(DeviceFiles, StepsFromTheThrusterAndOrderFilesMatchTheCleanLog) {
+  // The first 900 s of the forward surge steps: port rpm orders 0 → 9 → 18 → 27 rpm. The
+  // feedback file (epoch ms, 2 Hz) is the main log; the dithered orders (seconds + nanoseconds,
+  // 2 Hz) come from their own file, aligned by the absolute stamps of the two.
+  TempDir dir;
+  scenario::DeviceFilesSpec files;
+  files.order_wiggle_rpm = 2.0;
+  write_with_devices("surge-steps-forward", 900.0, files, dir.path());
+  StepRequest clean;
+  clean.source.log = dir.path() / "log.csv";
+  clean.source.columns = {"input=command.rpm.port", "output=rpm.port"};
+  clean.min_step = 0.1;  // [rps]: 6 rpm, below the 9 rpm steps, 7 σ of the dither
+  StepRequest devices = clean;
+  const std::string orders = (dir.path() / "devices" / "orders.csv").string();
+  devices.source.log = dir.path() / "devices" / "thrusters.csv";
+  devices.source.columns = {"time=EpochMs", "output=port_rpm", "input=order_rpm_port@" + orders,
+                            "time.sec=sec@" + orders, "time.nsec=nsec@" + orders};
+  const StepReport a = run_step(clean);
+  const StepReport b = run_step(devices);
+  ASSERT_EQ(a.steps.size(), 3u);
+  ASSERT_EQ(b.steps.size(), a.steps.size());
+  // Levels are medians over 60 s of 2 Hz orders (n = 120) with a uniform dither of ±a: each
+  // within a/√n·3 (3σ of the median of a uniform), Δu within √2 of that.
+  const double a_rps = 2.0 / 60.0;
+  const double du_tol = 3.0 * std::sqrt(2.0) * a_rps / std::sqrt(120.0);
+  for (std::size_t k = 0; k < a.steps.size(); ++k) {
+    SCOPED_TRACE(k);
+    const StepFit& x = a.steps[k];
+    const StepFit& y = b.steps[k];
+    ASSERT_EQ(x.status, core::Status::kOk);
+    ASSERT_EQ(y.status, core::Status::kOk);
+    // Both order logs sample the command at the same instants (2 Hz is a divisor of the log
+    // rate): the same step time, to round-off.
+    EXPECT_NEAR(y.step.t_step, x.step.t_step, 1e-6);
+    EXPECT_NEAR(*y.gain, *x.gain, du_tol / std::abs(*x.step.delta_u()) * 1.01);
+    // The feedback is sampled at 2 Hz instead of 10 Hz: T and δ within half its sample
+    // interval.
+    EXPECT_NEAR(*y.time_constant_s, *x.time_constant_s, 0.25);
+    EXPECT_NEAR(*y.dead_time_s, *x.dead_time_s, 0.25);
+  }
+  ASSERT_EQ(b.input.files.size(), 2u);
+  EXPECT_EQ(b.input.files[0].time_format, "epoch-ms");
+  EXPECT_EQ(b.input.files[1].time_format, "sec-nsec");
+  EXPECT_EQ(b.input.files[1].clock_offset_s, 0.0);  // the two files start at the same second
+  ASSERT_TRUE(b.input.origin);
+  EXPECT_EQ(b.input.origin->substr(0, 19), "2014-08-27T10:00:00");
+}
+
+TEST(DeviceFiles, MruArmsFromTheMruFileMatchTheCleanLog) {
+  // The turning circle (the manoeuvre that determines the MRU arms); MRU 1 from its own file
+  // with ISO date-time stamps, the motion from truth.csv (relative seconds, the same t = 0).
+  TempDir dir;
+  write_with_devices("turning-circle", 0.0, {}, dir.path());
+  LeverarmMruRequest clean;
+  clean.source.log = dir.path() / "truth.csv";
+  clean.mru_log = {"mru1=" + (dir.path() / "log.csv").string()};
+  LeverarmMruRequest devices;
+  const std::string mru = (dir.path() / "devices" / "mru.csv").string();
+  devices.source.log = dir.path() / "truth.csv";
+  devices.source.columns = {"time=Time@" + mru, "mru1.ax=AccX@" + mru, "mru1.ay=AccY@" + mru,
+                            "mru1.az=AccZ@" + mru};
+  const LeverarmMruReport a = run_leverarm_mru(clean);
+  const LeverarmMruReport b = run_leverarm_mru(devices);
+  ASSERT_EQ(b.result.arms.size(), 1u);
+  const auto arm_a = std::find_if(a.result.arms.begin(), a.result.arms.end(),
+                                  [](const calib::ArmEstimate& e) { return e.name == "mru1"; });
+  ASSERT_NE(arm_a, a.result.arms.end());
+  // The device file carries every digit of the samples and millisecond stamps of a 100 Hz
+  // clock: the two time axes differ by round-off only, so the arms agree to 1 µm.
+  for (int axis = 0; axis < 3; ++axis) {
+    EXPECT_NEAR(b.result.arms[0].l_b_m[axis], arm_a->l_b_m[axis], 1e-6) << axis;
+  }
+  EXPECT_GT(std::abs(arm_a->l_b_m.z()), 1.0);  // a real arm, not a zero that matches a zero
+  ASSERT_EQ(b.input.files.size(), 2u);
+  EXPECT_EQ(b.input.files[1].time_format, "iso8601");
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <random>
 #include <vector>
 
 #include "dynpos/core/error.hpp"
@@ -100,6 +101,40 @@ TEST(StepDetector, IgnoresSpikesAndNoiseBelowTheThreshold) {
   const StepDetection none = detect_steps(t, u, coarse);
   EXPECT_TRUE(none.steps.empty());
   EXPECT_THAT(none.message, ::testing::HasSubstr("no step found"));
+}
+
+TEST(StepDetector, MinStepOverridesTheNoiseOfADitheredOrder) {
+  // An rpm order dithered by ±2 rpm (uniform, every 0.5 s sample: σ = 1.15 rpm), programme
+  // 0 → 9 → 18 → 150 rpm. The adapted threshold, 10 σ̂ = 11.5 rpm, keeps the dither out and
+  // with it the two 9 rpm steps; --min-step 6 finds all three and no dither; --min-step 10
+  // only the large one (nothing below it is reported).
+  const std::vector<double> t = time_axis(0.0, 0.5, 1601);
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> dither(-2.0, 2.0);
+  std::vector<double> u(t.size());
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    const double level = t[i] < 200.0 ? 0.0 : t[i] < 400.0 ? 9.0 : t[i] < 600.0 ? 18.0 : 150.0;
+    u[i] = level + dither(rng);
+  }
+  EXPECT_EQ(detect_steps(t, u).steps.size(), 1u);
+  StepDetectorOptions fine;
+  fine.min_step = 6.0;
+  const StepDetection found = detect_steps(t, u, fine);
+  EXPECT_EQ(found.threshold, 6.0);
+  ASSERT_EQ(found.steps.size(), 3u);
+  const double at[] = {200.0, 400.0, 600.0};
+  for (std::size_t k = 0; k < 3; ++k) {
+    // The first sample past the band: the step time within one 0.5 s sample.
+    EXPECT_NEAR(found.steps[k].t_step, at[k], 0.5) << k;
+  }
+  // Levels are medians of ≥ 100 samples of the dither: within 0.5 rpm.
+  EXPECT_NEAR(*found.steps[0].delta_u(), 9.0, 0.5);
+  EXPECT_NEAR(*found.steps[1].delta_u(), 9.0, 0.5);
+  StepDetectorOptions coarse;
+  coarse.min_step = 10.0;
+  const StepDetection large = detect_steps(t, u, coarse);
+  ASSERT_EQ(large.steps.size(), 1u);
+  EXPECT_NEAR(large.steps[0].t_step, 600.0, 0.5);
 }
 
 TEST(StepDetector, ExactOnANoiseFreeCommand) {

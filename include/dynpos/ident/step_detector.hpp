@@ -14,8 +14,9 @@
 /// large differences at steps and to ramps; the second sees the wiggles of a held order that
 /// changes in only a few samples (MAD = 0 for an order that mostly holds its value exactly).
 ///
-/// Threshold (the smallest level change that is a step): with `min_step` given, max(min_step,
-/// 2h); otherwise max(2·noise_factor·σ̂, large_change_fraction·S), S the largest change of the
+/// Threshold (the smallest level change that is a step): with `min_step` given, min_step, and
+/// the band narrowed to at most min_step/2 (the user knows the steps of the programme: a 9 rpm
+/// step on an order dithered by ±2 rpm, 10 σ̂ of the adapted threshold, is found); otherwise max(2·noise_factor·σ̂, large_change_fraction·S), S the largest change of the
 /// input within any `change_window_s` (after a 3-sample running median, so one bad sample does
 /// not set it). The large changes of a log set the scale of its steps: a 5 % fraction keeps
 /// sub-degree wiggles and re-settling of a 30–70° azimuth programme, and a few rpm of dither on

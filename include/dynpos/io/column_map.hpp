@@ -124,8 +124,10 @@ class ColumnMap {
   /// The time column and clock offset of `file`; the defaults when none were given.
   LogFileOptions file_options(std::string_view file) const;
   /// The map of one file's roles, as read_csv() takes it: the roles whose file is `file` (no
-  /// longer marked with it), `time` mapped to the file's time column, the same CSV format.
-  /// for_file("") is the main log's map.
+  /// longer marked with it), `time` mapped to the file's time column (unless its time.sec and
+  /// time.nsec are mapped), the same CSV format, date and time order; the time format is the
+  /// map's for the main log, detected (kAuto) for any other file. for_file("") is the main log's
+  /// map.
   ColumnMap for_file(std::string_view file) const;
 
   const CsvFormat& format() const noexcept { return format_; }
