@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "dynpos/analysis/log_source.hpp"
+#include "log_files.hpp"
 #include "dynpos/core/log_align.hpp"
 #include "dynpos/io/log_file.hpp"
 
@@ -42,15 +43,17 @@ void check_overlap(const core::Log& main, io::FileLog& part, double offset_s) {
 
 // The offset [s] that puts `part`'s times on the main log's clock: the difference of their
 // absolute origins when both files have absolute time stamps, plus the user's clock offset.
-double clock_offset_s(const io::FileLog& main, io::FileLog& part, double user_offset_s) {
-  if (main.origin_ns && part.origin_ns) {
+double clock_offset_s(std::optional<std::int64_t> main_origin_ns, io::FileLog& part,
+                      double user_offset_s) {
+  if (main_origin_ns && part.origin_ns) {
     part.report.notes.push_back("aligned on the main log by its absolute time stamps");
-    return static_cast<double>(*part.origin_ns - *main.origin_ns) * 1e-9 + user_offset_s;
+    return static_cast<double>(*part.origin_ns - *main_origin_ns) * 1e-9 + user_offset_s;
   }
-  if (main.origin_ns.has_value() != part.origin_ns.has_value()) {
-    part.report.notes.push_back(
+  if (main_origin_ns.has_value() != part.origin_ns.has_value()) {
+    part.report.notes.push_back(fmt::format(
         "one of this file and the main log has absolute time stamps, the other relative "
-        "seconds: aligned by the clock offset only");
+        "seconds: aligned by the clock offset only{}",
+        part.origin ? fmt::format(" (this file's t = 0 s is {})", *part.origin) : ""));
   }
   return user_offset_s;
 }
@@ -58,18 +61,24 @@ double clock_offset_s(const io::FileLog& main, io::FileLog& part, double user_of
 }  // namespace
 
 LoadedLog read_log_files(const std::filesystem::path& main_log, const io::ColumnMap& map,
-                         const core::ResampleOptions& options) {
+                         const core::ResampleOptions& options, const io::LogFileRead& how) {
   map.validate();
-  io::FileLog main = io::read_log_file(main_log, map.for_file(""));
+  io::FileLog main = io::read_log_file(main_log, map.for_file(""), how);
   LoadedLog out{std::move(main.log), {}};
   const std::string main_path = main.report.path;
   out.input = describe_input(out.log, main_path, std::move(main.report));
   out.input.origin = main.origin;
   out.input.origin_zone = main.origin_zone;
+  add_log_files(out, main.origin_ns, map, options, how.strict);
+  return out;
+}
+
+void add_log_files(LoadedLog& out, std::optional<std::int64_t> main_origin_ns,
+                   const io::ColumnMap& map, const core::ResampleOptions& options, bool strict) {
   for (const std::string& file : map.other_files()) {
     const io::LogFileOptions file_options = map.file_options(file);
-    io::FileLog part = io::read_log_file(file, map.for_file(file));
-    const double offset_s = clock_offset_s(main, part, file_options.clock_offset_s);
+    io::FileLog part = io::read_log_file(file, map.for_file(file), {.strict = strict});
+    const double offset_s = clock_offset_s(main_origin_ns, part, file_options.clock_offset_s);
     part.report.clock_offset_s = offset_s;
     check_overlap(out.log, part, offset_s);
     const std::size_t first_channel = out.log.channels().size();
@@ -89,7 +98,6 @@ LoadedLog read_log_files(const std::filesystem::path& main_log, const io::Column
     out.input.files.push_back(std::move(part_input.files.front()));
     for (io::RoleOrigin& role : part_input.roles) out.input.roles.push_back(std::move(role));
   }
-  return out;
 }
 
 }  // namespace dynpos::analysis

@@ -71,7 +71,8 @@ io::InputReport describe_input(const core::Log& log, const std::string& file,
 
 LoadedLog LogSource::load(const RoleFilter& wanted) const {
   if (reads_nmea(*this)) return load_nmea(*this, wanted);
-  return read_log_files(log, column_map(wanted), resample_options());
+  return read_log_files(log, column_map(wanted), resample_options(),
+                        {.format = io::LogFileRead::Format::kCsv, .strict = strict});
 }
 
 core::ResampleOptions LogSource::resample_options() const {

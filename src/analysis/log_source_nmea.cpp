@@ -2,6 +2,7 @@
 
 #include "dynpos/core/error.hpp"
 #include "dynpos/io/nmea_log.hpp"
+#include "log_files.hpp"
 
 namespace dynpos::analysis {
 
@@ -17,23 +18,42 @@ bool reads_nmea(const LogSource& source) {
 }
 
 LoadedLog load_nmea(const LogSource& source, const RoleFilter& wanted) {
-  if (!source.map_file.empty() || !source.columns.empty() || !source.units.empty()) {
-    throw core::InputError::for_option(
-        source.map_file.empty() ? (source.columns.empty() ? "unit" : "col") : "map",
-        "column maps apply to CSV logs, but " + source.log.string() + " is an NMEA capture",
-        "an NMEA capture's roles come from its sentences (docs/log-format.md, \"NMEA "
-        "captures\"); drop --map, --col and --unit, or give --format csv");
+  // A column map may only add roles of further files: the capture's roles are its sentences'.
+  const bool more_files =
+      !source.map_file.empty() || !source.columns.empty() || !source.units.empty();
+  io::ColumnMap map;
+  if (more_files) {
+    map = source.base_map();
+    for (const auto& [role, entry] : map.roles()) {
+      if (role == "time" || !entry.file.empty()) continue;
+      throw core::InputError::for_option(
+          source.map_file.empty() ? (source.columns.empty() ? "unit" : "col") : "map",
+          "role '" + role + "' is mapped to a column of " + source.log.string() +
+              ", an NMEA capture",
+          "an NMEA capture's roles come from its sentences (docs/log-format.md, \"NMEA "
+          "captures\"); map roles of other files only (--col ROLE=COLUMN@FILE), or give "
+          "--format csv");
+    }
+    map.validate();
   }
   io::NmeaLogOptions options;
   options.strict = source.strict;
-  options.wanted = wanted;
+  // A role another file gives is not also taken from the capture.
+  options.wanted = [&](const std::string& channel) {
+    const io::RoleColumn* other = map.find(channel);
+    return wanted(channel) && (other == nullptr || other->file.empty());
+  };
   io::NmeaLog read = io::read_nmea_log(source.log, options);
   const std::size_t sentences = read.report.records;
   io::InputReport input = describe_input(read.log, source.log.string(), std::move(read.report));
   input.files.front().records = sentences;  // sentences used, not rows of the time axis
   input.origin = read.origin;
   if (read.origin) input.origin_zone = "UTC";
-  return {std::move(read.log), std::move(input)};
+  LoadedLog out{std::move(read.log), std::move(input)};
+  if (more_files) {
+    add_log_files(out, read.origin_ns, map, source.resample_options(), source.strict);
+  }
+  return out;
 }
 
 }  // namespace dynpos::analysis

@@ -10,8 +10,9 @@ namespace dynpos::analysis {
 bool reads_nmea(const LogSource& source);
 
 /// The capture read with io::read_nmea_log (strict as the source says), its channels filtered
-/// by `wanted`, and its InputReport. Throws core::InputError if a column map, --col or --unit
-/// is given: a capture's roles come from its sentences.
+/// by `wanted`, and its InputReport; then the roles the column map assigns to further files
+/// (add_log_files). Throws core::InputError (option map, col or unit) if the map assigns a role
+/// to the capture itself: a capture's roles come from its sentences.
 LoadedLog load_nmea(const LogSource& source, const RoleFilter& wanted);
 
 }  // namespace dynpos::analysis

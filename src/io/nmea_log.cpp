@@ -384,11 +384,11 @@ NmeaLog CaptureReader::build(const std::array<int, kRoleCount>& chosen) {
   report_.path = file_;
   if (clock_ == Clock::kLogger) {
     report_.time_format = stamp_form_ + " (logger)";
-    if (!times.empty()) out.origin = detail::iso8601_utc(times.front());
+    if (!times.empty()) out.origin_ns = times.front();
   } else {
     report_.time_format = "nmea utc";
     if (!times.empty() && day0_) {
-      out.origin = detail::iso8601_utc(days_since_epoch(*day0_) * kDay_ns + times.front());
+      out.origin_ns = days_since_epoch(*day0_) * kDay_ns + times.front();
     } else if (!times.empty()) {
       const std::int64_t s = times.front() % kDay_ns / 1'000'000'000;
       report_.notes.push_back(
@@ -397,6 +397,7 @@ NmeaLog CaptureReader::build(const std::array<int, kRoleCount>& chosen) {
                       s / 3600, s / 60 % 60, s % 60));
     }
   }
+  if (out.origin_ns) out.origin = detail::iso8601_utc(*out.origin_ns);
   out.report = std::move(report_);
   return out;
 }

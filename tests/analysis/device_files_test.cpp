@@ -1,5 +1,6 @@
 // The virtual trial's device files read back through the analyses: the same figures as the
 // clean log.csv they were written from, within the resolution of the device formats.
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -164,6 +165,69 @@ TEST(DeviceFiles, MruArmsFromTheMruFileMatchTheCleanLog) {
   EXPECT_GT(std::abs(arm_a->l_b_m.z()), 1.0);  // a real arm, not a zero that matches a zero
   ASSERT_EQ(b.input.files.size(), 2u);
   EXPECT_EQ(b.input.files[1].time_format, "iso8601");
+}
+
+TEST(DeviceFiles, ThrustFromTheFeedbackFileBesideTheNmeaCapture) {
+  // The capture is the main log (positions, heading); the thrust feedback (epoch ms, 2 Hz) is
+  // a further file, aligned by the absolute stamps of the two.
+  TempDir dir;
+  write_pure_dp(dir.path());
+  LogSource clean;
+  clean.log = dir.path() / "log.csv";
+  clean.columns = {"lat=gnss1.lat", "lon=gnss1.lon"};
+  LogSource capture;
+  const std::string thrusters = (dir.path() / "devices" / "thrusters.csv").string();
+  capture.log = dir.path() / "devices" / "gnss1.nmea";
+  capture.columns = {"time=EpochMs@" + thrusters, "thrust.port=port_thrust@" + thrusters,
+                     "thrust.stb=stb_thrust@" + thrusters,
+                     "thrust.tunnel=tunnel_thrust@" + thrusters};
+  const StationKeepingReport a = station_keeping(clean);
+  const StationKeepingReport b = station_keeping(capture);
+  ASSERT_EQ(b.windows.size(), 1u);
+  const ident::StationKeepingResult& wa = a.windows[0];
+  const ident::StationKeepingResult& wb = b.windows[0];
+  ASSERT_TRUE(wa.total_mean_abs_thrust_N && wb.total_mean_abs_thrust_N);
+  EXPECT_GT(*wa.total_mean_abs_thrust_N, 1e3);
+  // The feedback file holds every 5th sample of log.csv's 10 Hz thrust, put on the capture's
+  // 1 Hz axis (linear between its 2 Hz samples): the mean of 230 of them against the mean of
+  // 2300. DP thrust moves slowly (its spread over the window is ~1 kN): within 2 % (120 N).
+  EXPECT_NEAR(*wb.total_mean_abs_thrust_N, *wa.total_mean_abs_thrust_N,
+              0.02 * *wa.total_mean_abs_thrust_N);
+  ASSERT_EQ(b.input.files.size(), 2u);
+  EXPECT_EQ(b.input.files[0].format, "nmea");
+  EXPECT_EQ(b.input.files[1].time_format, "epoch-ms");
+  // Both clocks are UTC and start at 10:00:00: no offset, the alignment is by the stamps.
+  EXPECT_EQ(b.input.files[1].clock_offset_s, 0.0);
+  EXPECT_THAT(b.input.files[1].notes, ::testing::Contains("aligned on the main log by its "
+                                                          "absolute time stamps"));
+}
+
+TEST(DeviceFiles, PositionsFromACaptureBesideTheCsvLog) {
+  // log.csv is the main log; lat and lon come from the antenna's capture (a further file).
+  TempDir dir;
+  write_pure_dp(dir.path());
+  LogSource source;
+  const std::string capture = (dir.path() / "devices" / "gnss1.nmea").string();
+  source.log = dir.path() / "log.csv";
+  source.columns = {"lat=lat@" + capture, "lon=lon@" + capture};
+  // log.csv counts seconds from 10:00:00, the capture has UTC stamps: the clocks are aligned by
+  // the offset only. The capture's t = 0 is its first GGA, 10:00:01 (the 10:00:00 one is the
+  // line cut at the start of the capture), so the offset is 1 s; the report says so.
+  source.clock_offsets = {capture + "=1"};
+  const core::Log log = source.read([](const std::string& role) {
+    return role == "gnss1.lat" || role == "lat" || role == "lon";
+  });
+  const std::vector<double>& lat_clean = log.values("gnss1.lat");
+  const std::vector<double>& lat = log.values("lat");
+  // At the fix times (where log.csv has its 1 Hz fixes) the aligned capture gives the fix:
+  // GGA's 7 decimals of arc minutes are 1.7e-9 of a minute = 2.9e-11 rad; 1e-10 rad = 0.6 mm.
+  std::size_t fixes = 0;
+  for (std::size_t i = 0; i < log.size(); ++i) {
+    if (core::is_missing(lat_clean[i]) || core::is_missing(lat[i])) continue;
+    EXPECT_NEAR(lat[i], lat_clean[i], 1e-10) << "t = " << log.time()[i];
+    ++fixes;
+  }
+  EXPECT_GE(fixes, 298u);  // 300 s of 1 Hz fixes; the capture's cut first and last lines
 }
 
 }  // namespace

@@ -18,5 +18,5 @@ dynpos_cli_test(nmea_capture_bad_format
   COMMAND bash ${EXPECT_EXIT} 2 "\\(--format\\): unknown log format 'xml'"
           ${DYNPOS_EXE} identify station-keeping ${NMEA_DATA}/station.nmea --format xml)
 dynpos_cli_test(nmea_capture_col_refused
-  COMMAND bash ${EXPECT_EXIT} 2 "\\(--col\\): column maps apply to CSV logs"
+  COMMAND bash ${EXPECT_EXIT} 2 "\\(--col\\): role 'heading' is mapped to a column of .*station.nmea, an NMEA capture"
           ${DYNPOS_EXE} identify station-keeping ${NMEA_DATA}/station.nmea --col heading=HDT)

@@ -16,6 +16,7 @@
 #include "dynpos/ident/station_keeping.hpp"
 #include "dynpos/io/column_map.hpp"
 #include "dynpos/io/input_report.hpp"
+#include "dynpos/io/log_file.hpp"
 
 namespace dynpos::analysis {
 
@@ -72,9 +73,12 @@ struct LogSource {
 /// report lists every file (the main log first) and each role's file and rate on its own clock.
 /// Throws core::InputError naming the file for a missing file or column, and for a file whose
 /// times do not overlap the main log's; a partial overlap, or a role with no sample on the
-/// main log's axis, is a note in the file's report.
+/// main log's axis, is a note in the file's report. Any of the files may be an NMEA 0183
+/// capture (io::read_log_file: the main log as `how` says, the others detected by content);
+/// how.strict makes any unusable line of a capture an error.
 LoadedLog read_log_files(const std::filesystem::path& main_log, const io::ColumnMap& map,
-                         const core::ResampleOptions& options = {});
+                         const core::ResampleOptions& options = {},
+                         const io::LogFileRead& how = {});
 
 /// The InputReport of a log read from one file: `file_report` completed with the path and the
 /// record count, and every channel as a role from that file with its median rate.

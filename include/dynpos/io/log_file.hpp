@@ -28,9 +28,20 @@ struct FileLog {
   std::string origin_zone;
 };
 
+/// How read_log_file() takes a file.
+struct LogFileRead {
+  enum class Format { kAuto, kCsv, kNmea };
+  Format format = Format::kAuto;  ///< kAuto: an NMEA capture when io::looks_like_nmea, else CSV
+  bool strict = false;            ///< an NMEA line that cannot be used is an error
+};
+
 /// Reads the roles of `map` (one file's map, e.g. ColumnMap::for_file) from `path`, with `time`
-/// its time axis. CSV, with its time stamps read as map.time() says (read_csv_log). Throws
-/// core::InputError naming the file, line and column.
-FileLog read_log_file(const std::filesystem::path& path, const ColumnMap& map);
+/// its time axis. A CSV file has its time stamps read as map.time() says (read_csv_log). An
+/// NMEA 0183 capture (`how`) is read by io::read_nmea_log, strict as `how` says: its
+/// time is that of its sentences (or logger stamps), a role's column names a channel of the
+/// capture (lat, lon, height, heading, roll, pitch, down, r; SI, so no unit or scale), and
+/// `time` is not read. Throws core::InputError naming the file, line and column.
+FileLog read_log_file(const std::filesystem::path& path, const ColumnMap& map,
+                      const LogFileRead& how = {});
 
 }  // namespace dynpos::io

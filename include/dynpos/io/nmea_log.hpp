@@ -15,6 +15,7 @@
 ///   error.
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -46,6 +47,7 @@ struct NmeaLog {
   /// notes on how the sentences were read; `path` is the file as given.
   FileReport report;
   std::optional<std::string> origin;  ///< UTC of t = 0 s, ISO 8601; absent without a date
+  std::optional<std::int64_t> origin_ns;  ///< the same instant [ns since 1970-01-01 UTC]
 };
 
 /// Reads an NMEA capture. Throws core::InputError if the file cannot be read, holds no
