@@ -2,7 +2,7 @@
 # Installs the Debian packages dynpos needs to build, test and benchmark (run as root).
 set -euo pipefail
 packages=(
-  g++ cmake ninja-build clang-format jq
+  g++ cmake ninja-build ccache clang-format jq
   libeigen3-dev libfmt-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libgeographiclib-dev
   libgtest-dev libgmock-dev libbenchmark-dev
 )
