@@ -36,23 +36,9 @@ void add_identify_step(CLI::App& identify) {
   analysis::StepRequest& r = opt->request;
   CLI::App* step = identify.add_subcommand(
       "step", "Step-test identification: FOPDT gain, time constant and dead time per step");
-  step->add_option("log", r.source.log, "CSV log")->required()->check(CLI::ExistingFile);
-  step->add_option("--map", r.source.map_file, "Column map (TOML): roles → columns, units, scales")
-      ->check(CLI::ExistingFile);
-  step->add_option("--col", r.source.columns,
-                   "ROLE=COLUMN or ROLE=COLUMN@FILE (repeatable): time, input (the command), "
-                   "output (the response), trigger (e.g. power feedback, to time steps without a "
-                   "command)");
-  step->add_option("--unit", r.source.units, "ROLE=UNIT (repeatable), e.g. output=rpm");
-  step->add_option(
-      "--clock-offset", r.source.clock_offsets,
-      "FILE=SECONDS (repeatable): added to the times of FILE (a --col ROLE=COLUMN@FILE) "
-      "to put them on LOG's clock");
-  step->add_option("--max-gap", r.source.max_gap_s,
-                   "Largest gap [s] bridged when a role of another file is put on LOG's time axis "
-                   "(default: 2.5 x that role's median spacing)")
-      ->check(CLI::NonNegativeNumber);
-  add_time_options(*step, r.source);
+  add_log_options(*step, r.source,
+                  "time, input (the command), output (the response), trigger (e.g. power "
+                  "feedback, to time steps without a command)");
   step->add_option("--method", r.method,
                    "lsq: least squares with the dead time (default); smith: Smith's two-point "
                    "method (3.8)-(3.9); smith2: Smith's second-order 20/60 %; rk: "

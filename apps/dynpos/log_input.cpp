@@ -2,6 +2,9 @@
 
 namespace dynpos::cli {
 
+namespace {
+
+// --time-format, --date and --time-order, filling `source`.
 void add_time_options(CLI::App& sub, analysis::LogSource& source) {
   sub.add_option("--time-format", source.time_format,
                  "Time stamps: auto (default), seconds, epoch-s|ms|us|ns, iso8601, time-of-day, "
@@ -12,27 +15,34 @@ void add_time_options(CLI::App& sub, analysis::LogSource& source) {
                  "drop-non-increasing");
 }
 
-void LogInput::add_options(CLI::App& sub, const std::string& roles_help) {
-  sub.add_option("log", log, "Log: CSV, or an NMEA 0183 capture (detected by content)")
+}  // namespace
+
+void add_log_options(CLI::App& sub, analysis::LogSource& source, const std::string& roles_help) {
+  sub.add_option("log", source.log, "Log: CSV, or an NMEA 0183 capture (detected by content)")
       ->required()
       ->check(CLI::ExistingFile);
-  sub.add_option("--map", map_file, "Column map (TOML): roles → columns, units, scales")
+  sub.add_option("--map", source.map_file, "Column map (TOML): roles → columns, units, scales")
       ->check(CLI::ExistingFile);
-  sub.add_option("--col", columns,
+  sub.add_option("--col", source.columns,
                  "ROLE=COLUMN or ROLE=COLUMN@FILE for a column of another file (repeatable; "
                  "time=COLUMN@FILE names FILE's time column). Roles: " +
                      roles_help);
-  sub.add_option("--unit", units, "ROLE=UNIT (repeatable), e.g. thrust.port=kN");
-  sub.add_option("--clock-offset", clock_offsets,
+  sub.add_option("--unit", source.units, "ROLE=UNIT (repeatable), e.g. thrust.port=kN");
+  sub.add_option("--clock-offset", source.clock_offsets,
                  "FILE=SECONDS (repeatable): added to FILE's times to put them on LOG's clock");
-  sub.add_option("--max-gap", max_gap_s,
+  sub.add_option("--max-gap", source.max_gap_s,
                  "Largest gap [s] bridged when a role of another file is put on LOG's time "
                  "axis (default: 2.5 x that role's median spacing)")
       ->check(CLI::NonNegativeNumber);
-  sub.add_option("--format", format, "Log format: auto (by content), csv or nmea")
+  sub.add_option("--format", source.format, "Log format: auto (by content), csv or nmea")
       ->default_str("auto");
-  sub.add_flag("--strict", strict, "An NMEA line that cannot be used is an error (file:line)");
-  add_time_options(sub, *this);
+  sub.add_flag("--strict", source.strict,
+               "An NMEA line that cannot be used is an error (file:line)");
+  add_time_options(sub, source);
+}
+
+void LogInput::add_options(CLI::App& sub, const std::string& roles_help) {
+  add_log_options(sub, *this, roles_help);
 }
 
 }  // namespace dynpos::cli

@@ -16,8 +16,10 @@ struct LogInput : analysis::LogSource {
   void add_options(CLI::App& sub, const std::string& roles_help);
 };
 
-/// Adds --time-format, --date and --time-order to `sub`, filling `source`.
-void add_time_options(CLI::App& sub, analysis::LogSource& source);
+/// Adds LOG (positional, required), --map, --col (roles_help lists the roles), --unit,
+/// --clock-offset, --max-gap, --format, --strict and the time-stamp options to `sub`, filling
+/// `source`.
+void add_log_options(CLI::App& sub, analysis::LogSource& source, const std::string& roles_help);
 
 using analysis::thruster_names;
 

@@ -7,9 +7,9 @@
 #include <fmt/format.h>
 
 #include "dynpos/analysis/log_source.hpp"
-#include "log_files.hpp"
 #include "dynpos/core/log_align.hpp"
 #include "dynpos/io/log_file.hpp"
+#include "log_files.hpp"
 
 namespace dynpos::analysis {
 namespace {

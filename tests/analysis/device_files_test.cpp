@@ -41,8 +41,7 @@ void write_with_devices(const std::string& name, double duration_s,
                         const scenario::DeviceFilesSpec& files, const fs::path& dir) {
   const scenario::VesselConfig vessel =
       scenario::load_vessel_config(source("data/vessels/gunnerus.toml"));
-  scenario::ScenarioSpec spec =
-      scenario::load_scenario(source("data/scenarios/" + name + ".toml"));
+  scenario::ScenarioSpec spec = scenario::load_scenario(source("data/scenarios/" + name + ".toml"));
   if (duration_s > 0.0) spec.set_duration(duration_s);
   spec.device_files = files;
   scenario::write_scenario_run(scenario::run_scenario(spec, vessel, 3), dir);

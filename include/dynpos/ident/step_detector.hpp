@@ -16,12 +16,13 @@
 ///
 /// Threshold (the smallest level change that is a step): with `min_step` given, min_step, and
 /// the band narrowed to at most min_step/2 (the user knows the steps of the programme: a 9 rpm
-/// step on an order dithered by ±2 rpm, 10 σ̂ of the adapted threshold, is found); otherwise max(2·noise_factor·σ̂, large_change_fraction·S), S the largest change of the
-/// input within any `change_window_s` (after a 3-sample running median, so one bad sample does
-/// not set it). The large changes of a log set the scale of its steps: a 5 % fraction keeps
-/// sub-degree wiggles and re-settling of a 30–70° azimuth programme, and a few rpm of dither on
-/// a 150 rpm programme, out, and still finds 5 % lever steps. Band: h = max(noise_factor·σ̂,
-/// threshold/4), or `band` when given.
+/// step on an order dithered by ±2 rpm, 10 σ̂ of the adapted threshold, is found); otherwise
+/// max(2·noise_factor·σ̂, large_change_fraction·S), S the largest change of the input within any
+/// `change_window_s` (after a 3-sample running median, so one bad sample does not set it). The
+/// large changes of a log set the scale of its steps: a 5 % fraction keeps sub-degree wiggles and
+/// re-settling of a 30–70° azimuth programme, and a few rpm of dither on a 150 rpm programme, out,
+/// and still finds 5 % lever steps. Band: h = max(noise_factor·σ̂, threshold/4), or `band` when
+/// given.
 ///
 /// Levels: neighbouring plateaus are one level (a spike, a gap, wiggles or a slow drift split
 /// them) unless the input changes by at least the threshold between the end of the one and the

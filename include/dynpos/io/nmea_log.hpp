@@ -46,7 +46,7 @@ struct NmeaLog {
   /// format "nmea", time_format, records = sentences used, skipped and accepted lines by kind,
   /// notes on how the sentences were read; `path` is the file as given.
   FileReport report;
-  std::optional<std::string> origin;  ///< UTC of t = 0 s, ISO 8601; absent without a date
+  std::optional<std::string> origin;      ///< UTC of t = 0 s, ISO 8601; absent without a date
   std::optional<std::int64_t> origin_ns;  ///< the same instant [ns since 1970-01-01 UTC]
 };
 
