@@ -59,8 +59,8 @@ endfunction()
 # dynpos_add_test(NAME SOURCE LIBS...): one GoogleTest executable registered with CTest.
 function(dynpos_add_test name source)
   add_executable(${name} ${source})
-  target_link_libraries(${name} PRIVATE ${ARGN} GTest::gtest GTest::gmock GTest::gtest_main dynpos_warnings)
-  target_compile_definitions(${name} PRIVATE DYNPOS_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  target_link_libraries(${name} PRIVATE ${ARGN} GTest::gtest GTest::gmock GTest::gtest_main
+    dynpos_test_source_dir dynpos_warnings)
   if(TARGET dynpos_test_pch)
     target_precompile_headers(${name} REUSE_FROM dynpos_test_pch)
   endif()

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "../io/io_test_util.hpp"
+#include "../source_dir.hpp"
 #include "dynpos/analysis/leverarm_mru.hpp"
 #include "dynpos/analysis/station_keeping.hpp"
 #include "dynpos/analysis/step.hpp"

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <string>
 
+#include "../source_dir.hpp"
 #include "dynpos/core/error.hpp"
 
 namespace dynpos::analysis {

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <string>
 
+#include "../source_dir.hpp"
 #include "dynpos/analysis/demo_sections.hpp"
 #include "dynpos/core/error.hpp"
 #include "dynpos/scenario/campaign.hpp"

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <string>
 
+#include "../source_dir.hpp"
 #include "dynpos/analysis/log_source.hpp"
 #include "input_error_capture.hpp"
 

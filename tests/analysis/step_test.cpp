@@ -11,6 +11,7 @@
 
 #include "../ident/synthetic.hpp"
 #include "../io/io_test_util.hpp"
+#include "../source_dir.hpp"
 #include "dynpos/core/error.hpp"
 
 namespace dynpos::analysis {

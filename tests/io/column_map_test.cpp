@@ -5,6 +5,7 @@
 
 #include <fstream>
 
+#include "../source_dir.hpp"
 #include "io_test_util.hpp"
 
 namespace dynpos::io {

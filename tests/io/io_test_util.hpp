@@ -10,6 +10,7 @@
 #include <string>
 #include <string_view>
 
+#include "../source_dir.hpp"
 #include "dynpos/core/error.hpp"
 
 namespace dynpos::io::testing {

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "../source_dir.hpp"
 #include "io_test_util.hpp"
 
 namespace dynpos::io {

@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "../source_dir.hpp"
 #include "dynpos/core/error.hpp"
 #include "io_test_util.hpp"
 

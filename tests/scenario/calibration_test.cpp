@@ -12,6 +12,7 @@
 #include <limits>
 #include <span>
 
+#include "../source_dir.hpp"
 #include "dynpos/core/circular_stats.hpp"
 #include "dynpos/model/fopdt_truth.hpp"
 #include "dynpos/scenario/runner.hpp"

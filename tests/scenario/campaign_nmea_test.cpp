@@ -12,6 +12,7 @@
 #include <random>
 #include <string>
 
+#include "../source_dir.hpp"
 #include "dynpos/core/error.hpp"
 #include "dynpos/io/csv_reader.hpp"
 #include "dynpos/io/nmea.hpp"

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "../io/io_test_util.hpp"
+#include "../source_dir.hpp"
 #include "dynpos/core/error.hpp"
 #include "dynpos/scenario/campaign.hpp"
 #include "dynpos/scenario/runner.hpp"

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include "../source_dir.hpp"
 
 namespace dynpos::scenario {
 namespace {

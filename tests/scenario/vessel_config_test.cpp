@@ -10,6 +10,7 @@
 #include <iterator>
 #include <string>
 
+#include "../source_dir.hpp"
 #include "dynpos/core/error.hpp"
 #include "dynpos/model/sea_state.hpp"
 #include "dynpos/scenario/scenario_spec.hpp"

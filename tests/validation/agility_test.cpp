@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "../source_dir.hpp"
 #include "dynpos/ident/derived_signals.hpp"
 #include "dynpos/ident/thrust_map.hpp"
 #include "dynpos/io/column_map.hpp"

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "../source_dir.hpp"
 #include "dynpos/calib/gnss_lever_arm.hpp"
 #include "dynpos/core/rotation.hpp"
 #include "dynpos/scenario/runner.hpp"

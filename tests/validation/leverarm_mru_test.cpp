@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <string>
 
+#include "../source_dir.hpp"
 #include "dynpos/calib/mru_observer.hpp"
 #include "dynpos/core/rotation.hpp"
 #include "dynpos/scenario/runner.hpp"

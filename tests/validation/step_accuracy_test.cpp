@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "../source_dir.hpp"
 #include "dynpos/ident/fopdt_fit.hpp"
 #include "dynpos/ident/step_detector.hpp"
 #include "dynpos/io/column_map.hpp"
