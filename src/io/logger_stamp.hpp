@@ -7,10 +7,12 @@
 #include <string>
 #include <string_view>
 
+#include "time_units.hpp"
+
 namespace dynpos::io::detail {
 
 /// Nanoseconds in one day.
-inline constexpr std::int64_t kDay_ns = 86'400'000'000'000;
+inline constexpr std::int64_t kDay_ns = kNsPerDay;
 
 /// A logger time stamp read as an instant.
 struct LoggerStamp {

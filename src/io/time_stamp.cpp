@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "text_util.hpp"
+#include "time_units.hpp"
 
 namespace dynpos::io {
 namespace {
@@ -15,8 +16,8 @@ namespace {
 using core::InputError;
 using core::InputLocation;
 
-constexpr std::int64_t kNsPerS = 1'000'000'000;
-constexpr std::int64_t kNsPerDay = 86'400 * kNsPerS;
+using detail::kNsPerDay;
+using detail::kNsPerS;
 // Days whose every nanosecond (and a day of zone offset) fits int64 ns: 1677-09-23…2262-04-10.
 constexpr std::int64_t kFirstDay = -106'750;
 constexpr std::int64_t kLastDay = 106'749;

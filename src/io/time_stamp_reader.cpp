@@ -5,6 +5,7 @@
 
 #include "dynpos/io/time_stamp.hpp"
 #include "text_util.hpp"
+#include "time_units.hpp"
 
 namespace dynpos::io {
 namespace {
@@ -12,8 +13,8 @@ namespace {
 using core::InputError;
 using core::InputLocation;
 
-constexpr std::int64_t kNsPerS = 1'000'000'000;
-constexpr std::int64_t kNsPerDay = 86'400 * kNsPerS;
+using detail::kNsPerDay;
+using detail::kNsPerS;
 constexpr std::int64_t kRolloverNs = 12 * 3'600 * kNsPerS;  // a day ends when time goes back more
 
 int epoch_exponent(TimeFormat format) {

@@ -27,13 +27,28 @@ using io::testing::TempDir;
 
 fs::path source(const std::string& relative) { return fs::path(DYNPOS_SOURCE_DIR) / relative; }
 
-// 300 s of the pure-DP stationkeeping programme (it asks for device files), in Hs 2 m.
-void write_pure_dp(const fs::path& dir) {
-  const scenario::VesselConfig vessel =
-      scenario::load_vessel_config(source("data/vessels/gunnerus.toml"));
-  scenario::ScenarioSpec spec = scenario::load_scenario(source("data/scenarios/pure-dp.toml"));
-  spec.set_duration(300.0);
-  scenario::write_scenario_run(scenario::run_scenario(spec, vessel, 21), dir);
+// 300 s of the pure-DP stationkeeping programme (it asks for device files), in Hs 2 m: run
+// once and read by every test that needs it (the tests only read the folder).
+const fs::path& pure_dp_dir() {
+  static const TempDir dir;
+  static const bool written = [] {
+    const scenario::VesselConfig vessel =
+        scenario::load_vessel_config(source("data/vessels/gunnerus.toml"));
+    scenario::ScenarioSpec spec = scenario::load_scenario(source("data/scenarios/pure-dp.toml"));
+    spec.set_duration(300.0);
+    scenario::write_scenario_run(scenario::run_scenario(spec, vessel, 21), dir.path());
+    return true;
+  }();
+  (void)written;
+  return dir.path();
+}
+
+// The clean log's antenna 1 as the position.
+LogSource clean_positions() {
+  LogSource clean;
+  clean.log = pure_dp_dir() / "log.csv";
+  clean.columns = {"lat=gnss1.lat", "lon=gnss1.lon"};
+  return clean;
 }
 
 // A built-in scenario, shortened to `duration_s` (0: as written), with device files at the
@@ -57,13 +72,10 @@ StationKeepingReport station_keeping(LogSource source) {
 }
 
 TEST(DeviceFiles, StationKeepingFromTheNmeaCaptureMatchesTheCleanLog) {
-  TempDir dir;
-  write_pure_dp(dir.path());
-  LogSource clean;
-  clean.log = dir.path() / "log.csv";
-  clean.columns = {"lat=gnss1.lat", "lon=gnss1.lon"};
+  const fs::path& dir = pure_dp_dir();
+  const LogSource clean = clean_positions();
   LogSource capture;
-  capture.log = dir.path() / "devices" / "gnss1.nmea";  // no options: detected by content
+  capture.log = dir / "devices" / "gnss1.nmea";  // no options: detected by content
   const StationKeepingReport a = station_keeping(clean);
   const StationKeepingReport b = station_keeping(capture);
   ASSERT_EQ(a.windows.size(), 1u);
@@ -170,14 +182,11 @@ TEST(DeviceFiles, MruArmsFromTheMruFileMatchTheCleanLog) {
 TEST(DeviceFiles, ThrustFromTheFeedbackFileBesideTheNmeaCapture) {
   // The capture is the main log (positions, heading); the thrust feedback (epoch ms, 2 Hz) is
   // a further file, aligned by the absolute stamps of the two.
-  TempDir dir;
-  write_pure_dp(dir.path());
-  LogSource clean;
-  clean.log = dir.path() / "log.csv";
-  clean.columns = {"lat=gnss1.lat", "lon=gnss1.lon"};
+  const fs::path& dir = pure_dp_dir();
+  const LogSource clean = clean_positions();
   LogSource capture;
-  const std::string thrusters = (dir.path() / "devices" / "thrusters.csv").string();
-  capture.log = dir.path() / "devices" / "gnss1.nmea";
+  const std::string thrusters = (dir / "devices" / "thrusters.csv").string();
+  capture.log = dir / "devices" / "gnss1.nmea";
   capture.columns = {"time=EpochMs@" + thrusters, "thrust.port=port_thrust@" + thrusters,
                      "thrust.stb=stb_thrust@" + thrusters,
                      "thrust.tunnel=tunnel_thrust@" + thrusters};
@@ -204,11 +213,10 @@ TEST(DeviceFiles, ThrustFromTheFeedbackFileBesideTheNmeaCapture) {
 
 TEST(DeviceFiles, PositionsFromACaptureBesideTheCsvLog) {
   // log.csv is the main log; lat and lon come from the antenna's capture (a further file).
-  TempDir dir;
-  write_pure_dp(dir.path());
+  const fs::path& dir = pure_dp_dir();
   LogSource source;
-  const std::string capture = (dir.path() / "devices" / "gnss1.nmea").string();
-  source.log = dir.path() / "log.csv";
+  const std::string capture = (dir / "devices" / "gnss1.nmea").string();
+  source.log = dir / "log.csv";
   source.columns = {"lat=lat@" + capture, "lon=lon@" + capture};
   // log.csv counts seconds from 10:00:00, the capture has UTC stamps: the clocks are aligned by
   // the offset only. The capture's t = 0 is its first GGA, 10:00:01 (the 10:00:00 one is the
