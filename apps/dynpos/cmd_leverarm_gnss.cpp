@@ -42,12 +42,23 @@ void add_leverarm_gnss(CLI::App& leverarm) {
   auto o = std::make_shared<GnssCliOptions>();
   CLI::App* sub = leverarm.add_subcommand(
       "gnss",
-      "GNSS antenna lever arms: Luenberger (4.26), adaptive (4.42, 4.48) or batch least "
-      "squares, with excitation diagnostics");
+      "GNSS antenna (and further MRU) lever arms: from the logger alone by GNSS/INS fusion, or "
+      "by the thesis' Luenberger (4.26), adaptive (4.42, 4.48) or least-squares estimators");
   o->input.add_options(*sub,
-                       "time, roll, pitch, heading, p, q, r, u, v, w (optional); per antenna "
+                       "ins: mruK.roll/pitch/p/q/r/ax/ay/az and heading; thesis methods: time, "
+                       "roll, pitch, heading, p, q, r, u, v, w (optional); per antenna "
                        "gnssK.lat/lon/height or gnssK.north/east/down");
-  sub->add_option("--method", o->request.method, "luenberger, adaptive or lsq")
+  sub->add_option("--method", o->request.method,
+                  "auto, ins, luenberger, adaptive or lsq (auto: ins when the log has an MRU "
+                  "with accelerations and the heading, else lsq)")
+      ->capture_default_str();
+  sub->add_option("--imu", o->request.imu,
+                  "ins: the MRU of the fusion, mruK (default: the first with every role)");
+  sub->add_option("--imu-arm", o->request.imu_arm,
+                  "ins: X,Y,Z of that MRU from CO [m]; given, every arm is from CO, else from "
+                  "the MRU");
+  sub->add_option("--accel", o->request.accel,
+                  "ins: the MRUs' accelerations, kinematic or specific-force")
       ->capture_default_str();
   sub->add_option("--antennas", o->request.antennas,
                   "Antennas to estimate, e.g. gnss1,gnss2 (default: every gnssK found)")
@@ -77,9 +88,10 @@ void add_leverarm_gnss(CLI::App& leverarm) {
   sub->add_option("--lag", o->request.lag, "lsq: difference fixes this many epochs apart")
       ->capture_default_str();
   sub->add_option("--time-offset", o->request.time_offset,
-                  "GNSS time offset [s]: a fix stamped t holds the position at t − offset");
+                  "GNSS time offset [s]: a fix stamped t holds the position at t − offset "
+                  "(ins estimates it unless given)");
   sub->add_flag("--estimate-time-offset", o->request.estimate_time_offset,
-                "Estimate the GNSS time offset by the least-squares residual");
+                "Thesis methods: estimate the GNSS time offset by the least-squares residual");
   sub->add_option("--max-time-offset", o->request.max_time_offset, "Search range of the offset [s]")
       ->capture_default_str();
   sub->add_option("--converged-from", o->request.converged_from,
@@ -88,13 +100,18 @@ void add_leverarm_gnss(CLI::App& leverarm) {
   sub->add_option("--pe-window", o->request.pe_window, "PE window T of (4.51) [s]")
       ->capture_default_str();
   sub->add_option("--gnss-std", o->request.gnss_std,
-                  "GNSS noise per axis for the predicted σ of the verdict [m]")
+                  "GNSS noise per horizontal axis [m]: the predicted σ of the verdict, or ins's "
+                  "starting value (vertical twice it; both then found from the data)")
       ->capture_default_str();
   sub->add_option("--json", o->json, "Write the results as JSON to FILE, or '-' for stdout");
   sub->add_option("--plots", o->plots, "Write SVG plots (arms over time, P0 NE, excitation)");
   sub->footer(
-      "Arms in BODY (x fwd, y stb, z down) from the point whose velocity u, v, w is logged. "
-      "lsq (default) reports the estimator's own 1σ; the observers report mean and std over "
+      "Arms in BODY (x fwd, y stb, z down). ins (the default with an MRU in the log) needs no "
+      "velocity: from the GNSS fixes, one MRU and the heading it estimates every antenna's and "
+      "every further MRU's arm, the GNSS time offset and the accelerometer bias, each with its "
+      "1σ and a per-axis verdict; e.g. dynpos leverarm gnss DIR/log.csv --imu-arm "
+      "0.358,0.804,-4.321. The thesis' methods give arms from the point whose velocity u, v, w "
+      "is logged: lsq reports the estimator's own 1σ; the observers report mean and std over "
       "the converged interval (thesis tables 4.2–4.5). The velocity must carry the "
       "wave-frequency motion (heave w included) for the absolute arms; the baselines between "
       "antennas need none. Example on a virtual trial, motion from the 100 Hz reference: dynpos "

@@ -11,7 +11,10 @@
 #include "dynpos/analysis/options.hpp"
 #include "dynpos/core/error.hpp"
 #include "dynpos/io/nmea.hpp"
+#include "dynpos/io/nmea_log.hpp"
+#include "dynpos/io/time_stamp.hpp"
 #include "gnss_antenna_name.hpp"
+#include "leverarm_ins.hpp"
 
 namespace dynpos::analysis {
 namespace {
@@ -25,6 +28,8 @@ bool motion_role(const std::string& role) {
 }
 
 bool gnss_role(const std::string& role) { return role.rfind("gnss", 0) == 0; }
+
+bool mru_role(const std::string& role) { return role.rfind("mru", 0) == 0; }
 
 // The option of request key `key` as the command line spells it, for the examples in hints.
 std::string flag(std::string key) {
@@ -66,7 +71,8 @@ calib::GnssArmMethod parse_method(const std::string& m) {
   if (m == "luenberger") return calib::GnssArmMethod::kLuenberger;
   if (m == "adaptive") return calib::GnssArmMethod::kAdaptive;
   if (m == "lsq") return calib::GnssArmMethod::kLsq;
-  throw option_error("method", "unknown method '" + m + "'", "use luenberger, adaptive or lsq");
+  throw option_error("method", "unknown method '" + m + "'",
+                     "use auto, ins, luenberger, adaptive or lsq");
 }
 
 void check_prefix(const std::string& p, const std::string& key) {
@@ -90,7 +96,7 @@ void check_antenna_files(const std::vector<std::string>& specs, const std::strin
 // antennas of the data) checked in the command line's order.
 calib::GnssArmOptions arm_options(const LeverarmGnssRequest& q) {
   calib::GnssArmOptions lo;
-  lo.method = parse_method(q.method);
+  if (q.method != "auto" && q.method != "ins") lo.method = parse_method(q.method);
   if (!q.w1.empty()) lo.luenberger_w_p0 = parse_vec3(q.w1, "w1");
   if (!q.w2.empty()) lo.luenberger_w_arm = parse_vec3(q.w2, "w2");
   if (!q.gamma.empty()) lo.adaptive_gamma = parse_vec3(q.gamma, "gamma");
@@ -164,9 +170,9 @@ struct Inputs {
 
 // An NMEA file's fixes on the log's clock: NMEA time is UTC seconds of day, the log's t = 0 is
 // at utc_at_zero; without it the NMEA times must overlap the log's (a log kept in UTC).
-core::Log nmea_on_log_clock(const io::NmeaGnssLog& nl, const core::Log& motion,
+core::Log nmea_on_log_clock(const core::Log& nmea, const core::Log& motion,
                             const std::optional<double>& utc0, const std::string& file) {
-  std::vector<double> t = nl.log.time();
+  std::vector<double> t = nmea.time();
   const auto& mt = motion.time();
   const double shift = utc0 ? *utc0 : 0.0;
   if (!utc0) {
@@ -182,9 +188,52 @@ core::Log nmea_on_log_clock(const io::NmeaGnssLog& nl, const core::Log& motion,
   }
   for (double& x : t) x -= shift;
   core::Log shifted(t);
-  for (const core::Channel& c : nl.log.channels())
+  for (const core::Channel& c : nmea.channels())
     shifted.add_channel(c.name, c.unit, c.values, c.interp);
   return shifted;
+}
+
+// An antenna's NMEA file — a serial capture with logger stamps and cut lines is fine — on the
+// log's clock: by the difference of the absolute times when both the log (date-time stamps)
+// and the capture (a date from RMC or the logger) have one; else as UTC seconds of day, placed
+// by utc_at_zero or overlapping the log's times (nmea_on_log_clock).
+core::Log read_antenna_capture(const LeverarmGnssRequest& q, const std::string& prefix,
+                               const std::string& file, Inputs& in,
+                               const std::optional<double>& utc0) {
+  io::NmeaLogOptions o;
+  o.prefix = prefix;
+  o.strict = q.source.strict;
+  o.wanted = [&prefix](const std::string& c) {
+    return c == prefix + ".lat" || c == prefix + ".lon" || c == prefix + ".height";
+  };
+  io::NmeaLog nl = io::read_nmea_log(file, o);
+  in.notes.push_back(fmt::format("{}: {} NMEA sentences from {} ({} lines skipped)", prefix,
+                                 nl.report.records, file, nl.report.skipped.total()));
+  std::optional<io::ParsedStamp> main0;
+  if (in.input.origin) main0 = io::parse_iso8601(*in.input.origin);
+  core::Log placed;
+  if (nl.origin_ns && main0 && !utc0) {
+    const double shift = 1e-9 * static_cast<double>(*nl.origin_ns - main0->ns);
+    std::vector<double> t = nl.log.time();
+    for (double& x : t) x += shift;
+    placed = core::Log(t);
+    for (const core::Channel& c : nl.log.channels())
+      placed.add_channel(c.name, c.unit, c.values, c.interp);
+    nl.report.notes.push_back("aligned on the main log by its absolute time stamps");
+  } else if (nl.origin_ns) {
+    const std::int64_t day_ns = 86'400'000'000'000;
+    const double t0 = 1e-9 * static_cast<double>(((*nl.origin_ns % day_ns) + day_ns) % day_ns);
+    std::vector<double> t = nl.log.time();
+    for (double& x : t) x += t0;
+    core::Log of_day(t);
+    for (const core::Channel& c : nl.log.channels())
+      of_day.add_channel(c.name, c.unit, c.values, c.interp);
+    placed = nmea_on_log_clock(of_day, in.log, utc0, file);
+  } else {  // no date anywhere: GGA's times of day
+    placed = nmea_on_log_clock(io::read_nmea_gnss(file, prefix).log, in.log, utc0, file);
+  }
+  in.input.append(describe_input(placed, file, std::move(nl.report)));
+  return placed;
 }
 
 // The antennas: those asked for, else every gnssK of the log and the extra files, in K order.
@@ -204,8 +253,8 @@ std::vector<std::string> antenna_names(
 
 // Fills `in` in place: its sources point into it.
 void read_inputs(const LeverarmGnssRequest& q, Inputs& in) {
-  LoadedLog loaded =
-      q.source.load([](const std::string& r) { return motion_role(r) || gnss_role(r); });
+  LoadedLog loaded = q.source.load(
+      [](const std::string& r) { return motion_role(r) || gnss_role(r) || mru_role(r); });
   in.log = std::move(loaded.log);
   in.input = std::move(loaded.input);
   std::map<std::string, std::pair<std::size_t, std::string>> external;  // prefix → (extra, file)
@@ -228,17 +277,8 @@ void read_inputs(const LeverarmGnssRequest& q, Inputs& in) {
   if (!q.utc_at_zero.empty()) utc0 = io::parse_utc_time_of_day(q.utc_at_zero);
   for (const std::string& g : q.nmea) {
     const auto [prefix, file] = split_eq(g, "nmea", "gnss1=FILE.nmea");
-    const io::NmeaGnssLog nl = io::read_nmea_gnss(file, prefix);
-    in.extra.push_back(nmea_on_log_clock(nl, in.log, utc0, file));
-    io::FileReport nmea_file;
-    nmea_file.format = "nmea";
-    nmea_file.time_format = utc0 ? "UTC time of day, --utc-at-zero" : "UTC time of day";
-    nmea_file.skipped.add("unusable sentence", nl.skipped);
-    in.input.append(describe_input(in.extra.back(), file, std::move(nmea_file)));
-    in.input.files.back().records = nl.sentences;
+    in.extra.push_back(read_antenna_capture(q, prefix, file, in, utc0));
     external[prefix] = {in.extra.size() - 1, file};
-    in.notes.push_back(fmt::format("{}: {} NMEA sentences from {} ({} skipped)", prefix,
-                                   nl.sentences, file, nl.skipped));
   }
   const std::vector<std::string> prefixes = antenna_names(q, in.log, external);
   if (prefixes.empty())
@@ -274,6 +314,19 @@ double fix_rate_hz(const calib::GnssSeries& g) {
   return 1.0 / dt[dt.size() / 2];
 }
 
+// Method ins: the logger-only estimate.
+LeverarmGnssReport run_ins_report(const LeverarmGnssRequest& q, Inputs& in) {
+  const std::vector<calib::GnssSeries> gnss = calib::gnss_from_logs(in.sources);
+  LeverarmGnssReport report;
+  report.method = "ins";
+  report.log = q.source.log;
+  report.ins = detail::run_ins(q, in.log, gnss, q.source.log.string());
+  report.input = std::move(in.input);
+  report.gnss_rate_hz = fix_rate_hz(gnss[0]);
+  report.input_notes = in.notes;
+  return report;
+}
+
 }  // namespace
 
 void LeverarmGnssRequest::validate() const {
@@ -282,12 +335,15 @@ void LeverarmGnssRequest::validate() const {
   check_antenna_files(nmea, "nmea", "gnss1=FILE.nmea", "NMEA 0183 file");
   for (const std::string& p : antennas) check_prefix(p, "antennas");
   arm_options(*this);
+  detail::validate_ins_options(*this);
 }
 
 LeverarmGnssReport run_leverarm_gnss(const LeverarmGnssRequest& q) {
   q.validate();
   Inputs in;
   read_inputs(q, in);
+  const bool ins = q.method == "ins" || (q.method == "auto" && detail::has_ins_inputs(in.log));
+  if (ins) return run_ins_report(q, in);
   const calib::MotionFromLog motion = motion_of(in.log, q.source.log);
   const std::vector<calib::GnssSeries> gnss = calib::gnss_from_logs(in.sources);
   // Proposition 2's persistence of excitation is judged over windows of pe_window seconds: a
@@ -306,6 +362,7 @@ LeverarmGnssReport run_leverarm_gnss(const LeverarmGnssRequest& q) {
   calib::GnssArmOptions lo = arm_options(q);
   lo.initial_arms_b_m = initial_arms(q.init, names);
   LeverarmGnssReport report;
+  report.method = std::string(calib::gnss_arm_method_name(lo.method));
   report.log = q.source.log;
   report.input = std::move(in.input);
   report.pe_window_s = q.pe_window;

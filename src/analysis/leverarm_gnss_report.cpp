@@ -6,6 +6,7 @@
 #include "dynpos/analysis/leverarm_gnss.hpp"
 #include "dynpos/io/json_writer.hpp"
 #include "dynpos/report/svg_plot.hpp"
+#include "leverarm_ins.hpp"
 
 namespace dynpos::analysis {
 namespace {
@@ -117,6 +118,13 @@ report::Figure excitation_figure(const calib::ExcitationDiagnostics& d) {
 }  // namespace
 
 nlohmann::json to_json(const LeverarmGnssReport& report) {
+  if (report.ins) {
+    nlohmann::json j = detail::ins_json(*report.ins);
+    j["log"] = report.log.string();
+    j["input"] = io::to_json(report.input);
+    for (const std::string& n : report.input_notes) j["notes"].push_back(n);
+    return j;
+  }
   const calib::GnssArmResult& r = report.result;
   nlohmann::json j;
   j["method"] = std::string(calib::gnss_arm_method_name(r.method));
@@ -176,6 +184,11 @@ report::Table arm_table(const LeverarmGnssReport& report) {
 }
 
 std::string to_text(const LeverarmGnssReport& report) {
+  if (report.ins) {
+    std::string out = report.log.string() + ": " + detail::ins_text(*report.ins);
+    for (const std::string& n : report.input_notes) out += fmt::format("note: {}\n", n);
+    return out + io::to_text(report.input);
+  }
   const calib::GnssArmResult& r = report.result;
   std::string out =
       fmt::format("{}: GNSS lever arms, method {}, {} antenna(s), {} epochs\n", report.log.string(),
@@ -207,6 +220,7 @@ std::string to_text(const LeverarmGnssReport& report) {
 std::vector<std::filesystem::path> write_figures(const LeverarmGnssReport& report,
                                                  const std::filesystem::path& dir,
                                                  const std::map<std::string, Vec3>& true_arms_b_m) {
+  if (report.ins) return detail::write_ins_figures(*report.ins, dir);
   const calib::GnssArmResult& r = report.result;
   std::filesystem::create_directories(dir);
   std::vector<std::filesystem::path> out;

@@ -9,6 +9,7 @@
 #include "dynpos/calib/gnss_lever_arm.hpp"
 #include "dynpos/core/error.hpp"
 #include "dynpos/core/local_ned_frame.hpp"
+#include "resample_onto.hpp"
 
 namespace dynpos::calib {
 namespace {
@@ -20,36 +21,7 @@ core::InputError missing(const std::string& role, const std::string& file = {}) 
       "map it with --col " + role + "=COLUMN (and --unit " + role + "=UNIT if not SI)");
 }
 
-// Linear interpolation of a channel's valid samples onto `grid`; NaN outside them.
-std::vector<double> onto(const std::vector<double>& t, const std::vector<double>& v,
-                         const std::vector<double>& grid, bool unwrap) {
-  std::vector<double> ts, vs;
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    if (!std::isfinite(v[i])) continue;
-    double x = v[i];
-    if (unwrap && !vs.empty()) {
-      const double two_pi = 2.0 * std::numbers::pi;
-      x -= two_pi * std::round((x - vs.back()) / two_pi);
-    }
-    ts.push_back(t[i]);
-    vs.push_back(x);
-  }
-  std::vector<double> out(grid.size(), std::numeric_limits<double>::quiet_NaN());
-  if (ts.empty()) return out;
-  std::size_t j = 0;
-  for (std::size_t i = 0; i < grid.size(); ++i) {
-    const double g = grid[i];
-    if (g < ts.front() || g > ts.back()) continue;
-    while (j + 1 < ts.size() && ts[j + 1] < g) ++j;
-    if (j + 1 >= ts.size()) {
-      out[i] = vs.back();
-      continue;
-    }
-    const double a = (g - ts[j]) / (ts[j + 1] - ts[j]);
-    out[i] = (g <= ts[j]) ? vs[j] : (1.0 - a) * vs[j] + a * vs[j + 1];
-  }
-  return out;
-}
+using detail::resample_onto;
 
 }  // namespace
 
@@ -65,8 +37,9 @@ MotionFromLog motion_from_mixed_log(const core::Log& log) {
   for (std::size_t i = 0; i < t.size(); ++i)
     if (std::isfinite(log.values("roll")[i])) grid.push_back(t[i]);
   std::vector<std::vector<double>> cols;
-  for (const std::string& r : roles) cols.push_back(onto(t, log.values(r), grid, r == "heading"));
-  if (heave) cols.push_back(onto(t, log.values("w"), grid, false));
+  for (const std::string& r : roles)
+    cols.push_back(resample_onto(t, log.values(r), grid, r == "heading"));
+  if (heave) cols.push_back(resample_onto(t, log.values("w"), grid, false));
   MotionSeries& m = out.motion;
   for (std::size_t i = 0; i < grid.size(); ++i) {
     bool ok = true;

@@ -11,6 +11,7 @@
 
 #include "../io/io_test_util.hpp"
 #include "../source_dir.hpp"
+#include "dynpos/analysis/leverarm_gnss.hpp"
 #include "dynpos/analysis/leverarm_mru.hpp"
 #include "dynpos/analysis/station_keeping.hpp"
 #include "dynpos/analysis/step.hpp"
@@ -236,6 +237,43 @@ TEST(DeviceFiles, PositionsFromACaptureBesideTheCsvLog) {
     ++fixes;
   }
   EXPECT_GE(fixes, 298u);  // 300 s of 1 Hz fixes; the capture's cut first and last lines
+}
+
+// Lever arms from the logger alone on what the devices wrote: the MRU file (date-time stamps,
+// vendor names, 10 Hz), each antenna's serial capture (logger stamps, first and last line cut)
+// and the gyro heading from the trial logger's file beside them. Against the same estimate on
+// the clean log.csv: the same 897 fixes and the arms within 0.1 mm (the capture's 7 decimals
+// of arc minutes are 0.2 mm; the MRU file repeats the log's values).
+TEST(DeviceFiles, LoggerOnlyLeverArmsFromTheDeviceFiles) {
+  const fs::path& dir = pure_dp_dir();
+  LeverarmGnssRequest clean;
+  clean.source.log = dir / "log.csv";
+  clean.antennas = {"gnss1", "gnss2", "gnss3"};
+  clean.imu_arm = "0.358,0.804,-4.321";
+  const LeverarmGnssReport a = run_leverarm_gnss(clean);
+  LeverarmGnssRequest devices = clean;
+  devices.source.log = dir / "devices" / "mru.csv";
+  devices.source.columns = {"time=Time",        "mru1.roll=Roll",
+                            "mru1.pitch=Pitch", "mru1.p=RollRate",
+                            "mru1.q=PitchRate", "mru1.r=YawRate",
+                            "mru1.ax=AccX",     "mru1.ay=AccY",
+                            "mru1.az=AccZ",     "heading=heading@" + (dir / "log.csv").string()};
+  for (const char* k : {"gnss1", "gnss2", "gnss3"})
+    devices.nmea.push_back(std::string(k) + "=" +
+                           (dir / "devices" / (std::string(k) + ".nmea")).string());
+  const LeverarmGnssReport b = run_leverarm_gnss(devices);
+  ASSERT_TRUE(a.ins && b.ins);
+  EXPECT_EQ(b.method, "ins");
+  EXPECT_EQ(b.ins->gnss.fixes, a.ins->gnss.fixes);
+  ASSERT_EQ(b.ins->gnss.arms.size(), 3u);
+  for (std::size_t k = 0; k < 3; ++k)
+    for (int i = 0; i < 3; ++i) {
+      if (a.ins->gnss.arms[k].determinacy[i] == calib::Determinacy::kNot) continue;
+      EXPECT_NEAR(b.ins->gnss.arms[k].l_b_m[i], a.ins->gnss.arms[k].l_b_m[i], 1e-4) << k << i;
+    }
+  EXPECT_EQ(b.input.files[0].time_format, "iso8601");
+  EXPECT_THAT(b.input.files.back().notes,
+              ::testing::Contains("aligned on the main log by its absolute time stamps"));
 }
 
 }  // namespace

@@ -5,7 +5,9 @@
 #    (--nmea, --utc-at-zero): every arm within 2 cm per axis of truth.json;
 #  - motion from the logger (MRU, gyro heading, 1 Hz speed log): the antenna baselines;
 #  - a GNSS latency of 0.2 s in the vessel file is found by --estimate-time-offset;
-#  - bad input exits 2 without output files.
+#  - bad input exits 2 without output files;
+#  - from the logger alone (method ins: fixes, MRU, gyro heading; no velocity): every arm within
+#    3σ of its own, the baselines within 3 mm, MRU 2 within 1 cm, the 0.2 s latency.
 set -euo pipefail
 exe="$1"; out="$2"; src="$3"
 rm -rf "$out"; mkdir -p "$out"
@@ -67,7 +69,8 @@ set -e
 #    Pₖ − P₁ = R(lₖ − l₁), which need no velocity: 2 cm per axis. (The absolute arms need P₀'s
 #    velocity at the wave frequencies, which a 1 Hz speed log without w does not give.)
 mru=(--col roll=mru1.roll --col pitch=mru1.pitch --col p=mru1.p --col q=mru1.q --col r=mru1.r)
-"$exe" leverarm gnss "$run/log.csv" "${mru[@]}" --json "$out/logged.json" > /dev/null
+"$exe" leverarm gnss "$run/log.csv" "${mru[@]}" --method lsq --json "$out/logged.json" > /dev/null
+jq -e '.method == "lsq"' "$out/logged.json" > /dev/null
 jq -e --slurpfile t "$run/truth.json" '
   (.arms | map({(.name): [.x, .y, .z]}) | add) as $e | $t[0].lever_arms as $l |
   [("gnss2", "gnss3") as $k | range(3) as $i |
@@ -98,11 +101,46 @@ expect2() {  # regex args...
     || { echo "expected exit 2 and /$re/, got $rc:"; cat "$out/bad.err"; exit 1; }
   [ ! -e "$out/bad.json" ] || { echo "half-written output"; exit 1; }
 }
-expect2 "log.csv \(roll\).*--col roll=" "$run/log.csv"  # the logger has mru1.roll, no roll
+expect2 "log.csv \(roll\).*--col roll=" "$run/log.csv" --method lsq  # mru1.roll, no roll
 awk -F, -v OFS=, 'NR == 1 {for (i = 1; i <= NF; i++) if ($i ~ /^gnss/) g[i] = 1; print; next}
   {for (i in g) $i = ""; print}' "$run/log.csv" > "$out/nofix.csv"
-expect2 "gnss1.*0 fixes" "$out/nofix.csv" "${mru[@]}"
+expect2 "gnss1.*0 fixes" "$out/nofix.csv" "${mru[@]}" --method lsq
 head -n 3001 "$run/log.csv" > "$out/short.csv"  # 30 s
-expect2 "short.csv \(--pe-window\).*spans [0-9.]+ s, shorter than one excitation window" "$out/short.csv" "${mru[@]}"
+expect2 "short.csv \(--pe-window\).*spans [0-9.]+ s, shorter than one excitation window" "$out/short.csv" "${mru[@]}" --method lsq
 expect2 "unknown method 'fast'" "$run/log.csv" "${mru[@]}" --method fast
+expect2 "log.csv \(mru9.roll\)" "$out/run/log.csv" --imu mru9
+expect2 "\(--imu\).*'imu1' is not an MRU" "$out/run/log.csv" --imu imu1
+expect2 "\(--imu-arm\).*not three numbers" "$out/run/log.csv" --imu-arm 1,2
+expect2 "\(--accel\).*unknown acceleration" "$out/run/log.csv" --accel raw
+expect2 "\(--method\).*unknown method" "$out/run/log.csv" --method INS
+
+# 6. From the logger alone (method ins, the default with an MRU in the log): the fixes, MRU 1
+#    and the gyro heading, no velocity. Arms from CO with MRU 1's arm given. The antennas'
+#    own 1σ here is about 2.5 cm in x and y and 1 cm in z: each error within 3σ; the baselines
+#    within 3 mm; MRU 2 within 1 cm; no latency in this run, found within 10 ms.
+arm1=$(jq -r '.lever_arms.mru1 | map(tostring) | join(",")' "$out/run/truth.json")
+"$exe" leverarm gnss "$out/run/log.csv" --imu-arm "$arm1" --json "$out/ins.json" \
+  --plots "$out/ins-plots" > "$out/ins.txt"
+jq -e --slurpfile t "$out/run/truth.json" '
+  .method == "ins" and .reference == "co" and .imu == "mru1" and (.arms | length) == 4 and
+  (.time_offset_s | fabs) < 0.01 and
+  ([.arms[] | . as $a | $t[0].lever_arms[$a.name] as $l | range(3) as $i |
+    ([$a.x, $a.y, $a.z][$i] - $l[$i] | fabs) <= 3 * $a.std[$i]] | all) and
+  ([.arms[] | select(.kind == "mru") | . as $a | $t[0].lever_arms[$a.name] as $l |
+    range(3) as $i | ([$a.x, $a.y, $a.z][$i] - $l[$i] | fabs) < 0.01] | all) and
+  ((.arms | map({(.name): [.x, .y, .z]}) | add) as $e | $t[0].lever_arms as $l |
+   [("gnss2", "gnss3") as $k | range(3) as $i |
+    ((($e[$k][$i] - $e.gnss1[$i]) - ($l[$k][$i] - $l.gnss1[$i])) | fabs) < 0.003] | all)' \
+  "$out/ins.json" > /dev/null \
+  || { echo "ins off: $(jq -c '[.time_offset_s, [.arms[] | [.name, .x, .y, .z, .std]]]' "$out/ins.json")"; exit 1; }
+grep -q "^mru2 " "$out/ins.txt" && [ -s "$out/ins-plots/residuals.svg" ] \
+  || { cat "$out/ins.txt"; exit 1; }
+# Without --imu-arm the arms are from MRU 1 itself.
+"$exe" leverarm gnss "$out/run/log.csv" --antennas gnss1 --json - 2> /dev/null \
+  | jq -e '.reference == "mru1" and (.arms | length) == 2' > /dev/null
+# The 0.2 s latency of gnss1 found within 10 ms from the logger alone.
+"$exe" leverarm gnss "$out/late/log.csv" --antennas gnss1 --json "$out/late-ins.json" > /dev/null
+jq -e '.method == "ins" and .time_offset_estimated and ((.time_offset_s - 0.2) | fabs) < 0.01' \
+  "$out/late-ins.json" > /dev/null \
+  || { echo "ins offset: $(jq -c '[.time_offset_s, .time_offset_std_s]' "$out/late-ins.json")"; exit 1; }
 echo "ok"

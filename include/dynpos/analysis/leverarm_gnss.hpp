@@ -14,6 +14,8 @@
 
 #include "dynpos/analysis/log_source.hpp"
 #include "dynpos/calib/gnss_lever_arm.hpp"
+#include "dynpos/calib/ins_arms.hpp"
+#include "dynpos/calib/mru_observer.hpp"
 #include "dynpos/report/table.hpp"
 
 namespace dynpos::analysis {
@@ -22,9 +24,15 @@ namespace dynpos::analysis {
 /// text "X,Y,Z", antennas by their role prefix gnssK, per-antenna inputs as "gnssK=VALUE", as on
 /// the command line.
 struct LeverarmGnssRequest {
-  /// Motion (time, roll, pitch, heading, p, q, r, u, v, w) and any gnssK.* fixes.
+  /// Motion and any gnssK.* fixes: for ins an MRU (mruK.roll, .pitch, .p, .q, .r, .ax, .ay,
+  /// .az) and heading; for the thesis' methods roll, pitch, heading, p, q, r, u, v, w.
   LogSource source;
-  std::string method = "lsq";         ///< luenberger, adaptive or lsq
+  /// auto, ins, luenberger, adaptive or lsq. auto: ins when the log has an MRU with
+  /// accelerations and the heading (no velocity needed), else lsq.
+  std::string method = "auto";
+  std::string imu;      ///< ins: the MRU of the fusion, mruK; empty: the first with every role
+  std::string imu_arm;  ///< ins: X,Y,Z of that MRU from CO [m]; given: arms from CO
+  std::string accel = "kinematic";    ///< ins: the MRUs' accelerations, kinematic|specific-force
   std::vector<std::string> antennas;  ///< gnssK to estimate; empty: every one found
   std::vector<std::string> gnss_log;  ///< gnssK=FILE.csv: fixes in a CSV of their own
   std::vector<std::string> nmea;      ///< gnssK=FILE.nmea: fixes from NMEA 0183 (GGA)
@@ -51,13 +59,24 @@ struct LeverarmGnssRequest {
   void validate() const;
 };
 
+/// The logger-only estimate (method ins): the antennas by GNSS/INS fusion, further MRUs from
+/// the IMU's accelerations (calib/imu_mru_arms.hpp); every arm from the same reference.
+struct LeverarmInsResult {
+  std::string imu;                     ///< the MRU of the fusion
+  calib::InsArmResult gnss;            ///< antennas, time offset, biases, noise
+  calib::MruEstimateResult mrus;       ///< further MRUs (no arms when there are none)
+  std::vector<std::string> mru_names;  ///< of mrus.arms
+};
+
 /// The estimate and the resolved inputs its outputs need.
 struct LeverarmGnssReport {
   std::filesystem::path log;             ///< the motion log as given
   io::InputReport input;                 ///< the files read, their formats and skipped lines
   double pe_window_s = 60.0;             ///< the PE window used [s]
   double gnss_rate_hz = 1.0;             ///< from the median fix spacing of the first antenna
-  calib::GnssArmResult result;           ///< status kOk (failures throw)
+  std::string method;                    ///< the method run (auto resolved)
+  calib::GnssArmResult result;           ///< the thesis' methods: status kOk (failures throw)
+  std::optional<LeverarmInsResult> ins;  ///< method ins
   std::vector<std::string> input_notes;  ///< about the inputs: motion, NMEA sentences
 };
 
