@@ -122,9 +122,20 @@ double sum_sq(const Eigen::VectorXd& r, const std::vector<long>& rows) {
   return s;
 }
 
-// One pass of variance components: each group's σ scaled by √(RSS / redundancy).
-void update_weights(InsProblem& p, const InsArmOptions& o, std::size_t antennas) {
-  const InsProblem::Linearised lin = p.linearise();
+// Divides the rows `rows` of J and r by f: the linearisation with that group's σ times f.
+void scale_rows(InsProblem::Linearised& lin, const std::vector<long>& rows, double f) {
+  for (long r : rows) {
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(lin.J, r); it; ++it)
+      it.valueRef() /= f;
+    lin.r[r] /= f;
+  }
+}
+
+// One pass of variance components on the linearisation `lin` at the current solution: each
+// group's σ scaled by √(RSS / redundancy), in the weights and in `lin` (which then holds the
+// problem with the new weights at the same point, for the covariance).
+void update_weights(InsProblem& p, const InsArmOptions& o, std::size_t antennas,
+                    InsProblem::Linearised& lin) {
   const SpMat N = normal_matrix(lin.J);
   const Ldlt ldlt(N);
   if (ldlt.info() != Eigen::Success) return;
@@ -138,11 +149,14 @@ void update_weights(InsProblem& p, const InsArmOptions& o, std::size_t antennas)
     if (!(red[g] > 0.05 * static_cast<double>(groups[g].size()))) return 1.0;
     return std::clamp(std::sqrt(sum_sq(lin.r, groups[g]) / red[g]), 0.1, 10.0);
   };
-  p.weights().process /= factor(0);
+  std::vector<double> f(groups.size());
+  for (std::size_t g = 0; g < groups.size(); ++g) f[g] = factor(g);
+  p.weights().process /= f[0];
   for (std::size_t k = 0; k < antennas; ++k) {
-    p.weights().horizontal[k] /= factor(1 + 2 * k);
-    p.weights().vertical[k] /= factor(2 + 2 * k);
+    p.weights().horizontal[k] /= f[1 + 2 * k];
+    p.weights().vertical[k] /= f[2 + 2 * k];
   }
+  for (std::size_t g = 0; g < groups.size(); ++g) scale_rows(lin, groups[g], f[g]);
 }
 
 }  // namespace
@@ -173,10 +187,11 @@ void InsArmOptions::validate() const {
 
 namespace {
 
-// The solution's covariance for the global parameters (arms, b, δ) and the result's figures.
+// The covariance of the global parameters (arms, b, δ) from `lin` (the problem with the final
+// weights, linearised at the solution or at the one before the last Gauss–Newton step: the
+// problem is linear but for δ), and the result's figures at the solution.
 void fill_result(InsProblem& p, const InsArmOptions& o, const std::vector<GnssSeries>& gnss,
-                 InsArmResult& out) {
-  const InsProblem::Linearised lin = p.linearise();
+                 const InsProblem::Linearised& lin, InsArmResult& out) {
   const SpMat N = normal_matrix(lin.J);
   const Ldlt ldlt(N);
   const auto g0 = static_cast<long>(p.global_col());
@@ -208,8 +223,9 @@ void fill_result(InsProblem& p, const InsArmOptions& o, const std::vector<GnssSe
   std::vector<double> n(gnss.size(), 0.0);
   out.residual_t_s.resize(gnss.size());
   out.residual_n_m.resize(gnss.size());
+  const Eigen::VectorXd r = p.residuals();
   for (std::size_t j = 0; j < p.fixes().size(); ++j) {
-    const Vec3 e = p.fix_residual_m(lin.r, j);
+    const Vec3 e = p.fix_residual_m(r, j);
     const std::size_t k = p.fixes()[j].antenna;
     ss[k] += e.cwiseProduct(e);
     n[k] += 1.0;
@@ -276,6 +292,7 @@ InsArmResult estimate_ins_arms(const ImuSeries& imu, const std::vector<GnssSerie
   p.weights().process = 1.0 / (sigma_a * std::sqrt(dt));
   p.weights().horizontal.assign(gnss.size(), 1.0 / o.gnss_horizontal_std_m);
   p.weights().vertical.assign(gnss.size(), 1.0 / o.gnss_vertical_std_m);
+  InsProblem::Linearised lin;
   for (int it = 0;; ++it) {
     // After new weights one Gauss–Newton step is the new optimum: the problem is linear but for
     // δ, already converged, and the attitude at t − δ.
@@ -286,10 +303,12 @@ InsArmResult estimate_ins_arms(const ImuSeries& imu, const std::vector<GnssSerie
       return out;
     }
     if (it >= o.variance_iterations) break;
-    update_weights(p, o, gnss.size());
+    lin = p.linearise();
+    update_weights(p, o, gnss.size(), lin);
   }
+  if (o.variance_iterations == 0) lin = p.linearise();
   out.noise.process_scale = 1.0 / (p.weights().process * sigma_a * std::sqrt(dt));
-  fill_result(p, o, gnss, out);
+  fill_result(p, o, gnss, lin, out);
   add_advice(out);
   out.status = core::Status::kOk;
   return out;

@@ -122,15 +122,21 @@ std::vector<double*> InsProblem::blocks() {
   return b;
 }
 
-InsProblem::Linearised InsProblem::linearise() {
+// The whitened residuals (and with `crs` the Jacobian) at the current parameters, columns in
+// the order of blocks().
+Eigen::VectorXd InsProblem::evaluate(ceres::CRSMatrix* crs) {
   ceres::Problem::EvaluateOptions eo;
   eo.parameter_blocks = blocks();
   eo.apply_loss_function = false;
   std::vector<double> r;
+  problem_->Evaluate(eo, nullptr, &r, nullptr, crs);
+  return Eigen::Map<const Eigen::VectorXd>(r.data(), static_cast<long>(r.size()));
+}
+
+InsProblem::Linearised InsProblem::linearise() {
   ceres::CRSMatrix crs;
-  problem_->Evaluate(eo, nullptr, &r, nullptr, &crs);
   Linearised out;
-  out.r = Eigen::Map<const Eigen::VectorXd>(r.data(), static_cast<long>(r.size()));
+  out.r = evaluate(&crs);
   // Ceres orders each row's columns by parameter block; δ's column goes when it is held.
   const auto cols = static_cast<int>(columns());
   std::vector<int> outer(static_cast<std::size_t>(crs.num_rows) + 1, 0), inner;
@@ -151,6 +157,8 @@ InsProblem::Linearised InsProblem::linearise() {
       values.data());
   return out;
 }
+
+Eigen::VectorXd InsProblem::residuals() { return evaluate(nullptr); }
 
 Vec3 InsProblem::fix_residual_m(const Eigen::VectorXd& r, std::size_t j) const {
   const std::size_t k = fixes_[j].antenna;

@@ -49,6 +49,8 @@ class InsProblem {
     Eigen::SparseMatrix<double, Eigen::RowMajor> J;
   };
   Linearised linearise();
+  /// The whitened residuals alone at the current parameters.
+  Eigen::VectorXd residuals();
 
   std::size_t process_rows() const { return 6 * (knots_.count - 1); }
   std::size_t fix_row(std::size_t j) const { return process_rows() + 3 * j; }
@@ -69,6 +71,7 @@ class InsProblem {
   void initialise();
   void add_epochs();
   std::vector<double*> blocks();
+  Eigen::VectorXd evaluate(ceres::CRSMatrix* crs);
 
   const InsPreintegration& ins_;
   InsKnots knots_;
