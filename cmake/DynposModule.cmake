@@ -50,6 +50,13 @@ function(dynpos_add_module name)
         $<INSTALL_INTERFACE:-fsanitize=address,undefined>)
     endif()
   endif()
+  # The static module libraries end up in the Python extension, a shared object.
+  if(DYNPOS_BUILD_PYTHON AND TARGET dynpos_${name})
+    get_target_property(type dynpos_${name} TYPE)
+    if(NOT type STREQUAL "INTERFACE_LIBRARY")
+      set_target_properties(dynpos_${name} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+    endif()
+  endif()
   add_library(dynpos::${name} ALIAS dynpos_${name})
   set_target_properties(dynpos_${name} PROPERTIES EXPORT_NAME ${name})
   install(TARGETS dynpos_${name} EXPORT dynposTargets

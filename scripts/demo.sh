@@ -6,5 +6,6 @@ cd "$(dirname "$0")/.."
 out="${1:-out/demo}"
 bash scripts/install-deps.sh
 cmake --preset release >/dev/null
-cmake --build --preset release -j "$(nproc)" --target dynpos_cli
+cmake --build --preset release -j "$(nproc)" --target dynpos_cli _dynpos
+bash scripts/install-python.sh build/release
 ./build/release/bin/dynpos demo --out "$out"

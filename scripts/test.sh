@@ -21,4 +21,5 @@ else
 fi
 cmake --preset "$preset" "${launcher[@]}" >/dev/null
 cmake --build --preset "$preset" -j "$(nproc)"
+bash scripts/install-python.sh "build/$preset"
 ctest --preset "$preset" -j "$(nproc)"

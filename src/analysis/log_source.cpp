@@ -69,7 +69,46 @@ io::InputReport describe_input(const core::Log& log, const std::string& file,
   return input;
 }
 
+namespace {
+
+// The channels of an in-memory log, each by its name or as ROLE=CHANNEL in `columns` renames
+// it: channel → role.
+std::map<std::string, std::string> memory_roles(const LogSource& source) {
+  const core::Log& in = *source.memory;
+  std::map<std::string, std::string> roles;
+  for (const std::string& name : in.channel_names()) roles[name] = name;
+  for (const std::string& c : source.columns) {
+    const auto eq = c.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == c.size())
+      throw option_error("col", "malformed argument '" + c + "': expected ROLE=CHANNEL");
+    if (!in.has(c.substr(eq + 1)))
+      throw option_error("col", "the log has no channel '" + c.substr(eq + 1) + "'",
+                         "the channels are the log's names");
+    roles[c.substr(eq + 1)] = c.substr(0, eq);
+  }
+  return roles;
+}
+
+// An in-memory log with its channels named by their roles (memory_roles).
+LoadedLog load_memory(const LogSource& source) {
+  const core::Log& in = *source.memory;
+  const std::map<std::string, std::string> roles = memory_roles(source);
+  LoadedLog out;
+  out.log = core::Log(in.time());
+  for (const core::Channel& ch : in.channels())
+    out.log.add_channel(roles.at(ch.name), ch.unit, ch.values, ch.interp);
+  const std::string name = source.log.empty() ? "<memory>" : source.log.string();
+  io::FileReport file;
+  file.format = "memory";
+  file.time_format = "seconds";
+  out.input = describe_input(out.log, name, std::move(file));
+  return out;
+}
+
+}  // namespace
+
 LoadedLog LogSource::load(const RoleFilter& wanted) const {
+  if (memory) return load_memory(*this);
   if (reads_nmea(*this)) return load_nmea(*this, wanted);
   return read_log_files(log, column_map(wanted), resample_options(),
                         {.format = io::LogFileRead::Format::kCsv, .strict = strict});
@@ -84,6 +123,13 @@ core::ResampleOptions LogSource::resample_options() const {
 }
 
 core::Log LogSource::read(const RoleFilter& wanted) const { return load(wanted).log; }
+
+bool LogSource::gives(const std::string& role, const RoleFilter& wanted) const {
+  if (!memory) return column_map(wanted).find(role) != nullptr;
+  for (const auto& [channel, r] : memory_roles(*this))
+    if (r == role) return true;
+  return false;
+}
 
 io::InputReport relative_to(io::InputReport input, const std::filesystem::path& base) {
   const auto relative = [&base](std::string& path) {

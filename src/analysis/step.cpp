@@ -38,7 +38,7 @@ StepSignals read_signals(const StepRequest& request) {
   const RoleFilter wanted = [total_speed](const std::string& role) {
     return total_speed && (role == "u" || role == "v");
   };
-  if (!total_speed && src.column_map(wanted).find("output") == nullptr) {
+  if (!total_speed && !src.gives("output", wanted)) {
     throw option_error("col:output", "no output column",
                        "map the measured response, e.g. --col output=rpm.stb, or use "
                        "--derive total-speed with u and v");

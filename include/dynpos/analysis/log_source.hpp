@@ -6,6 +6,7 @@
 /// time column and clock offset, aligned on the main log's time axis (read_log_files).
 
 #include <filesystem>
+#include <memory>
 #include <functional>
 #include <optional>
 #include <string>
@@ -44,6 +45,11 @@ struct LogSource {
   std::string time_format = {};  ///< --time-format; empty = the map's (auto)
   std::string date = {};         ///< --date YYYY-MM-DD; empty = the map's (none)
   std::string time_order = {};   ///< --time-order; empty = the map's (error)
+  /// A log already in memory (SI, channels named by role), used instead of the file `log`:
+  /// what a program or the Python API built from arrays. Every channel is taken, by its name
+  /// or as `columns` renames it (ROLE=CHANNEL); units, maps and time options do not apply.
+  /// `log` names it in reports.
+  std::shared_ptr<const core::Log> memory;
 
   /// The map from map_file, then columns/units and the time options; `time` defaults to the
   /// column "time" unless time.sec is mapped.
@@ -61,6 +67,11 @@ struct LogSource {
 
   /// load(wanted).log.
   core::Log read(const RoleFilter& wanted) const;
+
+  /// Whether load(wanted) gives `role`: a column mapped to it (or, for a file, a header column
+  /// of that name that `wanted` accepts); for a log in memory, a channel of that name or one
+  /// renamed to it. Reads only the header of a file.
+  bool gives(const std::string& role, const RoleFilter& wanted) const;
 
   /// {max_gap_s}, checked: throws option_error("max_gap") if it is negative or NaN.
   core::ResampleOptions resample_options() const;

@@ -1,0 +1,104 @@
+"""The Python API against the command line and the library: each result's to_dict() is the
+CLI's --json for the same input, logs are numpy views in SI, bad input is a ValueError."""
+
+import json
+import math
+import os
+import subprocess
+
+import numpy as np
+import pytest
+
+import dynpos
+
+BIN = os.environ.get("DYNPOS_BIN", "dynpos")
+SOURCE = os.environ.get("DYNPOS_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
+STEPS = os.path.join(SOURCE, "tests", "cli", "short_steps.csv")
+
+
+def cli_json(tmp_path, *args):
+    out = tmp_path / "cli.json"
+    subprocess.run([BIN, *args, "--json", str(out)], check=True, capture_output=True)
+    return json.loads(out.read_text())
+
+
+def step_log(path):
+    """A first-order response to two steps: K = 2, T = 3 s, no dead time, at 10 Hz."""
+    t = np.arange(0.0, 80.0, 0.1)
+    u = np.where(t >= 10.0, 1.0, 0.0) + np.where(t >= 45.0, 1.0, 0.0)
+    y = 2.0 * (np.where(t >= 10.0, 1.0 - np.exp(-(t - 10.0) / 3.0), 0.0)
+               + np.where(t >= 45.0, 1.0 - np.exp(-(t - 45.0) / 3.0), 0.0))
+    with open(path, "w", encoding="utf-8") as f:
+        f.write("time [s],cmd [1],response [m]\n")
+        for row in zip(t, u, y):
+            f.write("{:.1f},{:.0f},{:.9f}\n".format(*row))
+    return t, u, y
+
+
+def test_read_log_gives_numpy_views_in_si(tmp_path):
+    (tmp_path / "a.csv").write_text("time [s],heading [deg]\n0,90\n1,180\n")
+    log = dynpos.read_log(tmp_path / "a.csv")
+    h = log["heading"]
+    assert h.dtype == np.float64 and not h.flags.writeable and h.base is not None
+    np.testing.assert_allclose(h, [math.pi / 2, math.pi])
+    np.testing.assert_array_equal(log.time, [0.0, 1.0])
+    assert log.input["files"][0]["format"] == "csv"
+    assert "heading" in log and len(log) == 2
+
+
+def test_identify_step_equals_the_cli_json(tmp_path):
+    step_log(tmp_path / "s.csv")
+    col = {"input": "cmd", "output": "response"}
+    r = dynpos.identify_step(tmp_path / "s.csv", col=col)
+    expected = cli_json(tmp_path, "identify", "step", str(tmp_path / "s.csv"), "--col",
+                        "input=cmd", "--col", "output=response")
+    assert r.to_dict() == expected
+    assert len(r.steps) == 2
+    assert r.steps[0].K == pytest.approx(2.0, rel=1e-3)
+    assert r.steps[0].T == pytest.approx(3.0, rel=1e-2)
+
+
+def test_a_log_from_arrays_gives_the_same_steps_as_its_file(tmp_path):
+    step_log(tmp_path / "s.csv")
+    t, u, y = np.loadtxt(tmp_path / "s.csv", delimiter=",", skiprows=1, unpack=True)
+    log = dynpos.Log.from_arrays(t, {"input": u, "output": y})  # the file's values exactly
+    a = dynpos.identify_step(log).to_dict()["steps"]
+    b = dynpos.identify_step(tmp_path / "s.csv", col={"input": "cmd", "output": "response"})
+    assert a == b.to_dict()["steps"]
+
+
+def test_leverarm_gnss_equals_the_cli_json(tmp_path):
+    run = dynpos.simulate("turning-circle", seed=2, duration=150, out=tmp_path / "tc")
+    assert run.truth["seed"] == 2
+    log = tmp_path / "tc" / "log.csv"
+    r = dynpos.leverarm_gnss(log, imu_arm="0.358,0.804,-4.321")
+    expected = cli_json(tmp_path, "leverarm", "gnss", str(log), "--imu-arm",
+                        "0.358,0.804,-4.321")
+    assert r.to_dict() == expected
+    assert r.method == "ins" and r.reference == "co"
+    assert [a.name for a in r.arms] == ["gnss1", "gnss2", "gnss3", "mru2"]
+
+
+def test_simulate_is_deterministic_and_returns_the_truth():
+    a = dynpos.simulate("surge-steps-forward", seed=5, duration=60)
+    b = dynpos.simulate("surge-steps-forward", seed=5, duration=60)
+    np.testing.assert_array_equal(a.log["rpm.port"], b.log["rpm.port"])
+    assert a.truth["scenario"]["name"] == "surge-steps-forward"
+    assert "u" in a.motion
+
+
+def test_bad_input_is_an_input_error_with_the_cli_message(tmp_path):
+    bad = tmp_path / "bad.csv"
+    bad.write_text("time [s],cmd [1],response [m]\n0,0,0\n0.1,x,0\n")
+    with pytest.raises(dynpos.InputError) as e:
+        dynpos.identify_step(bad, col={"input": "cmd", "output": "response"})
+    assert isinstance(e.value, ValueError)
+    cli = subprocess.run([BIN, "identify", "step", str(bad), "--col", "input=cmd", "--col",
+                          "output=response"], capture_output=True, text=True)
+    assert cli.returncode == 2
+    assert "bad.csv:3:2" in str(e.value)
+    assert str(e.value) in cli.stderr
+    with pytest.raises(dynpos.InputError, match="unknown option 'min_stepp'"):
+        dynpos.identify_step(STEPS, min_stepp=1.0)
+    with pytest.raises(dynpos.InputError, match="column 'x'"):
+        dynpos.Log.from_arrays(np.arange(3.0), {"x": np.arange(2.0)})
