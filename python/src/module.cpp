@@ -38,10 +38,10 @@ std::shared_ptr<Log> log_from_arrays(py::array_t<double, py::array::c_style> tim
     const auto name = key.cast<std::string>();
     const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(value);
     if (!a || a.ndim() != 1 || static_cast<std::size_t>(a.size()) != log->size())
-      throw dynpos::core::InputError({{}, {}, {}, name},
-                                     "column '" + name + "' is not a 1-D array of " +
-                                         std::to_string(log->size()) + " numbers",
-                                     "give one value per time stamp (NaN where missing)");
+      throw dynpos::core::InputError(
+          {{}, {}, {}, name},
+          "column '" + name + "' is not a 1-D array of " + std::to_string(log->size()) + " numbers",
+          "give one value per time stamp (NaN where missing)");
     std::string unit = units.contains(key) ? units[key].cast<std::string>() : "";
     log->add_channel(name, unit, std::vector<double>(a.data(), a.data() + a.size()));
   }
@@ -50,7 +50,7 @@ std::shared_ptr<Log> log_from_arrays(py::array_t<double, py::array::c_style> tim
 
 void bind_log(py::module_& m) {
   py::class_<Log, std::shared_ptr<Log>>(m, "Log", py::dynamic_attr(),
-                                      "A log: one time axis [s], channels in SI.")
+                                        "A log: one time axis [s], channels in SI.")
       .def_static("from_arrays", &log_from_arrays, py::arg("time"), py::arg("columns"),
                   py::arg("units") = py::dict(),
                   "A log from numpy arrays: time [s] and {role: values} (copied once).")
@@ -134,8 +134,7 @@ void bind_analyses(py::module_& m) {
       .def_readwrite("min_step", &StepRequest::min_step)
       .def_readwrite("min_plateau", &StepRequest::min_plateau_s)
       .def_readwrite("segments", &StepRequest::segments_file);
-  bind_run<StepRequest>(m, "run_step",
-                        [](const StepRequest& q) { return to_json(run_step(q)); });
+  bind_run<StepRequest>(m, "run_step", [](const StepRequest& q) { return to_json(run_step(q)); });
   py::class_<LeverarmGnssRequest>(m, "LeverarmGnssRequest")
       .def(py::init<>())
       .def_readwrite("source", &LeverarmGnssRequest::source)

@@ -6,8 +6,8 @@
 /// time column and clock offset, aligned on the main log's time axis (read_log_files).
 
 #include <filesystem>
-#include <memory>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
