@@ -220,12 +220,12 @@ AgilityReport run_agility(const AgilityRequest& request) {
     report.result = analyse_steps(request, log, channels, speed, options);
   } catch (const core::InputError& e) {
     // Name the log, and the thruster channel by its role, in the library's message.
-    core::InputLocation where = e.where();
-    if (where.file.empty()) where.file = request.source.log.string();
+    const core::InputError named = with_file(e, request.source.log.string());
+    core::InputLocation where = named.where();
     for (const std::string& n : report.thrusters) {
       if (where.column_name == n) where.column_name = report.channel + "." + n;
     }
-    throw core::InputError(where, e.problem(), e.hint());
+    throw core::InputError(where, named.problem(), named.hint());
   }
   report.cases = group_cases(report.result, log, request.min_demand_pct);
   return report;

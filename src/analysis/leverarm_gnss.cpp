@@ -37,6 +37,9 @@ std::string flag(std::string key) {
   return "--" + key;
 }
 
+// The example of an X,Y,Z option in its error's hint (gains, initial arms and P₀ alike).
+const char* const kGainExample = "0.02,0.02,20";
+
 // "gnssK=VALUE" → (gnssK, VALUE).
 std::pair<std::string, std::string> split_eq(const std::string& text, const std::string& key,
                                              const std::string& example) {
@@ -46,25 +49,6 @@ std::pair<std::string, std::string> split_eq(const std::string& text, const std:
                        "for example " + flag(key) + " " + example);
   }
   return {text.substr(0, eq), text.substr(eq + 1)};
-}
-
-Vec3 parse_vec3(const std::string& text, const std::string& key) {
-  std::stringstream ss(text);
-  std::string item;
-  std::vector<double> v;
-  while (std::getline(ss, item, ',')) {
-    try {
-      std::size_t used = 0;
-      v.push_back(std::stod(item, &used));
-      if (used != item.size()) v.push_back(NAN);
-    } catch (const std::exception&) {
-      v.push_back(NAN);
-    }
-  }
-  if (v.size() != 3 || !std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); }))
-    throw option_error(key, "'" + text + "' is not three numbers X,Y,Z",
-                       "for example " + flag(key) + " 0.02,0.02,20");
-  return {v[0], v[1], v[2]};
 }
 
 calib::GnssArmMethod parse_method(const std::string& m) {
@@ -97,10 +81,10 @@ void check_antenna_files(const std::vector<std::string>& specs, const std::strin
 calib::GnssArmOptions arm_options(const LeverarmGnssRequest& q) {
   calib::GnssArmOptions lo;
   if (q.method != "auto" && q.method != "ins") lo.method = parse_method(q.method);
-  if (!q.w1.empty()) lo.luenberger_w_p0 = parse_vec3(q.w1, "w1");
-  if (!q.w2.empty()) lo.luenberger_w_arm = parse_vec3(q.w2, "w2");
-  if (!q.gamma.empty()) lo.adaptive_gamma = parse_vec3(q.gamma, "gamma");
-  if (!q.L.empty()) lo.adaptive_l = parse_vec3(q.L, "L");
+  if (!q.w1.empty()) lo.luenberger_w_p0 = parse_vec3(q.w1, "w1", kGainExample);
+  if (!q.w2.empty()) lo.luenberger_w_arm = parse_vec3(q.w2, "w2", kGainExample);
+  if (!q.gamma.empty()) lo.adaptive_gamma = parse_vec3(q.gamma, "gamma", kGainExample);
+  if (!q.L.empty()) lo.adaptive_l = parse_vec3(q.L, "L", kGainExample);
   auto positive = [](const Vec3& v, const char* key) {
     if (!(v.array() > 0.0).all())
       throw option_error(key, "gains must be > 0", "for example 0.02,0.02,20");
@@ -112,9 +96,9 @@ calib::GnssArmOptions arm_options(const LeverarmGnssRequest& q) {
   if (!(q.adaptive_rate > 0.0) || !std::isfinite(q.adaptive_rate))
     throw option_error("adaptive_rate", "the rate must be > 0", "for example 0.1 [1/s]");
   lo.adaptive_rate_per_s = q.adaptive_rate;
-  if (!q.init_p0.empty()) lo.initial_p0_n_m = parse_vec3(q.init_p0, "init_p0");
+  if (!q.init_p0.empty()) lo.initial_p0_n_m = parse_vec3(q.init_p0, "init_p0", kGainExample);
   for (const std::string& s : q.init)
-    parse_vec3(split_eq(s, "init", "gnss1=0.2,-0.6,-13.9").second, "init");
+    parse_vec3(split_eq(s, "init", "gnss1=0.2,-0.6,-13.9").second, "init", kGainExample);
   if (q.lag < 1) throw option_error("lag", "the lag must be >= 1 epoch");
   lo.lag_epochs = q.lag;
   if (q.time_offset && q.estimate_time_offset)
@@ -153,7 +137,7 @@ std::vector<Vec3> initial_arms(const std::vector<std::string>& init,
     if (it == names.end())
       throw option_error("init", "antenna '" + p + "' is not estimated",
                          "the antennas are the gnssK of the inputs (or --antennas)");
-    arms[static_cast<std::size_t>(it - names.begin())] = parse_vec3(v, "init");
+    arms[static_cast<std::size_t>(it - names.begin())] = parse_vec3(v, "init", kGainExample);
   }
   return arms;
 }
@@ -168,13 +152,21 @@ struct Inputs {
   std::vector<std::string> notes;
 };
 
+// `log` with shift_s added to its times.
+core::Log shifted_by(const core::Log& log, double shift_s) {
+  std::vector<double> t = log.time();
+  for (double& x : t) x += shift_s;
+  core::Log out(std::move(t));
+  for (const core::Channel& c : log.channels()) out.add_channel(c.name, c.unit, c.values, c.interp);
+  return out;
+}
+
 // An NMEA file's fixes on the log's clock: NMEA time is UTC seconds of day, the log's t = 0 is
 // at utc_at_zero; without it the NMEA times must overlap the log's (a log kept in UTC).
 core::Log nmea_on_log_clock(const core::Log& nmea, const core::Log& motion,
                             const std::optional<double>& utc0, const std::string& file) {
-  std::vector<double> t = nmea.time();
+  const std::vector<double>& t = nmea.time();
   const auto& mt = motion.time();
-  const double shift = utc0 ? *utc0 : 0.0;
   if (!utc0) {
     const bool overlap = !t.empty() && t.back() >= mt.front() && t.front() <= mt.back();
     if (!overlap)
@@ -186,11 +178,7 @@ core::Log nmea_on_log_clock(const core::Log& nmea, const core::Log& motion,
           "give the UTC time of the log's t = 0 with --utc-at-zero HH:MM:SS[.sss] (a virtual "
           "trial writes it as start_utc in truth.json)");
   }
-  for (double& x : t) x -= shift;
-  core::Log shifted(t);
-  for (const core::Channel& c : nmea.channels())
-    shifted.add_channel(c.name, c.unit, c.values, c.interp);
-  return shifted;
+  return shifted_by(nmea, utc0 ? -*utc0 : 0.0);
 }
 
 // An antenna's NMEA file — a serial capture with logger stamps and cut lines is fine — on the
@@ -213,23 +201,14 @@ core::Log read_antenna_capture(const LeverarmGnssRequest& q, const std::string& 
   if (in.input.origin) main0 = io::parse_iso8601(*in.input.origin);
   core::Log placed;
   if (nl.origin_ns && main0 && !utc0) {
-    const double shift = 1e-9 * static_cast<double>(*nl.origin_ns - main0->ns);
-    std::vector<double> t = nl.log.time();
-    for (double& x : t) x += shift;
-    placed = core::Log(t);
-    for (const core::Channel& c : nl.log.channels())
-      placed.add_channel(c.name, c.unit, c.values, c.interp);
+    placed = shifted_by(nl.log, 1e-9 * static_cast<double>(*nl.origin_ns - main0->ns));
     nl.report.notes.push_back("aligned on the main log by its absolute time stamps");
   } else if (nl.origin_ns) {
     const std::int64_t day_ns = 86'400'000'000'000;
     const double t0 = 1e-9 * static_cast<double>(((*nl.origin_ns % day_ns) + day_ns) % day_ns);
-    std::vector<double> t = nl.log.time();
-    for (double& x : t) x += t0;
-    core::Log of_day(t);
-    for (const core::Channel& c : nl.log.channels())
-      of_day.add_channel(c.name, c.unit, c.values, c.interp);
-    placed = nmea_on_log_clock(of_day, in.log, utc0, file);
-  } else {  // no date anywhere: GGA's times of day
+    placed = nmea_on_log_clock(shifted_by(nl.log, t0), in.log, utc0, file);
+  } else {  // no date anywhere: the times of day of GGA itself, by the plain-file reader
+
     placed = nmea_on_log_clock(io::read_nmea_gnss(file, prefix).log, in.log, utc0, file);
   }
   in.input.append(describe_input(placed, file, std::move(nl.report)));
@@ -300,9 +279,7 @@ calib::MotionFromLog motion_of(const core::Log& log, const std::filesystem::path
   try {
     return calib::motion_from_mixed_log(log);
   } catch (const core::InputError& e) {
-    core::InputLocation where = e.where();
-    if (where.file.empty()) where.file = file.string();
-    throw core::InputError(where, e.problem(), e.hint());
+    throw with_file(e, file.string());
   }
 }
 

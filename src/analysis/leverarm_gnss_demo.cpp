@@ -79,9 +79,7 @@ ReportSection leverarm_gnss_demo_section(const std::filesystem::path& campaign_d
   io::write_json((dir / "gnss.json").string(), doc);
   const calib::GnssArmResult& r = report.result;
   const LeverarmGnssReport ins = ins_estimate(log, campaign_dir, truth);
-  const std::filesystem::path ins_plot = dir / "residuals-ins.svg";
-  std::filesystem::rename(write_figures(ins, dir).front(), ins_plot);
-  plots.push_back(ins_plot);
+  for (const auto& p : write_figures(ins, dir)) plots.push_back(p);
   report::Table cmp;
   cmp.header = {"sensor",     "method",    "x est [m]",  "x true [m]",      "y est [m]",
                 "y true [m]", "z est [m]", "z true [m]", "max |error| [cm]"};

@@ -18,36 +18,10 @@ namespace {
 
 using Vec3 = Eigen::Vector3d;
 
+// --imu-arm: the fusion MRU's arm from CO, or none.
 std::optional<Vec3> imu_arm(const std::string& text) {
   if (text.empty()) return std::nullopt;
-  std::stringstream ss(text);
-  std::string item;
-  std::vector<double> v;
-  while (std::getline(ss, item, ',')) {
-    std::size_t used = 0;
-    double x = NAN;
-    try {
-      x = std::stod(item, &used);
-    } catch (const std::exception&) {
-    }
-    v.push_back(used == item.size() ? x : NAN);
-  }
-  if (v.size() != 3 || !std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); }))
-    throw option_error("imu_arm", "'" + text + "' is not three numbers X,Y,Z",
-                       "for example --imu-arm 0.358,0.804,-4.321 (the MRU from CO [m])");
-  return Vec3(v[0], v[1], v[2]);
-}
-
-// The error of the library with the log's file put in.
-template <typename F>
-auto in_file(const std::string& file, F&& f) {
-  try {
-    return f();
-  } catch (const core::InputError& e) {
-    core::InputLocation where = e.where();
-    if (where.file.empty()) where.file = file;
-    throw core::InputError(where, e.problem(), e.hint());
-  }
+  return parse_vec3(text, "imu_arm", "0.358,0.804,-4.321");
 }
 
 nlohmann::json vec_json(const Vec3& v) {
@@ -91,8 +65,12 @@ LeverarmInsResult run_ins(const LeverarmGnssRequest& q, const core::Log& log,
   LeverarmInsResult out;
   out.imu = q.imu.empty() ? (imus.empty() ? "mru1" : imus.front()) : q.imu;
   const calib::MruAccel accel = *calib::parse_mru_accel(q.accel);
-  const calib::ImuSeries imu =
-      in_file(file, [&] { return calib::imu_from_log(log, out.imu, accel); });
+  calib::ImuSeries imu;
+  try {
+    imu = calib::imu_from_log(log, out.imu, accel);
+  } catch (const core::InputError& e) {
+    throw with_file(e, file);
+  }
   calib::InsArmOptions o;
   o.imu_arm_b_m = imu_arm(q.imu_arm);
   o.estimate_time_offset = !q.time_offset.has_value();
@@ -108,8 +86,11 @@ LeverarmInsResult run_ins(const LeverarmGnssRequest& q, const core::Log& log,
   for (const std::string& m : calib::mru_accel_names(log))
     if (m != out.imu) out.mru_names.push_back(m);
   if (!out.mru_names.empty()) {
-    out.mrus = in_file(
-        file, [&] { return calib::estimate_mru_arms_from_imu(imu, log, out.mru_names, 2.0); });
+    try {
+      out.mrus = calib::estimate_mru_arms_from_imu(imu, log, out.mru_names, 2.0);
+    } catch (const core::InputError& e) {
+      throw with_file(e, file);
+    }
     const Vec3 offset = o.imu_arm_b_m.value_or(Vec3::Zero());
     for (calib::ArmEstimate& a : out.mrus.arms) a.l_b_m += offset;
   }

@@ -1,6 +1,10 @@
 #include "dynpos/analysis/options.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <sstream>
+#include <vector>
 
 namespace dynpos::analysis {
 
@@ -12,6 +16,36 @@ core::InputError option_error(const std::string& key, const std::string& problem
 core::InputError option_error_in_file(const std::filesystem::path& file, const std::string& key,
                                       const std::string& problem, const std::string& hint) {
   return core::InputError::for_option(key, problem, hint, file.string());
+}
+
+core::InputError with_file(const core::InputError& e, const std::string& file) {
+  core::InputLocation where = e.where();
+  if (where.file.empty()) where.file = file;
+  return core::InputError(where, e.problem(), e.hint());
+}
+
+Eigen::Vector3d parse_vec3(const std::string& text, const std::string& key,
+                           const std::string& example) {
+  std::stringstream ss(text);
+  std::string item;
+  std::vector<double> v;
+  while (std::getline(ss, item, ',')) {
+    try {
+      std::size_t used = 0;
+      v.push_back(std::stod(item, &used));
+      if (used != item.size()) v.push_back(NAN);
+    } catch (const std::exception&) {
+      v.push_back(NAN);
+    }
+  }
+  if (v.size() != 3 ||
+      !std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); })) {
+    std::string flag = "--" + key;
+    std::replace(flag.begin(), flag.end(), '_', '-');
+    throw option_error(key, "'" + text + "' is not three numbers X,Y,Z",
+                       "for example " + flag + " " + example);
+  }
+  return {v[0], v[1], v[2]};
 }
 
 void check_output_file(const std::string& key, const std::string& path) {

@@ -45,12 +45,13 @@ ImuSeries imu_from_log(const core::Log& log, const std::string& name, MruAccel a
       rows.push_back(i);
     }
   }
-  const std::vector<double> psi = detail::resample_onto(t, log.values("heading"), grid, true);
+  const std::vector<double>& heading = log.values("heading");
+  const std::vector<double> psi = detail::resample_onto(t, heading, grid, true);
   ImuSeries imu;
   imu.name = name;
   std::vector<double> heading_t;
   for (std::size_t i = 0; i < t.size(); ++i)
-    if (std::isfinite(log.values("heading")[i])) heading_t.push_back(t[i]);
+    if (std::isfinite(heading[i])) heading_t.push_back(t[i]);
   if (heading_t.size() >= 2) imu.heading_spacing_s = core::median_spacing_s(heading_t);
   imu.accel = accel;
   for (std::size_t k = 0; k < grid.size(); ++k) {

@@ -230,7 +230,7 @@ TEST_F(LeverarmGnss, DemoSectionComparesWithTheTruth) {
   EXPECT_NE(s.markdown.find("| ins "), std::string::npos);  // the logger-only rows
   const std::filesystem::path out = dir_ / "analysis" / "leverarm";
   for (const char* f : {"gnss.json", "arm-gnss1.svg", "arm-gnss3.svg", "p0-ne.svg",
-                        "excitation.svg", "gnss-ins.json", "residuals-ins.svg"})
+                        "excitation.svg", "gnss-ins.json", "residuals.svg"})
     EXPECT_TRUE(std::filesystem::exists(out / f)) << f;
   EXPECT_EQ(leverarm_gnss_demo_section(dir_ / "no-campaign").title, "");
 }

@@ -8,6 +8,7 @@
 /// keys joined by '/' ("from/to"). The CLI shows a key as its option ("--min-step",
 /// "--col output=COLUMN", "--from/--to"), the Python API as its keyword argument.
 
+#include <Eigen/Core>
 #include <filesystem>
 #include <string>
 
@@ -23,6 +24,15 @@ core::InputError option_error(const std::string& key, const std::string& problem
 /// time window outside the log): the file, then the key as option_error() names it.
 core::InputError option_error_in_file(const std::filesystem::path& file, const std::string& key,
                                       const std::string& problem, const std::string& hint = {});
+
+/// `e` with the file `file` in its location when the library did not know the file (it read a
+/// Log, not the file); an error that names a file keeps it.
+core::InputError with_file(const core::InputError& e, const std::string& file);
+
+/// The text "X,Y,Z" as three finite numbers; else option_error(key), the hint showing the
+/// option with `example`.
+Eigen::Vector3d parse_vec3(const std::string& text, const std::string& key,
+                           const std::string& example);
 
 /// Throws option_error(key) if the folder of the output file `path` does not exist. "" and "-"
 /// (standard output) are always fine.
