@@ -7,8 +7,8 @@
 #include <exception>
 
 #include "commands.hpp"
+#include "dynpos/analysis/option_spelling.hpp"
 #include "dynpos/core/error.hpp"
-#include "option_spelling.hpp"
 
 int main(int argc, char** argv) {
   using namespace dynpos::cli;
@@ -37,7 +37,7 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? kExitOk : kExitInputError;
   } catch (const dynpos::core::InputError& e) {
-    fmt::print(stderr, "dynpos: error: {}\n", cli_message(e));
+    fmt::print(stderr, "dynpos: error: {}\n", dynpos::analysis::cli_message(e));
     return kExitInputError;
   } catch (const Unavailable& u) {
     fmt::print(stderr, "dynpos {}: not available in this version; planned: {}\n", u.command,

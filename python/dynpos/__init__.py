@@ -1,16 +1,19 @@
-"""dynpos: dynamic positioning of ships — identification, lever arms and the virtual sea trial.
+"""dynpos: dynamic positioning of ships — identification, lever arms, control and the virtual
+sea trial.
 
 The engine is C++ (the library's application layer); this package calls it in-process, with
-numpy arrays in and out. Every analysis takes a log (a path, or a :class:`Log`) and keyword
-arguments named like the command line's options (``--min-step`` is ``min_step``, ``--from``
-is ``from_``), and returns a :class:`Result` whose ``to_dict()`` is the CLI's ``--json``.
-Units are SI unless a name says otherwise. Bad input raises :class:`InputError` (a
-``ValueError``) with the message the library gives.
+numpy arrays in and out. Every analysis takes a log (a path, a :class:`Log` or a pandas
+DataFrame) and keyword arguments named like the command line's options (``--min-step`` is
+``min_step``, ``--from`` is ``from_``, ``--lambda`` is ``lambda_``), and returns a
+:class:`Result` whose ``to_dict()`` is the CLI's ``--json`` document for the same input.
+``json=FILE`` and the plot options write the files the CLI writes. Units are SI unless a name
+says otherwise. Bad input raises :class:`InputError` (a ``ValueError``) with the message the
+CLI prints, and ``file``, ``line``, ``column`` and ``option`` attributes.
 """
 
 from __future__ import annotations
 
-import json
+import json as _json
 import os
 import tempfile
 from typing import Any, Mapping, Sequence
@@ -18,26 +21,39 @@ from typing import Any, Mapping, Sequence
 from . import _dynpos
 from ._dynpos import InputError, Log
 
-__all__ = ["InputError", "Log", "Result", "Simulation", "read_log", "identify_step",
-           "leverarm_gnss", "simulate"]
+__all__ = [
+    "InputError", "Log", "Result", "Simulation", "read_log", "identify_step",
+    "identify_thrust_map", "identify_agility", "identify_four_corner",
+    "identify_station_keeping", "leverarm_gnss", "leverarm_mru", "hybrid_case", "hybrid_vessel",
+    "compare", "simulate", "scenarios",
+]
 
 
 class Result:
-    """A report: attribute access to its fields (``r.steps[0].gain``), ``to_dict()`` (the CLI's
-    ``--json`` document) and ``to_frame(key)`` (a list of records as a pandas DataFrame)."""
+    """A report: attribute access to its fields (``r.steps[0].K``), ``to_dict()`` (the CLI's
+    ``--json`` document) and ``to_frame()`` (its table as a pandas DataFrame)."""
 
-    def __init__(self, data: Mapping[str, Any]):
+    def __init__(self, data: Mapping[str, Any], table: str | None = None):
         self._data = dict(data)
+        self._table = table
 
     def to_dict(self) -> dict:
-        return json.loads(json.dumps(self._data))
+        """The document as plain dicts and lists (a deep copy)."""
+        return _json.loads(_json.dumps(self._data))
 
-    def to_frame(self, key: str):
+    def to_frame(self, key: str | None = None):
+        """The list of records under ``key`` (default: the report's table, e.g. ``steps``) as a
+        pandas DataFrame; nested fields become columns such as ``sigma.K``. Needs pandas."""
         import pandas  # optional: only to_frame needs it
 
-        return pandas.DataFrame(self._data[key])
+        key = key or self._table
+        if key is None:
+            raise ValueError("this result has no table; name a key holding a list of records")
+        return pandas.json_normalize(self._data[key])
 
     def __getattr__(self, name: str):
+        if name.startswith("_"):
+            raise AttributeError(name)
         try:
             return _wrap(self._data[name])
         except KeyError:
@@ -45,6 +61,9 @@ class Result:
 
     def __getitem__(self, name: str):
         return _wrap(self._data[name])
+
+    def __contains__(self, name: str) -> bool:
+        return name in self._data
 
     def __dir__(self):
         return sorted(set(self._data) | {"to_dict", "to_frame"})
@@ -61,17 +80,83 @@ def _wrap(value):
     return value
 
 
+def _log_from_frame(frame, time: str | None = "time", units: Mapping[str, str] | None = None):
+    """A log from a pandas DataFrame: the ``time`` column [s] (or, with ``time=None``, the
+    index: seconds, or a DatetimeIndex as seconds from its first stamp, kept in ``log.origin``)
+    and every other numeric column as a channel named by the column (copied once; NaN stays
+    missing). ``units`` gives SI units by column."""
+    import numpy
+    import pandas
+
+    origin = None
+    if time is None:
+        index = frame.index
+        if isinstance(index, pandas.DatetimeIndex):
+            origin = index[0]
+            t = (index - origin).total_seconds().to_numpy(dtype=float)
+        else:
+            t = index.to_numpy(dtype=float)
+        columns = frame
+    else:
+        if time not in frame.columns:
+            raise InputError(f"(time): the DataFrame has no column '{time}'; name the time "
+                             "column with time=..., or time=None for the index")
+        t = frame[time].to_numpy(dtype=float)
+        columns = frame.drop(columns=[time])
+    data = {str(name): numpy.asarray(columns[name], dtype=float) for name in columns.columns
+            if numpy.issubdtype(columns[name].dtype, numpy.number)}
+    log = Log.from_arrays(t, data, dict(units or {}))
+    log.origin = origin
+    return log
+
+
+Log.from_frame = staticmethod(_log_from_frame)
+
+
 def _pairs(mapping: Mapping[str, Any] | Sequence[str] | None) -> list[str]:
     """{"role": "column"} or ["role=column"] as the CLI's ROLE=VALUE strings."""
     if mapping is None:
         return []
     if isinstance(mapping, Mapping):
         return [f"{k}={v}" for k, v in mapping.items()]
+    if isinstance(mapping, str):
+        return [mapping]
     return list(mapping)
+
+
+def _is_frame(value) -> bool:
+    return type(value).__name__ == "DataFrame" and hasattr(value, "columns")
+
+
+_LOG_OPTIONS = ("clock_offset", "max_gap", "format", "strict", "time_format", "date",
+                "time_order")
+# Options given as ROLE=VALUE (or NAME=FILE) pairs: a dict or a list of strings.
+_PAIR_OPTIONS = ("clock_offset", "gnss_log", "nmea", "init", "mru_log")
+
+
+def _option_name(key: str) -> str:
+    return "--" + key.rstrip("_").replace("_", "-")
+
+
+def _set(request, key: str, value) -> None:
+    if key.startswith("_") or not hasattr(request, key):
+        raise InputError(f"({_option_name(key)}): unknown option '{key}'")
+    if key in _PAIR_OPTIONS:
+        value = _pairs(value)
+    elif isinstance(value, os.PathLike):
+        value = os.fspath(value)
+    elif isinstance(value, (list, tuple)) and value and isinstance(value[0], os.PathLike):
+        value = [os.fspath(v) for v in value]
+    try:
+        setattr(request, key, value)
+    except TypeError as e:
+        raise InputError(f"({_option_name(key)}): {e}") from None
 
 
 def _source(log, col=None, unit=None, map=None, **log_options) -> _dynpos.LogSource:
     s = _dynpos.LogSource()
+    if _is_frame(log):
+        log = _log_from_frame(log)
     if isinstance(log, Log):
         s.memory = log
     else:
@@ -81,89 +166,181 @@ def _source(log, col=None, unit=None, map=None, **log_options) -> _dynpos.LogSou
     if map is not None:
         s.map = os.fspath(map)
     for key, value in log_options.items():
-        if key == "clock_offset":
-            value = _pairs(value)
         _set(s, key, value)
     return s
 
 
-_LOG_OPTIONS = ("clock_offset", "max_gap", "format", "strict", "time_format", "date",
-                "time_order")
-
-
-def _set(request, key: str, value) -> None:
-    if key.startswith("_") or not hasattr(request, key):
-        raise InputError(f"(--{key.rstrip('_').replace('_', '-')}): unknown option '{key}'")
-    if isinstance(value, os.PathLike):
-        value = os.fspath(value)
-    try:
-        setattr(request, key, value)
-    except TypeError as e:
-        raise InputError(f"(--{key.rstrip('_').replace('_', '-')}): {e}") from None
-
-
 def _request(cls, log, col, unit, map, options: Mapping[str, Any]):
-    log_options = {k: v for k, v in options.items() if k in _LOG_OPTIONS}
     q = cls()
-    q.source = _source(log, col, unit, map, **log_options)
+    q.source = _source(log, col, unit, map,
+                       **{k: v for k, v in options.items() if k in _LOG_OPTIONS})
     for key, value in options.items():
         if key not in _LOG_OPTIONS:
             _set(q, key, value)
     return q
 
 
+def _options(cls, options: Mapping[str, Any]):
+    q = cls()
+    for key, value in options.items():
+        _set(q, key, value)
+    return q
+
+
+def _path(value) -> str:
+    return "" if value is None else os.fspath(value)
+
+
 def read_log(path, col=None, unit=None, map=None, roles: Sequence[str] | None = None,
              **log_options) -> Log:
     """Reads a log (CSV with a column map, an NMEA 0183 capture, or several files with
     ``col={"role": "column@file"}``) into a :class:`Log` whose channels are numpy float64
-    arrays in SI, without copying: ``log["heading"]``, ``log.time``. ``log.input`` describes
-    what was read (files, time stamps, skipped lines). ``roles`` limits it to those roles."""
+    arrays in SI, without copying: ``log["heading"]`` [rad], ``log.time`` [s]. ``log.input``
+    describes what was read (files, time stamps, skipped lines). ``roles`` limits it to those
+    roles."""
     log, input_json = _dynpos.read_log(_source(path, col, unit, map, **log_options), roles)
-    log.input = json.loads(input_json)
+    log.input = _json.loads(input_json)
     return log
 
 
-def identify_step(log, col=None, unit=None, map=None, **options) -> Result:
+def identify_step(log, col=None, unit=None, map=None, *, json=None, **options) -> Result:
     """Step identification (thesis 3.2): every step of the input and a first-order-plus-dead-
-    time fit (``method="lsq"``, ``"smith"``, ``"smith2"``, ``"rk"``) of the output's response.
-    Options as ``dynpos identify step``: ``from_``, ``to``, ``step_at`` [s], ``derive``,
-    ``min_step`` (input's SI unit), ``min_plateau`` [s], ``segments`` (file)."""
+    time fit (``method="lsq"``, ``"smith"``, ``"smith2"``, ``"rk"``) of the output's response;
+    K in output unit per input unit, T and delay [s]. Options as ``dynpos identify step``:
+    ``from_``, ``to``, ``step_at`` [s], ``derive``, ``min_step`` (input's SI unit),
+    ``min_plateau`` [s], ``segments`` (file). Table: ``steps``."""
     q = _request(_dynpos.StepRequest, log, col, unit, map, options)
-    return Result(json.loads(_dynpos.run_step(q)))
+    return Result(_json.loads(_dynpos.run_step(q, _path(json))), "steps")
 
 
-def leverarm_gnss(log, col=None, unit=None, map=None, **options) -> Result:
+def identify_thrust_map(log, col=None, unit=None, map=None, *, json=None, out=None,
+                        **options) -> Result:
+    """Thrust map (3.17): c₊ and c₋ of T = c·n|n| [N/rps²] per thruster from shaft speed and
+    thrust, or with ``apply=True`` the vessel file's maps applied to the shaft speeds, written
+    to ``out`` (CSV). Options as ``dynpos identify thrust-map``: ``min_speed`` [rpm],
+    ``apply``, ``abs_speed``, ``vessel``. Table: ``thrusters``."""
+    q = _request(_dynpos.ThrustMapRequest, log, col, unit, map, options)
+    return Result(_json.loads(_dynpos.run_thrust_map(q, _path(json), _path(out))), "thrusters")
+
+
+def identify_agility(log, col=None, unit=None, map=None, *, json=None, plot=None,
+                     **options) -> Result:
+    """Thrust agility (thesis 3.5.1): the time to 63.2 % [s] of every thruster's (and the
+    speed's) response after each joystick step. Options as ``dynpos identify agility``:
+    ``window`` (["T_STEP,T_END,DIR_DEG[,THRUST_PCT[,YAW_PCT]]"]), ``current``
+    ("SPEED_MPS,TO_DEG"), ``rpm``, ``min_response`` [%], ``min_demand`` [%]; ``plot`` (SVG).
+    Table: ``directions``."""
+    q = _request(_dynpos.AgilityRequest, log, col, unit, map, options)
+    return Result(_json.loads(_dynpos.run_agility(q, _path(json), _path(plot))), "directions")
+
+
+def identify_four_corner(log, col=None, unit=None, map=None, *, json=None, plot=None,
+                         **options) -> Result:
+    """DP 4-corner test (thesis 3.5.2): the legs, their durations [s], accumulated thrust
+    [kNs] and energy [kJ]. Options as ``dynpos identify four-corner``: ``radius`` [m],
+    ``heading_tol`` [deg], ``segment`` ("auto", "setpoints", "track"), ``arm`` ((X, Y) [m]),
+    ``from_``, ``to`` [s]; ``plot`` (SVG). Table: ``legs``."""
+    if "arm" in options and isinstance(options["arm"], str):
+        options["arm"] = [float(v) for v in options["arm"].split(",")]
+    q = _request(_dynpos.FourCornerRequest, log, col, unit, map, options)
+    return Result(_json.loads(_dynpos.run_four_corner(q, _path(json), _path(plot))), "legs")
+
+
+def identify_station_keeping(log, col=None, unit=None, map=None, *, json=None,
+                             **options) -> Result:
+    """Stationkeeping (thesis 3.5.3): position and heading deviations [m, deg], thrust and power
+    over a window, or per setpoint hold. Options as ``dynpos identify station-keeping``:
+    ``from_``, ``to``, ``duration`` [s], ``per_setpoint``, ``waves``, ``current`` (as observed).
+    Table: ``windows``."""
+    q = _request(_dynpos.StationKeepingRequest, log, col, unit, map, options)
+    return Result(_json.loads(_dynpos.run_station_keeping(q, _path(json))), "windows")
+
+
+def leverarm_gnss(log, col=None, unit=None, map=None, *, json=None, plots=None,
+                  **options) -> Result:
     """GNSS antenna (and further MRU) lever arms [m, BODY]: from the logger alone by GNSS/INS
     fusion (``method="ins"``, the default with an MRU in the log) or the thesis' estimators
     (``"lsq"``, ``"luenberger"``, ``"adaptive"``). Options as ``dynpos leverarm gnss``:
     ``imu``, ``imu_arm`` ("X,Y,Z" [m]), ``accel``, ``antennas``, ``nmea``/``gnss_log``
-    (["gnssK=FILE"]), ``time_offset`` [s], ``max_time_offset`` [s], ``gnss_std`` [m], ..."""
+    ({"gnssK": FILE}), ``time_offset`` [s], ``max_time_offset`` [s], ``gnss_std`` [m], ...;
+    ``plots`` (folder). Table: ``arms``."""
     q = _request(_dynpos.LeverarmGnssRequest, log, col, unit, map, options)
-    return Result(json.loads(_dynpos.run_leverarm_gnss(q)))
+    return Result(_json.loads(_dynpos.run_leverarm_gnss(q, _path(json), _path(plots))), "arms")
+
+
+def leverarm_mru(log, col=None, unit=None, map=None, *, json=None, plots=None,
+                 **options) -> Result:
+    """MRU lever arms [m, BODY] from the MRUs' accelerations (thesis 4.3): least squares or the
+    observer. Options as ``dynpos leverarm mru``: ``mru_log`` ({"mruK": FILE}), ``accel``,
+    ``method`` ("lsq", "observer"), ``window_s``, ``tau_s`` [s], ``w1`` [1/s]; ``plots``
+    (folder). Table: ``arms``."""
+    q = _request(_dynpos.LeverarmMruRequest, log, col, unit, map, options)
+    return Result(_json.loads(_dynpos.run_leverarm_mru(q, _path(json), _path(plots))), "arms")
+
+
+def hybrid_case(case: str = "first-order", *, json=None, out=None, **options) -> Result:
+    """A hybrid integral action case study (thesis 5.3): ``"first-order"`` (5.3.1) or
+    ``"dp"`` (5.3.2), the hybrid run against the conventional one. Options as ``dynpos hybrid
+    CASE``: ``no_jumps``, ``sampled``, ``seed``, ``lambda_``, ``dwell`` [s], ``sample_period``
+    [s], ``noise_power``, ``end_time`` [s], ``heading`` [deg] (dp), ``ki`` [1/s²] and
+    ``solve_p`` (first-order); ``out`` (folder for the plots)."""
+    q = _options(_dynpos.HybridCaseRequest, {"case": case, **options})
+    return Result(_json.loads(_dynpos.run_hybrid_case(q, _path(json), _path(out))))
+
+
+def hybrid_vessel(scenario: str, *, json=None, out=None, **options) -> Result:
+    """Hybrid against conventional integral action on the virtual Gunnerus under a sudden load
+    (``"ice"`` or ``"mooring"``): peak offset [m], time back within ``within`` [m], IAE,
+    energy and jumps. Options as ``dynpos hybrid vessel``: ``seed``, ``within`` [m]; ``out``
+    (folder for the plots)."""
+    q = _options(_dynpos.HybridVesselRequest, {"scenario": scenario, **options})
+    return Result(_json.loads(_dynpos.run_hybrid_vessel(q, _path(json), _path(out))))
+
+
+def compare(a, b, *, json=None, **options) -> Result:
+    """Two results of the same analysis side by side (e.g. before and after a retrofit): each
+    figure of A and B with its change. ``a`` and ``b`` are JSON files written by an analysis,
+    or :class:`Result` objects / dicts (written to a temporary file first). Options as
+    ``dynpos compare``: ``format``, ``labels`` ("LABEL_A,LABEL_B"), ``step_tolerance`` [s].
+    Table: ``rows``."""
+    with tempfile.TemporaryDirectory(prefix="dynpos-") as tmp:
+        paths = []
+        for name, value in (("A", a), ("B", b)):
+            if isinstance(value, (Result, dict)):
+                path = os.path.join(tmp, f"{name}.json")
+                data = value.to_dict() if isinstance(value, Result) else value
+                with open(path, "w", encoding="utf-8") as f:
+                    _json.dump(data, f)
+                value = path
+            paths.append(os.fspath(value))
+        q = _options(_dynpos.CompareRequest, {"a": paths[0], "b": paths[1], **options})
+        return Result(_json.loads(_dynpos.run_compare(q, _path(json))), "rows")
 
 
 class Simulation:
     """A virtual sea-trial run: ``log`` (the trial logger, SI), ``truth`` (truth.json as a
-    dict), ``motion`` (the true motion and actuator states, truth.csv) and ``out`` (its folder)."""
+    dict), ``motion`` (the true motion and actuator states, truth.csv) and ``out`` (its folder,
+    None when it was temporary)."""
 
-    def __init__(self, out: str):
+    def __init__(self, folder: str, out: str | None):
         self.out = out
-        self.log = read_log(os.path.join(out, "log.csv"))
-        truth_csv = os.path.join(out, "truth.csv")
+        self.log = read_log(os.path.join(folder, "log.csv"))
+        truth_csv = os.path.join(folder, "truth.csv")
         with open(truth_csv, encoding="utf-8") as f:
             names = [c.split(" [")[0] for c in f.readline().strip().split(",")]
         # The true commands are fractions in truth.csv, percent as a logger's role: left out.
         self.motion = read_log(truth_csv, roles=[n for n in names if not n.startswith("command.")])
-        with open(os.path.join(out, "truth.json"), encoding="utf-8") as f:
-            self.truth = json.load(f)
+        with open(os.path.join(folder, "truth.json"), encoding="utf-8") as f:
+            self.truth = _json.load(f)
 
 
 def simulate(scenario: str, seed: int = 1, out=None, duration: float | None = None,
-             vessel=None, log_rate: float | None = None) -> Simulation:
+             vessel=None, log_rate: float | None = None):
     """Runs a scenario of the virtual R/V Gunnerus (a built-in name such as
-    ``"turning-circle"`` or a .toml file) with a master seed: the same seed gives the same
-    log, bit for bit. The files go to ``out`` as ``dynpos simulate --out`` writes them (a
-    temporary folder, removed after reading, when not given)."""
+    ``"turning-circle"``, see :func:`scenarios`, or a .toml file) with a master seed: the same
+    seed gives the same log, bit for bit. The files go to ``out`` as ``dynpos simulate --out``
+    writes them (a temporary folder, removed after reading, when not given). Returns a
+    :class:`Simulation`; for ``"campaign"`` a dict of them by scenario name."""
     q = _dynpos.SimulateRequest()
     q.scenario = os.fspath(scenario)
     q.seed = seed
@@ -171,11 +348,19 @@ def simulate(scenario: str, seed: int = 1, out=None, duration: float | None = No
     q.log_rate = log_rate
     if vessel is not None:
         q.vessel = os.fspath(vessel)
+
+    def run(folder: str, keep: bool):
+        q.out = folder
+        runs = {name: Simulation(os.fspath(path), os.fspath(path) if keep else None)
+                for name, path in _dynpos.run_simulate(q)}
+        return runs if q.scenario == "campaign" else next(iter(runs.values()))
+
     if out is not None:
-        q.out = os.fspath(out)
-        _dynpos.run_simulate(q)
-        return Simulation(q.out)
+        return run(os.fspath(out), True)
     with tempfile.TemporaryDirectory(prefix="dynpos-") as tmp:
-        q.out = tmp
-        _dynpos.run_simulate(q)
-        return Simulation(tmp)
+        return run(tmp, False)
+
+
+def scenarios() -> dict[str, str]:
+    """The built-in scenarios of the virtual sea trial: {name: description}."""
+    return dict(_dynpos.scenarios())

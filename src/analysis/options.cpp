@@ -6,6 +6,8 @@
 #include <sstream>
 #include <vector>
 
+#include "dynpos/analysis/option_spelling.hpp"
+
 namespace dynpos::analysis {
 
 core::InputError option_error(const std::string& key, const std::string& problem,
@@ -40,10 +42,8 @@ Eigen::Vector3d parse_vec3(const std::string& text, const std::string& key,
   }
   if (v.size() != 3 ||
       !std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); })) {
-    std::string flag = "--" + key;
-    std::replace(flag.begin(), flag.end(), '_', '-');
     throw option_error(key, "'" + text + "' is not three numbers X,Y,Z",
-                       "for example " + flag + " " + example);
+                       "for example " + option_spelling(key) + " " + example);
   }
   return {v[0], v[1], v[2]};
 }

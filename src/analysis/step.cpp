@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <span>
+#include <utility>
 
 #include "dynpos/analysis/json_fields.hpp"
 #include "dynpos/analysis/log_source.hpp"
@@ -206,6 +207,21 @@ void StepRequest::validate() const {
   if (!derive.empty() && derive != "total-speed") {
     throw option_error("derive", "unknown derived output '" + derive + "'",
                        "the one derived output is total-speed, √(u² + v²) (3.19)");
+  }
+  if (!std::isfinite(min_step) || min_step < 0.0) {
+    throw option_error("min_step", fmt::format("the smallest step must be ≥ 0, got {}", min_step),
+                       "give it in the input's SI unit, or 0 to adapt it to the log");
+  }
+  if (!std::isfinite(min_plateau_s) || min_plateau_s <= 0.0) {
+    throw option_error("min_plateau",
+                       fmt::format("the shortest plateau must be > 0 s, got {}", min_plateau_s),
+                       "give the time [s] the input holds a level to count as a step");
+  }
+  for (const auto& [key, value] :
+       {std::pair{"from", from_s}, {"to", to_s}, {"step_at", step_at_s}}) {
+    if (value && !std::isfinite(*value)) {
+      throw option_error(key, fmt::format("the time must be finite, got {}", *value));
+    }
   }
 }
 

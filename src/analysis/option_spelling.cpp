@@ -1,8 +1,8 @@
-#include "option_spelling.hpp"
+#include "dynpos/analysis/option_spelling.hpp"
 
 #include <algorithm>
 
-namespace dynpos::cli {
+namespace dynpos::analysis {
 namespace {
 
 std::string one_option(std::string key) {
@@ -33,4 +33,4 @@ std::string cli_message(const core::InputError& e) {
   return core::format_input_error(where, e.problem(), e.hint());
 }
 
-}  // namespace dynpos::cli
+}  // namespace dynpos::analysis

@@ -1,0 +1,32 @@
+#pragma once
+// Shared pieces of the compiled module _dynpos: one bind function per part of the application
+// layer, and the run wrapper every analysis uses (GIL released, outputs written as the CLI does,
+// the report returned as its --json text).
+
+#include <pybind11/pybind11.h>
+
+#include <filesystem>
+#include <string>
+
+#include "dynpos/io/json_writer.hpp"
+
+namespace dynpos::python {
+
+namespace py = pybind11;
+
+void bind_log(py::module_& m);       // Log, LogSource, read_log
+void bind_identify(py::module_& m);  // step, thrust map, agility, four-corner, station keeping
+void bind_calib(py::module_& m);     // GNSS and MRU lever arms
+void bind_control(py::module_& m);   // hybrid case studies and vessel, simulate, compare
+
+/// Runs `run(request)` without the GIL; writes the JSON to `json` when given (as --json does,
+/// "-" for standard output) and returns its text. `to_json` turns the report into the document.
+template <typename Request, typename Run, typename ToJson>
+std::string run_to_json(const Request& request, const std::string& json, Run run, ToJson to_json) {
+  py::gil_scoped_release release;
+  const nlohmann::json doc = to_json(run(request));
+  if (!json.empty()) io::write_json(json, doc);
+  return doc.dump();
+}
+
+}  // namespace dynpos::python

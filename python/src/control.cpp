@@ -1,0 +1,142 @@
+// Control design and the virtual sea trial (thesis chapter 5, the simulator) and the comparison
+// of two results, with the CLI's option names; outputs written where the CLI writes them.
+
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "bind.hpp"
+#include "dynpos/analysis/compare.hpp"
+#include "dynpos/analysis/hybrid_case.hpp"
+#include "dynpos/analysis/hybrid_vessel.hpp"
+#include "dynpos/analysis/options.hpp"
+#include "dynpos/analysis/simulate.hpp"
+
+namespace dynpos::python {
+namespace {
+
+using namespace dynpos::analysis;
+
+void bind_hybrid_case(py::module_& m) {
+  using Q = HybridCaseRequest;
+  py::class_<Q>(m, "HybridCaseRequest")
+      .def(py::init<>())
+      .def_readwrite("case", &Q::case_name)
+      .def_readwrite("no_jumps", &Q::no_jumps)
+      .def_readwrite("sampled", &Q::sampled)
+      .def_readwrite("seed", &Q::seed)
+      .def_readwrite("lambda_", &Q::lambda)
+      .def_readwrite("dwell", &Q::dwell_s)
+      .def_readwrite("sample_period", &Q::sample_period_s)
+      .def_readwrite("noise_power", &Q::noise_power)
+      .def_readwrite("end_time", &Q::end_time_s)
+      .def_readwrite("heading", &Q::heading_deg)
+      .def_readwrite("ki", &Q::ki)
+      .def_readwrite("solve_p", &Q::solve_p);
+  m.def(
+      "run_hybrid_case",
+      [](const Q& q, const std::string& json, const std::filesystem::path& out) {
+        q.validate();
+        check_hybrid_case_outputs(out, json);
+        return run_to_json(q, json, run_hybrid_case, [&out](const HybridCaseReport& r) {
+          std::vector<std::filesystem::path> plots;
+          if (!out.empty()) plots = write_figures(r, out);
+          return to_json(r, plots);
+        });
+      },
+      py::arg("request"), py::arg("json") = "", py::arg("out") = std::filesystem::path());
+}
+
+void bind_hybrid_vessel(py::module_& m) {
+  using Q = HybridVesselRequest;
+  py::class_<Q>(m, "HybridVesselRequest")
+      .def(py::init<>())
+      .def_readwrite("scenario", &Q::scenario)
+      .def_readwrite("seed", &Q::seed)
+      .def_readwrite("within", &Q::within_m);
+  m.def(
+      "run_hybrid_vessel",
+      [](const Q& q, const std::string& json, const std::filesystem::path& out) {
+        q.validate();
+        check_output_file("json", json);
+        return run_to_json(q, json, run_hybrid_vessel, [&out](const HybridVesselReport& r) {
+          std::vector<std::filesystem::path> plots;
+          if (!out.empty()) plots = write_figures(r, out);
+          return to_json(r, plots);
+        });
+      },
+      py::arg("request"), py::arg("json") = "", py::arg("out") = std::filesystem::path());
+}
+
+void bind_compare(py::module_& m) {
+  using Q = CompareRequest;
+  py::class_<Q>(m, "CompareRequest")
+      .def(py::init<>())
+      .def_readwrite("a", &Q::a)
+      .def_readwrite("b", &Q::b)
+      .def_readwrite("format", &Q::format)
+      .def_readwrite("labels", &Q::labels)
+      .def_readwrite("step_tolerance", &Q::step_tolerance_s);
+  m.def(
+      "run_compare",
+      [](const Q& q, const std::string& json) {
+        q.validate();
+        check_output_file("json", json);
+        return run_to_json(q, json, run_compare, [](const CompareReport& r) { return to_json(r); });
+      },
+      py::arg("request"), py::arg("json") = "");
+}
+
+// The folders written: one for a run, one per scenario for the campaign; [(name, folder)].
+std::vector<std::pair<std::string, std::filesystem::path>> simulate(const SimulateRequest& q) {
+  py::gil_scoped_release release;
+  q.validate();
+  const SimulateReport report = run_simulate(q);
+  std::vector<std::pair<std::string, std::filesystem::path>> runs;
+  if (const auto* one = std::get_if<SimulatedRun>(&report.result)) {
+    runs.emplace_back(one->scenario, report.out_dir);
+  } else if (const auto* all = std::get_if<std::vector<scenario::RunSummary>>(&report.result)) {
+    for (const auto& run : *all) runs.emplace_back(run.name, report.out_dir / run.name);
+  }
+  return runs;
+}
+
+void bind_simulate(py::module_& m) {
+  using Q = SimulateRequest;
+  py::class_<Q>(m, "SimulateRequest")
+      .def(py::init<>())
+      .def_readwrite("scenario", &Q::scenario)
+      .def_readwrite("out", &Q::out_dir)
+      .def_readwrite("seed", &Q::seed)
+      .def_readwrite("vessel", &Q::vessel_file)
+      .def_readwrite("duration", &Q::duration_s)
+      .def_readwrite("log_rate", &Q::log_rate_hz);
+  m.def("run_simulate", &simulate, py::arg("request"));
+  m.def("scenarios", [] {
+    Q q;
+    q.list = true;
+    q.scenario = "list";
+    const SimulateReport report = run_simulate(q);
+    std::vector<std::pair<std::string, std::string>> out;
+    for (const auto& s : std::get<std::vector<ScenarioListing>>(report.result)) {
+      out.emplace_back(s.name, s.description);
+    }
+    return out;
+  });
+}
+
+}  // namespace
+
+void bind_control(py::module_& m) {
+  bind_hybrid_case(m);
+  bind_hybrid_vessel(m);
+  bind_compare(m);
+  bind_simulate(m);
+}
+
+}  // namespace dynpos::python

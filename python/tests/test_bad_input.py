@@ -1,0 +1,157 @@
+"""Bad input through the Python API: the CLI's bad-input cases (tests/cli), each run both ways.
+The CLI exits 2 with "dynpos: error: MESSAGE"; the API raises dynpos.InputError (a ValueError)
+whose text is that MESSAGE, with the file, line and option as attributes, and the interpreter
+carries on. (Cases the CLI's own argument parser rejects, such as a missing file it checks or an
+option the subcommand does not have, are not library errors and are left out.)"""
+
+import os
+import subprocess
+
+import pytest
+
+import dynpos
+
+BIN = os.environ.get("DYNPOS_BIN", "dynpos")
+SOURCE = os.environ.get("DYNPOS_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
+CLI_DIR = os.path.join(SOURCE, "tests", "cli")
+STEPS = os.path.join(CLI_DIR, "short_steps.csv")
+COMPARE = os.path.join(CLI_DIR, "data", "compare")
+NMEA = os.path.join(SOURCE, "tests", "data", "nmea")
+MULTI = os.path.join(SOURCE, "tests", "data", "multifile")
+
+FLAGS = {"--strict", "--per-setpoint", "--apply", "--abs-speed", "--rpm", "--no-jumps",
+         "--sampled", "--solve-p", "--estimate-time-offset"}
+REPEATED = {"--col", "--unit", "--window", "--clock-offset", "--gnss-log", "--nmea",
+            "--mru-log", "--init"}
+FUNCTIONS = {("identify", "step"): dynpos.identify_step,
+             ("identify", "thrust-map"): dynpos.identify_thrust_map,
+             ("identify", "agility"): dynpos.identify_agility,
+             ("identify", "four-corner"): dynpos.identify_four_corner,
+             ("identify", "station-keeping"): dynpos.identify_station_keeping,
+             ("leverarm", "gnss"): dynpos.leverarm_gnss,
+             ("leverarm", "mru"): dynpos.leverarm_mru}
+
+STEP_COLS = ["--col", "input=cmd", "--col", "output=response"]
+SK_COLS = ["--col", "north=response", "--col", "east=response"]
+THRUST = ["--col", "thrust.port=response", "--unit", "thrust.port=kN"]
+CASES = [
+    ["identify", "step", STEPS, "--col", "input=cmd", "--col", "output=no_such_column"],
+    ["identify", "step", os.path.join(CLI_DIR, "bad_steps.csv"), *STEP_COLS],
+    ["identify", "step", STEPS, *STEP_COLS, "--segments", os.path.join(CLI_DIR, "bad_segments.csv")],
+    ["identify", "step", STEPS, *STEP_COLS, "--method", "fast"],
+    ["identify", "step", STEPS, *STEP_COLS, "--min-plateau", "-1"],
+    ["identify", "agility", STEPS],
+    ["identify", "agility", STEPS, *THRUST],
+    ["identify", "agility", STEPS, *THRUST, "--window", "10,20"],
+    ["identify", "agility", STEPS, *THRUST, "--window", "10,5000,90"],
+    ["identify", "four-corner", STEPS, "--col", "north=response", "--col", "east=response"],
+    ["identify", "four-corner", STEPS, "--col", "north=response", "--col", "east=response",
+     "--col", "heading=flat", "--unit", "heading=rad", "--segment", "box"],
+    ["identify", "four-corner", STEPS, "--col", "north=response", "--col", "east=response",
+     "--col", "heading=flat", "--unit", "heading=rad", "--from", "5000"],
+    ["identify", "station-keeping", STEPS],
+    ["identify", "station-keeping", STEPS, *SK_COLS, "--from", "100", "--to", "400"],
+    ["identify", "station-keeping", STEPS, *SK_COLS, "--per-setpoint"],
+    ["identify", "station-keeping", STEPS, *SK_COLS, "--time-format", "iso"],
+    ["identify", "station-keeping", STEPS, *SK_COLS, "--date", "2024-02-30"],
+    ["identify", "station-keeping", STEPS, *SK_COLS, "--time-format", "time-of-day"],
+    ["identify", "station-keeping", os.path.join(NMEA, "station.nmea"), "--strict"],
+    ["identify", "station-keeping", os.path.join(NMEA, "nothing.nmea")],
+    ["identify", "station-keeping", os.path.join(NMEA, "station.nmea"), "--format", "xml"],
+    ["identify", "station-keeping", os.path.join(NMEA, "station.nmea"), "--col", "heading=HDT"],
+    ["identify", "station-keeping", os.path.join(MULTI, "main.csv"), "--col",
+     f"heading=HEADING@{MULTI}/nav.csv", "--col", f"time=stamp@{MULTI}/nav.csv"],
+    ["identify", "station-keeping", os.path.join(MULTI, "main.csv"), "--col",
+     f"heading=HDG@{MULTI}/nav.csv", "--col", f"time=stamp@{MULTI}/nav.csv"],
+    ["identify", "thrust-map", STEPS],
+    ["identify", "thrust-map", STEPS, "--apply"],
+    ["leverarm", "mru", STEPS, "--accel", "gravity"],
+    ["leverarm", "mru", STEPS],
+    ["leverarm", "gnss", STEPS, "--method", "lsq"],
+    ["leverarm", "gnss", STEPS, "--imu-arm", "1,2"],
+    ["compare", os.path.join(COMPARE, "steps_aug.json"), os.path.join(COMPARE, "legs_after.json")],
+    ["compare", os.path.join(COMPARE, "steps_aug.json"), os.path.join(COMPARE, "broken.json")],
+    ["compare", os.path.join(COMPARE, "generic_a.json"), os.path.join(COMPARE, "generic_b.json")],
+    ["compare", os.path.join(COMPARE, "steps_aug.json"), os.path.join(COMPARE, "steps_nov.json"),
+     "--labels", "only one"],
+    ["hybrid", "first-order", "--lambda", "-1"],
+    ["hybrid", "first-order", "--ki", "30"],
+    ["hybrid", "dp", "--sample-period", "0.0305"],
+    ["hybrid", "dp", "--no-jumps", "--sampled"],
+    ["hybrid", "vessel", "--scenario", "ice2"],
+    ["hybrid", "vessel", "--scenario", "ice", "--within", "0"],
+    ["simulate", "no-such-test", "--out", "unused"],
+    ["simulate", "surge-steps-forward", "--duration", "-5", "--out", "unused"],
+    ["simulate", "surge-steps-forward", "--duration", "5", "--out", "unused", "--vessel",
+     os.path.join(CLI_DIR, "bad_sensor_rate.toml")],
+    ["simulate", "surge-steps-forward", "--out", "unused", "--vessel",
+     os.path.join(CLI_DIR, "bad_vessel.toml")],
+]
+
+
+def number(text: str):
+    for kind in (int, float):
+        try:
+            return kind(text)
+        except ValueError:
+            pass
+    return text
+
+
+def options(argv):
+    """CLI options as the API's keyword arguments: --min-step 1 → min_step=1."""
+    kwargs, i = {}, 0
+    while i < len(argv):
+        flag = argv[i]
+        key = flag[2:].replace("-", "_")
+        key = {"from": "from_", "lambda": "lambda_"}.get(key, key)
+        if flag in FLAGS:
+            kwargs[key] = True
+            i += 1
+            continue
+        value = argv[i + 1]
+        if flag in REPEATED:
+            kwargs.setdefault(key, []).append(value)
+        else:
+            kwargs[key] = number(value) if key not in ("labels", "date", "imu_arm") else value
+        i += 2
+    return kwargs
+
+
+def call_api(argv, tmp_path):
+    if argv[0] == "compare":
+        return dynpos.compare(argv[1], argv[2], **options(argv[3:]))
+    if argv[0] == "hybrid" and argv[1] == "vessel":
+        o = options(argv[2:])
+        return dynpos.hybrid_vessel(o.pop("scenario"), **o)
+    if argv[0] == "hybrid":
+        return dynpos.hybrid_case(argv[1], **options(argv[2:]))
+    if argv[0] == "simulate":
+        o = options(argv[2:])
+        o["out"] = tmp_path / "run"
+        return dynpos.simulate(argv[1], **o)
+    return FUNCTIONS[(argv[0], argv[1])](argv[2], **options(argv[3:]))
+
+
+@pytest.mark.parametrize("argv", CASES, ids=[" ".join(os.path.basename(a) for a in c[:4])
+                                             for c in CASES])
+def test_the_api_raises_what_the_cli_prints(argv, tmp_path):
+    argv = [a.replace("unused", str(tmp_path / "run")) for a in argv]
+    cli = subprocess.run([BIN, *argv], capture_output=True, text=True)
+    assert cli.returncode == 2, cli.stderr
+    with pytest.raises(dynpos.InputError) as e:
+        call_api(argv, tmp_path)
+    assert isinstance(e.value, ValueError)
+    assert cli.stderr == f"dynpos: error: {e.value}\n"
+    assert not (tmp_path / "run" / "log.csv").exists()
+
+
+def test_the_error_says_where():
+    with pytest.raises(dynpos.InputError) as e:
+        dynpos.identify_step(os.path.join(CLI_DIR, "bad_steps.csv"),
+                             col={"input": "cmd", "output": "response"})
+    assert e.value.file.endswith("bad_steps.csv") and e.value.line == 5
+    assert e.value.option is None
+    with pytest.raises(dynpos.InputError) as e:
+        dynpos.identify_step(STEPS, col={"input": "cmd", "output": "response"}, min_step=-1.0)
+    assert e.value.option == "min_step" and "(--min-step)" in str(e.value)
