@@ -63,7 +63,7 @@ void bind_hybrid_vessel(py::module_& m) {
       "run_hybrid_vessel",
       [](const Q& q, const std::string& json, const std::filesystem::path& out) {
         q.validate();
-        check_output_file("json", json);
+        check_hybrid_case_outputs(out, json);  // the same rules: the JSON may go into `out`
         return run_to_json(q, json, run_hybrid_vessel, [&out](const HybridVesselReport& r) {
           std::vector<std::filesystem::path> plots;
           if (!out.empty()) plots = write_figures(r, out);

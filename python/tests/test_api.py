@@ -102,3 +102,53 @@ def test_bad_input_is_an_input_error_with_the_cli_message(tmp_path):
         dynpos.identify_step(STEPS, min_stepp=1.0)
     with pytest.raises(dynpos.InputError, match="column 'x'"):
         dynpos.Log.from_arrays(np.arange(3.0), {"x": np.arange(2.0)})
+
+
+def test_a_dataframe_is_a_log(tmp_path):
+    pandas = pytest.importorskip("pandas")
+    step_log(tmp_path / "s.csv")
+    frame = pandas.read_csv(tmp_path / "s.csv")
+    frame.columns = ["time", "input", "output"]
+    from_frame = dynpos.identify_step(frame)
+    from_file = dynpos.identify_step(tmp_path / "s.csv", col={"input": "cmd",
+                                                             "output": "response"})
+    assert from_frame.to_dict()["steps"] == from_file.to_dict()["steps"]
+    table = from_frame.to_frame()
+    assert {"t_step", "K", "T", "delay"} <= set(table.columns) and len(table) == 2
+    assert table["sigma.K"].notna().all()
+    # A DatetimeIndex is the time axis: seconds from its first stamp, the stamp kept.
+    stamps = pandas.date_range("2026-11-26T10:00:00Z", periods=4, freq="250ms")
+    log = dynpos.Log.from_frame(pandas.DataFrame({"heading": [0.0, 0.1, None, 0.3]},
+                                                 index=stamps), time=None)
+    np.testing.assert_allclose(log.time, [0.0, 0.25, 0.5, 0.75])
+    assert math.isnan(log["heading"][2]) and log.origin == stamps[0]
+    with pytest.raises(dynpos.InputError, match="no column 'stamp'"):
+        dynpos.Log.from_frame(frame, time="stamp")
+
+
+def test_analyses_run_in_threads_with_the_gil_released(tmp_path):
+    """Four identifications on two threads give what one after the other gives."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    step_log(tmp_path / "s.csv")
+    col = {"input": "cmd", "output": "response"}
+    alone = [dynpos.identify_step(tmp_path / "s.csv", col=col, method=m).to_dict()
+             for m in ("lsq", "smith", "smith2", "rk")]
+    with ThreadPoolExecutor(max_workers=2) as pool:
+        threaded = list(pool.map(lambda m: dynpos.identify_step(tmp_path / "s.csv", col=col,
+                                                                method=m).to_dict(),
+                                 ("lsq", "smith", "smith2", "rk")))
+    assert threaded == alone
+
+
+def test_read_log_takes_nmea_captures_and_several_files():
+    nmea = dynpos.read_log(os.path.join(SOURCE, "tests", "data", "nmea", "station.nmea"))
+    assert nmea.input["files"][0]["format"] == "nmea"
+    assert "heading" in nmea and np.all(np.isfinite(nmea.time))
+    data = os.path.join(SOURCE, "tests", "data", "multifile")
+    nav = os.path.join(data, "nav.csv")
+    log = dynpos.read_log(os.path.join(data, "main.csv"),
+                          col={"heading": f"HDG@{nav}", "time": f"stamp@{nav}"},
+                          clock_offset={nav: -1000})
+    assert log.time[0] == 0.0 and log["heading"][0] == pytest.approx(math.radians(358))
+    assert len(log.input["files"]) == 2
