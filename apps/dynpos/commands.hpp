@@ -44,5 +44,6 @@ void register_leverarm(CLI::App& app);
 void register_hybrid(CLI::App& app);
 void register_compare(CLI::App& app);
 void register_demo(CLI::App& app);
+void register_capability(CLI::App& app);  // cmd_capability.cpp
 
 }  // namespace dynpos::cli

@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   register_leverarm(app);
   register_hybrid(app);
   register_compare(app);
+  register_capability(app);
   register_demo(app);
 
   try {

@@ -117,6 +117,23 @@ double Wind::speed_mps() const noexcept { return std::max(0.0, params_.speed_mps
 
 double Wind::from_rad() const noexcept { return params_.from_rad + direction_.value(); }
 
+namespace {
+
+// The wind force for the dynamic pressure q = ½ρ_a V² [Pa] from gamma_rad off the bow.
+Eigen::Vector3d wind_force_at_pressure(const WindParams& params, double q,
+                                       double gamma_rad) noexcept {
+  return {-params.cx * std::cos(gamma_rad) * q * params.frontal_area_m2,
+          -params.cy * std::sin(gamma_rad) * q * params.lateral_area_m2,
+          -params.cn * std::sin(2.0 * gamma_rad) * q * params.lateral_area_m2 * params.length_m};
+}
+
+}  // namespace
+
+Eigen::Vector3d wind_force_b(const WindParams& params, double speed_mps,
+                             double gamma_rad) noexcept {
+  return wind_force_at_pressure(params, 0.5 * params.rho_air * speed_mps * speed_mps, gamma_rad);
+}
+
 Eigen::Vector3d Wind::force_b(double heading_rad,
                               const Eigen::Vector2d& velocity_n) const noexcept {
   const double speed = speed_mps();
@@ -129,11 +146,8 @@ Eigen::Vector3d Wind::force_b(double heading_rad,
   const double uy = -s * rel_n.x() + c * rel_n.y();
   const double v2 = ux * ux + uy * uy;
   if (v2 == 0.0) return Eigen::Vector3d::Zero();
-  const double gamma = std::atan2(-uy, -ux);  // angle the relative wind comes from, off the bow
-  const double q = 0.5 * params_.rho_air * v2;
-  return {-params_.cx * std::cos(gamma) * q * params_.frontal_area_m2,
-          -params_.cy * std::sin(gamma) * q * params_.lateral_area_m2,
-          -params_.cn * std::sin(2.0 * gamma) * q * params_.lateral_area_m2 * params_.length_m};
+  // The angle the relative wind comes from, off the bow.
+  return wind_force_at_pressure(params_, 0.5 * params_.rho_air * v2, std::atan2(-uy, -ux));
 }
 
 void BiasParams::validate() const { core::check_ranges("bias", bias_fields(*this)); }

@@ -125,7 +125,6 @@ WaveMotion::WaveMotion(const SeaStateParams& sea, const WaveResponseParams& resp
     phasor_[i] = std::polar(1.0, c.phase);
     rotor_[i] = std::polar(1.0, c.omega * period_s);
   }
-  drift_force_scale_ = 0.5 * response_.drift_coefficient * kRho * kG * sea.hs_m * sea.hs_m / 16.0;
 }
 
 WaveMotion6 WaveMotion::motion(double heading_rad, double heading_rate,
@@ -164,10 +163,15 @@ void WaveMotion::advance() noexcept {
   for (std::size_t i = 0; i < phasor_.size(); ++i) phasor_[i] *= rotor_[i];
 }
 
+Eigen::Vector3d drift_force_b(const WaveResponseParams& response, double hs_m,
+                              double beta_rad) noexcept {
+  const double scale = 0.5 * response.drift_coefficient * kRho * kG * hs_m * hs_m / 16.0;
+  return {scale * response.beam_m * std::cos(beta_rad),
+          scale * response.length_m * std::sin(beta_rad), 0.0};
+}
+
 Eigen::Vector3d WaveMotion::drift_force_b(double heading_rad) const noexcept {
-  const double beta = sea_.from_rad + M_PI - heading_rad;
-  return {drift_force_scale_ * response_.beam_m * std::cos(beta),
-          drift_force_scale_ * response_.length_m * std::sin(beta), 0.0};
+  return model::drift_force_b(response_, sea_.hs_m, sea_.from_rad + M_PI - heading_rad);
 }
 
 }  // namespace dynpos::model

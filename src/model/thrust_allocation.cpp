@@ -10,6 +10,7 @@
 #include <Eigen/QR>
 
 #include "actuator_checks.hpp"
+#include "dynpos/core/error.hpp"
 
 namespace dynpos::model {
 
@@ -50,7 +51,15 @@ std::vector<core::ParamField> param_fields(ThrustAllocationOptions& options) {
   return fields(options);
 }
 
-void ThrustAllocationOptions::validate() const { core::check_ranges("allocation", fields(*this)); }
+void ThrustAllocationOptions::validate() const {
+  core::check_ranges("allocation", fields(*this));
+  for (int k = 0; k < 5; ++k) {
+    if (!std::isfinite(capacity(k)) || capacity(k) < 0.0) {
+      throw core::InputError({}, "allocation capacity " + std::to_string(capacity(k)) +
+                                     " of variable " + std::to_string(k) + " is not ≥ 0");
+    }
+  }
+}
 
 ThrustAllocator::ThrustAllocator(const Thruster& propeller, const Rudder& rudder,
                                  const TunnelThruster& tunnel,
@@ -76,7 +85,7 @@ std::array<Vector5d, 2> ThrustAllocator::bounds(double surge_speed) const noexce
                        std::min(rudder_angle, rudder_.params().max_angle);
   lo << -t_rev, -t_rev, -y_max, -y_max, -tunnel_.max_thrust_port(surge_speed);
   hi << t_fwd, t_fwd, y_max, y_max, tunnel_.max_thrust_starboard(surge_speed);
-  return {lo, hi};
+  return {lo.cwiseProduct(options_.capacity), hi.cwiseProduct(options_.capacity)};
 }
 
 ThrustAllocationResult ThrustAllocator::allocate(const ThrustAllocationInput& input) const {

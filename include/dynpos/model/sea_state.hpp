@@ -68,6 +68,12 @@ std::vector<core::ParamField> param_fields(WaveResponseParams& params);
 /// peak, 0.09 above; normalised so that ∫S dω = H_s²/16).
 double jonswap(double omega, double hs_m, double tp_s, double gamma = 3.3);
 
+/// Mean wave drift force in BODY (X, Y, N) [N, N, N·m] of long-crested waves of significant
+/// height hs_m [m] travelling towards beta_rad [rad] off the bow (0: from astern, π: head
+/// seas): ½·c·ρ·g·(H_s²/16)·(B cos β, L sin β, 0), c the drift coefficient.
+Eigen::Vector3d drift_force_b(const WaveResponseParams& response, double hs_m,
+                              double beta_rad) noexcept;
+
 /// One harmonic wave component.
 struct WaveComponent {
   double omega;      ///< ω [rad/s]
@@ -113,7 +119,6 @@ class WaveMotion {
   std::vector<std::array<std::complex<double>, 6>> lag_;  // e^{−j·lag} per DOF
   std::vector<std::complex<double>> phasor_;              // e^{j(ω t + φ)}
   std::vector<std::complex<double>> rotor_;               // e^{jω·period}
-  double drift_force_scale_ = 0.0;                        // ½·c·ρ·g·H_s²/16 [N/m]
 };
 
 }  // namespace dynpos::model

@@ -101,6 +101,10 @@ struct ThrustAllocationOptions {
   /// dead time. Source: reasoned, and measured with the weather from astern (pure DP at
   /// 180°, docs/virtual-gunnerus.md).
   double hold_weight = 4.0;
+  /// Capacity of each variable of f (T₁, T₂, Y₁, Y₂, T₃) as a factor on its rated bounds [-]:
+  /// 1 as rated, 0 lost (a failed thruster or rudder, held at zero). Not a vessel-file key: the
+  /// failure cases of a capability analysis set it.
+  Eigen::Matrix<double, 5, 1> capacity = Eigen::Matrix<double, 5, 1>::Ones();
 
   /// Throws core::InputError naming the first option outside its range (param_fields).
   void validate() const;
@@ -167,8 +171,12 @@ class ThrustAllocator {
   /// Allocates τ_d (see file comment). Deterministic; never throws; no NaN out.
   ThrustAllocationResult allocate(const ThrustAllocationInput& input) const;
 
-  /// Box bounds (lower, upper) on f [N] at surge speed u before cones and rate limits.
+  /// Box bounds (lower, upper) on f [N] at surge speed u before cones and rate limits, each
+  /// scaled by its capacity.
   std::array<Eigen::Matrix<double, 5, 1>, 2> bounds(double surge_speed) const noexcept;
+  /// The rudder cone at surge speed u [m/s] from the rudder model's linear lift at the
+  /// allocation's largest rudder angle.
+  RudderCone rudder_cone(double surge_speed) const noexcept;
 
   const ThrustConfiguration& configuration() const noexcept { return configuration_; }
   const ThrustAllocationOptions& options() const noexcept { return options_; }
@@ -191,8 +199,6 @@ class ThrustAllocator {
   Eigen::Vector3d normalised_unmet(const ThrustAllocationResult& r) const;
   // Marks r saturated, with a message, when τ_unmet is not within the tolerance of "met".
   void set_met_status(ThrustAllocationResult& r) const;
-  // The rudder cone at surge speed u [m/s] from the rudder model's linear lift.
-  RudderCone rudder_cone(double surge_speed) const noexcept;
   // Shaft speed, rudder angle and tunnel commands for the forces of r at surge speed u [m/s].
   void set_commands(ThrustAllocationResult& r, double surge_speed) const;
 

@@ -1,0 +1,94 @@
+// dynpos capability: DP capability after DNV-ST-0111 (levels 1-3) on the vessel model, intact
+// and after single failures, as a table, JSON and a capability rose (analysis/capability.hpp).
+
+#include <fmt/core.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "commands.hpp"
+#include "dynpos/analysis/capability.hpp"
+#include "dynpos/analysis/options.hpp"
+#include "dynpos/io/json_writer.hpp"
+
+namespace dynpos::cli {
+namespace {
+
+struct CapabilityCliOptions {
+  analysis::CapabilityRequest request;
+  std::string json;
+  std::filesystem::path out;  ///< folder for rose.svg
+};
+
+void run(const CapabilityCliOptions& o) {
+  o.request.validate();
+  analysis::check_output_file("json", o.json);
+  if (!o.out.empty() && std::filesystem::exists(o.out) && !std::filesystem::is_directory(o.out)) {
+    throw analysis::option_error("out", "'" + o.out.string() + "' exists and is not a folder",
+                                 "name a folder (it is created if needed)");
+  }
+  const analysis::CapabilityReport report = analysis::run_capability(o.request);
+  std::filesystem::path rose;
+  if (!o.out.empty()) {
+    std::filesystem::create_directories(o.out);
+    rose = o.out / "rose.svg";
+    analysis::write_rose(report, rose);
+  }
+  if (!o.json.empty()) io::write_json(o.json, analysis::to_json(report));
+  std::FILE* out = o.json == "-" ? stderr : stdout;
+  fmt::print(out, "{}", analysis::to_text(report));
+  if (!rose.empty()) fmt::print(out, "wrote {}\n", rose.string());
+  if (!o.json.empty() && o.json != "-") fmt::print(out, "wrote {}\n", o.json);
+}
+
+}  // namespace
+
+void register_capability(CLI::App& app) {
+  auto o = std::make_shared<CapabilityCliOptions>();
+  analysis::CapabilityRequest& r = o->request;
+  CLI::App* sub = app.add_subcommand(
+      "capability",
+      "DP capability (DNV-ST-0111 levels 1-3): the strongest weather held per direction, "
+      "intact and after single failures, with a capability rose");
+  sub->add_option("--level", r.level,
+                  "1: the standard's table, rated thrust; 2: the model's thrust losses, a site "
+                  "environment; 3: time-domain runs of the DP-controlled vessel")
+      ->capture_default_str();
+  sub->add_option("--vessel", r.vessel, "Vessel file (default: data/vessels/gunnerus.toml)");
+  sub->add_option("--failure", r.failure,
+                  "none, worst (every single failure, the worst per direction) or an actuator "
+                  "lost: port, stb, rudder.port, rudder.stb, tunnel")
+      ->capture_default_str();
+  sub->add_option("--site", r.site,
+                  "Level 2: site table, TOML [[environment]] rows with wind_mps, hs_m, tp_s, "
+                  "current_mps (default: the DNV table)");
+  sub->add_option("--hs", r.hs, "Level 2: fixed significant wave height [m]");
+  sub->add_option("--tp", r.tp, "Level 2: fixed peak period [s]");
+  sub->add_option("--current", r.current, "Level 2: fixed current speed [m/s]");
+  sub->add_option("--direction-step", r.direction_step, "Direction step [deg], dividing 360")
+      ->capture_default_str();
+  sub->add_option("--wind-tolerance", r.wind_tolerance,
+                  "Bisection tolerance on the wind [m/s] (default 0.01; level 3: 0.25)");
+  sub->add_option("--duration", r.duration, "Level 3: judged run length [s]")
+      ->capture_default_str();
+  sub->add_option("--settle", r.settle, "Level 3: unjudged start of each run [s]")
+      ->capture_default_str();
+  sub->add_option("--footprint", r.footprint, "Level 3: position footprint [m]")
+      ->capture_default_str();
+  sub->add_option("--footprint-deg", r.footprint_deg, "Level 3: heading footprint [deg]")
+      ->capture_default_str();
+  sub->add_option("--seed", r.seed, "Level 3: master seed of the runs")->capture_default_str();
+  sub->add_option("--jobs", r.jobs, "Level 3: parallel runs (default: every core)");
+  sub->add_option("--out", o->out, "Folder for the capability rose (rose.svg)");
+  sub->add_option("--json", o->json, "Write the results as JSON to FILE, or '-' for stdout");
+  sub->footer(
+      "Wind, waves and current come from the same direction, relative to the bow (0 = head-on, "
+      "90 = from starboard). Levels 1 and 2 balance the mean load × 1.25 (DNV's reserve for "
+      "dynamics) against the thrusters' limits exactly; level 3 bisects the environment until "
+      "the vessel leaves its footprint. Example: dynpos capability --failure worst --out cap");
+  sub->callback([o] { run(*o); });
+}
+
+}  // namespace dynpos::cli

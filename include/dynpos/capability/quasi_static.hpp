@@ -1,0 +1,72 @@
+#pragma once
+/// \file
+/// Quasi-static DP capability (DNV-ST-0111 Levels 1 and 2): for each direction of the weather
+/// relative to the bow, the strongest environment whose mean load (times the reserve for
+/// dynamics) the thrusters can balance within their limits, intact or with actuators lost.
+///
+/// Level 1: the standard's environment table and the thrusters' rated thrust at rest (the
+/// rudders lift only in their propellers' slipstream). Level 2: the vessel's own thrust losses as
+/// the model has them (the tunnel's and the rudders' dependence on the current's inflow) and any
+/// environment table, e.g. a site's. Wind, waves and current come from the same direction.
+///
+/// The vessel's own load models give the mean load (model/environment.hpp wind coefficients,
+/// model/hull.hpp damping and added mass in the current's relative flow, model/sea_state.hpp
+/// mean drift); the standard's generic Level 1 coefficients are not used.
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "dynpos/capability/environment_table.hpp"
+#include "dynpos/scenario/vessel_config.hpp"
+
+namespace dynpos::capability {
+
+/// The mean environmental load (X [N], Y [N], N [N·m]) in BODY on the vessel at rest, wind,
+/// waves and current all coming from from_rel_rad [rad] off the bow (0 head-on, π/2 from
+/// starboard), without any reserve.
+Eigen::Vector3d mean_environment_load_b(const scenario::VesselConfig& vessel,
+                                        const Environment& environment, double from_rel_rad);
+
+/// The surge inflow speed of the current at the thrusters [m/s] (positive from ahead).
+double current_inflow_mps(double current_mps, double from_rel_rad);
+
+/// Options of a quasi-static rose.
+struct QuasiStaticOptions {
+  int level = 1;                                      ///< 1 or 2
+  EnvironmentTable environment = dnv_level1_table();  ///< wind → waves and current
+  double dynamic_allowance = kDynamicAllowance;       ///< factor on the load, ≥ 1
+  double direction_step_deg = 10.0;                   ///< 0, step, …, < 360 [deg]
+  double wind_tolerance_mps = 0.01;                   ///< bisection ends within this [m/s]
+};
+
+/// One direction of a rose.
+struct CapabilityPoint {
+  double direction_deg = 0.0;  ///< where the weather comes from, off the bow, clockwise [deg]
+  int dp_number = 0;           ///< the largest table row held, with every row below it
+  double max_wind_mps = 0.0;   ///< the strongest wind held, between the rows
+  bool beyond_table = false;   ///< the table's last row is held: max_wind_mps is a floor
+  /// The actuators at a limit at max_wind_mps, joined by '+'; "none" beyond the table.
+  std::string limiting;
+  std::string failure;  ///< the case: "none" (intact) or the actuator lost
+};
+
+/// The capability at one direction [rad off the bow] with the actuators in `failed` lost (on
+/// top of the capacities of vessel.allocation).
+CapabilityPoint quasi_static_point(const scenario::VesselConfig& vessel,
+                                   const std::vector<std::string>& failed, double from_rel_rad,
+                                   const QuasiStaticOptions& options);
+
+/// The rose: one point per direction step, with the actuators in `failed` lost.
+std::vector<CapabilityPoint> quasi_static_rose(const scenario::VesselConfig& vessel,
+                                               const std::vector<std::string>& failed,
+                                               const QuasiStaticOptions& options);
+
+/// The single failures of the vessel: each actuator lost alone (actuator_names()).
+std::vector<std::string> single_failures();
+
+/// Per direction the smallest capability over `roses` (each a rose of one failure case, same
+/// directions): DNV's worst-case failure; `failure` says which case it is there.
+std::vector<CapabilityPoint> worst_case(const std::vector<std::vector<CapabilityPoint>>& roses);
+
+}  // namespace dynpos::capability

@@ -1,0 +1,211 @@
+#include "dynpos/analysis/capability.hpp"
+
+#include <fmt/core.h>
+
+#include <cmath>
+
+#include "dynpos/analysis/data_dir.hpp"
+#include "dynpos/analysis/options.hpp"
+#include "dynpos/capability/thrust_region.hpp"
+#include "dynpos/core/error.hpp"
+#include "dynpos/scenario/vessel_config.hpp"
+
+namespace dynpos::analysis {
+namespace {
+
+void check_finite_at_least(double v, double lo, bool open, const char* key, const char* what) {
+  if (!std::isfinite(v) || v < lo || (open && v == lo)) {
+    throw option_error(key, fmt::format("{} must be {} {}, got {}", what, open ? ">" : "≥", lo, v));
+  }
+}
+
+// The environment of the request: the DNV table, a site table, with any fixed values.
+capability::EnvironmentTable environment_of(const CapabilityRequest& q) {
+  capability::EnvironmentTable t = q.site.empty() ? capability::dnv_level1_table()
+                                                  : capability::read_site_table(q.site.string());
+  if (q.hs || q.tp || q.current) {
+    t.name += " with fixed";
+    for (auto& row : t.rows) {
+      if (q.hs) row.hs_m = *q.hs;
+      if (q.tp) row.tp_s = *q.tp;
+      if (q.current) row.current_mps = *q.current;
+    }
+    if (q.hs) t.name += fmt::format(" Hs {} m", *q.hs);
+    if (q.tp) t.name += fmt::format(" Tp {} s", *q.tp);
+    if (q.current) t.name += fmt::format(" current {} m/s", *q.current);
+  }
+  return t;
+}
+
+std::vector<capability::CapabilityPoint> rose(const CapabilityRequest& q,
+                                              const scenario::VesselConfig& vessel,
+                                              const capability::EnvironmentTable& table,
+                                              const std::vector<std::string>& failed) {
+  if (q.level == 3) {
+    capability::TimeDomainOptions o;
+    o.environment = table;
+    o.direction_step_deg = q.direction_step;
+    o.duration_s = q.duration;
+    o.settle_s = q.settle;
+    o.footprint_m = q.footprint;
+    o.footprint_deg = q.footprint_deg;
+    o.wind_tolerance_mps = q.wind_tolerance.value_or(0.25);
+    o.seed = q.seed;
+    o.jobs = q.jobs;
+    return capability::time_domain_rose(vessel, failed, o);
+  }
+  capability::QuasiStaticOptions o;
+  o.level = q.level;
+  o.environment = table;
+  o.direction_step_deg = q.direction_step;
+  o.wind_tolerance_mps = q.wind_tolerance.value_or(0.01);
+  return capability::quasi_static_rose(vessel, failed, o);
+}
+
+nlohmann::json points_json(const std::vector<capability::CapabilityPoint>& points) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& p : points) {
+    out.push_back({{"direction_deg", p.direction_deg},
+                   {"dp_number", p.dp_number},
+                   {"max_wind_mps", p.max_wind_mps},
+                   {"limiting", p.limiting},
+                   {"failure", p.failure},
+                   {"beyond_table", p.beyond_table}});
+  }
+  return out;
+}
+
+}  // namespace
+
+void CapabilityRequest::validate() const {
+  if (level < 1 || level > 3) {
+    throw option_error("level", fmt::format("unknown level {}", level),
+                       "1 (DNV table, rated thrust), 2 (thrust losses, site) or 3 (time domain)");
+  }
+  if (failure != "none" && failure != "worst") {
+    capability::with_failures({}, {failure});  // throws for an unknown actuator
+  }
+  if (level != 2 && (!site.empty() || hs || tp || current)) {
+    throw option_error("site/hs/tp/current", "a site environment is for level 2",
+                       "add --level 2, or leave the site out");
+  }
+  if (!site.empty() && !std::filesystem::is_regular_file(site)) {
+    throw option_error("site", "'" + site.string() + "' is not a file", "give a site TOML file");
+  }
+  if (hs) check_finite_at_least(*hs, 0.0, false, "hs", "Hs [m]");
+  if (tp) check_finite_at_least(*tp, 0.0, true, "tp", "Tp [s]");
+  if (current) check_finite_at_least(*current, 0.0, false, "current", "the current [m/s]");
+  check_finite_at_least(direction_step, 0.0, true, "direction_step", "the direction step [deg]");
+  const double n = 360.0 / direction_step;
+  if (std::abs(n - std::round(n)) > 1e-9 || n > 3600) {
+    throw option_error(
+        "direction_step",
+        fmt::format("{} deg does not divide 360 (at most 3600 directions)", direction_step),
+        "e.g. 5, 10, 15 or 30");
+  }
+  if (wind_tolerance) check_finite_at_least(*wind_tolerance, 0.0, true, "wind_tolerance", "it");
+  if (!vessel.empty() && !std::filesystem::is_regular_file(vessel)) {
+    throw option_error("vessel", "'" + vessel.string() + "' is not a file",
+                       "give a vessel TOML file (docs/vessel-file.md)");
+  }
+  if (level == 3) {
+    capability::TimeDomainOptions o;
+    o.duration_s = duration;
+    o.settle_s = settle;
+    o.footprint_m = footprint;
+    o.footprint_deg = footprint_deg;
+    o.validate();
+  }
+}
+
+const CapabilityCase& CapabilityReport::headline() const {
+  if (worst) return *worst;
+  if (!failures.empty()) return failures.front();
+  return intact;
+}
+
+CapabilityReport run_capability(const CapabilityRequest& q) {
+  q.validate();
+  const std::filesystem::path file =
+      q.vessel.empty() ? find_data_dir() / "vessels" / "gunnerus.toml" : q.vessel;
+  const scenario::VesselConfig vessel = scenario::load_vessel_config(file);
+  const capability::EnvironmentTable table = environment_of(q);
+  CapabilityReport r;
+  r.level = q.level;
+  r.vessel = vessel.name;
+  r.vessel_source = q.vessel.empty() ? "" : q.vessel.string();
+  r.environment = table.name;
+  r.failure = q.failure;
+  r.dynamic_allowance = q.level == 3 ? 1.0 : capability::kDynamicAllowance;
+  r.intact = {"none", rose(q, vessel, table, {})};
+  if (q.failure == "worst") {
+    std::vector<std::vector<capability::CapabilityPoint>> all;
+    for (const std::string& f : capability::single_failures()) {
+      r.failures.push_back({f, rose(q, vessel, table, {f})});
+      all.push_back(r.failures.back().points);
+    }
+    r.worst = CapabilityCase{"worst", capability::worst_case(all)};
+  } else if (q.failure != "none") {
+    r.failures.push_back({q.failure, rose(q, vessel, table, {q.failure})});
+  }
+  if (q.level == 3) {
+    capability::TimeDomainOptions o;
+    o.duration_s = q.duration;
+    o.settle_s = q.settle;
+    o.footprint_m = q.footprint;
+    o.footprint_deg = q.footprint_deg;
+    o.wind_tolerance_mps = q.wind_tolerance.value_or(0.25);
+    o.seed = q.seed;
+    r.time_domain = o;
+  }
+  return r;
+}
+
+std::array<std::optional<int>, 4> capability_notation(const CapabilityReport& report) {
+  const auto lowest = [](const std::vector<capability::CapabilityPoint>& points, bool bow) {
+    int n = 99;
+    for (const auto& p : points) {
+      const double off = std::abs(std::remainder(p.direction_deg, 360.0));
+      if (!bow || off <= 30.0 + 1e-9) n = std::min(n, p.dp_number);
+    }
+    return n;
+  };
+  std::array<std::optional<int>, 4> out{
+      lowest(report.intact.points, true), lowest(report.intact.points, false), {}, {}};
+  if (report.worst) {
+    out[2] = lowest(report.worst->points, true);
+    out[3] = lowest(report.worst->points, false);
+  }
+  return out;
+}
+
+nlohmann::json to_json(const CapabilityReport& report) {
+  nlohmann::json j;
+  j["analysis"] = "capability";
+  j["level"] = report.level;
+  j["vessel"] = report.vessel;
+  if (!report.vessel_source.empty()) j["vessel_file"] = report.vessel_source;
+  j["environment"] = report.environment;
+  j["failure"] = report.failure;
+  j["dynamic_allowance"] = report.dynamic_allowance;
+  const auto notation = capability_notation(report);
+  nlohmann::json n = nlohmann::json::array();
+  for (const auto& v : notation) n.push_back(v ? nlohmann::json(*v) : nlohmann::json());
+  j["notation"] = n;
+  j["points"] = points_json(report.headline().points);
+  j["intact"] = points_json(report.intact.points);
+  j["cases"] = nlohmann::json::object();
+  for (const auto& c : report.failures) j["cases"][c.failure] = points_json(c.points);
+  if (report.time_domain) {
+    const auto& o = *report.time_domain;
+    j["time_domain"] = {{"duration_s", o.duration_s},
+                        {"settle_s", o.settle_s},
+                        {"footprint_m", o.footprint_m},
+                        {"footprint_deg", o.footprint_deg},
+                        {"wind_tolerance_mps", o.wind_tolerance_mps},
+                        {"seed", o.seed}};
+  }
+  return j;
+}
+
+}  // namespace dynpos::analysis

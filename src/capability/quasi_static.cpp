@@ -1,0 +1,163 @@
+#include "dynpos/capability/quasi_static.hpp"
+
+#include <fmt/core.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "dynpos/capability/thrust_region.hpp"
+#include "dynpos/core/error.hpp"
+#include "dynpos/model/environment.hpp"
+#include "dynpos/model/hull.hpp"
+#include "dynpos/model/sea_state.hpp"
+
+namespace dynpos::capability {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+model::ThrustAllocator allocator_of(const scenario::VesselConfig& v,
+                                    const std::vector<std::string>& failed) {
+  return model::ThrustAllocator(
+      model::Thruster(v.propeller), model::Rudder(v.rudder), model::TunnelThruster(v.tunnel),
+      model::ThrustConfiguration(v.layout), with_failures(v.allocation, failed));
+}
+
+// One evaluation: holds the environment at wind w, and which actuators are at a limit.
+struct Check {
+  bool holds = false;
+  std::array<bool, 5> at_limit{};
+};
+
+class Evaluator {
+ public:
+  Evaluator(const scenario::VesselConfig& vessel, const std::vector<std::string>& failed,
+            double from_rel_rad, const QuasiStaticOptions& options)
+      : vessel_(vessel),
+        allocator_(allocator_of(vessel, failed)),
+        from_(from_rel_rad),
+        options_(options) {}
+
+  Check at(double wind_mps) const {
+    const Environment e = options_.environment.at(wind_mps);
+    const double inflow = options_.level >= 2 ? current_inflow_mps(e.current_mps, from_) : 0.0;
+    const ThrustLimits limits = thrust_limits(allocator_, inflow);
+    const Eigen::Vector3d tau =
+        -options_.dynamic_allowance * mean_environment_load_b(vessel_, e, from_);
+    const auto a = attain(limits, tau);
+    return a ? Check{true, a->at_limit} : Check{};
+  }
+
+ private:
+  const scenario::VesselConfig& vessel_;
+  model::ThrustAllocator allocator_;
+  double from_;
+  const QuasiStaticOptions& options_;
+};
+
+std::string limiting_names(const std::array<bool, 5>& at_limit) {
+  std::string out;
+  for (std::size_t k = 0; k < at_limit.size(); ++k) {
+    if (!at_limit[k]) continue;
+    if (!out.empty()) out += '+';
+    out += actuator_names()[k];
+  }
+  return out.empty() ? "none" : out;
+}
+
+}  // namespace
+
+Eigen::Vector3d mean_environment_load_b(const scenario::VesselConfig& vessel,
+                                        const Environment& environment, double from_rel_rad) {
+  const Eigen::Vector3d wind = model::wind_force_b(vessel.wind, environment.wind_mps, from_rel_rad);
+  // The waves travel towards from + π off the bow.
+  const Eigen::Vector3d drift =
+      model::drift_force_b(vessel.waves, environment.hs_m, from_rel_rad + kPi);
+  // The water flows past the vessel at rest from the current's direction: ν_r = ν − ν_c.
+  const Eigen::Vector3d nu_r(environment.current_mps * std::cos(from_rel_rad),
+                             environment.current_mps * std::sin(from_rel_rad), 0.0);
+  const Eigen::Vector3d current =
+      model::Hull(vessel.hull).hydrodynamic_forces(Eigen::Vector3d::Zero(), nu_r);
+  return wind + drift + current;
+}
+
+double current_inflow_mps(double current_mps, double from_rel_rad) {
+  return current_mps * std::cos(from_rel_rad);
+}
+
+CapabilityPoint quasi_static_point(const scenario::VesselConfig& vessel,
+                                   const std::vector<std::string>& failed, double from_rel_rad,
+                                   const QuasiStaticOptions& options) {
+  const Evaluator evaluate(vessel, failed, from_rel_rad, options);
+  const auto& rows = options.environment.rows;
+  CapabilityPoint p;
+  p.direction_deg = from_rel_rad * 180.0 / kPi;
+  p.failure = failed.empty() ? "none" : failed.front();
+  // Step up the rows (DNV: every number below must hold too), then bisect between the last
+  // row held and the first that is not.
+  std::size_t held = 0;
+  Check last = evaluate.at(rows[0].wind_mps);
+  if (!last.holds) {
+    p.limiting = limiting_names(last.at_limit);
+    return p;
+  }
+  while (held + 1 < rows.size()) {
+    const Check next = evaluate.at(rows[held + 1].wind_mps);
+    if (!next.holds) break;
+    last = next;
+    ++held;
+  }
+  p.dp_number = static_cast<int>(held);
+  if (held + 1 == rows.size()) {
+    p.max_wind_mps = rows.back().wind_mps;
+    p.beyond_table = true;
+    p.limiting = "none";
+    return p;
+  }
+  double lo = rows[held].wind_mps;
+  double hi = rows[held + 1].wind_mps;
+  while (hi - lo > options.wind_tolerance_mps) {
+    const double mid = 0.5 * (lo + hi);
+    const Check c = evaluate.at(mid);
+    (c.holds ? lo : hi) = mid;
+    if (c.holds) last = c;
+  }
+  p.max_wind_mps = lo;
+  p.limiting = lo > 0.0 ? limiting_names(last.at_limit) : "no thrust left for the weather";
+  return p;
+}
+
+std::vector<CapabilityPoint> quasi_static_rose(const scenario::VesselConfig& vessel,
+                                               const std::vector<std::string>& failed,
+                                               const QuasiStaticOptions& options) {
+  if (options.level != 1 && options.level != 2) {
+    throw core::InputError::for_option("level",
+                                       fmt::format("level {} is not quasi-static", options.level));
+  }
+  options.environment.validate();
+  std::vector<CapabilityPoint> rose;
+  const int n = static_cast<int>(std::lround(360.0 / options.direction_step_deg));
+  for (int i = 0; i < n; ++i) {
+    const double deg = i * options.direction_step_deg;
+    rose.push_back(quasi_static_point(vessel, failed, deg * kPi / 180.0, options));
+    rose.back().direction_deg = deg;
+  }
+  return rose;
+}
+
+std::vector<std::string> single_failures() {
+  const auto& names = actuator_names();
+  return {names.begin(), names.end()};
+}
+
+std::vector<CapabilityPoint> worst_case(const std::vector<std::vector<CapabilityPoint>>& roses) {
+  std::vector<CapabilityPoint> worst = roses.at(0);
+  for (const auto& rose : roses) {
+    for (std::size_t i = 0; i < rose.size(); ++i) {
+      if (rose[i].max_wind_mps < worst[i].max_wind_mps) worst[i] = rose[i];
+    }
+  }
+  return worst;
+}
+
+}  // namespace dynpos::capability
