@@ -81,8 +81,7 @@ std::vector<core::ParamField> param_fields(WindParams& params);
 /// The wind force and moment in BODY (X, Y, N) [N, N, N·m] of a relative wind of speed
 /// speed_mps [m/s] coming from gamma_rad [rad] off the bow (0 ahead, π/2 from starboard):
 /// ½ρ_a V² (−c_x cos γ·A_F, −c_y sin γ·A_L, −c_n sin 2γ·A_L·L).
-Eigen::Vector3d wind_force_b(const WindParams& params, double speed_mps,
-                             double gamma_rad) noexcept;
+Eigen::Vector3d wind_force_b(const WindParams& params, double speed_mps, double gamma_rad) noexcept;
 
 /// Wind with Gauss–Markov gusts; forces by smooth coefficient curves of the relative angle.
 class Wind {
