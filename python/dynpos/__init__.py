@@ -25,7 +25,7 @@ __all__ = [
     "InputError", "Log", "Result", "Simulation", "read_log", "identify_step",
     "identify_thrust_map", "identify_agility", "identify_four_corner",
     "identify_station_keeping", "leverarm_gnss", "leverarm_mru", "hybrid_case", "hybrid_vessel",
-    "compare", "simulate", "scenarios",
+    "compare", "capability", "simulate", "scenarios",
 ]
 
 
@@ -315,6 +315,19 @@ def compare(a, b, *, json=None, **options) -> Result:
             paths.append(os.fspath(value))
         q = _options(_dynpos.CompareRequest, {"a": paths[0], "b": paths[1], **options})
         return Result(_json.loads(_dynpos.run_compare(q, _path(json))), "rows")
+
+
+def capability(*, json=None, out=None, **options) -> Result:
+    """DP capability after DNV-ST-0111: per direction of the weather (off the bow, clockwise)
+    the DP capability number and the strongest wind held [m/s], intact and after single
+    failures. Options as ``dynpos capability``: ``level`` (1 the standard's table at rated
+    thrust, 2 the model's thrust losses and a ``site`` table or fixed ``hs`` [m], ``tp`` [s],
+    ``current`` [m/s], 3 time-domain runs), ``vessel`` (file), ``failure`` ("worst", "none" or
+    an actuator), ``direction_step`` [deg], ``wind_tolerance`` [m/s]; level 3: ``duration``,
+    ``settle`` [s], ``footprint`` [m], ``footprint_deg`` [deg], ``seed``, ``jobs``; ``out``
+    (folder for rose.svg). Table: ``points``."""
+    q = _options(_dynpos.CapabilityRequest, options)
+    return Result(_json.loads(_dynpos.run_capability(q, _path(json), _path(out))), "points")
 
 
 class Simulation:

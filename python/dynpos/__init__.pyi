@@ -137,6 +137,13 @@ def hybrid_vessel(scenario: Literal["ice", "mooring"], *, json: _Path | None = N
 def compare(a: _Path | Result | Mapping[str, Any], b: _Path | Result | Mapping[str, Any], *,
             json: _Path | None = None, format: Literal["text", "markdown"] = ...,
             labels: str = ..., step_tolerance: float = ...) -> Result: ...
+def capability(*, json: _Path | None = None, out: _Path | None = None,
+               level: Literal[1, 2, 3] = ..., vessel: _Path = ...,
+               failure: str = ..., site: _Path = ..., hs: float | None = ...,
+               tp: float | None = ..., current: float | None = ...,
+               direction_step: float = ..., wind_tolerance: float | None = ...,
+               duration: float = ..., settle: float = ..., footprint: float = ...,
+               footprint_deg: float = ..., seed: int = ..., jobs: int = ...) -> Result: ...
 def simulate(scenario: str, seed: int = 1, out: _Path | None = None,
              duration: float | None = None, vessel: _Path | None = None,
              log_rate: float | None = None) -> Simulation | dict[str, Simulation]: ...

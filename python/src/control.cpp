@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "bind.hpp"
+#include "dynpos/analysis/capability.hpp"
 #include "dynpos/analysis/compare.hpp"
 #include "dynpos/analysis/hybrid_case.hpp"
 #include "dynpos/analysis/hybrid_vessel.hpp"
@@ -92,6 +93,41 @@ void bind_compare(py::module_& m) {
       py::arg("request"), py::arg("json") = "");
 }
 
+void bind_capability(py::module_& m) {
+  using Q = CapabilityRequest;
+  py::class_<Q>(m, "CapabilityRequest")
+      .def(py::init<>())
+      .def_readwrite("level", &Q::level)
+      .def_readwrite("vessel", &Q::vessel)
+      .def_readwrite("failure", &Q::failure)
+      .def_readwrite("site", &Q::site)
+      .def_readwrite("hs", &Q::hs)
+      .def_readwrite("tp", &Q::tp)
+      .def_readwrite("current", &Q::current)
+      .def_readwrite("direction_step", &Q::direction_step)
+      .def_readwrite("wind_tolerance", &Q::wind_tolerance)
+      .def_readwrite("duration", &Q::duration)
+      .def_readwrite("settle", &Q::settle)
+      .def_readwrite("footprint", &Q::footprint)
+      .def_readwrite("footprint_deg", &Q::footprint_deg)
+      .def_readwrite("seed", &Q::seed)
+      .def_readwrite("jobs", &Q::jobs);
+  m.def(
+      "run_capability",
+      [](const Q& q, const std::string& json, const std::filesystem::path& out) {
+        q.validate();
+        check_output_file("json", json);
+        return run_to_json(q, json, run_capability, [&out](const CapabilityReport& r) {
+          if (!out.empty()) {
+            std::filesystem::create_directories(out);
+            write_rose(r, out / "rose.svg");
+          }
+          return to_json(r);
+        });
+      },
+      py::arg("request"), py::arg("json") = "", py::arg("out") = std::filesystem::path());
+}
+
 // The folders written: one for a run, one per scenario for the campaign; [(name, folder)].
 std::vector<std::pair<std::string, std::filesystem::path>> simulate(const SimulateRequest& q) {
   py::gil_scoped_release release;
@@ -136,6 +172,7 @@ void bind_control(py::module_& m) {
   bind_hybrid_case(m);
   bind_hybrid_vessel(m);
   bind_compare(m);
+  bind_capability(m);
   bind_simulate(m);
 }
 

@@ -163,3 +163,12 @@ def test_simulate_campaign_and_scenarios(tmp_path):
     one = runs["yaw-steps"]
     assert one.out == os.fspath(tmp_path / "all" / "yaw-steps")
     assert one.truth["scenario"]["name"] == "yaw-steps" and one.log.time[-1] <= 20.0
+
+
+def test_capability(tmp_path):
+    r = dynpos.capability(direction_step=30, json=tmp_path / "py.json", out=tmp_path / "rose")
+    same_as_cli(tmp_path, r, tmp_path / "py.json", "capability", "--direction-step", "30")
+    assert r.level == 1 and len(r.points) == 12 and (tmp_path / "rose" / "rose.svg").exists()
+    frame = r.to_frame()
+    assert list(frame["direction_deg"]) == [30.0 * i for i in range(12)]
+    assert all(w <= i.max_wind_mps for w, i in zip(frame["max_wind_mps"], r.intact))

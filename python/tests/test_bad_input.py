@@ -80,6 +80,10 @@ CASES = [
     ["hybrid", "dp", "--no-jumps", "--sampled"],
     ["hybrid", "vessel", "--scenario", "ice2"],
     ["hybrid", "vessel", "--scenario", "ice", "--within", "0"],
+    ["capability", "--level", "4"],
+    ["capability", "--failure", "bow"],
+    ["capability", "--hs", "2"],
+    ["capability", "--direction-step", "7"],
     ["simulate", "no-such-test", "--out", "unused"],
     ["simulate", "surge-steps-forward", "--duration", "-5", "--out", "unused"],
     ["simulate", "surge-steps-forward", "--duration", "5", "--out", "unused", "--vessel",
@@ -126,6 +130,8 @@ def call_api(argv, tmp_path):
         return dynpos.hybrid_vessel(o.pop("scenario"), **o)
     if argv[0] == "hybrid":
         return dynpos.hybrid_case(argv[1], **options(argv[2:]))
+    if argv[0] == "capability":
+        return dynpos.capability(**options(argv[1:]))
     if argv[0] == "simulate":
         o = options(argv[2:])
         o["out"] = tmp_path / "run"
@@ -133,7 +139,7 @@ def call_api(argv, tmp_path):
     return FUNCTIONS[(argv[0], argv[1])](argv[2], **options(argv[3:]))
 
 
-@pytest.mark.parametrize("argv", CASES, ids=[" ".join(os.path.basename(a) for a in c[:4])
+@pytest.mark.parametrize("argv", CASES, ids=[" ".join(os.path.basename(str(a)) for a in c[:4])
                                              for c in CASES])
 def test_the_api_raises_what_the_cli_prints(argv, tmp_path):
     argv = [a.replace("unused", str(tmp_path / "run")) for a in argv]

@@ -22,7 +22,8 @@ REQUESTS = {"identify_step": _dynpos.StepRequest,
             "leverarm_mru": _dynpos.LeverarmMruRequest,
             "hybrid_case": _dynpos.HybridCaseRequest,
             "hybrid_vessel": _dynpos.HybridVesselRequest,
-            "compare": _dynpos.CompareRequest}
+            "compare": _dynpos.CompareRequest,
+            "capability": _dynpos.CapabilityRequest}
 
 
 def stub_functions():

@@ -37,22 +37,27 @@ capability::EnvironmentTable environment_of(const CapabilityRequest& q) {
   return t;
 }
 
+capability::TimeDomainOptions time_domain_options(const CapabilityRequest& q,
+                                                  const capability::EnvironmentTable& table) {
+  capability::TimeDomainOptions o;
+  o.environment = table;
+  o.direction_step_deg = q.direction_step;
+  o.duration_s = q.duration;
+  o.settle_s = q.settle;
+  o.footprint_m = q.footprint;
+  o.footprint_deg = q.footprint_deg;
+  o.wind_tolerance_mps = q.wind_tolerance.value_or(0.25);
+  o.seed = q.seed;
+  o.jobs = q.jobs;
+  return o;
+}
+
 std::vector<capability::CapabilityPoint> rose(const CapabilityRequest& q,
                                               const scenario::VesselConfig& vessel,
                                               const capability::EnvironmentTable& table,
                                               const std::vector<std::string>& failed) {
   if (q.level == 3) {
-    capability::TimeDomainOptions o;
-    o.environment = table;
-    o.direction_step_deg = q.direction_step;
-    o.duration_s = q.duration;
-    o.settle_s = q.settle;
-    o.footprint_m = q.footprint;
-    o.footprint_deg = q.footprint_deg;
-    o.wind_tolerance_mps = q.wind_tolerance.value_or(0.25);
-    o.seed = q.seed;
-    o.jobs = q.jobs;
-    return capability::time_domain_rose(vessel, failed, o);
+    return capability::time_domain_rose(vessel, failed, time_domain_options(q, table));
   }
   capability::QuasiStaticOptions o;
   o.level = q.level;
@@ -108,14 +113,7 @@ void CapabilityRequest::validate() const {
     throw option_error("vessel", "'" + vessel.string() + "' is not a file",
                        "give a vessel TOML file (docs/vessel-file.md)");
   }
-  if (level == 3) {
-    capability::TimeDomainOptions o;
-    o.duration_s = duration;
-    o.settle_s = settle;
-    o.footprint_m = footprint;
-    o.footprint_deg = footprint_deg;
-    o.validate();
-  }
+  if (level == 3) time_domain_options(*this, capability::dnv_level1_table()).validate();
 }
 
 const CapabilityCase& CapabilityReport::headline() const {
@@ -148,16 +146,7 @@ CapabilityReport run_capability(const CapabilityRequest& q) {
   } else if (q.failure != "none") {
     r.failures.push_back({q.failure, rose(q, vessel, table, {q.failure})});
   }
-  if (q.level == 3) {
-    capability::TimeDomainOptions o;
-    o.duration_s = q.duration;
-    o.settle_s = q.settle;
-    o.footprint_m = q.footprint;
-    o.footprint_deg = q.footprint_deg;
-    o.wind_tolerance_mps = q.wind_tolerance.value_or(0.25);
-    o.seed = q.seed;
-    r.time_domain = o;
-  }
+  if (q.level == 3) r.time_domain = time_domain_options(q, table);
   return r;
 }
 

@@ -75,7 +75,10 @@ void write_rose(const CapabilityReport& r, const std::filesystem::path& svg) {
     panel.title = numbers ? "DP capability number" : "Limiting wind speed";
     panel.radial_label = numbers ? "DP number" : "wind";
     panel.radial_unit = numbers ? "" : "m/s";
-    if (numbers) panel.r_max = 11.0;
+    if (numbers) {  // one ring per DP capability number, as the standard draws them
+      panel.r_max = 11.0;
+      panel.ring_step = 1.0;
+    }
     panel.angle_step_deg = 30.0;
     panel.series.push_back(series(r.intact, numbers, "intact", "#1f77b4", false));
     if (!r.failures.empty()) {

@@ -31,6 +31,7 @@ DemoReport run_demo(const DemoRequest& request) {
     sections.push_back((*section)(dir));
   }
   sections.push_back(hybrid_vessel_demo_section(dir, request.seed));
+  sections.push_back(capability_demo_section(dir, request.seed));
   for (const ReportSection& s : sections) {
     if (!s.title.empty()) report.section_titles.push_back(s.title);
   }

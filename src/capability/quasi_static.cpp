@@ -41,7 +41,7 @@ class Evaluator {
   Check at(double wind_mps) const {
     const Environment e = options_.environment.at(wind_mps);
     const double inflow = options_.level >= 2 ? current_inflow_mps(e.current_mps, from_) : 0.0;
-    const ThrustLimits limits = thrust_limits(allocator_, inflow);
+    const ThrustLimits limits = thrust_limits(allocator_, inflow, options_.level >= 2);
     const Eigen::Vector3d tau =
         -options_.dynamic_allowance * mean_environment_load_b(vessel_, e, from_);
     const auto a = attain(limits, tau);

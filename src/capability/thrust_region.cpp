@@ -55,7 +55,8 @@ const std::array<std::string, 5>& actuator_names() {
   return names;
 }
 
-ThrustLimits thrust_limits(const model::ThrustAllocator& allocator, double surge_speed_mps) {
+ThrustLimits thrust_limits(const model::ThrustAllocator& allocator, double surge_speed_mps,
+                           bool propeller_inflow) {
   ThrustLimits l;
   l.B = allocator.configuration().matrix();
   const auto box = allocator.bounds(surge_speed_mps);
@@ -63,6 +64,14 @@ ThrustLimits thrust_limits(const model::ThrustAllocator& allocator, double surge
   l.hi_N = box[1];
   l.cone = allocator.rudder_cone(surge_speed_mps);
   const Vector5d& capacity = allocator.options().capacity;
+  if (propeller_inflow) {
+    const model::Thruster& p = allocator.propeller();
+    const double n_max = p.params().max_shaft_speed;
+    for (const int k : kT) {
+      l.hi_N(k) = capacity(k) * std::max(p.thrust(n_max, surge_speed_mps), 0.0);
+      l.lo_N(k) = capacity(k) * std::min(p.thrust(-n_max, surge_speed_mps), 0.0);
+    }
+  }
   for (int k = 0; k < 5; ++k) l.failed[static_cast<std::size_t>(k)] = capacity(k) == 0.0;
   return l;
 }

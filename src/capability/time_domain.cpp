@@ -5,8 +5,11 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <functional>
 #include <numbers>
+#include <optional>
 #include <thread>
+#include <utility>
 
 #include "dynpos/capability/thrust_region.hpp"
 #include "dynpos/core/error.hpp"
@@ -42,6 +45,36 @@ bool simulable(const Environment& e) {
   return e.wind_mps <= model::kWindSpeedRange.hi && e.hs_m <= model::kSignificantWaveHeightRange.hi;
 }
 
+// The last row that holds, searched from `guess` (the quasi-static balance's row): up while
+// the rows hold, or down until one does. A row that holds is taken to hold every row below it
+// (the loads grow with the row), so a good guess costs two runs instead of one per row. The
+// calm row holds by definition (no load). Returns the row and the failing run above it (none
+// when the last row the simulator takes holds).
+std::pair<std::size_t, std::optional<RunVerdict>> last_row_held(
+    const std::function<RunVerdict(double)>& run, const std::vector<Environment>& rows,
+    std::size_t guess) {
+  std::size_t top = 0;
+  while (top + 1 < rows.size() && simulable(rows[top + 1])) ++top;
+  std::size_t row = std::min(std::max<std::size_t>(guess, 1), top);
+  if (top == 0) return {0, std::nullopt};
+  RunVerdict v = run(rows[row].wind_mps);
+  if (v.holds) {
+    while (row < top) {
+      RunVerdict up = run(rows[row + 1].wind_mps);
+      if (!up.holds) return {row, std::move(up)};
+      ++row;
+    }
+    return {top, std::nullopt};
+  }
+  while (row > 1) {
+    RunVerdict down = run(rows[row - 1].wind_mps);
+    if (down.holds) return {row - 1, std::move(v)};
+    v = std::move(down);
+    --row;
+  }
+  return {0, std::move(v)};
+}
+
 CapabilityPoint search_direction(const scenario::VesselConfig& vessel,
                                  const std::vector<std::string>& failed, double from_deg,
                                  const TimeDomainOptions& o) {
@@ -49,22 +82,18 @@ CapabilityPoint search_direction(const scenario::VesselConfig& vessel,
   CapabilityPoint p;
   p.direction_deg = from_deg;
   p.failure = failed.empty() ? "none" : failed.front();
-  const auto run = [&](double w) {
+  const std::function<RunVerdict(double)> run = [&](double w) {
     return time_domain_run(vessel, failed, o.environment.at(w), from_deg, o);
   };
-  RunVerdict v = run(rows[0].wind_mps);
-  if (!v.holds) {
-    p.limiting = v.axis;
-    return p;
-  }
-  std::size_t held = 0;
-  while (held + 1 < rows.size() && simulable(rows[held + 1])) {
-    v = run(rows[held + 1].wind_mps);
-    if (!v.holds) break;
-    ++held;
-  }
+  QuasiStaticOptions balance;  // the same mean load and thrust losses, without the reserve
+  balance.level = 2;
+  balance.environment = o.environment;
+  balance.dynamic_allowance = 1.0;
+  const std::size_t guess = static_cast<std::size_t>(
+      quasi_static_point(vessel, failed, from_deg * std::numbers::pi / 180.0, balance).dp_number);
+  const auto [held, fail_above] = last_row_held(run, rows, guess);
   p.dp_number = static_cast<int>(held);
-  if (v.holds) {  // the table's (or the simulator's) last row held
+  if (!fail_above) {  // the table's (or the simulator's) last row held
     p.max_wind_mps = rows[held].wind_mps;
     p.beyond_table = true;
     p.limiting = "none";
@@ -72,7 +101,7 @@ CapabilityPoint search_direction(const scenario::VesselConfig& vessel,
   }
   double lo = rows[held].wind_mps;
   double hi = rows[held + 1].wind_mps;
-  std::string axis = v.axis;
+  std::string axis = fail_above->axis;
   while (hi - lo > o.wind_tolerance_mps) {
     const double mid = 0.5 * (lo + hi);
     const RunVerdict m = run(mid);

@@ -56,6 +56,13 @@ double block_height(const PolarFigure& f) {
 
 // The radial extent: fixed, or the largest finite radius widened to a nice tick.
 AxisTicks radial_ticks(const PolarPanel& p) {
+  if (p.r_max && p.ring_step) {
+    AxisTicks t{0.0, *p.r_max, *p.ring_step, {}, *p.ring_step >= 1.0 ? 0 : 1};
+    for (int k = 0; k * *p.ring_step <= *p.r_max * (1.0 + 1e-12); ++k) {
+      t.values.push_back(k * *p.ring_step);
+    }
+    return t;
+  }
   if (p.r_max) return nice_ticks(0.0, *p.r_max, 5, false);
   double hi = 0.0;
   for (const PolarSeries& s : p.series) {
@@ -273,6 +280,12 @@ void PolarFigure::validate() const {
     if (p.r_max) {
       require(std::isfinite(*p.r_max) && *p.r_max > 0.0,
               "r_max must be finite and > 0 in panel '" + p.title + "'");
+    }
+    if (p.ring_step) {
+      require(p.r_max && std::isfinite(*p.ring_step) && *p.ring_step > 0.0 &&
+                  *p.r_max / *p.ring_step <= 100.0,
+              "ring step must be > 0, with r_max, and give at most 100 rings in panel '" + p.title +
+                  "'");
     }
     for (const PolarSeries& s : p.series) {
       require(s.angle_deg.size() == s.radius.size(),

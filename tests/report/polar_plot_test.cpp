@@ -114,6 +114,21 @@ TEST(PolarPlot, RingsAreLabelledAndAnglesRunClockwiseFromTheTop) {
   EXPECT_THAT(svg, ::testing::HasSubstr("radius: Response time [s]"));
 }
 
+TEST(PolarPlot, ARingStepGivesOneRingPerStep) {
+  PolarFigure f = agility_like();
+  f.panels[0].r_max = 11.0;
+  f.panels[0].ring_step = 1.0;
+  const PolarLayout l = polar_layout(f, 0);
+  EXPECT_DOUBLE_EQ(l.r_max, 11.0);
+  EXPECT_THAT(l.rings, ::testing::ElementsAre(1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11));
+  EXPECT_THAT(render_polar_svg(f), ::testing::HasSubstr("class=\"ring-label\">11<"));
+  f.panels[0].r_max.reset();
+  EXPECT_THROW(f.validate(), std::invalid_argument);  // a ring step needs the outer ring
+  f.panels[0].r_max = 11.0;
+  f.panels[0].ring_step = 0.01;
+  EXPECT_THROW(f.validate(), std::invalid_argument);  // more than 100 rings
+}
+
 TEST(PolarPlot, APointLandsWhereTrigonometrySays) {
   const PolarFigure f = agility_like();
   const PolarLayout l = polar_layout(f, 0);

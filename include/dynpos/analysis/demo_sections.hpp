@@ -24,4 +24,9 @@ ReportSection leverarm_mru_demo_section(const std::filesystem::path& campaign_di
 ReportSection hybrid_vessel_demo_section(const std::filesystem::path& campaign_dir,
                                          std::uint64_t seed);
 
+/// DP capability of the virtual vessel: level 1 with every single failure, level 3 (time
+/// domain, seeded by the campaign's master seed) intact and for the failures worst at level 1.
+ReportSection capability_demo_section(const std::filesystem::path& campaign_dir,
+                                      std::uint64_t seed);
+
 }  // namespace dynpos::analysis

@@ -39,8 +39,11 @@ struct ThrustLimits {
 /// The limits of `allocator` at surge inflow speed u [m/s] (≥ 0 ahead; the tunnel's speed
 /// factor and the rudders' lift from the inflow), with its capacities
 /// (model::ThrustAllocationOptions::capacity: 0 lost, 1 as rated). A lost propeller's rudder
-/// keeps only the inflow's lift, through the cone.
-ThrustLimits thrust_limits(const model::ThrustAllocator& allocator, double surge_speed_mps);
+/// keeps only the inflow's lift, through the cone. With propeller_inflow the main propellers'
+/// limits are their thrust at full shaft speed with the inflow as advance speed (the thrust
+/// loss of (2.28)'s K_T(J)); without, their bollard thrust as the allocation takes it.
+ThrustLimits thrust_limits(const model::ThrustAllocator& allocator, double surge_speed_mps,
+                           bool propeller_inflow = false);
 
 /// `vessel_allocation` with the actuators named in `failed` (actuator_names()) lost: capacity 0.
 /// Throws core::InputError (option "failure") for an unknown name.

@@ -51,9 +51,11 @@ RunVerdict time_domain_run(const scenario::VesselConfig& vessel,
                            const std::vector<std::string>& failed, const Environment& environment,
                            double from_rel_deg, const TimeDomainOptions& options);
 
-/// The rose: per direction the DP number (rows held, every lower one too), the strongest
-/// wind held (bisected) and the axis that is lost first ("position" or "heading"; "none"
-/// beyond the table or the simulator's range of waves).
+/// The rose: per direction the DP number, the strongest wind held (bisected) and the axis that
+/// is lost first ("position" or "heading"; "none" beyond the table or the simulator's range of
+/// waves). The search for the number starts at the row the quasi-static balance of the same
+/// load (level 2, no reserve) holds and steps up or down from there, taking a row that holds to
+/// hold every row below it (the standard steps up from the calm; a run costs about a second).
 std::vector<CapabilityPoint> time_domain_rose(const scenario::VesselConfig& vessel,
                                               const std::vector<std::string>& failed,
                                               const TimeDomainOptions& options);

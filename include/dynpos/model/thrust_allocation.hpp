@@ -179,6 +179,7 @@ class ThrustAllocator {
   RudderCone rudder_cone(double surge_speed) const noexcept;
 
   const ThrustConfiguration& configuration() const noexcept { return configuration_; }
+  const Thruster& propeller() const noexcept { return propeller_; }
   const ThrustAllocationOptions& options() const noexcept { return options_; }
 
  private:

@@ -48,9 +48,12 @@ struct PolarArrow {
 /// One polar chart.
 struct PolarPanel {
   std::string title;
-  std::string radial_label;              ///< e.g. "Response time"
-  std::string radial_unit;               ///< e.g. "s"
-  std::optional<double> r_max;           ///< outer ring; absent: from the data
+  std::string radial_label;     ///< e.g. "Response time"
+  std::string radial_unit;      ///< e.g. "s"
+  std::optional<double> r_max;  ///< outer ring; absent: from the data
+  /// With r_max: a labelled ring at every multiple of this (e.g. 1 for one ring per DP
+  /// capability number); absent: about five nice rings.
+  std::optional<double> ring_step;
   double angle_step_deg = 45.0;          ///< spokes and angle labels every this many degrees, > 0
   std::vector<std::string> angle_names;  ///< optional names for the spokes from 0 clockwise,
                                          ///< e.g. {"ahead", "", "stb", ...}; else degrees
@@ -67,7 +70,8 @@ struct PolarFigure {
 
   /// Throws std::invalid_argument naming the first problem: no panel, a size below the
   /// minimum, a series whose angle and radius differ in size, a stroke width ≤ 0, r_max ≤ 0 or
-  /// not finite, an angle step ≤ 0, an arrow length outside (0, 1].
+  /// not finite, a ring step ≤ 0 or without r_max or giving more than 100 rings, an angle step
+  /// ≤ 0, an arrow length outside (0, 1].
   void validate() const;
 };
 
