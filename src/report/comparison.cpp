@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 
 #include "dynpos/core/error.hpp"
 
@@ -273,6 +275,43 @@ std::pair<std::size_t, std::size_t> line_column_of(const std::string& text, std:
   return {line, at - line_start + 1};
 }
 
+// The deepest nesting a result may have: dynpos' documents are at most 6 deep; the limit
+// keeps the flattener's recursion (and the parser's) bounded on hostile input.
+constexpr std::size_t kMaxJsonDepth = 64;
+
+// Throws InputError at the first bracket that nests deeper than kMaxJsonDepth.
+void check_json_depth(const std::string& text, const std::filesystem::path& path) {
+  std::size_t depth = 0;
+  bool in_string = false;
+  bool escaped = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      if (escaped) {
+        escaped = false;
+      } else if (c == '\\') {
+        escaped = true;
+      } else if (c == '"') {
+        in_string = false;
+      }
+      continue;
+    }
+    if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > kMaxJsonDepth) {
+        const auto [line, column] = line_column_of(text, i + 1);
+        throw core::InputError(
+            {path.string(), line, column, {}},
+            "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels",
+            "give a result written by a dynpos analysis with --json");
+      }
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    }
+  }
+}
+
 json load_json_file(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
@@ -282,8 +321,23 @@ json load_json_file(const std::filesystem::path& path) {
   std::ostringstream ss;
   ss << in.rdbuf();
   const std::string text = ss.str();
+  check_json_depth(text, path);
   try {
     return json::parse(text);
+  } catch (const json::out_of_range& e) {
+    // A number beyond double's range (e.g. 1e400): nlohmann names the token, not the place.
+    std::string what = e.what();
+    std::optional<std::size_t> line, column;
+    if (const auto q = what.find('\''); q != std::string::npos) {
+      const auto q2 = what.find('\'', q + 1);
+      const std::string token = what.substr(q + 1, q2 - q - 1);
+      if (const auto at = text.find(token); !token.empty() && at != std::string::npos) {
+        std::tie(line, column) = line_column_of(text, at + 1);
+      }
+    }
+    if (const auto p = what.find("number overflow"); p != std::string::npos) what = what.substr(p);
+    throw core::InputError({path.string(), line, column, {}}, "invalid JSON: " + what,
+                           "numbers must be finite doubles (about ±1.8e308)");
   } catch (const json::parse_error& e) {
     const auto [line, column] = line_column_of(text, e.byte);
     std::string what = e.what();

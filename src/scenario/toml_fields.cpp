@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <filesystem>
 #include <limits>
 
 namespace dynpos::scenario::detail {
@@ -22,6 +23,14 @@ core::InputLocation location_of(const toml::source_region& region, const std::st
 }  // namespace
 
 toml::table TomlTable::parse_file(const std::string& file) {
+  // A folder (or a device) would read as an empty document: every key its default.
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec)) {
+    throw core::InputError(
+        {file, {}, {}, {}},
+        std::filesystem::exists(file, ec) ? "not a regular file" : "cannot open the file",
+        "give a TOML file");
+  }
   try {
     return toml::parse_file(file);
   } catch (const toml::parse_error& e) {

@@ -162,5 +162,35 @@ TEST(Comparison, InvalidJsonFileNamesLineAndColumn) {
   std::filesystem::remove(path);
 }
 
+// A hostile document: nesting far beyond any result's, and a number beyond double's range.
+TEST(Comparison, DeepNestingAndHugeNumbersAreLocatedErrors) {
+  const auto path = std::filesystem::temp_directory_path() / "dynpos_comparison_deep.json";
+  {
+    std::ofstream out(path);
+    out << "{\"a\": \"[[[\",\n \"b\": " << std::string(20000, '[') << std::string(20000, ']')
+        << "}";
+  }
+  try {
+    load_json_file(path);
+    FAIL() << "no exception";
+  } catch (const core::InputError& e) {
+    EXPECT_EQ(e.where().line.value(), 2U);          // the brackets inside the string do not count
+    EXPECT_EQ(e.where().column.value(), 7U + 63U);  // the 64th bracket, inside the object
+    EXPECT_NE(e.problem().find("nested deeper than 64"), std::string::npos);
+  }
+  {
+    std::ofstream out(path);
+    out << "{\n  \"steps\": [{\"K\": 1e400}]\n}\n";
+  }
+  try {
+    load_json_file(path);
+    FAIL() << "no exception";
+  } catch (const core::InputError& e) {
+    EXPECT_EQ(e.where().line.value(), 2U);
+    EXPECT_NE(e.problem().find("number overflow"), std::string::npos);
+  }
+  std::filesystem::remove(path);
+}
+
 }  // namespace
 }  // namespace dynpos::report

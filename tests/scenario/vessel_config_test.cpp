@@ -47,6 +47,15 @@ TEST(VesselConfig, UnknownKeyIsRejected) {
                   testing::ContainsRegex("typo_vessel.toml:2:.*propeller.diamter_m.*unknown key")));
 }
 
+TEST(VesselConfig, AFolderOrAMissingFileIsNotTheBuiltInVessel) {
+  const auto dir = std::filesystem::temp_directory_path();
+  EXPECT_THAT([&] { load_vessel_config(dir); },
+              testing::ThrowsMessage<core::InputError>(testing::HasSubstr("not a regular file")));
+  EXPECT_THAT([&] { load_vessel_config(dir / "dynpos_no_such_vessel.toml"); },
+              testing::ThrowsMessage<core::InputError>(
+                  testing::ContainsRegex("no_such_vessel.toml: cannot open the file")));
+}
+
 TEST(VesselConfig, AngleKeysAreDegreesInTheFile) {
   const auto path = write_temp("dynpos_rudder_vessel.toml", "[rudder]\nmax_angle_deg = 40\n");
   const VesselConfig v = load_vessel_config(path);
