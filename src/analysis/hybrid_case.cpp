@@ -1,10 +1,10 @@
 #include "dynpos/analysis/hybrid_case.hpp"
 
+#include <fmt/core.h>
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
-
-#include <stdexcept>
 
 #include "dynpos/analysis/options.hpp"
 #include "dynpos/core/angle.hpp"
@@ -20,7 +20,15 @@ void apply_timing(const HybridCaseRequest& request, hybrid::CaseTiming& timing) 
   if (request.dwell_s) timing.dwell_time_s = *request.dwell_s;
   if (request.sample_period_s) timing.sample_period_s = *request.sample_period_s;
   if (request.noise_power) timing.noise_power = *request.noise_power;
-  if (request.end_time_s) timing.end_time_s = *request.end_time_s;
+  if (request.end_time_s) {
+    // 1 h at the 1 ms step is 3.6 M steps and a trace of 360 k rows: more is not a case study.
+    if (!std::isfinite(*request.end_time_s) || *request.end_time_s > 3600.0) {
+      throw option_error("end_time",
+                         fmt::format("{} s is not a run length up to 3600 s", *request.end_time_s),
+                         "the case studies last 60 s; give at most 3600");
+    }
+    timing.end_time_s = *request.end_time_s;
+  }
   timing.seed = request.seed;
   try {
     timing.validate();

@@ -110,8 +110,11 @@ calib::GnssArmOptions arm_options(const LeverarmGnssRequest& q) {
     lo.time_offset_s = *q.time_offset;
   }
   lo.estimate_time_offset = q.estimate_time_offset;
-  if (!(q.max_time_offset >= 0.05) || !std::isfinite(q.max_time_offset))
-    throw option_error("max_time_offset", "must be >= 0.05 s");
+  // The search steps through the range: 60 s covers any receiver's latency or a wrong clock
+  // second, and keeps the search bounded.
+  if (!(q.max_time_offset >= 0.05 && q.max_time_offset <= 60.0))
+    throw option_error("max_time_offset", "must be in [0.05, 60] s",
+                       "a GNSS latency is well below a second; 1 s is the default");
   lo.max_time_offset_s = q.max_time_offset;
   if (!(q.converged_from >= 0.0 && q.converged_from < 1.0))
     throw option_error("converged_from", "must be in [0, 1)",

@@ -75,8 +75,14 @@ void LeverarmMruRequest::validate() const {
     throw option_error("method", "unknown method '" + method + "'",
                        "use --method lsq or --method observer");
   }
-  if (!(window_s > 0.0) || !(tau_s > 0.0)) {
-    throw option_error("window_s/tau_s", "must be > 0", "give seconds");
+  // The smoother's window is a count of samples: bounded so that it is one at any log rate.
+  if (!(window_s > 0.0 && window_s <= 600.0)) {
+    throw option_error("window_s", fmt::format("{} s is not a window in (0, 600] s", window_s),
+                       "about 1 s suits a 100 Hz MRU");
+  }
+  if (!(tau_s > 0.0 && tau_s <= 3600.0)) {
+    throw option_error("tau_s", fmt::format("{} s is not a time constant in (0, 3600] s", tau_s),
+                       "the default is 5 s");
   }
   for (const std::string& spec : mru_log) {
     const auto eq = spec.find('=');

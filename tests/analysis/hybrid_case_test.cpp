@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include <filesystem>
+#include <limits>
 #include <string>
 
 #include "dynpos/core/error.hpp"
@@ -96,6 +97,12 @@ TEST(HybridCaseRequest, StepsOutsideTheRunAndANonFiniteHeadingAreOptionErrors) {
   r = dp_request();
   r.heading_deg = std::nan("");
   EXPECT_EQ(failing_key(r), "heading");
+  // A run of 1e5 s hung and 1e9 s ran out of memory: an hour is the most a case study takes.
+  for (const double end : {1e5, 1e9, std::numeric_limits<double>::infinity()}) {
+    r = dp_request();
+    r.end_time_s = end;
+    EXPECT_EQ(failing_key(r), "end_time") << end;
+  }
 }
 
 TEST(HybridCaseRequest, ViolatedTheoremSixIsRefusedUnlessPIsSolvedFor) {

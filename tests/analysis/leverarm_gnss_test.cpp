@@ -152,6 +152,8 @@ TEST_F(LeverarmGnss, ValidateNamesTheBadOption) {
   q = good;
   q.max_time_offset = 0.01;
   EXPECT_EQ(error_key(q), "max_time_offset");
+  q.max_time_offset = 1e9;  // the offset search stepped through it for hours
+  EXPECT_EQ(error_key(q), "max_time_offset");
   q = good;
   q.converged_from = 1.0;
   EXPECT_EQ(error_key(q), "converged_from");

@@ -109,7 +109,13 @@ TEST_F(LeverarmMru, ValidateNamesTheBadOption) {
   EXPECT_EQ(error_key(q), "method");
   q = good;
   q.tau_s = 0.0;
-  EXPECT_EQ(error_key(q), "window_s/tau_s");
+  EXPECT_EQ(error_key(q), "tau_s");
+  q = good;
+  q.window_s = 3e7;  // overflowed the smoother's sample count
+  EXPECT_EQ(error_key(q), "window_s");
+  q = good;
+  q.window_s = std::nan("");
+  EXPECT_EQ(error_key(q), "window_s");
   q = good;
   q.mru_log = {"mru1="};
   EXPECT_EQ(error_key(q), "mru_log");
