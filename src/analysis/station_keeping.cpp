@@ -55,9 +55,17 @@ std::vector<ident::TimeWindow> windows_of(const StationKeepingRequest& request,
                              "map setpoint.north, setpoint.east, setpoint.heading, or give "
                              "--from/--to");
     }
-    return ident::setpoint_windows(in.t_s, values_or_empty(log, "setpoint.north"),
-                                   values_or_empty(log, "setpoint.east"),
-                                   values_or_empty(log, "setpoint.heading"), duration);
+    auto holds = ident::setpoint_windows(in.t_s, values_or_empty(log, "setpoint.north"),
+                                         values_or_empty(log, "setpoint.east"),
+                                         values_or_empty(log, "setpoint.heading"), duration);
+    if (holds.empty()) {  // an empty table would read as "nothing to report"
+      throw option_error_in_file(
+          request.source.log, "per_setpoint",
+          fmt::format("no setpoint is held for {:g} s or more (half of --duration {:g})",
+                      0.5 * duration, duration),
+          "give a shorter --duration, or a window with --from/--to");
+    }
+    return holds;
   }
   return {{"last " + fmt::format("{:g}", duration) + " s",
            std::max(in.t_s.front(), in.t_s.back() - duration), in.t_s.back()}};

@@ -98,6 +98,18 @@ TEST(StationKeepingAnalysis, PerSetpointWindowsOfAKnownLog) {
   EXPECT_TRUE(j.at("energy_kJ").at("total").is_null());
 }
 
+TEST(StationKeepingAnalysis, NoHoldLongEnoughIsAnErrorNotAnEmptyTable) {
+  TempDir dir;
+  StationKeepingRequest request;
+  request.source.log = write_log(dir);  // two holds of 200 s
+  request.per_setpoint = true;
+  request.duration_s = 1000.0;  // a hold needs 500 s
+  const core::InputError e = testing::input_error([&] { run_station_keeping(request); });
+  EXPECT_EQ(e.option(), "per_setpoint");
+  EXPECT_EQ(e.where().file, request.source.log.string());
+  EXPECT_NE(e.problem().find("no setpoint is held for 500 s"), std::string::npos);
+}
+
 TEST(StationKeepingAnalysis, OneWindowIsTheTopLevelOfTheDocument) {
   TempDir dir;
   StationKeepingRequest request;
