@@ -79,7 +79,7 @@ void register_capability(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--footprint-deg", r.footprint_deg, "Level 3: heading footprint [deg]")
       ->capture_default_str();
-  sub->add_option("--seed", r.seed, "Level 3: master seed of the runs")->capture_default_str();
+  add_seed_option(*sub, r.seed, "Level 3: master seed of the runs");
   sub->add_option("--jobs", r.jobs, "Level 3: parallel runs (default: every core)");
   sub->add_option("--out", o->out, "Folder for the capability rose (rose.svg)");
   sub->add_option("--json", o->json, "Write the results as JSON to FILE, or '-' for stdout");

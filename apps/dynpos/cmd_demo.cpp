@@ -17,8 +17,7 @@ void register_demo(CLI::App& app) {
       "demo", "Run the whole virtual Gunnerus campaign and write a report folder");
   sub->add_option("--out", request->out_dir, "Report folder (created if needed)")
       ->capture_default_str();
-  sub->add_option("--seed", request->seed, "Master seed; the same seed gives byte-identical files")
-      ->capture_default_str();
+  add_seed_option(*sub, request->seed, "Master seed; the same seed gives byte-identical files");
   sub->footer(
       "Writes DIR/index.html, DIR/summary.md, DIR/summary.json and DIR/<scenario>/{log.csv,"
       "truth.csv,truth.json} for every scenario in data/scenarios, and DIR/hybrid/: hybrid vs "

@@ -48,8 +48,7 @@ void add_case(CLI::App& parent, const std::string& name, const std::string& desc
   sub->add_flag("--sampled", r.sampled,
                 "Hybrid run with the practical jump set: the integral error estimated from a "
                 "sampled, noisy state derivative (default: the ideal jump set of the theorem)");
-  sub->add_option("--seed", r.seed, "Seed of the derivative noise (--sampled)")
-      ->capture_default_str();
+  add_seed_option(*sub, r.seed, "Seed of the derivative noise (--sampled)");
   sub->add_option("--out", opt->out_dir, "Folder for the SVG plots (created if needed)");
   sub->add_option("--json", opt->json, "Write the results as JSON to FILE, or '-' for stdout");
   sub->add_option("--lambda", r.lambda,

@@ -45,8 +45,7 @@ void add_hybrid_vessel(CLI::App& hybrid) {
   sub->add_option("--scenario", opt->request.scenario,
                   "ice: a 20 kN ice load sets in; mooring: a mooring line holding 20 kN snaps")
       ->required();
-  sub->add_option("--seed", opt->request.seed, "Master seed (the same for both designs)")
-      ->capture_default_str();
+  add_seed_option(*sub, opt->request.seed, "Master seed (the same for both designs)");
   sub->add_option("--out", opt->out_dir, "Folder for the SVG plots (created if needed)");
   sub->add_option("--json", opt->json, "Write the results as JSON to FILE, or '-' for stdout");
   // The library checks the value (HybridVesselRequest::validate); the type name says the range.

@@ -20,9 +20,8 @@ void register_simulate(CLI::App& app) {
                   "Scenario name in data/scenarios (e.g. surge-steps-forward), a .toml file, or "
                   "'campaign' for all of them (one folder each)");
   sub->add_option("--out", request->out_dir, "Output folder (created if needed)");
-  sub->add_option("--seed", request->seed,
-                  "Master seed (unsigned 64-bit); the same seed gives byte-identical output")
-      ->capture_default_str();
+  add_seed_option(*sub, request->seed,
+                  "Master seed (unsigned 64-bit); the same seed gives byte-identical output");
   sub->add_option("--vessel", request->vessel_file,
                   "Vessel file (default: data/vessels/gunnerus.toml)");
   // The library checks the values (SimulateRequest::validate); the type names say the range.

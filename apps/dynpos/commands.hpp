@@ -3,6 +3,7 @@
 // A registered callback throws on failure; main() maps exceptions to exit codes.
 
 #include <CLI/CLI.hpp>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 
@@ -21,6 +22,10 @@ struct Unavailable {
   std::string command;
   std::string planned;  ///< what the subcommand will do
 };
+
+/// Adds --seed bound to `seed`: a decimal number from 0 to 2⁶⁴−1, anything else (a sign, "-1",
+/// an overflow) refused with exit 2 (seed_option.cpp).
+CLI::Option* add_seed_option(CLI::App& sub, std::uint64_t& seed, const std::string& help);
 
 /// Adds `vessel` to the `hybrid` subcommand.
 void add_hybrid_vessel(CLI::App& hybrid);

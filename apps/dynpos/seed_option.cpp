@@ -1,0 +1,29 @@
+// --seed for every subcommand that has one: a decimal number 0 … 2⁶⁴−1. CLI11 alone reads "-1"
+// into an unsigned seed as 2⁶⁴−1; the check below refuses it (and any sign, space or overflow).
+
+#include <cstdint>
+#include <string>
+
+#include "commands.hpp"
+
+namespace dynpos::cli {
+
+CLI::Option* add_seed_option(CLI::App& sub, std::uint64_t& seed, const std::string& help) {
+  const CLI::Validator decimal(
+      [](std::string& text) -> std::string {
+        const std::string max = "18446744073709551615";  // 2⁶⁴ − 1
+        const bool digits =
+            !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+        std::string trimmed = text.substr(std::min(text.find_first_not_of('0'), text.size()));
+        if (trimmed.empty()) trimmed = "0";
+        if (!digits || trimmed.size() > max.size() ||
+            (trimmed.size() == max.size() && trimmed > max)) {
+          return "'" + text + "' is not a seed: give a whole number from 0 to " + max;
+        }
+        return {};
+      },
+      "UINT64");
+  return sub.add_option("--seed", seed, help)->check(decimal)->capture_default_str();
+}
+
+}  // namespace dynpos::cli
