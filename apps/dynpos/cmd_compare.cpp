@@ -43,7 +43,7 @@ void register_compare(CLI::App& app) {
   sub->add_option("B", r.b, "Second result of the same analysis")
       ->required()
       ->check(CLI::ExistingFile);
-  sub->add_option("--json", opt->json, "Write the comparison as JSON to FILE, or '-' for stdout");
+  add_json_option(*sub, opt->json, "Write the comparison as JSON to FILE, or '-' for stdout");
   sub->add_option("--format", r.format, "Table format: text or markdown")->capture_default_str();
   sub->add_option("--labels", r.labels,
                   "Names of A and B in the table, comma-separated (default: the file names), "

@@ -50,7 +50,7 @@ void add_case(CLI::App& parent, const std::string& name, const std::string& desc
                 "sampled, noisy state derivative (default: the ideal jump set of the theorem)");
   add_seed_option(*sub, r.seed, "Seed of the derivative noise (--sampled)");
   sub->add_option("--out", opt->out_dir, "Folder for the SVG plots (created if needed)");
-  sub->add_option("--json", opt->json, "Write the results as JSON to FILE, or '-' for stdout");
+  add_json_option(*sub, opt->json, "Write the results as JSON to FILE, or '-' for stdout");
   sub->add_option("--lambda", r.lambda,
                   first_order ? "Jump gain lambda (default 3, (5.76))"
                               : "Jump gain lambda (default 25, (5.88))");

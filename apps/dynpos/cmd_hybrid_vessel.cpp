@@ -47,7 +47,7 @@ void add_hybrid_vessel(CLI::App& hybrid) {
       ->required();
   add_seed_option(*sub, opt->request.seed, "Master seed (the same for both designs)");
   sub->add_option("--out", opt->out_dir, "Folder for the SVG plots (created if needed)");
-  sub->add_option("--json", opt->json, "Write the results as JSON to FILE, or '-' for stdout");
+  add_json_option(*sub, opt->json, "Write the results as JSON to FILE, or '-' for stdout");
   // The library checks the value (HybridVesselRequest::validate); the type name says the range.
   sub->add_option("--within", opt->request.within_m, "Distance for 'back within' [m]")
       ->type_name("FLOAT:POSITIVE")

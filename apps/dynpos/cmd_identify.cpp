@@ -59,7 +59,7 @@ void add_identify_step(CLI::App& identify) {
   step->add_option("--min-plateau", r.min_plateau_s,
                    "Shortest time [s] the input holds a level to count as a step")
       ->capture_default_str();
-  step->add_option("--json", opt->json, "Write the results as JSON to FILE, or '-' for stdout");
+  add_json_option(*step, opt->json, "Write the results as JSON to FILE, or '-' for stdout");
   step->footer(
       "Finds every step of the input (or trigger) automatically, or takes the window given, and "
       "fits y = y0 + K*du*(1 - exp(-(t - t0 - delay)/T)) (3.7) to the output after each. Values "

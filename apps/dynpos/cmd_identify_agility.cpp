@@ -53,7 +53,7 @@ void add_identify_agility(CLI::App& identify) {
   o->input.add_options(*sub,
                        "time, command.surge, command.sway, command.yaw [%], thrust.NAME or "
                        "rpm.NAME per thruster, u, v (speed), wind_speed, wind_dir, heading");
-  sub->add_option("--json", o->json, "Write the response times as JSON to FILE, or '-'");
+  add_json_option(*sub, o->json, "Write the response times as JSON to FILE, or '-'");
   sub->add_option("--plot", o->plot, "Write the polar plot (SVG), one polar per case");
   sub->add_option("--window", o->windows,
                   "A step given explicitly (repeatable): T_STEP,T_END,DIR_DEG[,THRUST_PCT"

@@ -53,7 +53,7 @@ void add_identify_station_keeping(CLI::App& identify) {
                 "One window per DP setpoint hold: its last --duration seconds");
   sub->add_option("--waves", r.waves, "Waves as observed, printed and kept in the JSON");
   sub->add_option("--current", r.current, "Current as observed, printed and kept in the JSON");
-  sub->add_option("--json", o->json, "Write the results as JSON to FILE, or '-' for stdout");
+  add_json_option(*sub, o->json, "Write the results as JSON to FILE, or '-' for stdout");
   sub->footer(
       "Position std about the window's mean [m]; heading and wind direction by circular "
       "statistics [deg]; mean |thrust| [kN] and energy ∫P dt [kJ] per thruster and total. A "

@@ -57,7 +57,7 @@ void add_identify_thrust_map(CLI::App& identify) {
                   "Leave out samples with |n| below this [rpm]: near zero the thrust is noise")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
-  sub->add_option("--json", o->json, "Write the coefficients as JSON to FILE, or '-' for stdout");
+  add_json_option(*sub, o->json, "Write the coefficients as JSON to FILE, or '-' for stdout");
   sub->add_flag("--apply", r.apply,
                 "Apply the vessel file's maps to a log with shaft speed only; writes --out");
   sub->add_flag("--abs-speed", r.abs_speed,

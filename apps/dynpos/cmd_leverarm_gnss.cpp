@@ -103,7 +103,7 @@ void add_leverarm_gnss(CLI::App& leverarm) {
                   "GNSS noise per horizontal axis [m]: the predicted σ of the verdict, or ins's "
                   "starting value (vertical twice it; both then found from the data)")
       ->capture_default_str();
-  sub->add_option("--json", o->json, "Write the results as JSON to FILE, or '-' for stdout");
+  add_json_option(*sub, o->json, "Write the results as JSON to FILE, or '-' for stdout");
   sub->add_option("--plots", o->plots, "Write SVG plots (arms over time, P0 NE, excitation)");
   sub->footer(
       "Arms in BODY (x fwd, y stb, z down). ins (the default with an MRU in the log) needs no "

@@ -58,7 +58,7 @@ void add_leverarm_mru(CLI::App& leverarm) {
                   "lsq (batch least squares, the default: most accurate) or observer "
                   "(Luenberger observer (4.80))")
       ->capture_default_str();
-  sub->add_option("--json", o->json, "Write the arms as JSON to FILE, or '-'");
+  add_json_option(*sub, o->json, "Write the arms as JSON to FILE, or '-'");
   sub->add_option("--plots", o->plots, "Write SVG plots of the estimates over time into DIR");
   sub->add_option("--window-s", o->request.window_s,
                   "Savitzky–Golay smoothing window for ω̇, ν̇ and every term [s]")

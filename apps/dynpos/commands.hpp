@@ -24,8 +24,12 @@ struct Unavailable {
 };
 
 /// Adds --seed bound to `seed`: a decimal number from 0 to 2⁶⁴−1, anything else (a sign, "-1",
-/// an overflow) refused with exit 2 (seed_option.cpp).
+/// an overflow) refused with exit 2 (output_options.cpp).
 CLI::Option* add_seed_option(CLI::App& sub, std::uint64_t& seed, const std::string& help);
+
+/// Adds --json bound to `json`: a file name or "-" (standard output); an empty name is refused
+/// with exit 2 instead of silently writing nothing (output_options.cpp).
+CLI::Option* add_json_option(CLI::App& sub, std::string& json, const std::string& help);
 
 /// Adds `vessel` to the `hybrid` subcommand.
 void add_hybrid_vessel(CLI::App& hybrid);

@@ -1,5 +1,6 @@
-// --seed for every subcommand that has one: a decimal number 0 … 2⁶⁴−1. CLI11 alone reads "-1"
-// into an unsigned seed as 2⁶⁴−1; the check below refuses it (and any sign, space or overflow).
+// Options several subcommands share, with the checks CLI11 alone does not make: --seed, a
+// decimal number 0 … 2⁶⁴−1 (CLI11 reads "-1" into an unsigned seed as 2⁶⁴−1), and --json, a
+// file name or "-", never empty.
 
 #include <cstdint>
 #include <string>
@@ -24,6 +25,16 @@ CLI::Option* add_seed_option(CLI::App& sub, std::uint64_t& seed, const std::stri
       },
       "UINT64");
   return sub.add_option("--seed", seed, help)->check(decimal)->capture_default_str();
+}
+
+CLI::Option* add_json_option(CLI::App& sub, std::string& json, const std::string& help) {
+  const CLI::Validator named(
+      [](std::string& text) -> std::string {
+        return text.empty() ? "an empty name writes nothing: give a FILE, or '-' for stdout"
+                            : std::string();
+      },
+      "FILE|-");
+  return sub.add_option("--json", json, help)->check(named);
 }
 
 }  // namespace dynpos::cli
