@@ -22,6 +22,25 @@ namespace {
 
 using namespace dynpos::analysis;
 
+// An analysis with the CLI's --json and --plot: the output targets checked first, then the
+// request; the plot written before the JSON, as the command line does.
+template <typename Request, typename Report>
+std::string run_plotted(const Request& q, const std::string& json, const std::string& plot,
+                        Report (*run)(const Request&)) {
+  check_output_file("json", json);
+  check_output_file("plot", plot);
+  return run_to_json(
+      q, json,
+      [run](const Request& r) {
+        r.validate();
+        return run(r);
+      },
+      [&plot](const Report& r) {
+        if (!plot.empty()) write_plot(r, plot);
+        return to_json(r);
+      });
+}
+
 void bind_step(py::module_& m) {
   py::class_<StepRequest>(m, "StepRequest")
       .def(py::init<>())
@@ -99,18 +118,7 @@ void bind_agility(py::module_& m) {
   m.def(
       "run_agility",
       [](const AgilityRequest& q, const std::string& json, const std::string& plot) {
-        check_output_file("json", json);
-        check_output_file("plot", plot);
-        return run_to_json(
-            q, json,
-            [](const AgilityRequest& r) {
-              r.validate();
-              return run_agility(r);
-            },
-            [&plot](const AgilityReport& r) {
-              if (!plot.empty()) write_plot(r, plot);
-              return to_json(r);
-            });
+        return run_plotted(q, json, plot, &run_agility);
       },
       py::arg("request"), py::arg("json") = "", py::arg("plot") = "");
 }
@@ -132,18 +140,7 @@ void bind_four_corner(py::module_& m) {
   m.def(
       "run_four_corner",
       [](const FourCornerRequest& q, const std::string& json, const std::string& plot) {
-        check_output_file("json", json);
-        check_output_file("plot", plot);
-        return run_to_json(
-            q, json,
-            [](const FourCornerRequest& r) {
-              r.validate();
-              return run_four_corner(r);
-            },
-            [&plot](const FourCornerReport& r) {
-              if (!plot.empty()) write_plot(r, plot);
-              return to_json(r);
-            });
+        return run_plotted(q, json, plot, &run_four_corner);
       },
       py::arg("request"), py::arg("json") = "", py::arg("plot") = "");
 }
