@@ -25,10 +25,7 @@ struct CapabilityCliOptions {
 void run(const CapabilityCliOptions& o) {
   o.request.validate();
   analysis::check_output_file("json", o.json);
-  if (!o.out.empty() && std::filesystem::exists(o.out) && !std::filesystem::is_directory(o.out)) {
-    throw analysis::option_error("out", "'" + o.out.string() + "' exists and is not a folder",
-                                 "name a folder (it is created if needed)");
-  }
+  analysis::check_output_dir("out", o.out);
   const analysis::CapabilityReport report = analysis::run_capability(o.request);
   std::filesystem::path rose;
   if (!o.out.empty()) {
@@ -53,8 +50,9 @@ void register_capability(CLI::App& app) {
       "DP capability (DNV-ST-0111 levels 1-3): the strongest weather held per direction, "
       "intact and after single failures, with a capability rose");
   sub->add_option("--level", r.level,
-                  "1: the standard's table, rated thrust; 2: the model's thrust losses, a site "
-                  "environment; 3: time-domain runs of the DP-controlled vessel")
+                  "1: the standard's table, rated thrust; 2: the model's thrust losses at the "
+                  "current's inflow, a site environment; 3: time-domain runs of the "
+                  "DP-controlled vessel")
       ->capture_default_str();
   sub->add_option("--vessel", r.vessel, "Vessel file (default: data/vessels/gunnerus.toml)");
   sub->add_option("--failure", r.failure,

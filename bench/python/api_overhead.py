@@ -11,7 +11,7 @@ median / max of each and of the ratios B/A and C/A pair by pair.
 
     DYNPOS_BENCH_KEEP_CSV=1 build/release/bench/log24h_bench --benchmark_filter=BM_Day24hCsv/0
     PYTHONPATH=build/release/python python3 bench/python/api_overhead.py \\
-        /tmp/dynpos_bench_day_4cols.csv --bin build/release/bin/dynpos --runs 5
+        --bin build/release/bin/dynpos --runs 5   # the CSV in the temporary folder
 
 Not run by the tests: it takes about a minute per run and wants a quiet machine.
 """
@@ -21,6 +21,7 @@ import os
 import statistics
 import subprocess
 import sys
+import tempfile
 import time
 
 import dynpos
@@ -41,7 +42,8 @@ def summary(name, values, unit="s"):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("log", nargs="?", default="/tmp/dynpos_bench_day_4cols.csv")
+    parser.add_argument("log", nargs="?", default=os.path.join(tempfile.gettempdir(),
+                                                               "dynpos_bench_day_4cols.csv"))
     parser.add_argument("--bin", default="dynpos")
     parser.add_argument("--runs", type=int, default=5)
     args = parser.parse_args()

@@ -99,8 +99,8 @@ def _log_from_frame(frame, time: str | None = "time", units: Mapping[str, str] |
         columns = frame
     else:
         if time not in frame.columns:
-            raise InputError(f"(time): the DataFrame has no column '{time}'; name the time "
-                             "column with time=..., or time=None for the index")
+            raise _input_error(f"(time): the DataFrame has no column '{time}'; name the time "
+                               "column with time=..., or time=None for the index", "time")
         t = frame[time].to_numpy(dtype=float)
         columns = frame.drop(columns=[time])
     data = {str(name): numpy.asarray(columns[name], dtype=float) for name in columns.columns
@@ -138,9 +138,16 @@ def _option_name(key: str) -> str:
     return "--" + key.rstrip("_").replace("_", "-")
 
 
+def _input_error(message: str, option: str | None = None) -> InputError:
+    """An InputError raised on the Python side, with the attributes the engine's errors have."""
+    e = InputError(message)
+    e.file, e.line, e.column, e.option = None, None, None, option
+    return e
+
+
 def _set(request, key: str, value) -> None:
     if key.startswith("_") or not hasattr(request, key):
-        raise InputError(f"({_option_name(key)}): unknown option '{key}'")
+        raise _input_error(f"({_option_name(key)}): unknown option '{key}'", key)
     if key in _PAIR_OPTIONS:
         value = _pairs(value)
     elif isinstance(value, os.PathLike):
@@ -150,7 +157,7 @@ def _set(request, key: str, value) -> None:
     try:
         setattr(request, key, value)
     except TypeError as e:
-        raise InputError(f"({_option_name(key)}): {e}") from None
+        raise _input_error(f"({_option_name(key)}): {e}", key) from None
 
 
 def _source(log, col=None, unit=None, map=None, **log_options) -> _dynpos.LogSource:

@@ -117,6 +117,7 @@ void bind_capability(py::module_& m) {
       [](const Q& q, const std::string& json, const std::filesystem::path& out) {
         q.validate();
         check_output_file("json", json);
+        check_output_dir("out", out);
         return run_to_json(q, json, run_capability, [&out](const CapabilityReport& r) {
           if (!out.empty()) {
             std::filesystem::create_directories(out);

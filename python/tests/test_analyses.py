@@ -1,6 +1,6 @@
 """Every analysis through the Python API against the command line on the same input: to_dict()
 equals the CLI's --json document, json= writes the same file, and the plots land where the
-CLI puts them. The inputs are short virtual-trial runs (simulated once per session)."""
+CLI puts them. The inputs are short virtual-trial runs (simulated once per test run)."""
 
 import json
 import os

@@ -161,3 +161,13 @@ def test_the_error_says_where():
     with pytest.raises(dynpos.InputError) as e:
         dynpos.identify_step(STEPS, col={"input": "cmd", "output": "response"}, min_step=-1.0)
     assert e.value.option == "min_step" and "(--min-step)" in str(e.value)
+
+
+def test_errors_raised_in_python_have_the_same_attributes(tmp_path):
+    with pytest.raises(dynpos.InputError) as e:
+        dynpos.identify_step(STEPS, min_stepp=1.0)
+    assert e.value.option == "min_stepp" and e.value.file is None and e.value.line is None
+    not_a_folder = tmp_path / "rose"
+    not_a_folder.write_text("")
+    with pytest.raises(dynpos.InputError, match=r"\(--out\): '.*rose' exists and is not a folder"):
+        dynpos.capability(direction_step=90, out=not_a_folder)

@@ -100,15 +100,9 @@ void CapabilityRequest::validate() const {
   if (hs) check_finite_at_least(*hs, 0.0, false, "hs", "Hs [m]");
   if (tp) check_finite_at_least(*tp, 0.0, true, "tp", "Tp [s]");
   if (current) check_finite_at_least(*current, 0.0, false, "current", "the current [m/s]");
-  check_finite_at_least(direction_step, 0.0, true, "direction_step", "the direction step [deg]");
-  const double n = 360.0 / direction_step;
-  if (std::abs(n - std::round(n)) > 1e-9 || n > 3600) {
-    throw option_error(
-        "direction_step",
-        fmt::format("{} deg does not divide 360 (at most 3600 directions)", direction_step),
-        "e.g. 5, 10, 15 or 30");
-  }
-  if (wind_tolerance) check_finite_at_least(*wind_tolerance, 0.0, true, "wind_tolerance", "it");
+  capability::check_direction_step(direction_step);
+  if (wind_tolerance)
+    check_finite_at_least(*wind_tolerance, 0.0, true, "wind_tolerance", "the wind tolerance [m/s]");
   if (!vessel.empty() && !std::filesystem::is_regular_file(vessel)) {
     throw option_error("vessel", "'" + vessel.string() + "' is not a file",
                        "give a vessel TOML file (docs/vessel-file.md)");
@@ -161,9 +155,9 @@ std::array<std::optional<int>, 4> capability_notation(const CapabilityReport& re
   };
   std::array<std::optional<int>, 4> out{
       lowest(report.intact.points, true), lowest(report.intact.points, false), {}, {}};
-  if (report.worst) {
-    out[2] = lowest(report.worst->points, true);
-    out[3] = lowest(report.worst->points, false);
+  if (!report.failures.empty()) {
+    out[2] = lowest(report.headline().points, true);
+    out[3] = lowest(report.headline().points, false);
   }
   return out;
 }

@@ -41,11 +41,11 @@ std::string to_text(const CapabilityReport& r) {
   std::string out = fmt::format(
       "DP capability, level {} ({}), vessel {}: {}\n{}\n", r.level, r.environment, r.vessel,
       notation_text(r),
-      r.level == 3 ? fmt::format("time domain: {:.0f} s runs after {:.0f} s, footprint {} m / {} "
-                                 "deg",
-                                 r.time_domain->duration_s, r.time_domain->settle_s,
-                                 r.time_domain->footprint_m, r.time_domain->footprint_deg)
-                   : fmt::format("mean load × {} (reserve for dynamics)", r.dynamic_allowance));
+      r.time_domain ? fmt::format("time domain: {:.0f} s runs after {:.0f} s, footprint {} m / {} "
+                                  "deg",
+                                  r.time_domain->duration_s, r.time_domain->settle_s,
+                                  r.time_domain->footprint_m, r.time_domain->footprint_deg)
+                    : fmt::format("mean load × {} (reserve for dynamics)", r.dynamic_allowance));
   report::Table t;
   t.header = {"dir [deg]", "intact", "wind [m/s]", "limiting"};
   const bool with_failure = !r.failures.empty();

@@ -152,11 +152,7 @@ HybridCaseReport run_hybrid_case(const HybridCaseRequest& request) {
 }
 
 void check_hybrid_case_outputs(const std::filesystem::path& out_dir, const std::string& json) {
-  if (!out_dir.empty() && std::filesystem::exists(out_dir) &&
-      !std::filesystem::is_directory(out_dir)) {
-    throw option_error("out", "'" + out_dir.string() + "' exists and is not a folder",
-                       "name a folder (it is created if needed)");
-  }
+  check_output_dir("out", out_dir);
   if (json.empty() || json == "-") return;
   const std::filesystem::path parent = std::filesystem::path(json).parent_path();
   const bool in_out_dir =

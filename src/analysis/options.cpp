@@ -48,6 +48,13 @@ Eigen::Vector3d parse_vec3(const std::string& text, const std::string& key,
   return {v[0], v[1], v[2]};
 }
 
+void check_output_dir(const std::string& key, const std::filesystem::path& dir) {
+  if (!dir.empty() && std::filesystem::exists(dir) && !std::filesystem::is_directory(dir)) {
+    throw option_error(key, "'" + dir.string() + "' exists and is not a folder",
+                       "name a folder (it is created if needed)");
+  }
+}
+
 void check_output_file(const std::string& key, const std::string& path) {
   if (path.empty() || path == "-") return;
   const auto parent = std::filesystem::path(path).parent_path();

@@ -15,6 +15,8 @@ namespace dynpos::capability {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
+// `limiting` where nothing but the calm (or not even the first row) holds.
+constexpr const char* kNoThrustLeft = "no thrust left for the weather";
 
 model::ThrustAllocator allocator_of(const scenario::VesselConfig& v,
                                     const std::vector<std::string>& failed) {
@@ -97,8 +99,8 @@ CapabilityPoint quasi_static_point(const scenario::VesselConfig& vessel,
   // row held and the first that is not.
   std::size_t held = 0;
   Check last = evaluate.at(rows[0].wind_mps);
-  if (!last.holds) {
-    p.limiting = limiting_names(last.at_limit);
+  if (!last.holds) {  // even the first row (e.g. a site's fixed current) is too much
+    p.limiting = kNoThrustLeft;
     return p;
   }
   while (held + 1 < rows.size()) {
@@ -123,18 +125,40 @@ CapabilityPoint quasi_static_point(const scenario::VesselConfig& vessel,
     if (c.holds) last = c;
   }
   p.max_wind_mps = lo;
-  p.limiting = lo > 0.0 ? limiting_names(last.at_limit) : "no thrust left for the weather";
+  p.limiting = lo > 0.0 ? limiting_names(last.at_limit) : kNoThrustLeft;
   return p;
+}
+
+void check_direction_step(double step_deg) {
+  const double n = 360.0 / step_deg;
+  if (!(step_deg > 0.0) || !std::isfinite(n) || std::abs(n - std::round(n)) > 1e-9 || n > 3600) {
+    throw core::InputError::for_option(
+        "direction_step",
+        fmt::format("{} deg does not divide 360 (at most 3600 directions)", step_deg),
+        "e.g. 5, 10, 15 or 30");
+  }
+}
+
+void QuasiStaticOptions::validate() const {
+  if (level != 1 && level != 2) {
+    throw core::InputError::for_option("level", fmt::format("level {} is not quasi-static", level));
+  }
+  if (!(dynamic_allowance >= 1.0) || !std::isfinite(dynamic_allowance)) {
+    throw core::InputError::for_option(
+        "dynamic_allowance",
+        fmt::format("the reserve factor must be ≥ 1, got {}", dynamic_allowance));
+  }
+  check_direction_step(direction_step_deg);
+  if (!(wind_tolerance_mps > 0.0) || !std::isfinite(wind_tolerance_mps)) {
+    throw core::InputError::for_option("wind_tolerance", "the wind tolerance must be > 0 m/s");
+  }
+  environment.validate();
 }
 
 std::vector<CapabilityPoint> quasi_static_rose(const scenario::VesselConfig& vessel,
                                                const std::vector<std::string>& failed,
                                                const QuasiStaticOptions& options) {
-  if (options.level != 1 && options.level != 2) {
-    throw core::InputError::for_option("level",
-                                       fmt::format("level {} is not quasi-static", options.level));
-  }
-  options.environment.validate();
+  options.validate();
   std::vector<CapabilityPoint> rose;
   const int n = static_cast<int>(std::lround(360.0 / options.direction_step_deg));
   for (int i = 0; i < n; ++i) {

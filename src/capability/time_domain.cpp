@@ -96,7 +96,7 @@ CapabilityPoint search_direction(const scenario::VesselConfig& vessel,
   if (!fail_above) {  // the table's (or the simulator's) last row held
     p.max_wind_mps = rows[held].wind_mps;
     p.beyond_table = true;
-    p.limiting = "none";
+    p.limiting = held + 1 == rows.size() ? "none" : "beyond the simulator's waves (Hs ≤ 8 m)";
     return p;
   }
   double lo = rows[held].wind_mps;
@@ -130,7 +130,7 @@ void TimeDomainOptions::validate() const {
   positive(footprint_m, "footprint", "the position footprint [m]");
   positive(footprint_deg, "footprint_deg", "the heading footprint [deg]");
   positive(wind_tolerance_mps, "wind_tolerance", "the wind tolerance [m/s]");
-  positive(direction_step_deg, "direction_step", "the direction step [deg]");
+  check_direction_step(direction_step_deg);
   if (!std::isfinite(settle_s) || settle_s < 0.0) {
     throw core::InputError::for_option("settle", fmt::format("must be ≥ 0 s, got {}", settle_s));
   }
@@ -195,10 +195,10 @@ std::vector<CapabilityPoint> time_domain_rose(const scenario::VesselConfig& vess
   const unsigned jobs = std::max(
       1u, std::min<unsigned>(options.jobs ? options.jobs : std::thread::hardware_concurrency(),
                              static_cast<unsigned>(n)));
-  std::vector<std::thread> threads;
+  std::vector<std::jthread> threads;  // joined on every exit, an exception included
   for (unsigned j = 1; j < jobs; ++j) threads.emplace_back(worker);
   worker();
-  for (auto& th : threads) th.join();
+  threads.clear();  // joins
   if (error) std::rethrow_exception(error);
   return rose;
 }

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -68,11 +69,17 @@ TEST(Capability, TheJsonHoldsThePointsOfTheFailureAskedAndTheIntactRose) {
     }
     EXPECT_EQ(p["failure"], "tunnel");
   }
-  EXPECT_EQ(j["notation"][2], nullptr);  // C and D only with the worst case
+  int lowest = 99;  // C: the failure case's lowest number within ±30° of the bow
+  for (const auto& p : j["points"]) {
+    const double d = p["direction_deg"];
+    if (d <= 30.0 || d >= 330.0) lowest = std::min(lowest, p["dp_number"].get<int>());
+  }
+  EXPECT_EQ(j["notation"][2], lowest);
   q.failure = "none";
   const nlohmann::json intact = to_json(run_capability(q));
   EXPECT_EQ(intact["points"], intact["intact"]);
   EXPECT_TRUE(intact["cases"].empty());
+  EXPECT_EQ(intact["notation"][2], nullptr);  // C and D only with a failure case
 }
 
 TEST(Capability, TheRoseHasBothPanelsAndBothCases) {

@@ -1,6 +1,6 @@
-// Quasi-static DP capability (DNV-ST-0111 Levels 1-2): the thrust region against analytic
-// limits, and the rose's invariants — symmetry, failures never above intact, more capacity never
-// worse, and the limit reported where the thrust region ends.
+// Quasi-static DP capability (DNV-ST-0111 Levels 1-2): the rose's invariants — symmetry,
+// failures never above intact, more capacity never worse, and the limit reported where the
+// thrust region ends.
 
 #include "dynpos/capability/quasi_static.hpp"
 
@@ -30,60 +30,6 @@ scenario::VesselConfig symmetric_vessel() {
   scenario::VesselConfig v;
   v.tunnel.kt_port = v.tunnel.kt_starboard;
   return v;
-}
-
-TEST(ThrustRegion, PureSurgeIsHeldUpToBothPropellersFullAhead) {
-  const ThrustLimits limits = thrust_limits(gunnerus_allocator(), 0.0);
-  const double full = limits.hi_N(0) + limits.hi_N(1);  // both propellers at rated thrust
-  const Eigen::Vector3d just_held = Eigen::Vector3d::UnitX() * full * (1.0 - 1e-9);
-  const auto at = attain(limits, just_held);
-  ASSERT_TRUE(at.has_value());
-  EXPECT_TRUE(at->at_limit[0] && at->at_limit[1]);
-  const Eigen::Vector3d met = limits.B * at->forces_N;
-  EXPECT_NEAR((met - just_held).norm(), 0.0, 1e-6);
-  const Eigen::Vector3d too_much = Eigen::Vector3d::UnitX() * full * 1.001;
-  EXPECT_FALSE(attain(limits, too_much).has_value());
-}
-
-TEST(ThrustRegion, EveryForceOfAnAllocationWithinTheLimitsIsAttainable) {
-  const ThrustLimits limits = thrust_limits(gunnerus_allocator(), 0.0);
-  // Half of every limit, rudders within the cone of their propeller's thrust.
-  Eigen::Matrix<double, 5, 1> f;
-  f << 0.5 * limits.hi_N(0), -0.5 * std::abs(limits.lo_N(1)), 0.3 * limits.cone.kappa * f(0), 0.0,
-      0.5 * limits.lo_N(4);
-  EXPECT_TRUE(attain(limits, limits.B * f).has_value());
-  EXPECT_TRUE(attain(limits, Eigen::Vector3d::Zero()).has_value());
-}
-
-TEST(ThrustRegion, ALostActuatorGivesNothingAndTheRuddersLiftOnlyInSlipstream) {
-  // Without the tunnel a side force at rest needs rudder lift, i.e. one propeller ahead (its
-  // rudder in the slipstream) and the other astern to cancel the surge force.
-  const ThrustLimits lost = thrust_limits(gunnerus_allocator({"tunnel"}), 0.0);
-  const Eigen::Vector3d sway = Eigen::Vector3d::UnitY() * 5000.0;
-  const auto a = attain(lost, sway);
-  ASSERT_TRUE(a.has_value());
-  EXPECT_EQ(a->forces_N(4), 0.0);
-  const Eigen::Matrix<double, 5, 1> f = a->forces_N;
-  for (int i = 0; i < 2; ++i) {  // a rudder's side force within its propeller's cone
-    EXPECT_LE(std::abs(f(2 + i)), lost.cone.kappa * std::max(f(i), 0.0) + 1e-6);
-  }
-  EXPECT_GT(std::abs(f(2)) + std::abs(f(3)), 1000.0);
-  EXPECT_LT(f(0) * f(1), 0.0);  // one ahead, one astern
-  // With both propellers lost too, nothing pushes sideways.
-  const ThrustLimits none = thrust_limits(gunnerus_allocator({"tunnel", "port", "stb"}), 0.0);
-  EXPECT_FALSE(attain(none, sway).has_value());
-  EXPECT_THROW(gunnerus_allocator({"bow"}), core::InputError);
-}
-
-TEST(EnvironmentTable, DnvNumbersAndTheContinuousEnvironment) {
-  EXPECT_EQ(dp_number_for_wind(0.0), 0);
-  EXPECT_EQ(dp_number_for_wind(10.7), 5);
-  EXPECT_EQ(dp_number_for_wind(13.79), 5);
-  EXPECT_EQ(dp_number_for_wind(40.0), 11);
-  const Environment mid = dnv_level1_table().at(0.5 * (10.7 + 13.8));
-  EXPECT_NEAR(mid.hs_m, 0.5 * (2.1 + 3.1), 1e-12);
-  EXPECT_NEAR(mid.tp_s, 8.0, 1e-12);
-  EXPECT_NEAR(mid.current_mps, 0.75, 1e-12);
 }
 
 QuasiStaticOptions fast_options(int level = 1) {

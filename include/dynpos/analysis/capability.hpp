@@ -71,12 +71,13 @@ struct CapabilityReport {
 CapabilityReport run_capability(const CapabilityRequest& request);
 
 /// DNV's notation numbers (A, B, C, D): the lowest number within ±30° of the bow and over all
-/// directions, intact (A, B) and for the worst failure (C, D; absent without failures).
+/// directions, intact (A, B) and for the failure case (C, D: the worst case, or the one failure
+/// asked; absent without failures).
 std::array<std::optional<int>, 4> capability_notation(const CapabilityReport& report);
 
-/// {level, vessel, failure, environment, dynamic_allowance, notation, points: [{direction_deg,
-/// dp_number, max_wind_mps, limiting, failure, beyond_table}], intact: [...], cases: {name:
-/// [...]}, level3?: {...}}.
+/// {analysis: "capability", level, vessel, vessel_file?, environment, failure,
+/// dynamic_allowance, notation: [A, B, C, D], points: [{direction_deg, dp_number, max_wind_mps,
+/// limiting, failure, beyond_table}], intact: [...], cases: {name: [...]}, time_domain?: {...}}.
 nlohmann::json to_json(const CapabilityReport& report);
 
 /// One row per direction: intact and the failure case, DP number and wind.

@@ -6,8 +6,9 @@
 ///
 /// Level 1: the standard's environment table and the thrusters' rated thrust at rest (the
 /// rudders lift only in their propellers' slipstream). Level 2: the vessel's own thrust losses as
-/// the model has them (the tunnel's and the rudders' dependence on the current's inflow) and any
-/// environment table, e.g. a site's. Wind, waves and current come from the same direction.
+/// the model has them (the propellers' thrust, the tunnel's and the rudders' lift at the current's
+/// inflow) and any environment table, e.g. a site's. Wind, waves and current come from the same
+/// direction.
 ///
 /// The vessel's own load models give the mean load (model/environment.hpp wind coefficients,
 /// model/hull.hpp damping and added mass in the current's relative flow, model/sea_state.hpp
@@ -38,14 +39,23 @@ struct QuasiStaticOptions {
   double dynamic_allowance = kDynamicAllowance;       ///< factor on the load, ≥ 1
   double direction_step_deg = 10.0;                   ///< 0, step, …, < 360 [deg]
   double wind_tolerance_mps = 0.01;                   ///< bisection ends within this [m/s]
+  /// Throws core::InputError naming the first bad option (request keys: level,
+  /// dynamic_allowance, direction_step, wind_tolerance) or a bad environment table.
+  void validate() const;
 };
+
+/// Throws core::InputError (option "direction_step") unless step_deg > 0 divides 360 into at
+/// most 3600 directions.
+void check_direction_step(double step_deg);
 
 /// One direction of a rose.
 struct CapabilityPoint {
   double direction_deg = 0.0;  ///< where the weather comes from, off the bow, clockwise [deg]
   int dp_number = 0;           ///< the largest table row held, with every row below it
   double max_wind_mps = 0.0;   ///< the strongest wind held, between the rows
-  bool beyond_table = false;   ///< the table's last row is held: max_wind_mps is a floor
+  /// The table's last row (at level 3: the last the simulator takes, H_s ≤ 8 m) is held:
+  /// max_wind_mps is a floor.
+  bool beyond_table = false;
   /// The actuators at a limit at max_wind_mps, joined by '+'; "none" beyond the table.
   std::string limiting;
   std::string failure;  ///< the case: "none" (intact) or the actuator lost

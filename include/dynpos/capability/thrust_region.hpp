@@ -40,8 +40,8 @@ struct ThrustLimits {
 /// factor and the rudders' lift from the inflow), with its capacities
 /// (model::ThrustAllocationOptions::capacity: 0 lost, 1 as rated). A lost propeller's rudder
 /// keeps only the inflow's lift, through the cone. With propeller_inflow the main propellers'
-/// limits are their thrust at full shaft speed with the inflow as advance speed (the thrust
-/// loss of (2.28)'s K_T(J)); without, their bollard thrust as the allocation takes it.
+/// limits are their thrust at full shaft speed with the inflow as advance speed (K_T falling
+/// with J, (2.25) with (2.27)); without, their bollard thrust as the allocation takes it.
 ThrustLimits thrust_limits(const model::ThrustAllocator& allocator, double surge_speed_mps,
                            bool propeller_inflow = false);
 

@@ -34,7 +34,7 @@ struct TimeDomainOptions {
   std::uint64_t seed = 1;                             ///< master seed of every run
   unsigned jobs = 0;                                  ///< parallel runs; 0 = every core
   /// Throws core::InputError naming the first bad option (request keys: duration, settle,
-  /// footprint, footprint_deg, wind_tolerance).
+  /// footprint, footprint_deg, wind_tolerance, direction_step).
   void validate() const;
 };
 
