@@ -22,21 +22,23 @@ namespace {
 
 using namespace dynpos::analysis;
 
-// An analysis with the CLI's --json and --plot: the output targets checked first, then the
-// request; the plot written before the JSON, as the command line does.
+// An analysis with the CLI's --json (and --plot, when `plot` is given): the output targets
+// checked first, then the request; the plot written before the JSON, as the command line does.
 template <typename Request, typename Report>
-std::string run_plotted(const Request& q, const std::string& json, const std::string& plot,
-                        Report (*run)(const Request&)) {
+std::string run_checked(const Request& q, const std::string& json, Report (*run)(const Request&),
+                        const std::string* plot = nullptr) {
   check_output_file("json", json);
-  check_output_file("plot", plot);
+  if (plot) check_output_file("plot", *plot);
   return run_to_json(
       q, json,
       [run](const Request& r) {
         r.validate();
         return run(r);
       },
-      [&plot](const Report& r) {
-        if (!plot.empty()) write_plot(r, plot);
+      [plot](const Report& r) {
+        if constexpr (requires { write_plot(r, std::filesystem::path()); }) {
+          if (plot && !plot->empty()) write_plot(r, *plot);
+        }
         return to_json(r);
       });
 }
@@ -55,16 +57,7 @@ void bind_step(py::module_& m) {
       .def_readwrite("segments", &StepRequest::segments_file);
   m.def(
       "run_step",
-      [](const StepRequest& q, const std::string& json) {
-        check_output_file("json", json);
-        return run_to_json(
-            q, json,
-            [](const StepRequest& r) {
-              r.validate();
-              return run_step(r);
-            },
-            [](const StepReport& r) { return to_json(r); });
-      },
+      [](const StepRequest& q, const std::string& json) { return run_checked(q, json, &run_step); },
       py::arg("request"), py::arg("json") = "");
 }
 
@@ -118,7 +111,7 @@ void bind_agility(py::module_& m) {
   m.def(
       "run_agility",
       [](const AgilityRequest& q, const std::string& json, const std::string& plot) {
-        return run_plotted(q, json, plot, &run_agility);
+        return run_checked(q, json, &run_agility, &plot);
       },
       py::arg("request"), py::arg("json") = "", py::arg("plot") = "");
 }
@@ -140,7 +133,7 @@ void bind_four_corner(py::module_& m) {
   m.def(
       "run_four_corner",
       [](const FourCornerRequest& q, const std::string& json, const std::string& plot) {
-        return run_plotted(q, json, plot, &run_four_corner);
+        return run_checked(q, json, &run_four_corner, &plot);
       },
       py::arg("request"), py::arg("json") = "", py::arg("plot") = "");
 }
@@ -158,14 +151,7 @@ void bind_station_keeping(py::module_& m) {
   m.def(
       "run_station_keeping",
       [](const StationKeepingRequest& q, const std::string& json) {
-        check_output_file("json", json);
-        return run_to_json(
-            q, json,
-            [](const StationKeepingRequest& r) {
-              r.validate();
-              return run_station_keeping(r);
-            },
-            [](const StationKeepingReport& r) { return to_json(r); });
+        return run_checked(q, json, &run_station_keeping);
       },
       py::arg("request"), py::arg("json") = "");
 }
