@@ -1,5 +1,7 @@
 #include "dynpos/analysis/options.hpp"
 
+#include "dynpos/io/atomic_file.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -7,6 +9,7 @@
 #include <vector>
 
 #include "dynpos/analysis/option_spelling.hpp"
+#include "dynpos/io/atomic_file.hpp"
 
 namespace dynpos::analysis {
 
@@ -61,6 +64,11 @@ void check_output_file(const std::string& key, const std::string& path) {
   if (!parent.empty() && !std::filesystem::is_directory(parent)) {
     throw option_error(key, "folder '" + parent.string() + "' does not exist",
                        "create it first, or use --json - for stdout");
+  }
+  try {
+    io::check_output_target(path);
+  } catch (const std::runtime_error& e) {
+    throw option_error(key, e.what(), "see \"Outputs\" in docs/reliability.md");
   }
 }
 

@@ -1,6 +1,7 @@
 #include "dynpos/io/atomic_file.hpp"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -17,30 +18,112 @@ namespace {
 
 std::string reason(int error) { return error != 0 ? std::strerror(error) : "unknown error"; }
 
+enum class TargetKind { kNew, kRegular, kThrough };
+
+// How `target` is written, by the rules of the header; `file` receives what is written (the
+// target, or the file a symbolic link points to). Throws for what is refused.
+TargetKind classify(const std::filesystem::path& target, std::filesystem::path& file,
+                    struct stat& info) {
+  if (target.filename().empty()) {
+    throw std::runtime_error(fmt::format("cannot write '{}': not a file name", target.string()));
+  }
+  file = target;
+  struct stat link {};
+  if (::lstat(target.c_str(), &link) != 0) {
+    if (errno == ENOENT) return TargetKind::kNew;
+    throw std::runtime_error(fmt::format("cannot write '{}': {}", target.string(), reason(errno)));
+  }
+  if (S_ISLNK(link.st_mode)) {
+    std::error_code error;
+    file = std::filesystem::canonical(target, error);
+    if (error) {
+      throw std::runtime_error(
+          fmt::format("cannot write '{}': it is a symbolic link to a missing file or folder ({})",
+                      target.string(), error.message()));
+    }
+  }
+  if (::stat(file.c_str(), &info) != 0) {
+    throw std::runtime_error(fmt::format("cannot write '{}': {}", target.string(), reason(errno)));
+  }
+  if (S_ISCHR(info.st_mode) || S_ISFIFO(info.st_mode)) return TargetKind::kThrough;
+  const char* what = S_ISDIR(info.st_mode)    ? "a folder"
+                     : S_ISBLK(info.st_mode)  ? "a block device"
+                     : S_ISSOCK(info.st_mode) ? "a socket"
+                                              : nullptr;
+  if (what != nullptr) {
+    throw std::runtime_error(
+        fmt::format("cannot write '{}': it is {}, not a file", target.string(), what));
+  }
+  if ((info.st_mode & 0222) == 0) {
+    throw std::runtime_error(fmt::format(
+        "cannot write '{}': the file is read-only (mode {:04o}); remove it or make it writable "
+        "first, or choose another name",
+        target.string(), info.st_mode & 07777));
+  }
+  return TargetKind::kRegular;
+}
+
+// Syncs the file or folder at `path` to the disk; returns errno, 0 on success.
+int sync_path(const std::filesystem::path& path, int flags) {
+  const int fd = ::open(path.c_str(), flags | O_CLOEXEC);
+  if (fd < 0) return errno;
+  const int result = ::fsync(fd) == 0 ? 0 : errno;
+  ::close(fd);
+  return result;
+}
+
 }  // namespace
 
+void check_output_target(const std::filesystem::path& target) {
+  std::filesystem::path file;
+  struct stat info {};
+  classify(target, file, info);
+}
+
 AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)) {
-  if (target_.filename().empty()) {
-    throw std::runtime_error(fmt::format("cannot write '{}': not a file name", target_.string()));
+  struct stat info {};
+  const TargetKind kind = classify(target_, file_, info);
+  if (kind == TargetKind::kThrough) {
+    out_.open(file_, std::ios::binary);
+    if (!out_) {
+      throw std::runtime_error(
+          fmt::format("cannot open '{}' for writing: {}", target_.string(), reason(errno)));
+    }
+    return;
   }
-  const std::filesystem::path dir = target_.parent_path();
+  if (kind == TargetKind::kRegular) {
+    keep_mode_ = static_cast<int>(info.st_mode & 07777);
+    keep_uid_ = static_cast<int>(info.st_uid);
+    keep_gid_ = static_cast<int>(info.st_gid);
+  }
+  create_temp();
+}
+
+void AtomicFile::create_temp() {
+  const std::filesystem::path dir = file_.parent_path();
   // A random suffix only makes the name unique; O_EXCL guarantees we never reuse a file.
   std::random_device entropy;
   for (int attempt = 0;; ++attempt) {
     const std::string name =
-        fmt::format(".{}.tmp-{}-{:08x}", target_.filename().string(), ::getpid(), entropy());
+        fmt::format(".{}.tmp-{}-{:08x}", file_.filename().string(), ::getpid(), entropy());
     temp_ = dir.empty() ? std::filesystem::path(name) : dir / name;
     // 0666 minus the umask: the same permissions a plain new file would get.
     const int fd = ::open(temp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd >= 0) {
+      if (keep_mode_ >= 0) {
+        if (::geteuid() == 0) (void)::fchown(fd, keep_uid_, keep_gid_);
+        (void)::fchmod(fd, static_cast<mode_t>(keep_mode_));
+      }
       ::close(fd);
       break;
     }
     const int error = errno;
     if (error != EEXIST || attempt >= 100) {
-      throw std::runtime_error(fmt::format("cannot create a temporary file for '{}' in '{}': {}",
-                                           target_.string(), dir.empty() ? "." : dir.string(),
-                                           reason(error)));
+      temp_.clear();
+      throw std::runtime_error(fmt::format(
+          "cannot create a temporary file for '{}' in '{}': {}; check that the folder exists "
+          "and is writable",
+          target_.string(), dir.empty() ? "." : dir.string(), reason(error)));
     }
   }
   out_.open(temp_, std::ios::binary | std::ios::trunc);
@@ -56,6 +139,7 @@ AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)
 AtomicFile::~AtomicFile() {
   if (committed_) return;
   if (out_.is_open()) out_.close();
+  if (temp_.empty()) return;
   std::error_code ignored;
   std::filesystem::remove(temp_, ignored);
 }
@@ -67,20 +151,30 @@ void AtomicFile::commit() {
   const bool written = static_cast<bool>(out_);
   int error = errno;
   out_.close();
-  if (!written || out_.fail()) {
+  if (written && !out_.fail() && !temp_.empty()) error = sync_path(temp_, O_RDONLY);
+  if (!written || out_.fail() || error != 0) {
     if (error == 0) error = errno;
-    std::error_code ignored;
-    std::filesystem::remove(temp_, ignored);
+    if (!temp_.empty()) {
+      std::error_code ignored;
+      std::filesystem::remove(temp_, ignored);
+    }
     throw std::runtime_error(
-        fmt::format("writing '{}' failed: {}", target_.string(), reason(error)));
+        fmt::format("writing '{}' failed: {}{}", target_.string(), reason(error),
+                    error == ENOSPC ? "; free some space or write elsewhere" : ""));
   }
-  if (std::rename(temp_.c_str(), target_.c_str()) != 0) {
+  if (temp_.empty()) {  // written through
+    committed_ = true;
+    return;
+  }
+  if (std::rename(temp_.c_str(), file_.c_str()) != 0) {
     error = errno;
     std::error_code ignored;
     std::filesystem::remove(temp_, ignored);
     throw std::runtime_error(fmt::format("cannot rename '{}' to '{}': {}", temp_.string(),
                                          target_.string(), reason(error)));
   }
+  const std::filesystem::path dir = file_.parent_path();
+  (void)sync_path(dir.empty() ? std::filesystem::path(".") : dir, O_RDONLY | O_DIRECTORY);
   committed_ = true;
 }
 

@@ -3,8 +3,11 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include "io_test_util.hpp"
 
@@ -88,22 +91,103 @@ TEST(AtomicFile, MissingDirectoryNamesThePathAndReason) {
   }
 }
 
-TEST(AtomicFile, RenameOntoADirectoryFailsAndCleansUp) {
+TEST(AtomicFile, ADirectoryIsRefusedBeforeAnythingIsWritten) {
   TempDir dir;
   std::filesystem::create_directory(dir / "taken");
-  std::filesystem::path temp;
   try {
     AtomicFile file(dir / "taken");
-    temp = file.temp_path();
-    file.stream() << "x";
-    file.commit();
     FAIL() << "expected std::runtime_error";
   } catch (const std::runtime_error& e) {
-    EXPECT_THAT(e.what(), HasSubstr("cannot rename"));
     EXPECT_THAT(e.what(), HasSubstr("taken"));
+    EXPECT_THAT(e.what(), HasSubstr("it is a folder"));
   }
-  EXPECT_FALSE(std::filesystem::exists(temp));
   EXPECT_EQ(entries(dir.path()), (std::vector<std::string>{"taken"}));
+}
+
+TEST(AtomicFile, AReadOnlyFileIsRefusedAndKept) {
+  TempDir dir;
+  { std::ofstream(dir / "keep.json") << "old"; }
+  std::filesystem::permissions(
+      dir / "keep.json", std::filesystem::perms::owner_read | std::filesystem::perms::group_read);
+  EXPECT_THROW(
+      {
+        try {
+          AtomicFile file(dir / "keep.json");
+        } catch (const std::runtime_error& e) {
+          EXPECT_THAT(e.what(), HasSubstr("read-only (mode 0440)"));
+          throw;
+        }
+      },
+      std::runtime_error);
+  EXPECT_EQ(contents(dir / "keep.json"), "old");
+  EXPECT_EQ(entries(dir.path()), (std::vector<std::string>{"keep.json"}));
+}
+
+TEST(AtomicFile, AReplacedFileKeepsItsMode) {
+  TempDir dir;
+  { std::ofstream(dir / "out.json") << "old"; }
+  const auto mode = std::filesystem::perms::owner_read | std::filesystem::perms::owner_write;
+  std::filesystem::permissions(dir / "out.json", mode);
+  AtomicFile file(dir / "out.json");
+  file.stream() << "new";
+  file.commit();
+  EXPECT_EQ(contents(dir / "out.json"), "new");
+  EXPECT_EQ(std::filesystem::status(dir / "out.json").permissions(), mode);
+}
+
+TEST(AtomicFile, ASymlinkIsWrittenThroughAndKept) {
+  TempDir dir;
+  { std::ofstream(dir / "real.json") << "old"; }
+  std::filesystem::create_symlink(dir / "real.json", dir / "link.json");
+  AtomicFile file(dir / "link.json");
+  file.stream() << "new";
+  file.commit();
+  EXPECT_TRUE(std::filesystem::is_symlink(dir / "link.json"));
+  EXPECT_EQ(contents(dir / "real.json"), "new");
+  EXPECT_EQ(entries(dir.path()), (std::vector<std::string>{"link.json", "real.json"}));
+}
+
+TEST(AtomicFile, ADanglingSymlinkIsRefused) {
+  TempDir dir;
+  std::filesystem::create_symlink(dir / "missing.json", dir / "link.json");
+  try {
+    AtomicFile file(dir / "link.json");
+    FAIL() << "expected std::runtime_error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("symbolic link to a missing file"));
+  }
+  EXPECT_TRUE(std::filesystem::is_symlink(dir / "link.json"));
+}
+
+TEST(AtomicFile, ACharacterDeviceIsWrittenThroughNeverReplaced) {
+  TempDir dir;
+  AtomicFile file("/dev/null");
+  EXPECT_TRUE(file.temp_path().empty());
+  file.stream() << "discarded";
+  file.commit();
+  EXPECT_TRUE(std::filesystem::is_character_file("/dev/null"));
+}
+
+TEST(AtomicFile, AFifoIsWrittenThroughToItsReader) {
+  TempDir dir;
+  const auto fifo = dir / "pipe";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  std::string received;
+  std::thread reader([&] {
+    std::ifstream in(fifo, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    received = text.str();
+  });
+  {
+    AtomicFile file(fifo);
+    file.stream() << "through the pipe";
+    file.commit();
+  }
+  reader.join();
+  EXPECT_EQ(received, "through the pipe");
+  EXPECT_TRUE(std::filesystem::is_fifo(fifo));
+  EXPECT_EQ(entries(dir.path()), (std::vector<std::string>{"pipe"}));
 }
 
 }  // namespace
