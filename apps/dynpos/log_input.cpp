@@ -39,6 +39,10 @@ void add_log_options(CLI::App& sub, analysis::LogSource& source, const std::stri
   sub.add_flag("--strict", source.strict,
                "An NMEA line that cannot be used is an error (file:line)");
   add_time_options(sub, source);
+  sub.add_option("--jobs", source.jobs,
+                 "Threads for reading and for independent fits (default 0: every core); the "
+                 "results do not depend on it")
+      ->check(CLI::Range(0u, 256u));
 }
 
 void LogInput::add_options(CLI::App& sub, const std::string& roles_help) {

@@ -129,7 +129,7 @@ def _is_frame(value) -> bool:
 
 
 _LOG_OPTIONS = ("clock_offset", "max_gap", "format", "strict", "time_format", "date",
-                "time_order")
+                "time_order", "jobs")
 # Options given as ROLE=VALUE (or NAME=FILE) pairs: a dict or a list of strings.
 _PAIR_OPTIONS = ("clock_offset", "gnss_log", "nmea", "init", "mru_log")
 

@@ -61,7 +61,7 @@ def read_log(path: _Path, col: _Pairs = None, unit: _Pairs = None, map: _Path | 
              roles: Sequence[str] | None = None, *, clock_offset: _Pairs = ...,
              max_gap: float = ..., format: Literal["auto", "csv", "nmea"] = ...,
              strict: bool = ..., time_format: str = ..., date: str = ...,
-             time_order: str = ...) -> Log: ...
+             time_order: str = ..., jobs: int = ...) -> Log: ...
 def identify_step(log: _LogLike, col: _Pairs = None, unit: _Pairs = None,
                   map: _Path | None = None, *, json: _Path | None = None,
                   method: Literal["lsq", "smith", "smith2", "rk"] = ...,
@@ -69,21 +69,21 @@ def identify_step(log: _LogLike, col: _Pairs = None, unit: _Pairs = None,
                   step_at: float | None = ..., derive: str = ..., min_step: float = ...,
                   min_plateau: float = ..., segments: _Path = ..., clock_offset: _Pairs = ...,
                   max_gap: float = ..., format: str = ..., strict: bool = ...,
-                  time_format: str = ..., date: str = ..., time_order: str = ...) -> Result: ...
+                  time_format: str = ..., date: str = ..., time_order: str = ..., jobs: int = ...) -> Result: ...
 def identify_thrust_map(log: _LogLike, col: _Pairs = None, unit: _Pairs = None,
                         map: _Path | None = None, *, json: _Path | None = None,
                         out: _Path | None = None, min_speed: float = ..., apply: bool = ...,
                         abs_speed: bool = ..., vessel: _Path = ..., clock_offset: _Pairs = ...,
                         max_gap: float = ..., format: str = ..., strict: bool = ...,
                         time_format: str = ..., date: str = ...,
-                        time_order: str = ...) -> Result: ...
+                        time_order: str = ..., jobs: int = ...) -> Result: ...
 def identify_agility(log: _LogLike, col: _Pairs = None, unit: _Pairs = None,
                      map: _Path | None = None, *, json: _Path | None = None,
                      plot: _Path | None = None, window: Sequence[str] = ..., current: str = ...,
                      rpm: bool = ..., min_response: float = ..., min_demand: float = ...,
                      clock_offset: _Pairs = ..., max_gap: float = ..., format: str = ...,
                      strict: bool = ..., time_format: str = ..., date: str = ...,
-                     time_order: str = ...) -> Result: ...
+                     time_order: str = ..., jobs: int = ...) -> Result: ...
 def identify_four_corner(log: _LogLike, col: _Pairs = None, unit: _Pairs = None,
                          map: _Path | None = None, *, json: _Path | None = None,
                          plot: _Path | None = None, radius: float = ...,
@@ -93,7 +93,7 @@ def identify_four_corner(log: _LogLike, col: _Pairs = None, unit: _Pairs = None,
                          to: float | None = ..., clock_offset: _Pairs = ...,
                          max_gap: float = ..., format: str = ..., strict: bool = ...,
                          time_format: str = ..., date: str = ...,
-                         time_order: str = ...) -> Result: ...
+                         time_order: str = ..., jobs: int = ...) -> Result: ...
 def identify_station_keeping(log: _LogLike, col: _Pairs = None, unit: _Pairs = None,
                              map: _Path | None = None, *, json: _Path | None = None,
                              from_: float | None = ..., to: float | None = ...,
@@ -101,7 +101,7 @@ def identify_station_keeping(log: _LogLike, col: _Pairs = None, unit: _Pairs = N
                              current: str = ..., clock_offset: _Pairs = ...,
                              max_gap: float = ..., format: str = ..., strict: bool = ...,
                              time_format: str = ..., date: str = ...,
-                             time_order: str = ...) -> Result: ...
+                             time_order: str = ..., jobs: int = ...) -> Result: ...
 def leverarm_gnss(log: _LogLike, col: _Pairs = None, unit: _Pairs = None,
                   map: _Path | None = None, *, json: _Path | None = None,
                   plots: _Path | None = None,
@@ -116,7 +116,7 @@ def leverarm_gnss(log: _LogLike, col: _Pairs = None, unit: _Pairs = None,
                   converged_from: float = ..., pe_window: float = ..., gnss_std: float = ...,
                   clock_offset: _Pairs = ..., max_gap: float = ..., format: str = ...,
                   strict: bool = ..., time_format: str = ..., date: str = ...,
-                  time_order: str = ...) -> Result: ...
+                  time_order: str = ..., jobs: int = ...) -> Result: ...
 def leverarm_mru(log: _LogLike, col: _Pairs = None, unit: _Pairs = None,
                  map: _Path | None = None, *, json: _Path | None = None,
                  plots: _Path | None = None, mru_log: _Pairs = ...,
@@ -124,7 +124,7 @@ def leverarm_mru(log: _LogLike, col: _Pairs = None, unit: _Pairs = None,
                  method: Literal["lsq", "observer"] = ..., window_s: float = ...,
                  tau_s: float = ..., w1: float = ..., clock_offset: _Pairs = ...,
                  max_gap: float = ..., format: str = ..., strict: bool = ...,
-                 time_format: str = ..., date: str = ..., time_order: str = ...) -> Result: ...
+                 time_format: str = ..., date: str = ..., time_order: str = ..., jobs: int = ...) -> Result: ...
 def hybrid_case(case: Literal["first-order", "dp"] = "first-order", *,
                 json: _Path | None = None, out: _Path | None = None, no_jumps: bool = ...,
                 sampled: bool = ..., seed: int = ..., lambda_: float | None = ...,

@@ -96,6 +96,7 @@ void bind_source(py::module_& m) {
       .def_readwrite("time_format", &LogSource::time_format)
       .def_readwrite("date", &LogSource::date)
       .def_readwrite("time_order", &LogSource::time_order)
+      .def_readwrite("jobs", &LogSource::jobs)
       .def_property(
           "memory", [](const LogSource& s) { return std::const_pointer_cast<Log>(s.memory); },
           [](LogSource& s, std::shared_ptr<Log> log) { s.memory = std::move(log); });

@@ -12,7 +12,7 @@ from dynpos import _dynpos
 
 STUBS = os.path.join(os.path.dirname(dynpos.__file__), "__init__.pyi")
 LOG_OPTIONS = {"clock_offset", "max_gap", "format", "strict", "time_format", "date",
-               "time_order"}
+               "time_order", "jobs"}
 REQUESTS = {"identify_step": _dynpos.StepRequest,
             "identify_thrust_map": _dynpos.ThrustMapRequest,
             "identify_agility": _dynpos.AgilityRequest,

@@ -69,15 +69,17 @@ LoadedLog read_log_files(const std::filesystem::path& main_log, const io::Column
   out.input = describe_input(out.log, main_path, std::move(main.report));
   out.input.origin = main.origin;
   out.input.origin_zone = main.origin_zone;
-  add_log_files(out, main.origin_ns, map, options, how.strict);
+  add_log_files(out, main.origin_ns, map, options, how);
   return out;
 }
 
 void add_log_files(LoadedLog& out, std::optional<std::int64_t> main_origin_ns,
-                   const io::ColumnMap& map, const core::ResampleOptions& options, bool strict) {
+                   const io::ColumnMap& map, const core::ResampleOptions& options,
+                   const io::LogFileRead& how) {
   for (const std::string& file : map.other_files()) {
     const io::LogFileOptions file_options = map.file_options(file);
-    io::FileLog part = io::read_log_file(file, map.for_file(file), {.strict = strict});
+    io::FileLog part =
+        io::read_log_file(file, map.for_file(file), {.strict = how.strict, .jobs = how.jobs});
     const double offset_s = clock_offset_s(main_origin_ns, part, file_options.clock_offset_s);
     part.report.clock_offset_s = offset_s;
     check_overlap(out.log, part, offset_s);

@@ -45,14 +45,22 @@ io::ColumnMap LogSource::column_map(const RoleFilter& wanted) const {
 namespace {
 
 // The rate [Hz] of a channel's valid samples, from their median spacing; nullopt with fewer
-// than two.
-std::optional<double> median_rate_hz(const core::Log& log, const core::Channel& channel) {
+// than two. `all_valid_hz` is the rate of a channel without gaps (the log's own, computed once).
+std::optional<double> median_rate_hz(const core::Log& log, const core::Channel& channel,
+                                     std::optional<std::optional<double>>& all_valid_hz) {
+  const auto missing = std::count_if(channel.values.begin(), channel.values.end(),
+                                     [](double v) { return core::is_missing(v); });
+  if (missing == 0 && all_valid_hz) return *all_valid_hz;
   std::vector<double> valid_t;
+  valid_t.reserve(log.size() - static_cast<std::size_t>(missing));
   for (std::size_t i = 0; i < log.size(); ++i) {
     if (!core::is_missing(channel.values[i])) valid_t.push_back(log.time()[i]);
   }
-  if (valid_t.size() < 2) return std::nullopt;
-  return 1.0 / core::median_spacing_s(valid_t);
+  const std::optional<double> rate =
+      valid_t.size() < 2 ? std::nullopt
+                         : std::optional<double>(1.0 / core::median_spacing_s(valid_t));
+  if (missing == 0) all_valid_hz = rate;
+  return rate;
 }
 
 }  // namespace
@@ -63,8 +71,9 @@ io::InputReport describe_input(const core::Log& log, const std::string& file,
   file_report.path = file;
   file_report.records = log.size();
   input.files.push_back(std::move(file_report));
+  std::optional<std::optional<double>> all_valid_hz;
   for (const core::Channel& c : log.channels()) {
-    input.roles.push_back({c.name, file, median_rate_hz(log, c)});
+    input.roles.push_back({c.name, file, median_rate_hz(log, c, all_valid_hz)});
   }
   return input;
 }
@@ -111,7 +120,7 @@ LoadedLog LogSource::load(const RoleFilter& wanted) const {
   if (memory) return load_memory(*this);
   if (reads_nmea(*this)) return load_nmea(*this, wanted);
   return read_log_files(log, column_map(wanted), resample_options(),
-                        {.format = io::LogFileRead::Format::kCsv, .strict = strict});
+                        {.format = io::LogFileRead::Format::kCsv, .strict = strict, .jobs = jobs});
 }
 
 core::ResampleOptions LogSource::resample_options() const {

@@ -51,7 +51,8 @@ LoadedLog load_nmea(const LogSource& source, const RoleFilter& wanted) {
   if (read.origin) input.origin_zone = "UTC";
   LoadedLog out{std::move(read.log), std::move(input)};
   if (more_files) {
-    add_log_files(out, read.origin_ns, map, source.resample_options(), source.strict);
+    add_log_files(out, read.origin_ns, map, source.resample_options(),
+                  {.strict = source.strict, .jobs = source.jobs});
   }
   return out;
 }

@@ -11,6 +11,7 @@
 #include "dynpos/analysis/log_source.hpp"
 #include "dynpos/analysis/options.hpp"
 #include "dynpos/core/log.hpp"
+#include "dynpos/core/parallel_for.hpp"
 #include "dynpos/ident/derived_signals.hpp"
 #include "dynpos/ident/fopdt_fit.hpp"
 #include "dynpos/ident/second_order_fit.hpp"
@@ -24,8 +25,11 @@ namespace {
 bool is_second_order(const std::string& method) { return method == "smith2" || method == "rk"; }
 
 // The log's channels the step analysis needs, in SI.
+// Views into the loaded log (no copy of a day-long log), or into `derived` for the total speed.
 struct StepSignals {
-  std::vector<double> t, input, output, trigger;
+  core::Log log;
+  std::vector<double> derived;
+  std::span<const double> t, input, output, trigger;
   bool has_input = false, has_trigger = false;
   std::string output_unit, input_unit;
   io::InputReport read;  // what was read
@@ -45,16 +49,18 @@ StepSignals read_signals(const StepRequest& request) {
                        "--derive total-speed with u and v");
   }
   LoadedLog loaded = src.load(wanted);
-  const core::Log& log = loaded.log;
+  StepSignals s;
+  s.log = std::move(loaded.log);
+  const core::Log& log = s.log;
   if (total_speed && !(log.has("u") && log.has("v"))) {
     throw core::InputError({src.log.string(), {}, {}, "u, v"}, "no surge and sway speed columns",
                            "map them, e.g. --col u=SOG_surge --col v=SOG_sway");
   }
-  StepSignals s;
   s.read = std::move(loaded.input);
   s.t = log.time();
   if (total_speed) {
-    s.output = ident::total_speed(log.values("u"), log.values("v"));  // (3.19)
+    s.derived = ident::total_speed(log.values("u"), log.values("v"));  // (3.19)
+    s.output = s.derived;
     s.output_unit = "m/s";
   } else {
     s.output = log.values("output");
@@ -90,22 +96,23 @@ struct FoundStep {
 // The steps of the whole log, or of each segment; why a stretch has none goes to `notes`.
 std::vector<FoundStep> detect_in_stretches(const StepRequest& request, const StepSignals& s,
                                            const ident::StepDetectorOptions& d,
+                                           const ident::StepThreshold& scale,
                                            std::vector<std::string>& notes) {
-  const std::vector<double>& u = s.has_input ? s.input : s.trigger;
+  const std::span<const double> u = s.has_input ? s.input : s.trigger;
   std::vector<FoundStep> found;
   if (request.segments_file.empty()) {
-    const ident::StepDetection r = ident::detect_steps(s.t, u, d);
+    const ident::StepDetection r = ident::detect_steps(s.t, u, d, scale);
     if (!r.message.empty()) notes.push_back(r.message);
     for (const ident::Step& step : r.steps) found.push_back({step, ""});
     return found;
   }
-  const std::span<const double> t(s.t);
+  const std::span<const double> t = s.t;
   for (const io::Segment& seg : io::read_segments(request.segments_file)) {
     const auto i0 =
         static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), seg.start_s) - t.begin());
     const auto i1 =
         static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), seg.end_s) - t.begin());
-    const std::span<const double> useg = std::span<const double>(u).subspan(i0, i1 - i0);
+    const std::span<const double> useg = u.subspan(i0, i1 - i0);
     const auto valid =
         std::count_if(useg.begin(), useg.end(), [](double x) { return !std::isnan(x); });
     const std::string where = "segment '" + seg.name + "' [" + fmt::format("{:g}", seg.start_s) +
@@ -114,7 +121,7 @@ std::vector<FoundStep> detect_in_stretches(const StepRequest& request, const Ste
       notes.push_back(where + ": fewer than 3 valid input samples in the log");
       continue;
     }
-    const ident::StepDetection r = ident::detect_steps(t.subspan(i0, i1 - i0), useg, d);
+    const ident::StepDetection r = ident::detect_steps(t.subspan(i0, i1 - i0), useg, d, scale);
     if (!r.message.empty()) notes.push_back(where + ": " + r.message);
     for (const ident::Step& step : r.steps) found.push_back({step, seg.name});
   }
@@ -125,16 +132,17 @@ std::vector<FoundStep> detect_in_stretches(const StepRequest& request, const Ste
 std::vector<FoundStep> find_steps(const StepRequest& request, const StepSignals& s,
                                   StepReport& report) {
   ident::StepDetectorOptions d = detector_options(request, s);
-  const std::vector<double>& u = s.has_input ? s.input : s.trigger;
+  const std::span<const double> u = s.has_input ? s.input : s.trigger;
   const bool window = request.from_s || request.to_s || request.step_at_s;
   if (!s.has_input && !s.has_trigger && !window) {
     throw option_error("col:input", "no input or trigger column to find the steps in",
                        "map the command (--col input=...), a trigger such as power feedback "
                        "(--col trigger=...), or give the window with --from/--to/--step-at");
   }
+  ident::StepThreshold scale;
   if ((s.has_input || s.has_trigger) && !request.step_at_s) {
     // One threshold for the whole log, whatever stretch is searched.
-    const ident::StepThreshold scale = ident::step_threshold(s.t, u, d);
+    scale = ident::step_threshold(s.t, u, d);
     report.step_threshold = scale.threshold;
     report.threshold_from_min_step = scale.from_min_step;
     report.input_noise_sigma = scale.noise_sigma;
@@ -144,12 +152,12 @@ std::vector<FoundStep> find_steps(const StepRequest& request, const StepSignals&
   if (window) {
     const double from = request.from_s.value_or(s.t.front());
     const double to = request.to_s.value_or(s.t.back());
-    const std::vector<double> none;
-    return {{ident::step_from_window(s.t, s.has_input || s.has_trigger ? u : none,
-                                     {from, to, request.step_at_s}, d),
-             ""}};
+    return {
+        {ident::step_from_window(s.t, s.has_input || s.has_trigger ? u : std::span<const double>(),
+                                 {from, to, request.step_at_s}, d),
+         ""}};
   }
-  return detect_in_stretches(request, s, d, report.notes);
+  return detect_in_stretches(request, s, d, scale, report.notes);
 }
 
 // FOPDT (3.7) by least squares or Smith's two-point method (3.8)-(3.9).
@@ -268,9 +276,11 @@ StepReport run_step_on_log(const StepRequest& request) {
                   : s.has_trigger ? StepTimingSource::kTrigger
                                   : StepTimingSource::kWindow;
   report.segments_file = request.segments_file;
-  for (const FoundStep& found : find_steps(request, s, report)) {
-    report.steps.push_back(fit_step(request, s, found));
-  }
+  const std::vector<FoundStep> found = find_steps(request, s, report);
+  report.steps.resize(found.size());
+  // The fits are independent: one per step, on every core, each into its own row.
+  core::parallel_for(found.size(), request.source.jobs,
+                     [&](std::size_t i) { report.steps[i] = fit_step(request, s, found[i]); });
   std::stable_sort(
       report.steps.begin(), report.steps.end(),
       [](const StepFit& a, const StepFit& b) { return a.step.t_step < b.step.t_step; });

@@ -13,6 +13,7 @@
 
 #include "dynpos/capability/thrust_region.hpp"
 #include "dynpos/core/error.hpp"
+#include "dynpos/core/parallel_for.hpp"
 #include "dynpos/model/environment.hpp"
 #include "dynpos/model/sea_state.hpp"
 #include "dynpos/scenario/runner.hpp"
@@ -179,27 +180,11 @@ std::vector<CapabilityPoint> time_domain_rose(const scenario::VesselConfig& vess
   options.validate();
   const int n = static_cast<int>(std::lround(360.0 / options.direction_step_deg));
   std::vector<CapabilityPoint> rose(static_cast<std::size_t>(n));
-  std::atomic<int> next{0};
-  std::exception_ptr error;
-  std::atomic<bool> failed_once{false};
-  const auto worker = [&] {
-    for (int i = next++; i < n && !failed_once; i = next++) {
-      try {
-        rose[static_cast<std::size_t>(i)] =
-            search_direction(vessel, failed, i * options.direction_step_deg, options);
-      } catch (...) {
-        if (!failed_once.exchange(true)) error = std::current_exception();
-      }
-    }
-  };
-  const unsigned jobs = std::max(
-      1u, std::min<unsigned>(options.jobs ? options.jobs : std::thread::hardware_concurrency(),
-                             static_cast<unsigned>(n)));
-  std::vector<std::jthread> threads;  // joined on every exit, an exception included
-  for (unsigned j = 1; j < jobs; ++j) threads.emplace_back(worker);
-  worker();
-  threads.clear();  // joins
-  if (error) std::rethrow_exception(error);
+  // Each direction's search is independent: the rose does not depend on the number of jobs.
+  core::parallel_for(rose.size(), options.jobs, [&](std::size_t i) {
+    rose[i] = search_direction(vessel, failed, static_cast<double>(i) * options.direction_step_deg,
+                               options);
+  });
   return rose;
 }
 

@@ -55,11 +55,19 @@ struct Bounds {
   bool delta_free = true;
 };
 
+// Beyond this many time constants e^(−x/T) < 4.3·10⁻¹⁸: 1 − e rounds to 1 in double precision,
+// so the model is its final value and the exponential need not be computed (most samples of a
+// long window of a fast response).
+constexpr double kSettledTimeConstants = 40.0;
+
 double sse_of(const detail::StepResponse& r, const Vec4& p) {
   double sse = 0.0;
+  const double x_settled = kSettledTimeConstants * p(2);
   for (std::size_t i = 0; i < r.y.size(); ++i) {
     const double x = r.tau[i] - p(3);
-    const double m = x > 0.0 ? p(0) + p(1) * (1.0 - std::exp(-x / p(2))) : p(0);
+    const double m = x <= 0.0        ? p(0)
+                     : x > x_settled ? p(0) + p(1)
+                                     : p(0) + p(1) * (1.0 - std::exp(-x / p(2)));
     sse += (r.y[i] - m) * (r.y[i] - m);
   }
   return sse;
@@ -72,13 +80,17 @@ void normal_equations(const detail::StepResponse& r, const Vec4& p, Mat4& jtj, V
   // products of JᵀJ are summed in scalars: this loop is the cost of a fit, and a day-long log
   // has hundreds of steps.
   const double inv_t = 1.0 / p(2);
+  const double x_settled = kSettledTimeConstants * p(2);
   double s1 = 0, s2 = 0, s3 = 0, s11 = 0, s21 = 0, s31 = 0, s22 = 0, s32 = 0, s33 = 0;
   double r0 = 0, r1 = 0, r2 = 0, r3 = 0, sq = 0;
   const std::size_t n = r.y.size();
   for (std::size_t i = 0; i < n; ++i) {
     const double x = r.tau[i] - p(3);
     double m = p(0), j1 = 0.0, j2 = 0.0, j3 = 0.0;
-    if (x > 0.0) {
+    if (x > x_settled) {  // settled: e and the T and δ derivatives vanish (see above)
+      m = p(0) + p(1);
+      j1 = 1.0;
+    } else if (x > 0.0) {
       const double e = std::exp(-x * inv_t);
       m = p(0) + p(1) * (1.0 - e);
       j1 = 1.0 - e;

@@ -50,8 +50,11 @@ void StepDetectorOptions::validate() const {
 namespace {
 
 // The valid (non-NaN) samples of an input, checked: equal lengths, increasing time, ≥ 3 valid.
+// Views of the input itself when every sample is valid (the usual case: no copy of a long log),
+// else of copies of the valid ones.
 struct ValidSamples {
-  std::vector<double> t, u;
+  std::span<const double> t, u;
+  std::vector<double> t_copy, u_copy;
 };
 
 ValidSamples valid_samples(std::span<const double> t, std::span<const double> u,
@@ -59,11 +62,21 @@ ValidSamples valid_samples(std::span<const double> t, std::span<const double> u,
   detail::check_same_length(t.size(), u.size(), name);
   detail::check_time_axis(t, name);
   ValidSamples v;
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    if (!std::isnan(u[i])) {
-      v.t.push_back(t[i]);
-      v.u.push_back(u[i]);
+  const auto missing = std::count_if(u.begin(), u.end(), [](double x) { return std::isnan(x); });
+  if (missing == 0) {
+    v.t = t;
+    v.u = u;
+  } else {
+    v.t_copy.reserve(u.size() - static_cast<std::size_t>(missing));
+    v.u_copy.reserve(u.size() - static_cast<std::size_t>(missing));
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      if (!std::isnan(u[i])) {
+        v.t_copy.push_back(t[i]);
+        v.u_copy.push_back(u[i]);
+      }
     }
+    v.t = v.t_copy;
+    v.u = v.u_copy;
   }
   if (v.u.size() < 3) {
     throw core::InputError({"", {}, {}, name},
@@ -75,8 +88,9 @@ ValidSamples valid_samples(std::span<const double> t, std::span<const double> u,
 
 // √(mean Δu²)/√2 over the differences of consecutive valid samples, the largest 2 % left out
 // (the steps and ramps of a log with up to a few percent of its samples in transitions).
-double trimmed_rms_sigma(const std::vector<double>& uv) {
+double trimmed_rms_sigma(std::span<const double> uv) {
   std::vector<double> d2;
+  d2.reserve(uv.size());
   for (std::size_t i = 1; i < uv.size(); ++i)
     d2.push_back((uv[i] - uv[i - 1]) * (uv[i] - uv[i - 1]));
   const std::size_t keep = std::max<std::size_t>(1, d2.size() - d2.size() / 50);
@@ -89,8 +103,7 @@ double trimmed_rms_sigma(const std::vector<double>& uv) {
 // Calls f(i, last, lo, hi) for each window [tᵢ, tᵢ + w] of the samples i … last, with the
 // smallest and largest value in it (monotone deques: linear time).
 template <class F>
-void for_each_window(const std::vector<double>& tv, const std::vector<double>& uv, double w,
-                     F&& f) {
+void for_each_window(std::span<const double> tv, std::span<const double> uv, double w, F&& f) {
   const std::size_t n = tv.size();
   std::deque<std::size_t> max_q;  // indices of decreasing values: front is the window maximum
   std::deque<std::size_t> min_q;
@@ -111,8 +124,8 @@ void for_each_window(const std::vector<double>& tv, const std::vector<double>& u
 
 // S: the largest range of the input within any window of w seconds, after a 3-sample running
 // median (one bad sample does not set the scale of the steps).
-double largest_change(const std::vector<double>& tv, const std::vector<double>& uv, double w) {
-  std::vector<double> m = uv;
+double largest_change(std::span<const double> tv, std::span<const double> uv, double w) {
+  std::vector<double> m(uv.begin(), uv.end());
   for (std::size_t i = 1; i + 1 < uv.size(); ++i) {
     m[i] = std::max(std::min(uv[i - 1], uv[i]), std::min(std::max(uv[i - 1], uv[i]), uv[i + 1]));
   }
@@ -131,14 +144,14 @@ struct Plateau {
   double tail_level = 0.0;   // median of its last 20·min_plateau_s: the level before a step
 };
 
-double median_of(const std::vector<double>& x, std::size_t begin, std::size_t end) {
+double median_of(std::span<const double> x, std::size_t begin, std::size_t end) {
   return detail::median(std::vector<double>(x.begin() + static_cast<std::ptrdiff_t>(begin),
                                             x.begin() + static_cast<std::ptrdiff_t>(end) + 1));
 }
 
 // First index of the samples within `w` [s] before index `last` (dir −1), or last index of
 // those within `w` after `first` (dir +1).
-std::size_t reach(const std::vector<double>& tv, std::size_t from, std::size_t stop, double w,
+std::size_t reach(std::span<const double> tv, std::size_t from, std::size_t stop, double w,
                   int dir) {
   std::size_t k = from;
   if (dir < 0) {
@@ -154,7 +167,7 @@ std::size_t reach(const std::vector<double>& tv, std::size_t from, std::size_t s
 // short enough that a drift or a merged small change far from the step does not move them). A
 // plateau window may take in the first or last 2h of a ramp, so the edge samples more than h
 // from the median of the plateau's nearest w are left out.
-void set_levels(Plateau& p, const std::vector<double>& tv, const std::vector<double>& uv, double h,
+void set_levels(Plateau& p, std::span<const double> tv, std::span<const double> uv, double h,
                 double w) {
   std::size_t first = p.begin;
   std::size_t last = p.end;
@@ -174,8 +187,8 @@ void set_levels(Plateau& p, const std::vector<double>& tv, const std::vector<dou
 
 // Plateaus: unions of windows [tᵢ, tᵢ + w] in which the input varies by at most 2h, split where
 // the window level moves more than h from the plateau's first level (a slow drift).
-std::vector<Plateau> find_plateaus(const std::vector<double>& tv, const std::vector<double>& uv,
-                                   double h, double w) {
+std::vector<Plateau> find_plateaus(std::span<const double> tv, std::span<const double> uv, double h,
+                                   double w) {
   std::vector<Plateau> plateaus;
   double ref = 0.0;
   for_each_window(tv, uv, w, [&](std::size_t i, std::size_t last, double lo, double hi) {
@@ -200,8 +213,8 @@ std::vector<Plateau> find_plateaus(const std::vector<double>& tv, const std::vec
 // Neighbouring plateaus are one level unless the input changes by the threshold between them
 // (a spike, a gap, wiggles or a drift split them); a short level left by a small change back
 // is the re-settling of the step into it.
-std::vector<Plateau> merge_levels(const std::vector<Plateau>& in, const std::vector<double>& tv,
-                                  const std::vector<double>& uv, double h, double threshold,
+std::vector<Plateau> merge_levels(const std::vector<Plateau>& in, std::span<const double> tv,
+                                  std::span<const double> uv, double h, double threshold,
                                   const StepDetectorOptions& options) {
   std::vector<Plateau> out;
   for (const Plateau& p : in) {
@@ -231,8 +244,8 @@ std::vector<Plateau> merge_levels(const std::vector<Plateau>& in, const std::vec
 double line_time(const detail::LineFit& line, double level) { return (level - line.a) / line.b; }
 
 // The step between plateaus p0 and p1, timed from the levels next to the transition.
-Step step_between(const Plateau& p0, const Plateau& p1, const std::vector<double>& tv,
-                  const std::vector<double>& uv, double h, StepTiming timing) {
+Step step_between(const Plateau& p0, const Plateau& p1, std::span<const double> tv,
+                  std::span<const double> uv, double h, StepTiming timing) {
   const double l0 = p0.end_level;
   const double l1 = p1.start_level;
   // Last sample in the band around the old level, first in the band around the new one.
@@ -304,10 +317,15 @@ StepThreshold step_threshold(std::span<const double> t, std::span<const double> 
 
 StepDetection detect_steps(std::span<const double> t, std::span<const double> u,
                            const StepDetectorOptions& options) {
-  const StepThreshold scale = step_threshold(t, u, options);
+  return detect_steps(t, u, options, step_threshold(t, u, options));
+}
+
+StepDetection detect_steps(std::span<const double> t, std::span<const double> u,
+                           const StepDetectorOptions& options, const StepThreshold& scale) {
+  options.validate();
   const ValidSamples v = valid_samples(t, u, options.input_name);
-  const std::vector<double>& tv = v.t;
-  const std::vector<double>& uv = v.u;
+  std::span<const double> tv = v.t;
+  std::span<const double> uv = v.u;
   const auto [min_it, max_it] = std::minmax_element(uv.begin(), uv.end());
   const double range = *max_it - *min_it;
   const double h = scale.band;

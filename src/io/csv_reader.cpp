@@ -4,13 +4,19 @@
 #include <cassert>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <map>
 
 #include <fmt/format.h>
 
+#include "dynpos/core/huge_pages.hpp"
+
+#include "csv_blocks.hpp"
+#include "csv_cell.hpp"
 #include "dynpos/io/time_stamp.hpp"
 #include "text_util.hpp"
 
@@ -68,6 +74,18 @@ class LineReader {
   }
 
   std::size_t line() const noexcept { return line_; }
+  /// Byte offset of the next physical line.
+  std::uint64_t offset() const noexcept { return offset_; }
+  /// Whether the log is a regular file (the block parser reads it at offsets).
+  bool regular() const { return std::filesystem::is_regular_file(path_); }
+
+  /// Continues at byte `offset`, a line start, after `line` physical lines.
+  void seek(std::uint64_t offset, std::size_t line) {
+    in_.clear();
+    in_.seekg(static_cast<std::streamoff>(offset));
+    offset_ = offset;
+    line_ = line;
+  }
 
  private:
   bool read_physical(std::string& out) {
@@ -81,6 +99,7 @@ class LineReader {
       return false;
     }
     ++line_;
+    offset_ += out.size() + (in_.eof() ? 0 : 1);
     if (!out.empty() && out.back() == '\r') out.pop_back();
     if (line_ == 1 && out.compare(0, 3, "\xEF\xBB\xBF") == 0) out.erase(0, 3);
     return true;
@@ -90,6 +109,7 @@ class LineReader {
   std::string path_;
   std::string comment_prefix_;
   std::size_t line_ = 0;
+  std::uint64_t offset_ = 0;
 };
 
 // One field scanned from `pos`: its text (a view into the record, or into `buffer` when a
@@ -164,33 +184,9 @@ std::string delimiter_name(char delimiter) {
   return delimiter == '\t' ? std::string("tab") : fmt::format("'{}'", delimiter);
 }
 
-// unit.to_si(), but without adding a zero offset, which would turn -0.0 into +0.0 and break
-// exact write→read round trips.
-double to_si(const core::Unit& unit, double value) {
-  return unit.offset == 0.0 ? value * unit.scale : unit.to_si(value);
-}
-
-enum class CellKind { kNumber, kMissing, kText, kNonFinite, kOutOfRange };
-
-CellKind parse_cell(std::string_view cell, const std::vector<std::string>& missing_tokens,
-                    double& value) {
-  const std::string_view text = detail::trim(cell);
-  if (text.empty()) return CellKind::kMissing;
-  for (const auto& token : missing_tokens) {
-    if (text == token) return CellKind::kMissing;
-  }
-  std::string_view digits = text;
-  // from_chars does not take a leading '+'; loggers sometimes write one.
-  if (digits.size() > 1 && digits.front() == '+' && digits[1] != '-' && digits[1] != '+') {
-    digits.remove_prefix(1);
-  }
-  const char* end = digits.data() + digits.size();
-  const auto [ptr, ec] = std::from_chars(digits.data(), end, value);
-  if (ec == std::errc::result_out_of_range && ptr == end) return CellKind::kOutOfRange;
-  if (ec != std::errc() || ptr != end) return CellKind::kText;
-  if (!std::isfinite(value)) return CellKind::kNonFinite;
-  return CellKind::kNumber;
-}
+using detail::CellKind;
+using detail::parse_cell;
+using detail::to_si;
 
 // How one column becomes a channel.
 struct ColumnPlan {
@@ -434,8 +430,124 @@ bool store_row(const std::vector<std::string_view>& cells, const TimePlans& time
   return true;
 }
 
+// The parts of a clean block inside the window, appended as store_row() would append them row
+// by row. False, nothing changed, when its first time is not after the last kept one (the caller
+// then reads it row by row, where the order policy applies). `more` is false once a row is past
+// the window.
+bool merge_block(const detail::Block& block, std::size_t line_base,
+                 const std::vector<std::size_t>& plan_of, std::vector<ColumnPlan>& channels,
+                 const CsvReadOptions& options, TimeStampReader& stamps, RowStream& out,
+                 bool& more) {
+  const std::vector<double>& t = block.time_s;
+  const std::size_t n = t.size();
+  if (n == 0) return true;
+  const auto index = [&](std::vector<double>::const_iterator it) {
+    return static_cast<std::size_t>(it - t.begin());
+  };
+  // Rows after the window: the first of them is kept and counted, then reading stops.
+  const std::size_t k_end =
+      options.t_to_s ? index(std::upper_bound(t.begin(), t.end(), *options.t_to_s)) : n;
+  const std::size_t counted = std::min(k_end + 1, n);
+  if (!stamps.accept_increasing(t.front(), t[counted - 1], counted,
+                                line_base + block.row_line[counted - 1] + 1)) {
+    return false;
+  }
+  if (!out.first_t) out.first_t = t.front();
+  out.last_t = t[counted - 1];
+  out.rows += counted;
+  const std::size_t k_from =
+      options.t_from_s
+          ? std::min(index(std::lower_bound(t.begin(), t.end(), *options.t_from_s)), k_end)
+          : 0;
+  const auto first = static_cast<std::ptrdiff_t>(k_from);
+  const auto last = static_cast<std::ptrdiff_t>(k_end);
+  out.time_s.insert(out.time_s.end(), t.begin() + first, t.begin() + last);
+  for (std::size_t k = 0; k < plan_of.size(); ++k) {
+    ColumnPlan& plan = channels[plan_of[k]];
+    const std::vector<double>& v = block.values[k];
+    if (plan.state == ColumnPlan::State::kUnknown &&
+        std::any_of(v.begin() + first, v.begin() + last, [](double x) { return !std::isnan(x); })) {
+      plan.state = ColumnPlan::State::kNumeric;
+    }
+    plan.values.insert(plan.values.end(), v.begin() + first, v.begin() + last);
+  }
+  more = k_end == n;
+  return true;
+}
+
+// Room for the rows still to come, estimated from the wave's bytes per row (huge pages advised;
+// room never written costs no memory). Not for a window that ends early.
+void reserve_rows(const std::vector<detail::Block>& wave, std::uint64_t file_size,
+                  const std::vector<std::size_t>& plan_of, std::vector<ColumnPlan>& channels,
+                  const CsvReadOptions& options, RowStream& out) {
+  if (options.t_to_s || wave.empty()) return;
+  std::size_t rows = 0;
+  for (const detail::Block& b : wave) rows += b.time_s.size();
+  const std::uint64_t bytes = wave.back().end - wave.front().begin;
+  if (rows == 0 || bytes == 0) return;
+  const double left = static_cast<double>(file_size - wave.front().begin);
+  const auto more = static_cast<std::size_t>(1.02 * left * static_cast<double>(rows) /
+                                             static_cast<double>(bytes)) +
+                    4096;
+  core::reserve_huge(out.time_s, out.time_s.size() + more);
+  for (const std::size_t p : plan_of) {
+    core::reserve_huge(channels[p].values, channels[p].values.size() + more);
+  }
+}
+
+// The rows after the first ones, of a regular file with plain-seconds time: by the block parser
+// (csv_blocks.hpp), each block that is not clean row by row through `store`. Returns once the
+// file or the window ends (`more` false for the window).
+void stream_blocks(LineReader& reader, const Header& header, const CsvFormat& format,
+                   const TimePlans& time, std::vector<ColumnPlan>& channels,
+                   const CsvReadOptions& options, TimeStampReader& stamps, RowSplitter& splitter,
+                   RowStream& out, const std::function<bool(std::size_t)>& store, bool& more) {
+  detail::BlockLayout layout;
+  layout.delimiter = header.delimiter;
+  layout.field_count = header.cells.size();
+  layout.comment_prefix = format.comment_prefix;
+  layout.missing_tokens = format.missing_tokens;
+  layout.time = {time.time.field, time.time.unit, time.time.scale};
+  std::vector<std::size_t> plan_of;  // block channel → plan (a column known to be text is not read)
+  for (std::size_t p = 0; p < channels.size(); ++p) {
+    if (channels[p].state == ColumnPlan::State::kText) continue;
+    plan_of.push_back(p);
+    layout.channels.push_back({channels[p].field, channels[p].unit, channels[p].scale});
+  }
+  detail::BlockReader blocks(reader.path(), std::move(layout), options.jobs);
+  std::uint64_t offset = reader.offset();
+  std::size_t line = reader.line();
+  bool first_wave = true;
+  while (more) {
+    const std::vector<detail::Block>& wave = blocks.read_wave(offset);
+    if (wave.empty()) return;
+    if (first_wave) reserve_rows(wave, blocks.file_size(), plan_of, channels, options, out);
+    first_wave = false;
+    for (const detail::Block& block : wave) {
+      if (block.clean && merge_block(block, line, plan_of, channels, options, stamps, out, more)) {
+        offset = block.end;
+        line += block.lines;
+        if (!more) return;
+        continue;
+      }
+      // Row by row, exactly as without blocks; then a new wave from where that ended.
+      reader.seek(block.begin, line);
+      std::string record;
+      std::size_t record_line = 0;
+      while (more && reader.offset() < block.end && reader.next(record, record_line)) {
+        splitter.split(record, record_line, &reader);
+        more = store(record_line);
+      }
+      offset = reader.offset();
+      line = reader.line();
+      break;
+    }
+  }
+}
+
 // Streams the data rows after the header into the plans' vectors; returns the time axis. The
-// first kTimeDetectionRows rows are held back until their time cells have fixed the format.
+// first kTimeDetectionRows rows are held back until their time cells have fixed the format;
+// the rest of a regular file with plain-seconds time goes through stream_blocks().
 std::vector<double> stream_rows(LineReader& reader, const Header& header, const CsvFormat& format,
                                 TimePlans& time, std::vector<ColumnPlan>& channels,
                                 const CsvReadOptions& options, TimeStampReader& stamps,
@@ -479,6 +591,11 @@ std::vector<double> stream_rows(LineReader& reader, const Header& header, const 
     if (held.size() == kTimeDetectionRows) {
       release();
       started = true;
+      if (more && stamps.plain_seconds() && reader.regular()) {
+        stream_blocks(reader, header, format, time, channels, options, stamps, splitter, out, store,
+                      more);
+        break;
+      }
     }
   }
   if (!started && !held.empty()) release();

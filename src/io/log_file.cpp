@@ -63,7 +63,9 @@ FileLog read_log_file(const std::filesystem::path& path, const ColumnMap& map,
   if (how.format == Format::kNmea || (how.format == Format::kAuto && looks_like_nmea(path))) {
     return read_nmea_file(path, map, how.strict);
   }
-  CsvLog csv = read_csv_log(path, map);
+  CsvReadOptions read;
+  read.jobs = how.jobs;
+  CsvLog csv = read_csv_log(path, map, read);
   FileLog out{std::move(csv.log), {}, csv.time.origin_ns, csv.time.origin, csv.time.origin_zone};
   out.report.path = path.string();
   out.report.format = "csv";

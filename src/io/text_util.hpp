@@ -11,6 +11,8 @@ namespace dynpos::io::detail {
 
 /// `text` without leading and trailing spaces, tabs and carriage returns.
 inline std::string_view trim(std::string_view text) {
+  const auto space = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; };
+  if (!text.empty() && !space(text.front()) && !space(text.back())) return text;  // the usual
   constexpr std::string_view kSpace = " \t\r\n";
   const auto first = text.find_first_not_of(kSpace);
   if (first == std::string_view::npos) return {};

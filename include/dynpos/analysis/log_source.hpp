@@ -45,6 +45,9 @@ struct LogSource {
   std::string time_format = {};  ///< --time-format; empty = the map's (auto)
   std::string date = {};         ///< --date YYYY-MM-DD; empty = the map's (none)
   std::string time_order = {};   ///< --time-order; empty = the map's (error)
+  /// Threads for reading the log and for an analysis' independent pieces (one fit per step);
+  /// 0 = every core. Results do not depend on it.
+  unsigned jobs = 0;
   /// A log already in memory (SI, channels named by role), used instead of the file `log`:
   /// what a program or the Python API built from arrays. Every channel is taken, by its name
   /// or as `columns` renames it (ROLE=CHANNEL); units, maps and time options do not apply.

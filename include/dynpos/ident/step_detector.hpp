@@ -137,6 +137,12 @@ struct StepDetection {
 StepDetection detect_steps(std::span<const double> t, std::span<const double> u,
                            const StepDetectorOptions& options = {});
 
+/// detect_steps() with the band and threshold of `scale`, a step_threshold() of this input (or
+/// of the whole log this input is a stretch of): a long log's noise and largest change are then
+/// measured once. The returned noise_sigma is scale's.
+StepDetection detect_steps(std::span<const double> t, std::span<const double> u,
+                           const StepDetectorOptions& options, const StepThreshold& scale);
+
 /// An explicit analysis window [t_from, t_to] [s], with an optional known step time [s].
 struct StepWindow {
   double t_from = 0.0;

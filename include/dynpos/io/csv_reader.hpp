@@ -37,6 +37,9 @@ struct CsvReadOptions {
   /// Keep only rows with t <= t_to_s [s]; reading stops at the first later row, so rows after
   /// the window are neither stored nor checked. nullopt = to the end.
   std::optional<double> t_to_s;
+  /// Threads that parse a regular file's rows in blocks, 0 = every core. The result (values,
+  /// errors, notes) is the same for any number.
+  unsigned jobs = 0;
 
   /// Throws core::InputError if a bound is not finite or t_from_s > t_to_s.
   void validate() const;

@@ -33,6 +33,7 @@ struct LogFileRead {
   enum class Format { kAuto, kCsv, kNmea };
   Format format = Format::kAuto;  ///< kAuto: an NMEA capture when io::looks_like_nmea, else CSV
   bool strict = false;            ///< an NMEA line that cannot be used is an error
+  unsigned jobs = 0;              ///< threads for reading a CSV file, 0 = every core
 };
 
 /// Reads the roles of `map` (one file's map, e.g. ColumnMap::for_file) from `path`, with `time`

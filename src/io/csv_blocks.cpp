@@ -1,0 +1,229 @@
+#include "csv_blocks.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <string_view>
+
+#include <fmt/format.h>
+
+#include "csv_cell.hpp"
+#include "dynpos/core/error.hpp"
+#include "dynpos/core/log.hpp"
+#include "dynpos/core/parallel_for.hpp"
+
+namespace dynpos::io::detail {
+namespace {
+
+constexpr std::uint64_t kBlockBytes = std::uint64_t{4} << 20;   // nominal block size
+constexpr std::uint64_t kSlackBytes = std::uint64_t{64} << 10;  // read past it for the last line
+constexpr std::size_t kNoSlot = std::numeric_limits<std::size_t>::max();
+
+[[noreturn]] void throw_read_error(const std::string& path, int error) {
+  core::InputLocation where;
+  where.file = path;
+  throw core::InputError(where, fmt::format("read error: {}", std::strerror(error)));
+}
+
+// A block's bytes as read so far: [from, from + size) of the file.
+struct Buffer {
+  std::unique_ptr<char[]> data;
+  std::size_t capacity = 0;
+  std::uint64_t from = 0;
+  std::size_t size = 0;
+};
+
+}  // namespace
+
+struct BlockReader::State {
+  std::string path;
+  int fd = -1;
+  BlockLayout layout;
+  unsigned jobs = 1;
+  std::vector<std::size_t> slot_of_field;  // field → index into a row's cells, or kNoSlot
+  std::size_t time_slot = 0;
+  std::vector<std::size_t> channel_slot;
+  std::size_t slots = 0;
+  std::size_t last_field = 0;  // the last field that is parsed
+  std::vector<Block> blocks;
+  std::vector<Buffer> buffers;
+
+  // Reads [from, from + bytes) (up to the end of the file) into `b`, keeping what it holds.
+  void read_into(Buffer& b, std::uint64_t from, std::uint64_t bytes, std::uint64_t file_size);
+  void parse_block(std::size_t index, std::uint64_t start, std::uint64_t stop,
+                   std::uint64_t file_size);
+  bool parse_row(std::string_view line, std::vector<std::string_view>& cells, Block& block,
+                 std::uint32_t line_in_block) const;
+};
+
+void BlockReader::State::read_into(Buffer& b, std::uint64_t from, std::uint64_t bytes,
+                                   std::uint64_t file_size) {
+  const std::uint64_t to = std::min(from + bytes, file_size);
+  if (b.size == 0 || b.from != from) {
+    b.from = from;
+    b.size = 0;
+  }
+  const auto want = static_cast<std::size_t>(to - from);
+  if (want > b.capacity) {
+    auto grown = std::make_unique<char[]>(want);
+    if (b.size > 0) std::memcpy(grown.get(), b.data.get(), b.size);
+    b.data = std::move(grown);
+    b.capacity = want;
+  }
+  while (b.size < want) {
+    const ssize_t got =
+        ::pread(fd, b.data.get() + b.size, want - b.size, static_cast<off_t>(from + b.size));
+    if (got < 0) {
+      if (errno == EINTR) continue;
+      throw_read_error(path, errno);
+    }
+    if (got == 0) break;  // the file shrank: what was read is all there is
+    b.size += static_cast<std::size_t>(got);
+  }
+}
+
+// One row into the block; false when it is not plain (the block is then read row by row).
+bool BlockReader::State::parse_row(std::string_view line, std::vector<std::string_view>& cells,
+                                   Block& block, std::uint32_t line_in_block) const {
+  if (line.find('"') != std::string_view::npos) return false;
+  // The fields up to the last one parsed are cut out; the rest are only counted.
+  const char delimiter = layout.delimiter;
+  const char* start = line.data();
+  const char* const end = start + line.size();
+  std::size_t field = 0;
+  for (;;) {
+    const char* stop = start;
+    while (stop != end && *stop != delimiter) ++stop;
+    if (slot_of_field[field] != kNoSlot) {
+      cells[slot_of_field[field]] = std::string_view(start, static_cast<std::size_t>(stop - start));
+    }
+    ++field;
+    if (stop == end) break;
+    start = stop + 1;
+    if (field > last_field) {
+      field += static_cast<std::size_t>(std::count(start, end, delimiter)) + 1;
+      break;
+    }
+  }
+  if (field != layout.field_count) return false;
+  double raw = 0.0;
+  if (parse_cell(cells[time_slot], layout.missing_tokens, raw) != CellKind::kNumber) return false;
+  const double t = to_si(layout.time.unit, raw * layout.time.scale);
+  if (!std::isfinite(t) || (!block.time_s.empty() && !(t > block.time_s.back()))) return false;
+  for (std::size_t k = 0; k < channel_slot.size(); ++k) {
+    const CellKind kind = parse_cell(cells[channel_slot[k]], layout.missing_tokens, raw);
+    if (kind == CellKind::kNumber) {
+      block.values[k].push_back(to_si(layout.channels[k].unit, raw * layout.channels[k].scale));
+    } else if (kind == CellKind::kMissing) {
+      block.values[k].push_back(core::kMissing);
+    } else {
+      return false;
+    }
+  }
+  block.time_s.push_back(t);
+  block.row_line.push_back(line_in_block);
+  return true;
+}
+
+// Block `index`: the lines that start in [start, stop) (start itself if it is the wave's first
+// block, which begins at a line start).
+void BlockReader::State::parse_block(std::size_t index, std::uint64_t start, std::uint64_t stop,
+                                     std::uint64_t file_size) {
+  Block& block = blocks[index];
+  Buffer& buffer = buffers[index];
+  block.time_s.clear();
+  block.row_line.clear();
+  block.values.resize(layout.channels.size());
+  for (auto& v : block.values) v.clear();
+  block.lines = 0;
+  block.clean = true;
+
+  const std::uint64_t from = index == 0 ? start : start - 1;
+  read_into(buffer, from, stop - from + kSlackBytes, file_size);
+  // Finds the end of the line from buffer offset `at`, reading on while it is not in view;
+  // returns the offset of its '\n' or of the end of the file.
+  const auto line_end = [&](std::size_t at) {
+    for (;;) {
+      const void* nl =
+          at < buffer.size ? std::memchr(buffer.data.get() + at, '\n', buffer.size - at) : nullptr;
+      if (nl != nullptr)
+        return static_cast<std::size_t>(static_cast<const char*>(nl) - buffer.data.get());
+      if (buffer.from + buffer.size >= file_size) return buffer.size;
+      read_into(buffer, buffer.from, 2 * buffer.size + kSlackBytes, file_size);
+    }
+  };
+  std::size_t at = 0;
+  if (index != 0) {  // the first line start at or after `start`
+    const std::size_t nl = line_end(0);
+    at = std::min(nl + 1, buffer.size);
+  }
+  block.begin = buffer.from + at;
+  std::vector<std::string_view> cells(slots);
+  const std::string_view prefix = layout.comment_prefix;
+  while (buffer.from + at < stop && buffer.from + at < file_size) {
+    const std::size_t nl = line_end(at);
+    std::string_view line(buffer.data.get() + at, nl - at);
+    const auto line_in_block = static_cast<std::uint32_t>(block.lines);
+    ++block.lines;
+    at = std::min(nl + 1, buffer.size);
+    if (!block.clean) continue;  // only counting the lines now
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    const std::string_view text = trim(line);
+    if (text.empty() || (!prefix.empty() && text.substr(0, prefix.size()) == prefix)) continue;
+    if (block.lines > std::numeric_limits<std::uint32_t>::max() ||
+        !parse_row(line, cells, block, line_in_block)) {
+      block.clean = false;
+    }
+  }
+  block.end = buffer.from + at;
+}
+
+BlockReader::BlockReader(std::filesystem::path path, BlockLayout layout, unsigned jobs)
+    : state_(std::make_unique<State>()) {
+  State& s = *state_;
+  s.path = path.string();
+  s.layout = std::move(layout);
+  s.fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (s.fd < 0) throw_read_error(s.path, errno);
+  struct stat info {};
+  if (::fstat(s.fd, &info) != 0) throw_read_error(s.path, errno);
+  file_size_ = static_cast<std::uint64_t>(info.st_size);
+  s.jobs = core::job_count(jobs, 1024);
+  s.slot_of_field.assign(s.layout.field_count, kNoSlot);
+  const auto slot = [&](std::size_t field) {
+    if (s.slot_of_field[field] == kNoSlot) s.slot_of_field[field] = s.slots++;
+    s.last_field = std::max(s.last_field, field);
+    return s.slot_of_field[field];
+  };
+  s.time_slot = slot(s.layout.time.field);
+  for (const BlockColumn& c : s.layout.channels) s.channel_slot.push_back(slot(c.field));
+}
+
+BlockReader::~BlockReader() {
+  if (state_ && state_->fd >= 0) ::close(state_->fd);
+}
+
+const std::vector<Block>& BlockReader::read_wave(std::uint64_t offset) {
+  State& s = *state_;
+  std::size_t count = 0;
+  if (offset < file_size_) {
+    const std::uint64_t left = file_size_ - offset;
+    count = static_cast<std::size_t>(
+        std::min<std::uint64_t>(2 * s.jobs, (left + kBlockBytes - 1) / kBlockBytes));
+  }
+  s.blocks.resize(count);
+  if (s.buffers.size() < count) s.buffers.resize(count);
+  core::parallel_for(count, s.jobs, [&](std::size_t b) {
+    const std::uint64_t start = offset + b * kBlockBytes;
+    s.parse_block(b, start, std::min(start + kBlockBytes, file_size_), file_size_);
+  });
+  return s.blocks;
+}
+
+}  // namespace dynpos::io::detail

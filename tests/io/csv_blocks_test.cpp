@@ -1,0 +1,204 @@
+// The CSV reader parses a regular file in blocks on several threads (src/io/csv_blocks.hpp) and
+// reads a pipe row by row. Both must give the same log, the same notes and the same errors, bit
+// for bit: here every case is a file of several 4 MiB blocks, read as a file with 1, 2 and 3
+// threads and through a FIFO (the row-by-row reference), with a defect placed mid-file.
+
+#include <sys/stat.h>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <csignal>
+#include <cstring>
+#include <fstream>
+#include <functional>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "dynpos/io/csv_reader.hpp"
+#include "io_test_util.hpp"
+
+namespace dynpos::io {
+namespace {
+
+using testing::TempDir;
+
+constexpr std::size_t kRows = 400'000;  // about 14 MB: four blocks and a part
+
+// Row k of a clean log: time, a command, a response and a spare column, 100 Hz.
+std::string row(std::size_t k) {
+  return fmt::format("{:.2f},{:.3f},{:.5f},{}\n", 0.01 * static_cast<double>(k),
+                     static_cast<double>((k / 1000) % 7), std::sin(1e-3 * static_cast<double>(k)),
+                     k % 13);
+}
+
+// The log's text, `edit` changing row k's line (return "" to keep it, or the replacement).
+std::string log_text(const std::function<std::string(std::size_t)>& edit = {}) {
+  std::string text = "# logger v1\ntime [s],cmd [1],resp [m],spare\n";
+  text.reserve(kRows * 40);
+  for (std::size_t k = 0; k < kRows; ++k) {
+    const std::string changed = edit ? edit(k) : std::string();
+    text += changed.empty() ? row(k) : changed;
+  }
+  return text;
+}
+
+ColumnMap map_of(TimeOrder order = TimeOrder::kError) {
+  ColumnMap map;
+  map.set_column("time", "time");
+  map.set_column("input", "cmd");
+  map.set_column("output", "resp");
+  map.time().order = order;
+  return map;
+}
+
+// A read's outcome: the log and notes, or the error text with the file name taken out.
+struct Outcome {
+  std::optional<CsvLog> log;
+  std::string error;
+};
+
+Outcome read(const std::filesystem::path& path, const ColumnMap& map, CsvReadOptions options) {
+  Outcome out;
+  try {
+    out.log = read_csv_log(path, map, options);
+  } catch (const core::InputError& e) {
+    out.error = e.what();
+    for (std::size_t at; (at = out.error.find(path.string())) != std::string::npos;) {
+      out.error.replace(at, path.string().size(), "LOG");
+    }
+  }
+  return out;
+}
+
+// The same text through a FIFO: read row by row.
+Outcome read_through_pipe(const TempDir& dir, const std::string& text, const ColumnMap& map,
+                          const CsvReadOptions& options) {
+  const auto fifo = dir / "pipe.csv";
+  std::filesystem::remove(fifo);
+  EXPECT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  // A reader that stops early (an error, the end of a window) breaks the pipe: the writer's
+  // write then fails with EPIPE instead of raising SIGPIPE.
+  std::signal(SIGPIPE, SIG_IGN);
+  std::thread writer([&] {
+    std::ofstream out(fifo, std::ios::binary);
+    out << text;
+  });
+  Outcome out = read(fifo, map, options);
+  writer.join();
+  return out;
+}
+
+bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
+}
+
+void expect_same(const Outcome& reference, const Outcome& got, const std::string& how) {
+  ASSERT_EQ(reference.error, got.error) << how;
+  ASSERT_EQ(reference.log.has_value(), got.log.has_value()) << how;
+  if (!reference.log) return;
+  const core::Log& a = reference.log->log;
+  const core::Log& b = got.log->log;
+  EXPECT_TRUE(same_bits(a.time(), b.time())) << how;
+  ASSERT_EQ(a.channel_names(), b.channel_names()) << how;
+  for (const std::string& name : a.channel_names()) {
+    EXPECT_TRUE(same_bits(a.values(name), b.values(name))) << how << ": " << name;
+  }
+  EXPECT_EQ(reference.log->time.skipped.by_kind(), got.log->time.skipped.by_kind()) << how;
+  EXPECT_EQ(reference.log->time.notes, got.log->time.notes) << how;
+}
+
+// Reads `text` as a file with 1, 2 and 3 threads and through a pipe; all four must agree.
+Outcome check_all_ways(const std::string& text, const ColumnMap& map, CsvReadOptions options = {}) {
+  TempDir dir;
+  const auto file = dir.write("log.csv", text);
+  const Outcome reference = read_through_pipe(dir, text, map, options);
+  for (const unsigned jobs : {1u, 2u, 3u}) {
+    options.jobs = jobs;
+    expect_same(reference, read(file, map, options), fmt::format("{} thread(s)", jobs));
+  }
+  return reference;
+}
+
+TEST(CsvBlocks, ACleanLogReadsTheSameAsRowByRow) {
+  const Outcome r = check_all_ways(log_text(), map_of());
+  ASSERT_TRUE(r.log);
+  EXPECT_EQ(r.log->log.size(), kRows);
+  const double logged = std::stod(fmt::format("{:.5f}", std::sin(123.456)));
+  EXPECT_EQ(r.log->log.values("output")[123'456], logged);
+}
+
+TEST(CsvBlocks, ABadCellMidFileIsTheSameErrorOnTheSameLine) {
+  const Outcome r =
+      check_all_ways(log_text([](std::size_t k) {
+                       return k == 250'000 ? std::string("2500.00,1.000,oops,3\n") : "";
+                     }),
+                     map_of());
+  // Line: the comment, the header, then row k on line k + 3.
+  EXPECT_THAT(r.error, ::testing::HasSubstr("LOG:250003:3"));
+  EXPECT_THAT(r.error, ::testing::HasSubstr("'oops' is not a number"));
+}
+
+TEST(CsvBlocks, ARowBackInTimeIsDroppedAndCountedAsRowByRow) {
+  const auto edit = [](std::size_t k) {
+    return k == 300'000 ? std::string("2000.00,1.000,0.5,3\n") : std::string();
+  };
+  const Outcome r = check_all_ways(log_text(edit), map_of(TimeOrder::kDropNonIncreasing));
+  ASSERT_TRUE(r.log);
+  EXPECT_EQ(r.log->log.size(), kRows - 1);
+  EXPECT_EQ(r.log->time.skipped.total(), 1u);
+  const Outcome strict = check_all_ways(log_text(edit), map_of());
+  EXPECT_THAT(strict.error, ::testing::HasSubstr("LOG:300003"));
+}
+
+TEST(CsvBlocks, QuotesBlankAndCommentLinesCrlfAndMissingCells) {
+  const Outcome r =
+      check_all_ways(log_text([](std::size_t k) -> std::string {
+                       if (k == 100'000) return "\n# a note\n" + row(k);
+                       if (k == 150'000) return "1500.00,\"2.000\",0.1,\"a,b\"\n";
+                       if (k == 151'000) return "1510.00,\"multi\nline\",0.1,1\n";
+                       if (k % 1000 == 7)
+                         return fmt::format("{:.2f},,,1\r\n", 0.01 * static_cast<double>(k));
+                       return "";
+                     }),
+                     map_of());
+  // The quoted multi-line cell is text in a number column: the same error both ways.
+  EXPECT_THAT(r.error, ::testing::HasSubstr("LOG:151005:2"));  // two extra lines above
+  const Outcome ok =
+      check_all_ways(log_text([](std::size_t k) -> std::string {
+                       if (k == 100'000) return "\n# a note\n" + row(k);
+                       if (k == 150'000) return "1500.00,\"2.000\",0.1,\"a,b\"\n";
+                       if (k % 1000 == 7)
+                         return fmt::format("{:.2f},,,1\r\n", 0.01 * static_cast<double>(k));
+                       return "";
+                     }),
+                     map_of());
+  ASSERT_TRUE(ok.log);
+  EXPECT_EQ(ok.log->log.size(), kRows);
+  EXPECT_TRUE(std::isnan(ok.log->log.values("input")[1007]));
+  EXPECT_EQ(ok.log->log.values("input")[150'000], 2.0);
+}
+
+TEST(CsvBlocks, AWindowAcrossBlocksAndAnUnterminatedLastLine) {
+  CsvReadOptions window;
+  window.t_from_s = 1234.5;
+  window.t_to_s = 2345.67;
+  const Outcome r = check_all_ways(log_text(), map_of(), window);
+  ASSERT_TRUE(r.log);
+  EXPECT_EQ(r.log->log.time().front(), 1234.5);
+  EXPECT_EQ(r.log->log.time().back(), 2345.67);
+  std::string text = log_text();
+  text.pop_back();  // no newline after the last row
+  check_all_ways(text, map_of());
+  text.resize(text.size() - 6);  // a row cut short by the logger
+  const Outcome cut = check_all_ways(text, map_of());
+  EXPECT_THAT(cut.error, ::testing::HasSubstr(fmt::format("LOG:{}", kRows + 2)));
+}
+
+}  // namespace
+}  // namespace dynpos::io
