@@ -197,8 +197,7 @@ class TimeStampReader {
   /// accept() for `count` rows whose times are strictly increasing, the first at first_t, the
   /// last at last_t on `last_line`: true, all of them kept, if first_t is after the last kept
   /// time; false, nothing changed, if it is not (then accept() them one by one).
-  bool accept_increasing(double first_t, double last_t, std::size_t count,
-                         std::size_t last_line) {
+  bool accept_increasing(double first_t, double last_t, std::size_t count, std::size_t last_line) {
     if (kept_ > 0 && !(first_t > last_t_)) return false;
     last_t_ = last_t;
     last_line_ = last_line;
