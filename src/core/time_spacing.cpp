@@ -4,12 +4,15 @@
 #include <cstddef>
 #include <stdexcept>
 
+#include "dynpos/core/huge_pages.hpp"
+
 namespace dynpos::core {
 
 double median_spacing_s(const std::vector<double>& time_s) {
   if (time_s.size() < 2) throw std::invalid_argument("median_spacing_s: fewer than two times");
-  std::vector<double> dt(time_s.size() - 1);
-  for (std::size_t i = 0; i + 1 < time_s.size(); ++i) dt[i] = time_s[i + 1] - time_s[i];
+  std::vector<double> dt;
+  reserve_huge(dt, time_s.size() - 1);
+  for (std::size_t i = 0; i + 1 < time_s.size(); ++i) dt.push_back(time_s[i + 1] - time_s[i]);
   const std::size_t mid = dt.size() / 2;
   std::nth_element(dt.begin(), dt.begin() + static_cast<std::ptrdiff_t>(mid), dt.end());
   const double upper = dt[mid];

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "dynpos/core/error.hpp"
+#include "dynpos/core/huge_pages.hpp"
 
 namespace dynpos::ident::detail {
 
@@ -31,7 +32,9 @@ void check_same_length(std::size_t n_t, std::size_t n_x, const std::string& name
   }
 }
 
-double median(std::vector<double> values) {
+double median(std::vector<double> values) { return median_in_place(values); }
+
+double median_in_place(std::span<double> values) {
   if (values.empty()) return std::nan("");
   const std::size_t mid = values.size() / 2;
   std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(mid), values.end());
@@ -44,16 +47,16 @@ double median(std::vector<double> values) {
 
 double difference_noise_sigma(std::span<const double> x) {
   std::vector<double> d;
-  d.reserve(x.size());
+  core::reserve_huge(d, x.size());
   for (std::size_t i = 1; i < x.size(); ++i) {
     if (!std::isnan(x[i]) && !std::isnan(x[i - 1])) d.push_back(x[i] - x[i - 1]);
   }
   if (d.size() < 2) return 0.0;
-  const double m = median(d);
+  const double m = median_in_place(d);  // the order of d does not matter below
   for (double& v : d) v = std::abs(v - m);
   // 1.4826·MAD estimates the standard deviation of Gaussian differences; a difference of
   // two independent samples has √2 times the sample standard deviation.
-  return 1.4826 * median(std::move(d)) / std::sqrt(2.0);
+  return 1.4826 * median_in_place(d) / std::sqrt(2.0);
 }
 
 LineFit fit_line(std::span<const double> x, std::span<const double> y) {

@@ -16,6 +16,8 @@ void check_same_length(std::size_t n_t, std::size_t n_x, const std::string& name
 
 /// Median of the values (the vector is reordered); NaN when empty.
 double median(std::vector<double> values);
+/// median(), reordering `values` instead of copying them (for a long series).
+double median_in_place(std::span<double> values);
 
 /// Robust noise standard deviation from first differences of consecutive valid samples:
 /// σ̂ = 1.4826·MAD(Δx)/√2. 0 when fewer than 2 differences.

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "dynpos/core/error.hpp"
+#include "dynpos/core/huge_pages.hpp"
 #include "series.hpp"
 
 namespace dynpos::ident {
@@ -90,7 +91,7 @@ ValidSamples valid_samples(std::span<const double> t, std::span<const double> u,
 // (the steps and ramps of a log with up to a few percent of its samples in transitions).
 double trimmed_rms_sigma(std::span<const double> uv) {
   std::vector<double> d2;
-  d2.reserve(uv.size());
+  core::reserve_huge(d2, uv.size());
   for (std::size_t i = 1; i < uv.size(); ++i)
     d2.push_back((uv[i] - uv[i - 1]) * (uv[i] - uv[i - 1]));
   const std::size_t keep = std::max<std::size_t>(1, d2.size() - d2.size() / 50);
@@ -125,7 +126,9 @@ void for_each_window(std::span<const double> tv, std::span<const double> uv, dou
 // S: the largest range of the input within any window of w seconds, after a 3-sample running
 // median (one bad sample does not set the scale of the steps).
 double largest_change(std::span<const double> tv, std::span<const double> uv, double w) {
-  std::vector<double> m(uv.begin(), uv.end());
+  std::vector<double> m;
+  core::reserve_huge(m, uv.size());
+  m.assign(uv.begin(), uv.end());
   for (std::size_t i = 1; i + 1 < uv.size(); ++i) {
     m[i] = std::max(std::min(uv[i - 1], uv[i]), std::min(std::max(uv[i - 1], uv[i]), uv[i + 1]));
   }
