@@ -30,6 +30,10 @@ void register_simulate(CLI::App& app) {
   sub->add_option("--log-rate", request->log_rate_hz, "Override the log rate [Hz]")
       ->type_name("FLOAT:POSITIVE");
   sub->add_flag("--list", request->list, "List the built-in scenarios and exit");
+  sub->add_option("--jobs", request->jobs,
+                  "Campaign: scenarios run at once (default 0: every core); the files do not "
+                  "depend on it")
+      ->check(CLI::Range(0u, 256u));
   sub->footer(
       "Files: DIR/log.csv (the trial logger: every sensor at its rate, blank between samples,\n"
       "commands and setpoints), DIR/truth.csv (the true motion, SI), DIR/truth.json (parameters,\n"

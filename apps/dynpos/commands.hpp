@@ -54,5 +54,6 @@ void register_hybrid(CLI::App& app);
 void register_compare(CLI::App& app);
 void register_demo(CLI::App& app);
 void register_capability(CLI::App& app);  // cmd_capability.cpp
+void register_montecarlo(CLI::App& app);  // cmd_montecarlo.cpp
 
 }  // namespace dynpos::cli

@@ -30,6 +30,7 @@ int main(int argc, char** argv) {
   register_hybrid(app);
   register_compare(app);
   register_capability(app);
+  register_montecarlo(app);
   register_demo(app);
 
   try {

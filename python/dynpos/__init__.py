@@ -355,10 +355,10 @@ class Simulation:
 
 
 def simulate(scenario: str, seed: int = 1, out=None, duration: float | None = None,
-             vessel=None, log_rate: float | None = None):
+             vessel=None, log_rate: float | None = None, jobs: int = 0):
     """Runs a scenario of the virtual R/V Gunnerus (a built-in name such as
     ``"turning-circle"``, see :func:`scenarios`, or a .toml file) with a master seed: the same
-    seed gives the same log, bit for bit. The files go to ``out`` as ``dynpos simulate --out``
+    seed gives the same log, bit for bit (``jobs``: campaign runs at once, 0 = every core). The files go to ``out`` as ``dynpos simulate --out``
     writes them (a temporary folder, removed after reading, when not given). Returns a
     :class:`Simulation`; for ``"campaign"`` a dict of them by scenario name."""
     q = _dynpos.SimulateRequest()
@@ -366,6 +366,7 @@ def simulate(scenario: str, seed: int = 1, out=None, duration: float | None = No
     q.seed = seed
     q.duration = duration
     q.log_rate = log_rate
+    q.jobs = jobs
     if vessel is not None:
         q.vessel = os.fspath(vessel)
 

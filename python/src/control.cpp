@@ -152,7 +152,8 @@ void bind_simulate(py::module_& m) {
       .def_readwrite("seed", &Q::seed)
       .def_readwrite("vessel", &Q::vessel_file)
       .def_readwrite("duration", &Q::duration_s)
-      .def_readwrite("log_rate", &Q::log_rate_hz);
+      .def_readwrite("log_rate", &Q::log_rate_hz)
+      .def_readwrite("jobs", &Q::jobs);
   m.def("run_simulate", &simulate, py::arg("request"));
   m.def("scenarios", [] {
     Q q;

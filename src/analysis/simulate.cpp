@@ -41,7 +41,7 @@ std::vector<scenario::RunSummary> simulate_campaign(const SimulateRequest& reque
   for (scenario::ScenarioSpec& spec : specs) apply_overrides(request, spec);
   const scenario::VesselConfig vessel = scenario::load_vessel_config(vessel_file);
   std::vector<scenario::RunSummary> runs =
-      scenario::run_campaign(specs, vessel, request.seed, request.out_dir);
+      scenario::run_campaign(specs, vessel, request.seed, request.out_dir, request.jobs);
   write_campaign_report(runs, vessel, request.seed, request.out_dir, {});
   return runs;
 }

@@ -2,11 +2,13 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 
+#include "dynpos/core/parallel_for.hpp"
 #include "dynpos/io/atomic_file.hpp"
 #include "dynpos/io/csv_writer.hpp"
 #include "dynpos/io/json_writer.hpp"
@@ -88,18 +90,24 @@ std::vector<ScenarioSpec> load_campaign(const std::filesystem::path& scenario_di
 
 std::vector<RunSummary> run_campaign(const std::vector<ScenarioSpec>& scenarios,
                                      const VesselConfig& vessel, std::uint64_t master_seed,
-                                     const std::filesystem::path& out_dir) {
-  std::vector<RunSummary> summaries;
-  for (const ScenarioSpec& spec : scenarios) {
+                                     const std::filesystem::path& out_dir, unsigned jobs) {
+  std::vector<RunSummary> summaries(scenarios.size());
+  // The longest runs first, so that a short one finishes the campaign, not a long one.
+  std::vector<std::size_t> order(scenarios.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return scenarios[a].duration_s > scenarios[b].duration_s;
+  });
+  core::parallel_for(order.size(), jobs, [&](std::size_t k) {
+    const ScenarioSpec& spec = scenarios[order[k]];
     const std::uint64_t seed = campaign_seed(master_seed, spec.name);
     const auto start = std::chrono::steady_clock::now();
     const ScenarioRun run = run_scenario(spec, vessel, seed);
-    const std::filesystem::path dir = out_dir / spec.name;
-    write_scenario_run(run, dir);
+    write_scenario_run(run, out_dir / spec.name);
     RunSummary s = summarise(spec, run, seed);
     s.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    summaries.push_back(s);
-  }
+    summaries[order[k]] = std::move(s);
+  });
   return summaries;
 }
 

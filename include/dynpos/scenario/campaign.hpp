@@ -41,11 +41,12 @@ void write_scenario_run(const ScenarioRun& run, const std::filesystem::path& dir
 /// core::InputError naming the folder if it holds none.
 std::vector<ScenarioSpec> load_campaign(const std::filesystem::path& scenario_dir);
 
-/// Runs each scenario with its campaign_seed() and writes DIR/<name>/ (write_scenario_run).
-/// Returns the summaries in order; the report on them is the application's
-/// (analysis/campaign_report.hpp).
+/// Runs each scenario with its campaign_seed() and writes DIR/<name>/ (write_scenario_run), on
+/// `jobs` threads (0 = every core; each run holds its log in memory until written). The files
+/// do not depend on `jobs`. Returns the summaries in scenario order; the report on them is the
+/// application's (analysis/campaign_report.hpp).
 std::vector<RunSummary> run_campaign(const std::vector<ScenarioSpec>& scenarios,
                                      const VesselConfig& vessel, std::uint64_t master_seed,
-                                     const std::filesystem::path& out_dir);
+                                     const std::filesystem::path& out_dir, unsigned jobs = 0);
 
 }  // namespace dynpos::scenario

@@ -1,0 +1,95 @@
+// dynpos montecarlo SCENARIO --seeds A..B [--jobs N] [--shard i/N] [--json FILE]: the spread of
+// every identified quantity over noise seeds, against truth; and `dynpos montecarlo merge
+// SHARD.json...` (analysis/montecarlo.hpp).
+
+#include <fmt/core.h>
+
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+#include "dynpos/analysis/montecarlo.hpp"
+#include "dynpos/analysis/options.hpp"
+#include "dynpos/io/json_writer.hpp"
+
+namespace dynpos::cli {
+namespace {
+
+struct MonteCarloOptions {
+  analysis::MonteCarloRequest request;
+  std::string seeds = "1..20";
+  std::string shard = "1/1";
+  std::string json;
+  std::vector<std::filesystem::path> shard_files;
+  std::string merged_json;
+};
+
+void print(const analysis::MonteCarloReport& report, const std::string& json) {
+  if (!json.empty()) io::write_json(json, analysis::to_json(report));
+  std::FILE* out = json == "-" ? stderr : stdout;
+  fmt::print(out, "{}", analysis::to_text(report));
+  if (!json.empty() && json != "-") fmt::print(out, "wrote {}\n", json);
+}
+
+}  // namespace
+
+void register_montecarlo(CLI::App& app) {
+  auto opt = std::make_shared<MonteCarloOptions>();
+  analysis::MonteCarloRequest& r = opt->request;
+  CLI::App* sub = app.add_subcommand(
+      "montecarlo",
+      "Run a scenario for many noise seeds and summarise the spread of every identified "
+      "quantity against truth");
+  sub->add_option("scenario", r.scenario,
+                  "Scenario name in data/scenarios (e.g. surge-steps-forward) or a .toml file");
+  sub->add_option("--seeds", opt->seeds, "Seed range A..B (inclusive), decimal")
+      ->capture_default_str();
+  sub->add_option("--shard", opt->shard,
+                  "Run shard i of N (1 <= i <= N) of the seed range: contiguous parts, for "
+                  "running on several machines; join them with `montecarlo merge`")
+      ->capture_default_str();
+  sub->add_option("--jobs", r.jobs, "Seeds run at once (default 0: every core)")
+      ->check(CLI::Range(0u, 256u));
+  sub->add_option("--vessel", r.vessel_file, "Vessel file (default: data/vessels/gunnerus.toml)");
+  sub->add_option("--duration", r.duration_s, "Override the run length [s]")
+      ->type_name("FLOAT:POSITIVE");
+  sub->add_option("--measure", r.measure,
+                  "What to identify: auto (steps for a step test, stationkeeping for a DP run, "
+                  "else the GNSS lever arms), steps, station-keeping or lever-arms")
+      ->capture_default_str();
+  sub->add_option("--work-dir", r.work_dir,
+                  "Folder for each seed's files while it is analysed (default: the temporary "
+                  "folder); removed afterwards");
+  add_json_option(*sub, opt->json, "Write the samples and the summary as JSON to FILE, or '-'");
+  sub->footer(
+      "Quantities: step tests give K, T and delay per step (Smith's method, the one that defines "
+      "the truth), DP runs the stationkeeping standard deviations, other runs the GNSS lever "
+      "arms. The output is the same for any --jobs, and `montecarlo merge` of the shards gives "
+      "the document of one run of the whole range. Example: dynpos montecarlo "
+      "surge-steps-forward --seeds 1..100 --json mc.json");
+
+  CLI::App* merge = sub->add_subcommand(
+      "merge", "Join the JSON documents of the shards of one run into the whole run's");
+  merge->add_option("files", opt->shard_files, "The shards' JSON documents")
+      ->required()
+      ->check(CLI::ExistingFile);
+  add_json_option(*merge, opt->merged_json, "Write the merged document to FILE, or '-'");
+  merge->callback([opt] {
+    analysis::check_output_file("json", opt->merged_json);
+    print(analysis::merge_montecarlo(opt->shard_files), opt->merged_json);
+  });
+
+  sub->callback([opt, sub] {
+    if (sub->got_subcommand("merge")) return;
+    analysis::MonteCarloRequest& q = opt->request;
+    q.set_seeds(opt->seeds);
+    q.set_shard(opt->shard);
+    q.validate();
+    analysis::check_output_file("json", opt->json);
+    print(analysis::run_montecarlo(q), opt->json);
+  });
+}
+
+}  // namespace dynpos::cli

@@ -1,0 +1,17 @@
+# dynpos montecarlo (analysis/montecarlo.hpp): ranges, shards and merging checked at the option.
+dynpos_cli_test(montecarlo_bad_seeds
+  COMMAND bash ${EXPECT_EXIT} 2 "'1..x' is not a seed range"
+          ${DYNPOS_EXE} montecarlo turning-circle --seeds 1..x)
+dynpos_cli_test(montecarlo_empty_range
+  COMMAND bash ${EXPECT_EXIT} 2 "the range 5..4 is empty"
+          ${DYNPOS_EXE} montecarlo turning-circle --seeds 5..4)
+dynpos_cli_test(montecarlo_shard_outside
+  COMMAND bash ${EXPECT_EXIT} 2 "shard 3/2 does not exist"
+          ${DYNPOS_EXE} montecarlo turning-circle --shard 3/2)
+dynpos_cli_test(montecarlo_merge_not_a_result
+  COMMAND bash ${EXPECT_EXIT} 2 "not a Monte Carlo result"
+          ${DYNPOS_EXE} montecarlo merge ${PROJECT_SOURCE_DIR}/CMakePresets.json)
+# One seed of the turning circle: the lever arms' table against truth.
+dynpos_cli_test(montecarlo_turning_circle
+  COMMAND ${DYNPOS_EXE} montecarlo turning-circle --seeds 7 --jobs 1
+  PASS "gnss1.x_m +1 +[-0-9.]+ +0 ")
