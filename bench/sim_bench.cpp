@@ -53,6 +53,14 @@ void BM_FullModel(benchmark::State& state) {
       duration * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_FullModel)->Arg(600)->Arg(3600)->Unit(benchmark::kMillisecond)->UseRealTime();
+// The same hour as the first run of a fresh process (what `dynpos simulate` costs): run it alone,
+// `--benchmark_filter=BM_FullModelCold`, so that no earlier run has warmed the allocator.
+BENCHMARK(BM_FullModel)
+    ->Name("BM_FullModelCold")
+    ->Arg(3600)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 // The whole built-in test programme (every data/scenarios file), simulated without file output;
 // simulated_s counts the settling before each log as well.

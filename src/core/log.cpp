@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "dynpos/core/huge_pages.hpp"
 #include "dynpos/core/time_spacing.hpp"
 
 namespace dynpos::core {
@@ -167,8 +168,8 @@ void Log::append_row(double t_s, std::span<const double> values) {
 }
 
 void Log::reserve(std::size_t n) {
-  time_s_.reserve(n);
-  for (Channel& c : channels_) c.values.reserve(n);
+  reserve_huge(time_s_, n);
+  for (Channel& c : channels_) reserve_huge(c.values, n);
 }
 
 bool Log::has(std::string_view name) const noexcept {

@@ -15,3 +15,9 @@ dynpos_cli_test(montecarlo_merge_not_a_result
 dynpos_cli_test(montecarlo_turning_circle
   COMMAND ${DYNPOS_EXE} montecarlo turning-circle --seeds 7 --jobs 1
   PASS "gnss1.x_m +1 +[-0-9.]+ +0 ")
+# Shards as separate processes (examples/scaling/montecarlo-shards.sh, what a job array does),
+# merged: the same document as one run of the whole range, byte for byte.
+dynpos_cli_test(montecarlo_shards_merge_to_one_run
+  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/montecarlo_shards.sh ${DYNPOS_EXE}
+          ${CLI_OUT}/montecarlo ${PROJECT_SOURCE_DIR}/examples/scaling/montecarlo-shards.sh
+  PASS "IDENTICAL")
