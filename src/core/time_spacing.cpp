@@ -4,12 +4,18 @@
 #include <cstddef>
 #include <stdexcept>
 
+#include "dynpos/core/few_valued_median.hpp"
 #include "dynpos/core/huge_pages.hpp"
 
 namespace dynpos::core {
 
 double median_spacing_s(const std::vector<double>& time_s) {
   if (time_s.size() < 2) throw std::invalid_argument("median_spacing_s: fewer than two times");
+  // A regular axis has few distinct spacings: counted in one pass, no copy.
+  if (const auto counted = few_valued_median(
+          time_s.size() - 1, [&](std::size_t i) { return time_s[i + 1] - time_s[i]; })) {
+    return *counted;
+  }
   std::vector<double> dt;
   reserve_huge(dt, time_s.size() - 1);
   for (std::size_t i = 0; i + 1 < time_s.size(); ++i) dt.push_back(time_s[i + 1] - time_s[i]);

@@ -60,37 +60,65 @@ struct Bounds {
 // long window of a fast response).
 constexpr double kSettledTimeConstants = 40.0;
 
-double sse_of(const detail::StepResponse& r, const Vec4& p) {
+// The settled samples (tail) of a window in O(1) per evaluation: there the model is the constant
+// c = y₀ + A, so Σ(y − c) and Σ(y − c)² follow from prefix sums of y − ȳ and (y − ȳ)², ȳ the
+// window's final level (which keeps the sums at the size of the noise, not of the level).
+struct TailSums {
+  double y_ref = 0.0;
+  std::vector<double> s1, s2;  // s1[i] = Σ_{k<i} (y_k − y_ref), s2 likewise of the squares
+
+  explicit TailSums(const detail::StepResponse& r) : y_ref(r.y_final) {
+    s1.resize(r.y.size() + 1);
+    s2.resize(r.y.size() + 1);
+    for (std::size_t i = 0; i < r.y.size(); ++i) {
+      const double d = r.y[i] - y_ref;
+      s1[i + 1] = s1[i] + d;
+      s2[i + 1] = s2[i] + d * d;
+    }
+  }
+  // Index of the first settled sample for the parameters p: τ − δ > 40·T.
+  static std::size_t first_settled(const detail::StepResponse& r, const Vec4& p) {
+    const double tau_settled = p(3) + kSettledTimeConstants * p(2);
+    return static_cast<std::size_t>(std::upper_bound(r.tau.begin(), r.tau.end(), tau_settled) -
+                                    r.tau.begin());
+  }
+  // Σ res and Σ res² of the samples from `first` on, against the constant c.
+  std::pair<double, double> residuals(std::size_t first, double c) const {
+    const std::size_t n = s1.size() - 1;
+    const double m = static_cast<double>(n - first);
+    const double a = s1[n] - s1[first];
+    const double b = s2[n] - s2[first];
+    const double d = c - y_ref;
+    return {a - m * d, std::max(b - 2.0 * d * a + m * d * d, 0.0)};
+  }
+};
+
+double sse_of(const detail::StepResponse& r, const TailSums& tail, const Vec4& p) {
   double sse = 0.0;
-  const double x_settled = kSettledTimeConstants * p(2);
-  for (std::size_t i = 0; i < r.y.size(); ++i) {
+  const std::size_t settled = TailSums::first_settled(r, p);
+  for (std::size_t i = 0; i < settled; ++i) {
     const double x = r.tau[i] - p(3);
-    const double m = x <= 0.0        ? p(0)
-                     : x > x_settled ? p(0) + p(1)
-                                     : p(0) + p(1) * (1.0 - std::exp(-x / p(2)));
+    const double m = x <= 0.0 ? p(0) : p(0) + p(1) * (1.0 - std::exp(-x / p(2)));
     sse += (r.y[i] - m) * (r.y[i] - m);
   }
-  return sse;
+  return sse + tail.residuals(settled, p(0) + p(1)).second;
 }
 
 // Normal equations JᵀJ and Jᵀr of the residuals r = y − m(τ; p), with the model (3.7).
-void normal_equations(const detail::StepResponse& r, const Vec4& p, Mat4& jtj, Vec4& jtr,
-                      double& sse) {
+void normal_equations(const detail::StepResponse& r, const TailSums& tail, const Vec4& p, Mat4& jtj,
+                      Vec4& jtr, double& sse) {
   // J = [1, 1 − e, −A·x·e/T², −A·e/T] per sample (∂m/∂(y0, A, T, δ) of (3.7)). The ten distinct
   // products of JᵀJ are summed in scalars: this loop is the cost of a fit, and a day-long log
   // has hundreds of steps.
   const double inv_t = 1.0 / p(2);
-  const double x_settled = kSettledTimeConstants * p(2);
   double s1 = 0, s2 = 0, s3 = 0, s11 = 0, s21 = 0, s31 = 0, s22 = 0, s32 = 0, s33 = 0;
   double r0 = 0, r1 = 0, r2 = 0, r3 = 0, sq = 0;
   const std::size_t n = r.y.size();
-  for (std::size_t i = 0; i < n; ++i) {
+  const std::size_t settled = TailSums::first_settled(r, p);
+  for (std::size_t i = 0; i < settled; ++i) {
     const double x = r.tau[i] - p(3);
     double m = p(0), j1 = 0.0, j2 = 0.0, j3 = 0.0;
-    if (x > x_settled) {  // settled: e and the T and δ derivatives vanish (see above)
-      m = p(0) + p(1);
-      j1 = 1.0;
-    } else if (x > 0.0) {
+    if (x > 0.0) {
       const double e = std::exp(-x * inv_t);
       m = p(0) + p(1) * (1.0 - e);
       j1 = 1.0 - e;
@@ -113,6 +141,14 @@ void normal_equations(const detail::StepResponse& r, const Vec4& p, Mat4& jtj, V
     r2 += j2 * res;
     r3 += j3 * res;
   }
+  // The settled tail: j = [1, 1, 0, 0] and the residuals of the constant y₀ + A.
+  const double m_tail = static_cast<double>(n - settled);
+  const auto [res_tail, sq_tail] = tail.residuals(settled, p(0) + p(1));
+  s1 += m_tail;
+  s11 += m_tail;
+  r0 += res_tail;
+  r1 += res_tail;
+  sq += sq_tail;
   jtj << static_cast<double>(n), s1, s2, s3,  //
       s1, s11, s21, s31,                      //
       s2, s21, s22, s32,                      //
@@ -135,14 +171,14 @@ struct LmRun {
 };
 
 // Levenberg–Marquardt with Marquardt's diagonal scaling, box limits on T and δ by projection.
-LmRun levenberg_marquardt(const detail::StepResponse& r, Vec4 p, const Bounds& b,
-                          int max_iterations) {
+LmRun levenberg_marquardt(const detail::StepResponse& r, const TailSums& tail, Vec4 p,
+                          const Bounds& b, int max_iterations) {
   LmRun run;
   p = clamp_params(p, b);
   Mat4 jtj;
   Vec4 jtr;
   double sse = 0.0;
-  normal_equations(r, p, jtj, jtr, sse);
+  normal_equations(r, tail, p, jtj, jtr, sse);
   double lambda = 1e-3;
   const double scale_y = std::max(std::abs(r.delta_y), 1e-300);
   const Vec4 scale(scale_y, scale_y, r.tau_end, r.tau_end);
@@ -160,14 +196,14 @@ LmRun levenberg_marquardt(const detail::StepResponse& r, Vec4 p, const Bounds& b
       if (!b.delta_free) a(3, 3) = 1.0;
       const Vec4 step = a.ldlt().solve(jtr);
       const Vec4 trial = clamp_params(p + step, b);
-      const double trial_sse = sse_of(r, trial);
+      const double trial_sse = sse_of(r, tail, trial);
       if (std::isfinite(trial_sse) && trial_sse <= sse) {
         const double reduction = sse - trial_sse;
         const double moved = ((trial - p).array() / scale.array()).abs().maxCoeff();
         p = trial;
         lambda = std::max(lambda / 3.0, 1e-12);
         accepted = true;
-        normal_equations(r, p, jtj, jtr, sse);
+        normal_equations(r, tail, p, jtj, jtr, sse);
         if (moved < 1e-10 || reduction <= 1e-14 * (sse + 1e-300)) {
           run.converged = true;
         }
@@ -270,11 +306,12 @@ std::vector<std::array<double, 2>> lsq_starts(const detail::StepResponse& r,
 
 // Standard deviations of the free parameters from the covariance σ²(JᵀJ)⁻¹ at p,
 // σ² = SSE/(N − p); NaN where it is not defined (δ when held, a singular JᵀJ, no dof).
-Vec4 parameter_sigmas(const detail::StepResponse& r, const Vec4& p, const Bounds& bounds) {
+Vec4 parameter_sigmas(const detail::StepResponse& r, const TailSums& tail, const Vec4& p,
+                      const Bounds& bounds) {
   Mat4 jtj;
   Vec4 jtr;
   double sse = 0.0;
-  normal_equations(r, p, jtj, jtr, sse);
+  normal_equations(r, tail, p, jtj, jtr, sse);
   const int n_par = bounds.delta_free ? 4 : 3;
   const double dof = static_cast<double>(r.y.size()) - n_par;
   const double s2 = dof > 0.0 ? sse / dof : std::numeric_limits<double>::quiet_NaN();
@@ -320,9 +357,10 @@ std::string degenerate_reasons(const FopdtFitOptions& options, const Bounds& bou
 }
 
 // The estimates, fit quality, warnings and status of the best least-squares run.
-void set_lsq_result(const detail::StepResponse& r, const Step& step, const FopdtFitOptions& options,
-                    const Bounds& bounds, const LmRun& best, FopdtFitResult& result) {
-  const Vec4 sigma = parameter_sigmas(r, best.p, bounds);
+void set_lsq_result(const detail::StepResponse& r, const TailSums& tail, const Step& step,
+                    const FopdtFitOptions& options, const Bounds& bounds, const LmRun& best,
+                    FopdtFitResult& result) {
+  const Vec4 sigma = parameter_sigmas(r, tail, best.p, bounds);
   const auto opt_sigma = [](double s) -> std::optional<double> {
     if (std::isfinite(s)) return s;
     return std::nullopt;
@@ -402,6 +440,7 @@ FopdtFitResult fit_fopdt(std::span<const double> t, std::span<const double> y, c
   }
 
   const Bounds bounds = lsq_bounds(r, options);
+  const TailSums tail(r);
   LmRun best;
   best.sse = std::numeric_limits<double>::infinity();
   // The starts guard against a local minimum in δ. A converged fit whose residual is already
@@ -411,7 +450,7 @@ FopdtFitResult fit_fopdt(std::span<const double> t, std::span<const double> y, c
   for (const auto& s : lsq_starts(r, t28, t63)) {
     Vec4 p0(r.y0, r.delta_y, std::max(s[0], bounds.t_min),
             bounds.delta_free ? std::max(s[1], 0.0) : bounds.delta_max);
-    const LmRun run = levenberg_marquardt(r, p0, bounds, options.max_iterations);
+    const LmRun run = levenberg_marquardt(r, tail, p0, bounds, options.max_iterations);
     if (run.sse < best.sse) best = run;
     if (best.converged && std::sqrt(best.sse / static_cast<double>(r.y.size())) <= good_rms) break;
   }
@@ -420,7 +459,7 @@ FopdtFitResult fit_fopdt(std::span<const double> t, std::span<const double> y, c
     result.message = "least squares failed: the residuals are not finite";
     return result;
   }
-  set_lsq_result(r, step, options, bounds, best, result);
+  set_lsq_result(r, tail, step, options, bounds, best, result);
   return result;
 }
 

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "dynpos/core/error.hpp"
+#include "dynpos/core/few_valued_median.hpp"
 #include "dynpos/core/huge_pages.hpp"
 
 namespace dynpos::ident::detail {
@@ -36,6 +37,11 @@ double median(std::vector<double> values) { return median_in_place(values); }
 
 double median_in_place(std::span<double> values) {
   if (values.empty()) return std::nan("");
+  // A piecewise-constant signal's differences take few values: counted, not selected.
+  if (const auto counted =
+          core::few_valued_median(values.size(), [&](std::size_t i) { return values[i]; })) {
+    return *counted;
+  }
   const std::size_t mid = values.size() / 2;
   std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(mid), values.end());
   const double upper = values[mid];

@@ -108,10 +108,10 @@ void BlockReader::State::read_into(Buffer& b, std::uint64_t from, std::uint64_t 
   }
 }
 
-// One row into the block; false when it is not plain (the block is then read row by row).
+// One row into the block (the caller has checked it holds no quote); false when it is not
+// plain (the block is then read row by row).
 bool BlockReader::State::parse_row(std::string_view line, std::vector<std::string_view>& cells,
                                    Block& block, std::uint32_t line_in_block) const {
-  if (line.find('"') != std::string_view::npos) return false;
   // The fields up to the last one parsed are cut out; the rest are only counted.
   const char delimiter = layout.delimiter;
   const char* start = line.data();
@@ -185,16 +185,26 @@ void BlockReader::State::parse_block(std::size_t index, std::uint64_t start, std
   block.begin = buffer.from + at;
   std::vector<std::string_view> cells(slots);
   const std::string_view prefix = layout.comment_prefix;
+  std::size_t quotes_checked = at;
   while (buffer.from + at < stop && buffer.from + at < file_size) {
     const std::size_t nl = line_end(at);
     std::string_view line(buffer.data.get() + at, nl - at);
     const auto line_in_block = static_cast<std::uint32_t>(block.lines);
     ++block.lines;
     at = std::min(nl + 1, buffer.size);
-    if (!block.clean) continue;  // only counting the lines now
+    if (!block.clean) continue;          // only counting the lines now
+    if (quotes_checked < buffer.size) {  // a quote anywhere read: the block is read row by row
+      block.clean = std::memchr(buffer.data.get() + quotes_checked, '"',
+                                buffer.size - quotes_checked) == nullptr;
+      quotes_checked = buffer.size;
+      if (!block.clean) continue;
+    }
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    const std::string_view text = trim(line);
-    if (text.empty() || (!prefix.empty() && text.substr(0, prefix.size()) == prefix)) continue;
+    const char first = line.empty() ? ' ' : line.front();
+    if (first == ' ' || first == '\t' || (!prefix.empty() && first == prefix.front())) {
+      const std::string_view text = trim(line);  // blank, a comment, or a row after spaces
+      if (text.empty() || (!prefix.empty() && text.substr(0, prefix.size()) == prefix)) continue;
+    }
     if (block.lines > std::numeric_limits<std::uint32_t>::max() ||
         !parse_row(line, cells, block, line_in_block)) {
       block.clean = false;

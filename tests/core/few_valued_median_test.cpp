@@ -1,0 +1,54 @@
+// core::few_valued_median: the exact median of a series with few distinct values, against
+// selection (nth_element) on the same values.
+
+#include "dynpos/core/few_valued_median.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace dynpos::core {
+namespace {
+
+double selected_median(std::vector<double> v) {
+  const std::size_t mid = v.size() / 2;
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(mid), v.end());
+  const double upper = v[mid];
+  if (v.size() % 2 == 1) return upper;
+  return 0.5 * (*std::max_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(mid)) + upper);
+}
+
+std::optional<double> counted(const std::vector<double>& v) {
+  return few_valued_median(v.size(), [&](std::size_t i) { return v[i]; });
+}
+
+TEST(FewValuedMedian, EqualsSelectionForOddAndEvenCounts) {
+  std::mt19937_64 engine(7);
+  std::uniform_int_distribution<int> pick(0, 40);
+  for (std::size_t n : {1u, 2u, 3u, 10u, 11u, 1000u, 1001u}) {
+    std::vector<double> v(n);
+    for (double& x : v) x = 0.01 * pick(engine) - 0.2;  // 41 distinct values, some negative
+    ASSERT_TRUE(counted(v)) << n;
+    EXPECT_EQ(*counted(v), selected_median(v)) << n;
+  }
+  // The spacings of a logged 100 Hz axis, t printed with two decimals and read back.
+  std::vector<double> t(100'001), dt;
+  for (std::size_t k = 0; k < t.size(); ++k) t[k] = std::stod(std::to_string(0.01 * k));
+  for (std::size_t k = 1; k < t.size(); ++k) dt.push_back(t[k] - t[k - 1]);
+  ASSERT_TRUE(counted(dt));
+  EXPECT_EQ(*counted(dt), selected_median(dt));
+}
+
+TEST(FewValuedMedian, DeclinesManyValuesNaNAndEmpty) {
+  std::vector<double> many(1000);
+  for (std::size_t i = 0; i < many.size(); ++i) many[i] = std::sqrt(static_cast<double>(i));
+  EXPECT_FALSE(counted(many));
+  EXPECT_FALSE(counted({1.0, std::nan(""), 1.0}));
+  EXPECT_FALSE(counted({}));
+}
+
+}  // namespace
+}  // namespace dynpos::core
