@@ -1,12 +1,46 @@
 #include "dynpos/core/error.hpp"
 
+#include <cstdio>
+#include <string_view>
+
 namespace dynpos::core {
 
-std::string format_input_error(const InputLocation& where, const std::string& problem,
-                               const std::string& hint) {
+std::string printable(std::string_view text, std::size_t max_bytes) {
+  std::size_t keep = text.size();
+  if (keep > max_bytes) {
+    keep = max_bytes;
+    // Never cut a UTF-8 character: back off over its continuation bytes (10xxxxxx).
+    while (keep > 0 && (static_cast<unsigned char>(text[keep]) & 0xC0) == 0x80) --keep;
+  }
+  std::string out;
+  out.reserve(keep + 16);
+  for (std::size_t i = 0; i < keep; ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c >= 0x20 && c != 0x7F) {
+      out += static_cast<char>(c);
+    } else if (c == '\t') {
+      out += "\\t";
+    } else if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\r') {
+      out += "\\r";
+    } else {
+      char code[8];
+      std::snprintf(code, sizeof code, "\\x%02x", c);
+      out += code;
+    }
+  }
+  if (keep < text.size()) out += "… (" + std::to_string(text.size() - keep) + " more bytes)";
+  return out;
+}
+
+std::string format_input_error(const InputLocation& where, const std::string& problem_text,
+                               const std::string& hint_text) {
+  const std::string problem = printable(problem_text, kMaxMessagePartBytes);
+  const std::string hint = printable(hint_text, kMaxMessagePartBytes);
   std::string out;
   if (!where.file.empty()) {
-    out += where.file;
+    out += printable(where.file, kMaxMessagePartBytes);
     if (where.line) {
       out += ':';
       out += std::to_string(*where.line);
@@ -21,7 +55,7 @@ std::string format_input_error(const InputLocation& where, const std::string& pr
   }
   if (!where.column_name.empty()) {
     out += out.empty() ? "" : " ";
-    out += "(" + where.column_name + ")";
+    out += "(" + printable(where.column_name, kMaxMessagePartBytes) + ")";
   }
   if (!out.empty()) out += ": ";
   out += problem;

@@ -5,6 +5,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace dynpos::core {
 namespace {
@@ -65,6 +66,34 @@ TEST(InputError, AnOptionErrorCanNameTheFileItWasCheckedAgainst) {
   EXPECT_EQ(in_file.option(), "from/to");
   EXPECT_EQ(in_file.where().file, "a.csv");
   EXPECT_EQ(std::string(in_file.what()), "a.csv (from/to): outside the log");
+}
+
+}  // namespace
+}  // namespace dynpos::core
+
+namespace dynpos::core {
+namespace {
+
+TEST(InputErrorText, ControlCharactersAreShownNotSent) {
+  const InputError e({"log.csv", 3, 2, "speed"}, "'\x1b[31mred\x1b[0m' is not a number",
+                     "tab\there");
+  EXPECT_STREQ(e.what(), "log.csv:3:2 (speed): '\\x1b[31mred\\x1b[0m' is not a number; tab\\there");
+  EXPECT_EQ(e.problem(), "'\x1b[31mred\x1b[0m' is not a number");  // the text itself is kept
+}
+
+TEST(InputErrorText, ALongEchoIsCutAtACharacter) {
+  const std::string huge(1'000'000, 'x');
+  const InputError e({"log.csv", 1, {}, {}}, "header '" + huge + "'");
+  const std::string what = e.what();
+  EXPECT_LT(what.size(), 1100u);
+  EXPECT_NE(what.find("… (999"), std::string::npos);
+  // A cut inside a multi-byte character backs off to its start: "é" is 2 bytes.
+  std::string text;
+  for (int i = 0; i < 600; ++i) text += "é";
+  const std::string spaced = " " + text;            // 1201 bytes
+  const std::string cut = printable(spaced, 1000);  // the 1000th byte is inside an "é"
+  EXPECT_EQ(cut.compare(0, 999, spaced, 0, 999), 0);
+  EXPECT_EQ(cut.compare(999, std::string_view("… (").size(), "… ("), 0);
 }
 
 }  // namespace

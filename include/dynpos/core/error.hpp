@@ -17,6 +17,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace dynpos::core {
 
@@ -54,7 +55,17 @@ class InputError : public std::runtime_error {
   std::string option_;
 };
 
-/// "file:line:column (name): problem; hint" — the text InputError::what() returns.
+/// The most bytes of each part of a message (file, name, problem, hint) what() shows: an
+/// offending cell or header of megabytes is not echoed whole.
+inline constexpr std::size_t kMaxMessagePartBytes = 1000;
+
+/// `text` safe for a terminal: control characters (terminal escape sequences included) shown as
+/// \t, \n, \r or \xNN, and cut after max_bytes (at a UTF-8 character boundary) with
+/// "… (N more bytes)".
+std::string printable(std::string_view text, std::size_t max_bytes = kMaxMessagePartBytes);
+
+/// "file:line:column (name): problem; hint" — the text InputError::what() returns, each part
+/// printable().
 std::string format_input_error(const InputLocation& where, const std::string& problem,
                                const std::string& hint);
 
