@@ -3,8 +3,10 @@
 /// Streaming CSV log reader: loads only the mapped columns (and an optional time window) of a
 /// log that may be far larger than memory.
 ///
-/// The file is read one line at a time; only the cells of mapped columns are parsed, and only
-/// rows inside the window are stored. Numbers are parsed locale-independently ('.' decimal
+/// The file is read one line at a time (a regular file, after the first rows: in blocks on
+/// several threads, any block that is not plain line by line, with the same result: see
+/// src/io/csv_blocks.hpp); only the cells of mapped columns are parsed, and only rows inside the
+/// window are stored. Numbers are parsed locale-independently ('.' decimal
 /// point). Rules, in brief (details and examples in docs/log-format.md):
 /// - the first line that is neither blank nor a comment is the header; later blank and comment
 ///   lines are skipped; CRLF line ends, a UTF-8 byte-order mark and quoted fields ("a,b", with
