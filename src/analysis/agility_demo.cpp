@@ -65,8 +65,7 @@ std::pair<std::string, std::string> thrust_map_part(const std::filesystem::path&
     }));
   }
   if (logs.empty()) return {};
-  const scenario::VesselConfig vessel =
-      scenario::load_vessel_config(find_data_dir() / "vessels" / "gunnerus.toml");
+  const scenario::VesselConfig vessel = scenario::load_vessel_config(vessel_file_or_default());
   const report::Table map = thrust_map_table(logs, vessel);
   const std::string text =
       "Thrust map T = c·n|n| (3.17) back-calculated from the surge step logs (logged thrust "

@@ -118,8 +118,7 @@ const CapabilityCase& CapabilityReport::headline() const {
 
 CapabilityReport run_capability(const CapabilityRequest& q) {
   q.validate();
-  const std::filesystem::path file =
-      q.vessel.empty() ? find_data_dir() / "vessels" / "gunnerus.toml" : q.vessel;
+  const std::filesystem::path file = vessel_file_or_default(q.vessel);
   const scenario::VesselConfig vessel = scenario::load_vessel_config(file);
   const capability::EnvironmentTable table = environment_of(q);
   CapabilityReport r;

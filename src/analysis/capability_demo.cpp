@@ -37,8 +37,7 @@ CapabilityReport level3_report(const CapabilityReport& l1, std::uint64_t seed) {
   CapabilityReport r = run_capability(level3_request(seed));
   std::set<std::string> worst_at_l1;
   for (const auto& p : l1.worst->points) worst_at_l1.insert(p.failure);
-  const scenario::VesselConfig vessel =
-      scenario::load_vessel_config(find_data_dir() / "vessels" / "gunnerus.toml");
+  const scenario::VesselConfig vessel = scenario::load_vessel_config(vessel_file_or_default());
   const capability::TimeDomainOptions& o = *r.time_domain;
   std::vector<std::vector<capability::CapabilityPoint>> roses;
   for (const std::string& f : worst_at_l1) {

@@ -23,4 +23,8 @@ std::filesystem::path find_data_dir() {
                          "set DYNPOS_DATA_DIR to it");
 }
 
+std::filesystem::path vessel_file_or_default(const std::filesystem::path& given) {
+  return given.empty() ? find_data_dir() / "vessels" / "gunnerus.toml" : given;
+}
+
 }  // namespace dynpos::analysis

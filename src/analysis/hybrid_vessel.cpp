@@ -61,8 +61,7 @@ HybridVesselReport run_hybrid_vessel(const HybridVesselRequest& request) {
   const std::filesystem::path data = find_data_dir();
   const scenario::ScenarioSpec spec =
       scenario::load_scenario(scenario_path(data, load_case(request.scenario)));
-  const scenario::VesselConfig vessel =
-      scenario::load_vessel_config(data / "vessels" / "gunnerus.toml");
+  const scenario::VesselConfig vessel = scenario::load_vessel_config(vessel_file_or_default());
   HybridVesselReport r;
   r.name = request.scenario;
   r.scenario_name = spec.name;

@@ -301,8 +301,8 @@ MonteCarloReport run_montecarlo(const MonteCarloRequest& request) {
       scenario::load_scenario(scenario::resolve_scenario(request.scenario, data / "scenarios"));
   if (request.duration_s) spec.duration_s = *request.duration_s;
   spec.validate();
-  const scenario::VesselConfig vessel = scenario::load_vessel_config(
-      request.vessel_file.empty() ? data / "vessels" / "gunnerus.toml" : request.vessel_file);
+  const scenario::VesselConfig vessel =
+      scenario::load_vessel_config(vessel_file_or_default(request.vessel_file));
   MonteCarloReport report;
   report.scenario = spec.name;
   report.seed_first = request.seed_first;

@@ -81,8 +81,7 @@ SimulateReport run_simulate(const SimulateRequest& request) {
     report.result = list_built_in(scenario_dir);
     return report;
   }
-  const std::filesystem::path vessel_file =
-      request.vessel_file.empty() ? data / "vessels" / "gunnerus.toml" : request.vessel_file;
+  const std::filesystem::path vessel_file = vessel_file_or_default(request.vessel_file);
   if (request.scenario == kCampaign) {
     report.result = simulate_campaign(request, scenario_dir, vessel_file);
   } else {

@@ -58,8 +58,8 @@ std::vector<ThrusterMapFit> fit_maps(const ThrustMapRequest& request, const core
 }
 
 AppliedThrust apply_maps(const ThrustMapRequest& request, const core::Log& log) {
-  const scenario::VesselConfig vessel = scenario::load_vessel_config(
-      request.vessel.empty() ? find_data_dir() / "vessels" / "gunnerus.toml" : request.vessel);
+  const scenario::VesselConfig vessel =
+      scenario::load_vessel_config(vessel_file_or_default(request.vessel));
   const auto maps = vessel_maps(vessel);
   AppliedThrust out{core::Log(log.time()), 0, vessel.source, request.abs_speed};
   for (const std::string& name : thruster_names(log, "rpm")) {

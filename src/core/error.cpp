@@ -9,7 +9,7 @@ std::string printable(std::string_view text, std::size_t max_bytes) {
   std::size_t keep = text.size();
   if (keep > max_bytes) {
     keep = max_bytes;
-    // Never cut a UTF-8 character: back off over its continuation bytes (10xxxxxx).
+    // Never cut a UTF-8 character: back off over its continuation bytes (top bits 10).
     while (keep > 0 && (static_cast<unsigned char>(text[keep]) & 0xC0) == 0x80) --keep;
   }
   std::string out;

@@ -11,4 +11,8 @@ namespace dynpos::analysis {
 /// was built from. InputError if none holds a scenarios/ folder.
 std::filesystem::path find_data_dir();
 
+/// `given`, or the built-in vessel (the virtual R/V Gunnerus, vessels/gunnerus.toml of
+/// find_data_dir()) when it is empty.
+std::filesystem::path vessel_file_or_default(const std::filesystem::path& given = {});
+
 }  // namespace dynpos::analysis
