@@ -9,6 +9,11 @@ if(DYNPOS_SANITIZE)
     -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
   target_link_options(dynpos_warnings INTERFACE -fsanitize=address,undefined)
 endif()
+# The fuzz build (clang): every module instrumented for libFuzzer's coverage, the fuzz targets
+# (fuzz/) linked with its driver.
+if(DYNPOS_FUZZ)
+  target_compile_options(dynpos_warnings INTERFACE -fsanitize=fuzzer-no-link)
+endif()
 
 # dynpos_add_module(NAME DEPS targets...)
 # One static library per module from src/NAME/*.cpp, public headers in include/dynpos/NAME.

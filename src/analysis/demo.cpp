@@ -10,6 +10,7 @@ namespace dynpos::analysis {
 
 void DemoRequest::validate() const {
   if (out_dir.empty()) throw option_error("out", "no report folder given", "add --out DIR");
+  check_output_dir("out", out_dir);
 }
 
 DemoReport run_demo(const DemoRequest& request) {

@@ -223,6 +223,7 @@ void MonteCarloRequest::set_shard(const std::string& text) {
 
 void MonteCarloRequest::validate() const {
   if (scenario.empty()) throw option_error("scenario", "no scenario given");
+  if (!work_dir.empty()) check_output_dir("work_dir", work_dir);
   if (seed_last < seed_first) {
     throw option_error("seeds", fmt::format("the range {}..{} is empty", seed_first, seed_last),
                        "the first seed must not be after the last");

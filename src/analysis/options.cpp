@@ -52,6 +52,10 @@ Eigen::Vector3d parse_vec3(const std::string& text, const std::string& key,
 }
 
 void check_output_dir(const std::string& key, const std::filesystem::path& dir) {
+  if (dir == "-") {
+    throw option_error(key, "'-' (standard output) cannot hold a folder of files",
+                       "name a folder (it is created if needed), e.g. ./-  for one named '-'");
+  }
   if (!dir.empty() && std::filesystem::exists(dir) && !std::filesystem::is_directory(dir)) {
     throw option_error(key, "'" + dir.string() + "' exists and is not a folder",
                        "name a folder (it is created if needed)");

@@ -20,10 +20,23 @@ void check_positive(const std::optional<double>& value, const char* key, const c
   }
 }
 
+// --duration and --log-rate replace the scenario's values; a value out of its range is then
+// the option's error, not the scenario file's.
 void apply_overrides(const SimulateRequest& request, scenario::ScenarioSpec& spec) {
   if (request.duration_s) spec.set_duration(*request.duration_s);
   if (request.log_rate_hz) spec.log_rate_hz = *request.log_rate_hz;
-  spec.validate();
+  try {
+    spec.validate();
+  } catch (const core::InputError& e) {
+    const std::string& field = e.where().column_name;
+    if (request.duration_s && field == "duration_s") {
+      throw option_error_in_file(e.where().file, "duration", e.problem(), e.hint());
+    }
+    if (request.log_rate_hz && field == "log_rate_hz") {
+      throw option_error_in_file(e.where().file, "log_rate", e.problem(), e.hint());
+    }
+    throw;
+  }
 }
 
 std::vector<ScenarioListing> list_built_in(const std::filesystem::path& scenario_dir) {
@@ -68,7 +81,8 @@ void SimulateRequest::validate() const {
                            "name one, e.g. 'dynpos simulate "
                            "surge-steps-forward --out DIR' (--list shows all)");
   }
-  if (out_dir.empty()) throw core::InputError({}, "no output folder given", "add --out DIR");
+  if (out_dir.empty()) throw option_error("out", "no output folder given", "add --out DIR");
+  check_output_dir("out", out_dir);
 }
 
 SimulateReport run_simulate(const SimulateRequest& request) {

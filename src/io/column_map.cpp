@@ -422,8 +422,9 @@ void ColumnMap::validate() const {
     }
   }
   for (const auto& [file, options] : files_) {
-    const bool used = std::any_of(roles_.begin(), roles_.end(),
-                                  [&](const auto& role) { return role.second.file == file; });
+    const bool used = std::any_of(roles_.begin(), roles_.end(), [&file = file](const auto& role) {
+      return role.second.file == file;
+    });
     if (!used) {
       throw InputError(options.source, fmt::format("no role is read from '{}'", file),
                        fmt::format("map a role with --col ROLE=COLUMN@{} or file = \"...\" in "
@@ -565,8 +566,35 @@ void apply_time_overrides(ColumnMap& map, std::string_view format, std::string_v
   }
 }
 
+namespace {
+
+// A role given twice by one option (--col heading=A --col heading=B): an error, not the last
+// one silently kept. `time=COLUMN@FILE` names the time of FILE, so each file's time is its own.
+void check_each_role_once(const std::vector<std::string>& arguments, std::string_view option) {
+  std::map<std::string, std::string, std::less<>> seen;  // role (and file of time) → argument
+  for (const auto& argument : arguments) {
+    const auto eq = argument.find('=');
+    if (eq == std::string::npos) continue;  // malformed: its own error comes later
+    std::string role(detail::trim(std::string_view(argument).substr(0, eq)));
+    if (role == "time" && argument.rfind('@') != std::string::npos) {
+      role += argument.substr(argument.rfind('@'));
+    }
+    const auto [it, fresh] = seen.emplace(role, argument);
+    if (!fresh) {
+      throw InputError(
+          command_line(fmt::format("{} {}", option, argument)),
+          fmt::format("role '{}' is given twice: '{}' and '{}'", it->first, it->second, argument),
+          fmt::format("give each role once with {}", option));
+    }
+  }
+}
+
+}  // namespace
+
 void apply_overrides(ColumnMap& map, const std::vector<std::string>& column_arguments,
                      const std::vector<std::string>& unit_arguments) {
+  check_each_role_once(column_arguments, "--col");
+  check_each_role_once(unit_arguments, "--unit");
   for (const auto& argument : column_arguments) apply_column_override(map, argument);
   for (const auto& argument : unit_arguments) apply_unit_override(map, argument);
 }

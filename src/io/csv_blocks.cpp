@@ -18,6 +18,7 @@
 #include "dynpos/core/error.hpp"
 #include "dynpos/core/log.hpp"
 #include "dynpos/core/parallel_for.hpp"
+#include "dynpos/io/csv_reader.hpp"
 
 namespace dynpos::io::detail {
 namespace {
@@ -138,7 +139,9 @@ bool BlockReader::State::parse_row(std::string_view line, std::vector<std::strin
   for (std::size_t k = 0; k < channel_slot.size(); ++k) {
     const CellKind kind = parse_cell(cells[channel_slot[k]], layout.missing_tokens, raw);
     if (kind == CellKind::kNumber) {
-      block.values[k].push_back(to_si(layout.channels[k].unit, raw * layout.channels[k].scale));
+      const double value = to_si(layout.channels[k].unit, raw * layout.channels[k].scale);
+      if (!std::isfinite(value)) return false;  // the row reader names the cell
+      block.values[k].push_back(value);
     } else if (kind == CellKind::kMissing) {
       block.values[k].push_back(core::kMissing);
     } else {
@@ -166,7 +169,9 @@ void BlockReader::State::parse_block(std::size_t index, std::uint64_t start, std
   const std::uint64_t from = index == 0 ? start : start - 1;
   read_into(buffer, from, stop - from + kSlackBytes, file_size);
   // Finds the end of the line from buffer offset `at`, reading on while it is not in view;
-  // returns the offset of its '\n' or of the end of the file.
+  // returns the offset of its '\n' or of the end of the file, or kTooLong past
+  // kMaxCsvRecordBytes (the row reader then names the line).
+  constexpr std::size_t kTooLong = std::numeric_limits<std::size_t>::max();
   const auto line_end = [&](std::size_t at) {
     for (;;) {
       const void* nl =
@@ -174,13 +179,15 @@ void BlockReader::State::parse_block(std::size_t index, std::uint64_t start, std
       if (nl != nullptr)
         return static_cast<std::size_t>(static_cast<const char*>(nl) - buffer.data.get());
       if (buffer.from + buffer.size >= file_size) return buffer.size;
+      if (buffer.size - at > kMaxCsvRecordBytes) return kTooLong;
       read_into(buffer, buffer.from, 2 * buffer.size + kSlackBytes, file_size);
     }
   };
   std::size_t at = 0;
   if (index != 0) {  // the first line start at or after `start`
     const std::size_t nl = line_end(0);
-    at = std::min(nl + 1, buffer.size);
+    at = nl == kTooLong ? buffer.size : std::min(nl + 1, buffer.size);
+    block.clean = nl != kTooLong;
   }
   block.begin = buffer.from + at;
   std::vector<std::string_view> cells(slots);
@@ -188,6 +195,11 @@ void BlockReader::State::parse_block(std::size_t index, std::uint64_t start, std
   std::size_t quotes_checked = at;
   while (buffer.from + at < stop && buffer.from + at < file_size) {
     const std::size_t nl = line_end(at);
+    if (nl == kTooLong) {  // read row by row, which stops at this line
+      block.clean = false;
+      at = buffer.size;
+      break;
+    }
     std::string_view line(buffer.data.get() + at, nl - at);
     const auto line_in_block = static_cast<std::uint32_t>(block.lines);
     ++block.lines;

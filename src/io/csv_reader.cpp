@@ -15,6 +15,7 @@
 
 #include "dynpos/core/huge_pages.hpp"
 
+#include "bounded_line.hpp"
 #include "csv_blocks.hpp"
 #include "csv_cell.hpp"
 #include "dynpos/io/time_stamp.hpp"
@@ -59,6 +60,7 @@ class LineReader {
         continue;
       }
       record_line = line_;
+      record_line_ = line_;
       return true;
     }
     return false;
@@ -68,6 +70,7 @@ class LineReader {
   bool continue_record(std::string& record) {
     std::string more;
     if (!read_physical(more)) return false;
+    if (record.size() + 1 + more.size() > kMaxCsvRecordBytes) too_long("record");
     record += '\n';
     record += more;
     return true;
@@ -89,26 +92,43 @@ class LineReader {
 
  private:
   bool read_physical(std::string& out) {
-    if (!std::getline(in_, out)) {
-      if (in_.bad()) {
-        InputLocation where;
-        where.file = path_;
-        where.line = line_;
-        throw InputError(where, fmt::format("read error: {}", std::strerror(errno)));
-      }
-      return false;
+    bool ended = false;
+    const detail::LineStatus status =
+        detail::read_bounded_line(in_, out, kMaxCsvRecordBytes, ended);
+    if (in_.bad()) {
+      InputLocation where;
+      where.file = path_;
+      where.line = line_ + 1;
+      throw InputError(where, fmt::format("read error: {}", std::strerror(errno)));
     }
+    if (status == detail::LineStatus::kEnd) return false;
     ++line_;
-    offset_ += out.size() + (in_.eof() ? 0 : 1);
+    if (status == detail::LineStatus::kTooLong) too_long("line");
+    offset_ += out.size() + (ended ? 1 : 0);
     if (!out.empty() && out.back() == '\r') out.pop_back();
     if (line_ == 1 && out.compare(0, 3, "\xEF\xBB\xBF") == 0) out.erase(0, 3);
     return true;
+  }
+
+  // A line (or a record of lines joined by a quoted field) beyond kMaxCsvRecordBytes.
+  [[noreturn]] void too_long(std::string_view what) const {
+    InputLocation where;
+    where.file = path_;
+    where.line = what == "line" ? line_ : record_line_;
+    throw InputError(where,
+                     fmt::format("a {} longer than {} MiB: the limit of one row of a CSV log", what,
+                                 kMaxCsvRecordBytes >> 20),
+                     what == "line" ? "is this a text log? a binary file or one without line "
+                                      "ends is not read"
+                                    : "a quote opened in this row is not closed: check the "
+                                      "quoting");
   }
 
   std::ifstream in_;
   std::string path_;
   std::string comment_prefix_;
   std::size_t line_ = 0;
+  std::size_t record_line_ = 0;  // the first line of the record being read
   std::uint64_t offset_ = 0;
 };
 
@@ -246,6 +266,15 @@ Header read_header(LineReader& reader, const CsvFormat& format) {
   header.delimiter = format.delimiter ? *format.delimiter : detect_delimiter(record);
   header.cells = split_header(reader, record, header.delimiter);
   return header;
+}
+
+// A number that the column's scale and unit carry beyond the range of a double.
+[[noreturn]] void throw_overflow(std::string_view cell, const InputLocation& where, double scale) {
+  throw InputError(where,
+                   fmt::format("'{}' times the column's scale {} in SI is beyond the range of a "
+                               "double",
+                               detail::trim(cell), scale),
+                   "check the scale and unit of the column in the column map");
 }
 
 InputLocation cell_location(const std::string& file, std::size_t line, const ColumnPlan& plan) {
@@ -388,7 +417,10 @@ double row_time_s(const std::vector<std::string_view>& cells, const TimePlans& t
   if (kind != CellKind::kNumber) {
     throw_bad_cell(kind, time_cell, cell_location(path, line, time.time), delimiter);
   }
-  return to_si(time.time.unit, raw * time.time.scale);
+  const double t = to_si(time.time.unit, raw * time.time.scale);
+  if (!std::isfinite(t))
+    throw_overflow(time_cell, cell_location(path, line, time.time), time.time.scale);
+  return t;
 }
 
 // Stores one split row: its time (if the order policy keeps it and it is inside the window)
@@ -413,6 +445,7 @@ bool store_row(const std::vector<std::string_view>& cells, const TimePlans& time
     const CellKind cell_kind = parse_cell(cell, format.missing_tokens, raw);
     if (cell_kind == CellKind::kNumber) {
       value = to_si(plan.unit, raw * plan.scale);
+      if (!std::isfinite(value)) throw_overflow(cell, cell_location(path, line, plan), plan.scale);
       if (plan.state == ColumnPlan::State::kUnknown) plan.state = ColumnPlan::State::kNumeric;
     } else if (cell_kind != CellKind::kMissing) {
       if (plan.may_be_text && cell_kind == CellKind::kText &&

@@ -22,6 +22,16 @@ bool digits(std::string_view text, std::size_t pos, std::size_t n, int& value) {
   return true;
 }
 
+// seconds·10⁹ + fraction [ns]; nullopt beyond the int64 nanoseconds of 1677…2262.
+std::optional<std::int64_t> to_ns(std::int64_t seconds, std::int64_t fraction_ns) {
+  std::int64_t ns = 0;
+  if (__builtin_mul_overflow(seconds, kSecond_ns, &ns) ||
+      __builtin_add_overflow(ns, fraction_ns, &ns)) {
+    return std::nullopt;
+  }
+  return ns;
+}
+
 // ".f…" at text[pos…] (up to nine digits kept) → ns; advances pos. No dot: 0.
 std::optional<std::int64_t> fraction_ns(std::string_view text, std::size_t& pos) {
   if (pos >= text.size() || text[pos] != '.') return 0;
@@ -66,7 +76,9 @@ std::optional<LoggerStamp> parse_iso(std::string_view text) {
   }
   if (pos != text.size()) return std::nullopt;
   const std::int64_t seconds = days_since_epoch(date) * 86400 + hh * 3600 + mm * 60 + ss - offset_s;
-  out.unix_ns = seconds * kSecond_ns + *fraction;
+  const std::optional<std::int64_t> ns = to_ns(seconds, *fraction);
+  if (!ns) return std::nullopt;
+  out.unix_ns = *ns;
   return out;
 }
 
@@ -81,7 +93,9 @@ std::optional<LoggerStamp> parse_epoch_seconds(std::string_view text) {
   if (pos < 9) return std::nullopt;
   const std::optional<std::int64_t> fraction = fraction_ns(text, pos);
   if (!fraction || pos != text.size()) return std::nullopt;
-  return LoggerStamp{seconds * kSecond_ns + *fraction, "epoch seconds", true};
+  const std::optional<std::int64_t> ns = to_ns(seconds, *fraction);
+  if (!ns) return std::nullopt;
+  return LoggerStamp{*ns, "epoch seconds", true};
 }
 
 }  // namespace

@@ -4,8 +4,10 @@
 
 #include <fstream>
 
+#include "bounded_line.hpp"
 #include "dynpos/core/error.hpp"
 #include "dynpos/io/nmea_epoch_assembler.hpp"
+#include "dynpos/io/nmea_log.hpp"
 #include "text_util.hpp"
 
 namespace dynpos::io {
@@ -107,8 +109,22 @@ NmeaGnssLog read_nmea_gnss(const std::filesystem::path& file, const std::string&
   NmeaEpochAssembler epochs(name);
   std::string line;
   std::size_t line_no = 0;
-  while (std::getline(in, line)) {
+  bool ended = false;
+  for (;;) {
+    const detail::LineStatus status = detail::read_bounded_line(in, line, kMaxNmeaLineBytes, ended);
+    if (status == detail::LineStatus::kEnd || in.bad()) break;
     ++line_no;
+    if (status == detail::LineStatus::kTooLong) {
+      ++out.sentences;
+      ++out.skipped;
+      if (!ended && !detail::skip_rest_of_line(in, kMaxNmeaJunkBytes)) {
+        throw core::InputError(
+            {name, line_no, {}, {}},
+            fmt::format("no line end within {} MiB: not a text capture", kMaxNmeaJunkBytes >> 20),
+            "give a capture of NMEA sentences, one a line");
+      }
+      continue;
+    }
     const std::string_view text = detail::trim(line);
     if (text.empty()) continue;
     ++out.sentences;

@@ -11,6 +11,7 @@
 #include <variant>
 #include <vector>
 
+#include "bounded_line.hpp"
 #include "dynpos/core/error.hpp"
 #include "dynpos/io/nmea_sentence.hpp"
 #include "logger_stamp.hpp"
@@ -107,6 +108,10 @@ class CaptureReader {
       : file_(std::move(file)), options_(options) {}
 
   void add_line(std::string_view text, std::size_t line, bool cut);
+  /// A line longer than kMaxNmeaLineBytes (its first bytes are not read as a sentence).
+  void too_long(std::size_t line) {
+    skip("too long", line, fmt::format("more than {} bytes", kMaxNmeaLineBytes));
+  }
   NmeaLog finish();
 
  private:
@@ -425,12 +430,25 @@ NmeaLog read_nmea_log(const std::filesystem::path& file, const NmeaLogOptions& o
   CaptureReader reader(name, options);
   std::string line;
   std::size_t line_no = 0;
-  while (std::getline(in, line)) {
+  bool ended = false;
+  for (;;) {
+    const detail::LineStatus status = detail::read_bounded_line(in, line, kMaxNmeaLineBytes, ended);
+    if (status == detail::LineStatus::kEnd || in.bad()) break;
     ++line_no;
+    if (status == detail::LineStatus::kTooLong) {
+      reader.too_long(line_no);
+      if (!ended && !detail::skip_rest_of_line(in, kMaxNmeaJunkBytes)) {
+        throw core::InputError(
+            {name, line_no, {}, {}},
+            fmt::format("no line end within {} MiB: not a text capture", kMaxNmeaJunkBytes >> 20),
+            "give a capture of NMEA sentences, one a line");
+      }
+      continue;
+    }
     const std::string_view text = detail::trim(line);
     if (text.empty()) continue;
-    // eof here: the file ends inside this line, with no line end after it.
-    reader.add_line(text, line_no, in.eof());
+    // Not ended: the file ends inside this line, with no line end after it.
+    reader.add_line(text, line_no, !ended);
   }
   if (in.bad()) {
     throw core::InputError({name, line_no, {}, {}}, "reading the file failed",
@@ -443,7 +461,15 @@ bool looks_like_nmea(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   std::string line;
   std::size_t lines = 0, sentences = 0;
-  while (lines < 200 && std::getline(in, line)) {
+  bool ended = false;
+  while (lines < 200) {
+    const detail::LineStatus status = detail::read_bounded_line(in, line, kMaxNmeaLineBytes, ended);
+    if (status == detail::LineStatus::kEnd || in.bad()) break;
+    if (status == detail::LineStatus::kTooLong) {
+      ++lines;  // not a sentence
+      if (!ended && !detail::skip_rest_of_line(in, kMaxNmeaJunkBytes)) break;
+      continue;
+    }
     const std::string_view text = detail::trim(line);
     if (text.empty()) continue;
     ++lines;

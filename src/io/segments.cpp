@@ -1,5 +1,7 @@
 #include "dynpos/io/segments.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -7,6 +9,7 @@
 #include <optional>
 #include <string_view>
 
+#include "bounded_line.hpp"
 #include "dynpos/core/error.hpp"
 #include "text_util.hpp"
 
@@ -35,6 +38,9 @@ std::vector<std::string_view> fields_of(std::string_view line) {
   return fields;
 }
 
+// The longest line of a segment file: a name and two times.
+constexpr std::size_t kMaxLineBytes = std::size_t{64} << 10;
+
 }  // namespace
 
 std::vector<Segment> read_segments(const std::filesystem::path& path) {
@@ -49,7 +55,13 @@ std::vector<Segment> read_segments(const std::filesystem::path& path) {
   std::vector<Segment> segments;
   std::string text;
   bool first_row = true;
-  for (std::size_t line = 1; std::getline(in, text); ++line) {
+  bool ended = false;
+  for (std::size_t line = 1;; ++line) {
+    const detail::LineStatus status = detail::read_bounded_line(in, text, kMaxLineBytes, ended);
+    if (status == detail::LineStatus::kEnd) break;
+    if (status == detail::LineStatus::kTooLong) {
+      throw error(line, 1, fmt::format("a line longer than {} KiB", kMaxLineBytes >> 10), kFormat);
+    }
     const std::string_view row = detail::trim(text);
     if (row.empty() || row.front() == '#') continue;
     const std::vector<std::string_view> f = fields_of(row);

@@ -284,11 +284,12 @@ std::optional<std::int64_t> parse_decimal_ns(std::string_view text, int exponent
   }
   std::int64_t ns = 0;
   if (__builtin_mul_overflow(whole, unit_ns, &ns)) return std::nullopt;
-  std::int64_t scale = unit_ns;
+  std::int64_t scale = unit_ns, fraction_ns = 0;  // fraction_ns < unit_ns
   for (std::size_t i = 0; i < d.fraction.size() && scale > 1; ++i) {
     scale /= 10;
-    ns += scale * (d.fraction[i] - '0');  // < unit_ns: cannot overflow past whole + 1 unit
+    fraction_ns += scale * (d.fraction[i] - '0');
   }
+  if (__builtin_add_overflow(ns, fraction_ns, &ns)) return std::nullopt;
   return d.negative ? -ns : ns;
 }
 

@@ -124,7 +124,7 @@ ThrustAllocationResult ThrustAllocator::allocate(const ThrustAllocationInput& in
   // Then the eligible split nearest the held forces, in the weighted norm with each force over
   // its box bound.
   const auto [lo, hi] = bounds(input.surge_speed);
-  const auto distance = [&](const Vector5d& f) {
+  const auto distance = [&, &lo = lo, &hi = hi](const Vector5d& f) {
     double sum = 0.0;
     for (int i = 0; i < 5; ++i) {
       const double s = std::max({std::abs(lo[i]), std::abs(hi[i]), 1.0});

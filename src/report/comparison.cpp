@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <fstream>
+#include <map>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -60,49 +62,67 @@ std::string text_key(const json& item, const char* key) {
   return fmt::format("[{}={}]", key, k);
 }
 
+// Each item of A with the first unpaired item of B of the same key; O(n log n).
 std::vector<Pair> pair_by_text_key(const json& a, const json& b, const char* key) {
+  std::vector<std::string> b_keys;
+  std::map<std::string_view, std::deque<std::size_t>> unpaired;
+  for (std::size_t i = 0; i < b.size(); ++i) b_keys.push_back(text_key(b[i], key));
+  for (std::size_t i = 0; i < b.size(); ++i) unpaired[b_keys[i]].push_back(i);
   std::vector<Pair> pairs;
   std::vector<bool> used(b.size(), false);
   for (const json& ea : a) {
     Pair p{&ea, nullptr, text_key(ea, key)};
-    for (std::size_t i = 0; i < b.size(); ++i) {
-      if (!used[i] && text_key(b[i], key) == p.label) {
-        p.b = &b[i];
-        used[i] = true;
-        break;
-      }
+    if (const auto it = unpaired.find(p.label); it != unpaired.end() && !it->second.empty()) {
+      p.b = &b[it->second.front()];
+      used[it->second.front()] = true;
+      it->second.pop_front();
     }
     pairs.push_back(p);
   }
   for (std::size_t i = 0; i < b.size(); ++i) {
-    if (!used[i]) pairs.push_back({nullptr, &b[i], text_key(b[i], key)});
+    if (!used[i]) pairs.push_back({nullptr, &b[i], b_keys[i]});
   }
   return pairs;
 }
 
-// Step tests: each item of A with the nearest unpaired item of B within the tolerance.
+// Step tests: each item of A with the nearest unpaired item of B within the tolerance; of
+// equally near ones the first in B, so that a document compared with itself pairs each item
+// with itself, repeated times included. O(n log n): B's unpaired items by time.
 std::vector<Pair> pair_by_time(const json& a, const json& b, const char* key, double tol) {
   auto time_of = [key](const json& e) {
     const json& v = e.at(key);
     return v.is_number() ? v.get<double>() : std::nan("");
   };
+  std::map<double, std::deque<std::size_t>> unpaired;  // time → indices in B, in order
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    if (const double t = time_of(b[i]); !std::isnan(t)) unpaired[t].push_back(i);
+  }
   std::vector<Pair> pairs;
   std::vector<bool> used(b.size(), false);
   for (const json& ea : a) {
     const double ta = time_of(ea);
     Pair p{&ea, nullptr, fmt::format("[{}={}]", key, key_number(ta))};
-    std::optional<std::size_t> best;
+    auto best = unpaired.end();
     double best_dt = tol;
-    for (std::size_t i = 0; i < b.size(); ++i) {
-      const double dt = std::abs(time_of(b[i]) - ta);
-      if (!used[i] && dt <= best_dt) {
-        best = i;
+    const auto consider = [&](auto it) {
+      const double dt = std::abs(it->first - ta);
+      if (!(dt <= best_dt)) return;
+      if (best == unpaired.end() || dt < best_dt || it->second.front() < best->second.front()) {
+        best = it;
         best_dt = dt;
       }
+    };
+    if (!std::isnan(ta)) {
+      const auto right = unpaired.lower_bound(ta);
+      if (right != unpaired.end()) consider(right);
+      if (right != unpaired.begin()) consider(std::prev(right));
     }
-    if (best) {
-      p.b = &b[*best];
-      used[*best] = true;
+    if (best != unpaired.end()) {
+      const std::size_t i = best->second.front();
+      p.b = &b[i];
+      used[i] = true;
+      best->second.pop_front();
+      if (best->second.empty()) unpaired.erase(best);
     }
     pairs.push_back(p);
   }

@@ -13,3 +13,19 @@ dynpos_cli_test(seed_largest_taken
 dynpos_cli_test(json_empty_name_refused
   COMMAND bash ${EXPECT_EXIT} 2 "--json: an empty name writes nothing"
           bash -c "exec \"$1\" hybrid first-order --json ''" _ ${DYNPOS_EXE})
+# --out - used to make a folder named "-": standard output cannot hold a folder of files.
+dynpos_cli_test(out_dash_refused
+  COMMAND bash ${EXPECT_EXIT} 2 "\\(--out\\): '-' \\(standard output\\) cannot hold a folder of files"
+          ${DYNPOS_EXE} simulate surge-steps-forward --duration 10 --out -)
+dynpos_cli_test(work_dir_dash_refused
+  COMMAND bash ${EXPECT_EXIT} 2 "\\(--work-dir\\): '-' \\(standard output\\) cannot hold a folder"
+          ${DYNPOS_EXE} montecarlo surge-steps-forward --seeds 1..2 --work-dir -)
+# A role given twice with --col used to keep the last one silently.
+dynpos_cli_test(col_role_twice_refused
+  COMMAND bash ${EXPECT_EXIT} 2 "role 'input' is given twice: 'input=a' and 'input=b'"
+          ${DYNPOS_EXE} identify step ${PROJECT_SOURCE_DIR}/tests/cli/short_steps.csv
+          --col input=a --col input=b --col output=y)
+# A --duration out of the scenario's range used to be blamed on the scenario file's duration_s.
+dynpos_cli_test(duration_out_of_range_names_the_option
+  COMMAND bash ${EXPECT_EXIT} 2 "surge-steps-forward.toml \\(--duration\\): value 1e\\+300 is out of range"
+          ${DYNPOS_EXE} simulate surge-steps-forward --duration 1e300 --out ${CLI_OUT}/duration)

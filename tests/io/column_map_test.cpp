@@ -147,6 +147,25 @@ TEST(ColumnMap, ErrorsOnTheCommandLineNameTheOption) {
                             "force.*kN"));
 }
 
+// A role given twice on the command line is an error, not the last one kept; the times of
+// other files (time=COLUMN@FILE) are one role per file.
+TEST(ColumnMap, ARoleGivenTwiceOnTheCommandLineIsAnError) {
+  ColumnMap map;
+  EXPECT_THAT(input_error_message([&] {
+                apply_overrides(map, {"input=A", " input = B"}, {});
+              }),
+              ContainsRegex("\\(--col  input = B\\): role 'input' is given twice: 'input=A' "
+                            "and ' input = B'; give each role once with --col"));
+  EXPECT_THAT(input_error_message([&] {
+                apply_overrides(map, {}, {"u=kn", "u=m/s"});
+              }),
+              ContainsRegex("role 'u' is given twice"));
+  EXPECT_NO_THROW(apply_overrides(
+      map,
+      {"time=t", "time=stamp@nav.csv", "heading=HDG@nav.csv", "time=s@gyro.csv", "r=ROT@gyro.csv"},
+      {"heading=deg"}));
+}
+
 TEST(ColumnMap, GenericRolesAcceptAnyKnownUnit) {
   ColumnMap map;
   EXPECT_NO_THROW(apply_unit_override(map, "input=%"));

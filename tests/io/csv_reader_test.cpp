@@ -439,5 +439,49 @@ TEST(CsvReader, StreamsALargeFileLoadingOnlyThreeColumns) {
   EXPECT_EQ(part.values("north").front(), (10'000 % 1000) * 0.5 + 3);
 }
 
+// A line beyond kMaxCsvRecordBytes (a file without line ends, a binary file) is an error naming
+// it, whether it is the header, a row the block parser meets, or a record that a quote never
+// closed joins; the reader holds no more than the limit of it.
+TEST(CsvReader, ALineBeyondTheLimitIsAnErrorNamingIt) {
+  TempDir dir;
+  const std::string long_cell(kMaxCsvRecordBytes + 1, '7');
+  std::string rows = "time,x\n";
+  for (int i = 0; i < 500; ++i) rows += fmt::format("{},1\n", i);
+  const auto header = dir.write("header.csv", "time," + long_cell + "\n0,1\n");
+  const auto row = dir.write("row.csv", rows + "500," + long_cell + "\n501,1\n");
+  const auto quote = dir.write("quote.csv", rows + "500,\"" + std::string(100, '\n') +
+                                                std::string(kMaxCsvRecordBytes, 'q') + "\n");
+  const ColumnMap map = map_of({{"time", "time"}, {"input", "x"}});
+  for (const unsigned jobs : {1u, 2u}) {
+    CsvReadOptions options;
+    options.jobs = jobs;
+    EXPECT_THAT(input_error_message([&] { read_csv(header, map, options); }),
+                ContainsRegex("header.csv:1: a line longer than 8 MiB"));
+    EXPECT_THAT(input_error_message([&] { read_csv(row, map, options); }),
+                ContainsRegex("row.csv:502: a line longer than 8 MiB.*binary file"));
+    EXPECT_THAT(
+        input_error_message([&] { read_csv(quote, map, options); }),
+        ContainsRegex("quote.csv:502: a record longer than 8 MiB.*quote opened in this row"));
+  }
+}
+
+// A scale that carries a number beyond the range of a double is an error at the cell (a fuzz
+// and review finding: scale = 1e308 made the step detector blame its own options).
+TEST(CsvReader, AScaleThatOverflowsIsAnErrorAtTheCell) {
+  TempDir dir;
+  std::string rows = "time,x\n";
+  for (int i = 0; i < 300; ++i) rows += fmt::format("{},{}\n", i, i < 250 ? "0" : "2");
+  const auto path = dir.write("big.csv", rows);
+  ColumnMap map = map_of({{"time", "time"}, {"input", "x"}});
+  map.set_scale("input", 1e308);
+  for (const unsigned jobs : {1u, 2u}) {
+    CsvReadOptions options;
+    options.jobs = jobs;
+    EXPECT_THAT(input_error_message([&] { read_csv(path, map, options); }),
+                ContainsRegex("big.csv:252:2 \\(x\\): '2' times the column's scale 1e\\+308 in "
+                              "SI is beyond the range of a double"));
+  }
+}
+
 }  // namespace
 }  // namespace dynpos::io

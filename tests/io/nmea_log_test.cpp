@@ -154,6 +154,45 @@ TEST(NmeaLog, EpochSecondsStampsGllThsAndPrefix) {
   EXPECT_NEAR(read.log.values("gnss2.heading")[1], 123.4 * kDeg, kExact);
 }
 
+// Fuzz findings: a logger stamp of year 0024 and one of twelve epoch digits overflowed the int64
+// nanoseconds. They are bad stamps: their lines are skipped and counted, the others read.
+TEST(NmeaLog, StampsOutsideTheNanosecondRangeAreBadStamps) {
+  TempDir dir;
+  const auto file =
+      dir.write("old.nmea", lines({"2024-05-01 10:00:00.000 " + framed("HEHDT,10.0,T"),
+                                   "0024-05-01 10:00:00.500 " + framed("HEHDT,10.5,T"),
+                                   "2024-05-01 10:00:01.000 " + framed("HEHDT,11.0,T"),
+                                   "999999999999.5 " + framed("HEHDT,11.5,T")}));
+  const NmeaLog read = read_nmea_log(file);
+  EXPECT_EQ(*read.origin, "2024-05-01T10:00:00.000Z");
+  EXPECT_THAT(read.log.values("heading"), ElementsAre(10.0 * kDeg, 11.0 * kDeg));
+  EXPECT_EQ(read.report.skipped.count("bad time stamp"), 2u);
+}
+
+// Binary data of another protocol on the same serial port: a line beyond kMaxNmeaLineBytes is
+// skipped and counted; some 16 MiB without a line end is not a text capture (an error naming the
+// line), so /dev/zero or a binary file costs bounded memory.
+TEST(NmeaLog, OverlongLinesAreSkippedAndEndlessOnesAreAnError) {
+  TempDir dir;
+  const std::string binary(kMaxNmeaLineBytes + 10, '\x01');
+  const auto mixed = dir.write(
+      "mixed.nmea", lines({framed("GPZDA,100000,01,05,2024,,"), framed("HEHDT,10.0,T"), binary,
+                           framed("GPZDA,100001,01,05,2024,,"), framed("HEHDT,11.0,T")}));
+  const NmeaLog read = read_nmea_log(mixed);
+  EXPECT_THAT(read.log.values("heading"), ElementsAre(10.0 * kDeg, 11.0 * kDeg));
+  EXPECT_EQ(read.report.skipped.count("too long"), 1u);
+  NmeaLogOptions strict;
+  strict.strict = true;
+  EXPECT_THAT(input_error_message([&] { read_nmea_log(mixed, strict); }),
+              HasSubstr("mixed.nmea:3: line not usable (too long)"));
+  const auto endless =
+      dir.write("endless.nmea",
+                framed("HEHDT,10.0,T") + "\n" + std::string(kMaxNmeaJunkBytes + (1 << 20), '\0'));
+  EXPECT_THAT(input_error_message([&] { read_nmea_log(endless); }),
+              HasSubstr("endless.nmea:2: no line end within 16 MiB: not a text capture"));
+  EXPECT_FALSE(looks_like_nmea(endless));
+}
+
 TEST(NmeaLog, IsoStampsWithZoneAndWantedFilter) {
   TempDir dir;
   const auto file =

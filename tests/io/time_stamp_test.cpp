@@ -135,6 +135,10 @@ TEST(TimeStamp, DecimalEpochIsExactInEveryUnit) {
   EXPECT_EQ(parse_decimal_ns("1714557600250000", 6), expected);
   EXPECT_EQ(parse_decimal_ns("1714557600250000000", 9), expected);
   EXPECT_EQ(parse_decimal_ns("1714557600250.5", 3), expected + 500'000);
+  // A fuzz finding: whole nanoseconds just below the int64 limit plus a fraction overflowed.
+  EXPECT_EQ(parse_decimal_ns("9223372036854775.807", 6), INT64_MAX);
+  EXPECT_EQ(parse_decimal_ns("-9223372036854775.84", 6), std::nullopt);
+  EXPECT_EQ(parse_decimal_ns("9223372036.854775808", 0), std::nullopt);
   EXPECT_EQ(parse_decimal_ns("+1714557600.25", 0), expected);
   // A double near 1.7e18 has a spacing of 256 ns: the integer path keeps every digit.
   EXPECT_EQ(parse_decimal_ns("1714557600123456789", 9), kMay1At10Z + 123'456'789);

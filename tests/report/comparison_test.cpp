@@ -109,6 +109,28 @@ TEST(Comparison, StepsPairByNearestStepTime) {
   EXPECT_FALSE(find_row(r, "steps[t_step=55].T")->a.has_value());
 }
 
+// A fuzz finding: steps at repeated times (and legs of repeated names) paired crosswise, so a
+// result compared with itself showed differences. Of equally near items the first in B pairs.
+TEST(Comparison, ADocumentComparedWithItselfDiffersNowhere) {
+  const json doc = json::parse(R"({"steps":[{"t_step":20,"T":2},{"t_step":820,"T":8},
+      {"t_step":420,"T":4},{"t_step":820,"T":2},{"t_step":817,"T":3},{"t_step":823,"T":5}],
+      "legs":[{"name":"fwd","x":1},{"name":"fwd","x":2},{"name":"aft","x":3}]})");
+  const auto r = compare_results(doc, doc);
+  EXPECT_EQ(r.only_in_a + r.only_in_b, 0u);
+  ASSERT_EQ(r.rows.size(), 15u);  // t_step and T of six steps, x of three legs
+  for (const ComparisonRow& row : r.rows) EXPECT_EQ(row.difference(), 0.0) << row.figure;
+}
+
+TEST(Comparison, EquallyNearStepsPairTheFirstInB) {
+  // 10 s lies 2 s from both 8 s and 12 s: the first of them in B (12 s) pairs with it.
+  const auto r =
+      compare_results(json::parse(R"({"steps":[{"t_step":10,"T":1}]})"),
+                      json::parse(R"({"steps":[{"t_step":12,"T":2},{"t_step":8,"T":3}]})"));
+  EXPECT_EQ(find_row(r, "steps[t_step=10].T")->b.value(), 2.0);
+  EXPECT_EQ(find_row(r, "steps[t_step=8].T")->b.value(), 3.0);
+  EXPECT_EQ(r.only_in_b, 2u);  // the 8 s step's t_step and T
+}
+
 TEST(Comparison, PlainArraysPairByPosition) {
   const auto r = compare_results(json::parse(R"({"x":{"std":[1.0,2.0]}})"),
                                  json::parse(R"({"x":{"std":[1.5]}})"));

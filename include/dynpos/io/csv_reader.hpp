@@ -20,6 +20,7 @@
 /// - every row has as many fields as the header.
 /// Every error is a core::InputError with file, line, column number and header name.
 
+#include <cstddef>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -31,6 +32,11 @@
 #include "dynpos/io/time_stamp.hpp"
 
 namespace dynpos::io {
+
+/// The longest row of a CSV log [bytes]: a line, or the lines a quoted field joins (8 MiB, e.g.
+/// 200,000 cells of 40 characters). A longer one is an error naming its line, so a file without
+/// line ends costs a bounded memory.
+inline constexpr std::size_t kMaxCsvRecordBytes = std::size_t{8} << 20;
 
 /// Options for read_csv() and read_csv_all().
 struct CsvReadOptions {

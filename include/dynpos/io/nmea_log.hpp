@@ -26,6 +26,13 @@
 
 namespace dynpos::io {
 
+/// The longest line of a capture that is read as a sentence [bytes]; a longer one (binary data
+/// of another protocol on the same port) is skipped and counted as "too long". An NMEA sentence
+/// has at most 82 characters; a logger stamp and padding leave the rest.
+inline constexpr std::size_t kMaxNmeaLineBytes = std::size_t{64} << 10;
+/// The most bytes without a line end before a capture is not text: an error naming the line.
+inline constexpr std::size_t kMaxNmeaJunkBytes = std::size_t{16} << 20;
+
 /// Options of read_nmea_log().
 struct NmeaLogOptions {
   /// Channel names become PREFIX.ROLE when not empty (e.g. "gnss2" → gnss2.lat, gnss2.lon,
