@@ -1,8 +1,31 @@
 #include "log_input.hpp"
 
+#include <memory>
+
+#include "dynpos/io/spooled_input.hpp"
+
 namespace dynpos::cli {
 
 namespace {
+
+// LOG: a file, or "-" for standard input. An input that can be read only once (standard
+// input, a pipe, a FIFO) is copied once to a temporary file, which the readers open as often
+// as they need; the copy lives as long as the command line (the App) and is removed with it.
+void add_log_argument(CLI::App& sub, analysis::LogSource& source) {
+  auto copy = std::make_shared<std::unique_ptr<io::SpooledInput>>();
+  sub.add_option("log", source.log,
+                 "Log: CSV, or an NMEA 0183 capture (detected by content); - reads standard "
+                 "input (a pipe, e.g. from zcat)")
+      ->required()
+      ->check([](const std::string& value) {
+        return value == "-" ? std::string() : CLI::ExistingFile(value);
+      })
+      ->each([&source, copy](const std::string& value) {
+        if (!io::needs_spool(value)) return;
+        *copy = std::make_unique<io::SpooledInput>(value);
+        source.read_from = (*copy)->path();
+      });
+}
 
 // --time-format, --date and --time-order, filling `source`.
 void add_time_options(CLI::App& sub, analysis::LogSource& source) {
@@ -18,9 +41,7 @@ void add_time_options(CLI::App& sub, analysis::LogSource& source) {
 }  // namespace
 
 void add_log_options(CLI::App& sub, analysis::LogSource& source, const std::string& roles_help) {
-  sub.add_option("log", source.log, "Log: CSV, or an NMEA 0183 capture (detected by content)")
-      ->required()
-      ->check(CLI::ExistingFile);
+  add_log_argument(sub, source);
   sub.add_option("--map", source.map_file, "Column map (TOML): roles → columns, units, scales")
       ->check(CLI::ExistingFile);
   sub.add_option("--col", source.columns,

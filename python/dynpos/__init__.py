@@ -25,7 +25,7 @@ __all__ = [
     "InputError", "Log", "Result", "Simulation", "read_log", "identify_step",
     "identify_thrust_map", "identify_agility", "identify_four_corner",
     "identify_station_keeping", "leverarm_gnss", "leverarm_mru", "hybrid_case", "hybrid_vessel",
-    "compare", "capability", "simulate", "scenarios",
+    "compare", "capability", "montecarlo", "simulate", "scenarios",
 ]
 
 
@@ -335,6 +335,27 @@ def capability(*, json=None, out=None, **options) -> Result:
     (folder for rose.svg). Table: ``points``."""
     q = _options(_dynpos.CapabilityRequest, options)
     return Result(_json.loads(_dynpos.run_capability(q, _path(json), _path(out))), "points")
+
+
+def montecarlo(scenario: str, seeds: str | tuple[int, int] = (1, 10), *, json=None,
+               **options) -> Result:
+    """A scenario of the virtual sea trial run for many seeds, each seed's logger files
+    analysed as a user's, and the spread of every identified quantity against truth: how far a
+    sea-trial result can be trusted. ``seeds``: "A..B" or (A, B), inclusive. Options as
+    ``dynpos montecarlo``: ``jobs`` (seeds at once, 0 = every core; the result does not depend
+    on it), ``measure`` ("auto", "steps", "station-keeping" or "lever-arms"), ``duration`` [s],
+    ``vessel`` (file), ``shard`` ("i/N": this part of the seeds, for ``dynpos montecarlo
+    merge``), ``work_dir`` (where each seed's files go; default temporary). Table: ``summary``
+    (quantity: n, mean, std, min, max, truth, bias, rms_error); ``samples`` per seed."""
+    q = _dynpos.MonteCarloRequest()
+    q.scenario = os.fspath(scenario)
+    q.set_seeds(seeds if isinstance(seeds, str) else f"{seeds[0]}..{seeds[1]}")
+    shard = options.pop("shard", None)
+    if shard is not None:
+        q.set_shard(shard)
+    for key, value in options.items():
+        _set(q, key, value)
+    return Result(_json.loads(_dynpos.run_montecarlo(q, _path(json))), "summary")
 
 
 class Simulation:

@@ -144,6 +144,11 @@ def capability(*, json: _Path | None = None, out: _Path | None = None,
                direction_step: float = ..., wind_tolerance: float | None = ...,
                duration: float = ..., settle: float = ..., footprint: float = ...,
                footprint_deg: float = ..., seed: int = ..., jobs: int = ...) -> Result: ...
+def montecarlo(scenario: str, seeds: str | tuple[int, int] = ..., *, json: _Path | None = None,
+               jobs: int = ..., measure: Literal["auto", "steps", "station-keeping",
+                                                 "lever-arms"] = ...,
+               duration: float | None = ..., vessel: _Path = ..., shard: str = ...,
+               work_dir: _Path = ...) -> Result: ...
 def simulate(scenario: str, seed: int = 1, out: _Path | None = None,
              duration: float | None = None, vessel: _Path | None = None,
              log_rate: float | None = None, jobs: int = 0) -> Simulation | dict[str, Simulation]: ...

@@ -15,6 +15,7 @@
 #include "dynpos/analysis/compare.hpp"
 #include "dynpos/analysis/hybrid_case.hpp"
 #include "dynpos/analysis/hybrid_vessel.hpp"
+#include "dynpos/analysis/montecarlo.hpp"
 #include "dynpos/analysis/options.hpp"
 #include "dynpos/analysis/simulate.hpp"
 
@@ -143,6 +144,29 @@ std::vector<std::pair<std::string, std::filesystem::path>> simulate(const Simula
   return runs;
 }
 
+void bind_montecarlo(py::module_& m) {
+  using Q = MonteCarloRequest;
+  py::class_<Q>(m, "MonteCarloRequest")
+      .def(py::init<>())
+      .def_readwrite("scenario", &Q::scenario)
+      .def("set_seeds", &Q::set_seeds, py::arg("text"))
+      .def("set_shard", &Q::set_shard, py::arg("text"))
+      .def_readwrite("jobs", &Q::jobs)
+      .def_readwrite("vessel", &Q::vessel_file)
+      .def_readwrite("duration", &Q::duration_s)
+      .def_readwrite("work_dir", &Q::work_dir)
+      .def_readwrite("measure", &Q::measure);
+  m.def(
+      "run_montecarlo",
+      [](const Q& q, const std::string& json) {
+        q.validate();
+        check_output_file("json", json);
+        return run_to_json(q, json, run_montecarlo,
+                           [](const MonteCarloReport& r) { return to_json(r); });
+      },
+      py::arg("request"), py::arg("json") = "");
+}
+
 void bind_simulate(py::module_& m) {
   using Q = SimulateRequest;
   py::class_<Q>(m, "SimulateRequest")
@@ -176,6 +200,7 @@ void bind_control(py::module_& m) {
   bind_compare(m);
   bind_capability(m);
   bind_simulate(m);
+  bind_montecarlo(m);
 }
 
 }  // namespace dynpos::python

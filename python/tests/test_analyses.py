@@ -172,3 +172,17 @@ def test_capability(tmp_path):
     frame = r.to_frame()
     assert list(frame["direction_deg"]) == [30.0 * i for i in range(12)]
     assert all(w <= i.max_wind_mps for w, i in zip(frame["max_wind_mps"], r.intact))
+
+
+def test_montecarlo(tmp_path):
+    r = dynpos.montecarlo("turning-circle", (1, 2), jobs=2, json=tmp_path / "py.json")
+    same_as_cli(tmp_path, r, tmp_path / "py.json", "montecarlo", "turning-circle", "--seeds",
+                "1..2", "--jobs", "2")
+    doc = r.to_dict()
+    assert [s["seed"] for s in doc["samples"]] == [1, 2]
+    assert doc["summary"] and all(stats["n"] == 2 for stats in doc["summary"].values())
+    # A shard of the range, as for `dynpos montecarlo merge`.
+    second = dynpos.montecarlo("turning-circle", "1..2", shard="2/2", jobs=1)
+    assert second.to_dict()["samples"] == doc["samples"][1:]
+    with pytest.raises(dynpos.InputError, match="--seeds"):
+        dynpos.montecarlo("turning-circle", "5..4")

@@ -8,6 +8,7 @@
 #include "dynpos/analysis/options.hpp"
 #include "dynpos/core/error.hpp"
 #include "dynpos/ident/local_position.hpp"
+#include "dynpos/io/csv_reader.hpp"
 
 namespace dynpos::analysis {
 namespace {
@@ -115,9 +116,33 @@ ident::FourCornerOptions FourCornerRequest::options() const {
 
 void FourCornerRequest::validate() const { options(); }
 
+// The log, of which only the rows in --from/--to are read when they are given (memory and time
+// follow the window, not the file); a window without rows is an error of --from/--to.
+LoadedLog load_window(const FourCornerRequest& request) {
+  LogSource source = request.source;
+  source.window_from_s = request.t_from_s;
+  source.window_to_s = request.t_to_s;
+  const auto outside = [&](double log_from, double log_to) {
+    return option_error_in_file(
+        request.source.log, "from/to",
+        fmt::format("the window {:g} … {:g} s is empty or outside the log ({:g} … {:g} s)",
+                    request.t_from_s.value_or(log_from), request.t_to_s.value_or(log_to), log_from,
+                    log_to),
+        "choose --from < --to inside the log");
+  };
+  if (request.t_from_s && request.t_to_s && !(*request.t_to_s > *request.t_from_s)) {
+    throw outside(*request.t_from_s, *request.t_to_s);
+  }
+  try {
+    return source.load(wanted_role);
+  } catch (const io::EmptyWindowError& e) {
+    throw outside(e.first_row_s, e.last_row_read_s);
+  }
+}
+
 FourCornerReport run_four_corner(const FourCornerRequest& request) {
   const ident::FourCornerOptions options = request.options();
-  LoadedLog loaded = request.source.load(wanted_role);
+  LoadedLog loaded = load_window(request);
   const core::Log& log = loaded.log;
   FourCornerReport report;
   report.log = request.source.log;

@@ -58,13 +58,22 @@ double clock_offset_s(std::optional<std::int64_t> main_origin_ns, io::FileLog& p
   return user_offset_s;
 }
 
+// How a file other than the main log is read: detected by content, whole (a window is the
+// main log's), strict and with threads as the main log.
+io::LogFileRead other_file(const io::LogFileRead& how) {
+  io::LogFileRead other;
+  other.strict = how.strict;
+  other.jobs = how.jobs;
+  return other;
+}
+
 }  // namespace
 
 LoadedLog read_log_files(const std::filesystem::path& main_log, const io::ColumnMap& map,
                          const core::ResampleOptions& options, const io::LogFileRead& how) {
   map.validate();
   io::FileLog main = io::read_log_file(main_log, map.for_file(""), how);
-  LoadedLog out{std::move(main.log), {}};
+  LoadedLog out{std::move(main.log), {}, main.first_row_s, main.last_row_read_s};
   const std::string main_path = main.report.path;
   out.input = describe_input(out.log, main_path, std::move(main.report));
   out.input.origin = main.origin;
@@ -78,8 +87,7 @@ void add_log_files(LoadedLog& out, std::optional<std::int64_t> main_origin_ns,
                    const io::LogFileRead& how) {
   for (const std::string& file : map.other_files()) {
     const io::LogFileOptions file_options = map.file_options(file);
-    io::FileLog part =
-        io::read_log_file(file, map.for_file(file), {.strict = how.strict, .jobs = how.jobs});
+    io::FileLog part = io::read_log_file(file, map.for_file(file), other_file(how));
     const double offset_s = clock_offset_s(main_origin_ns, part, file_options.clock_offset_s);
     part.report.clock_offset_s = offset_s;
     check_overlap(out.log, part, offset_s);

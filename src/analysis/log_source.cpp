@@ -24,13 +24,36 @@ io::ColumnMap LogSource::base_map() const {
   return map;
 }
 
-io::ColumnMap LogSource::column_map(const RoleFilter& wanted) const {
-  io::ColumnMap map = base_map();
+namespace {
+
+// Runs `read`, naming `source.log` (what the user gave) wherever the reader named the copy it
+// read from (source.read_from): in its errors.
+template <class Read>
+auto naming_the_log(const LogSource& source, Read&& read) -> decltype(read()) {
+  if (source.read_from.empty()) return read();
+  const auto renamed = [&](core::InputLocation where) {
+    if (where.file == source.read_from.string()) where.file = source.log.string();
+    return where;
+  };
+  try {
+    return read();
+  } catch (const io::EmptyWindowError& e) {
+    throw io::EmptyWindowError(renamed(e.where()), e.problem(), e.hint(), e.first_row_s,
+                               e.last_row_read_s);
+  } catch (const core::InputError& e) {
+    if (!e.option().empty()) throw;
+    throw core::InputError(renamed(e.where()), e.problem(), e.hint());
+  }
+}
+
+// LogSource::column_map without the renaming of errors.
+io::ColumnMap column_map_of(const LogSource& source, const RoleFilter& wanted) {
+  io::ColumnMap map = source.base_map();
   std::vector<std::string> mapped_columns;
   for (const auto& [role, entry] : map.roles()) {
     if (entry.file.empty()) mapped_columns.push_back(entry.column);
   }
-  for (const std::string& cell : io::read_csv_header(log)) {
+  for (const std::string& cell : io::read_csv_header(source.file())) {
     const std::string name = io::split_header_cell(cell).name;
     if (map.find(name) != nullptr || !wanted(name) || !io::find_role(name)) continue;
     // A column the user mapped to another role is not taken a second time.
@@ -40,6 +63,12 @@ io::ColumnMap LogSource::column_map(const RoleFilter& wanted) const {
     map.set_column(name, name);
   }
   return map;
+}
+
+}  // namespace
+
+io::ColumnMap LogSource::column_map(const RoleFilter& wanted) const {
+  return naming_the_log(*this, [&] { return column_map_of(*this, wanted); });
 }
 
 namespace {
@@ -111,16 +140,38 @@ LoadedLog load_memory(const LogSource& source) {
   file.format = "memory";
   file.time_format = "seconds";
   out.input = describe_input(out.log, name, std::move(file));
+  if (!in.time().empty()) {
+    out.log_start_s = in.time().front();
+    out.log_end_s = in.time().back();
+  }
   return out;
+}
+
+// A log file (CSV or NMEA), with its other files, read from source.file().
+LoadedLog load_file(const LogSource& source, const RoleFilter& wanted) {
+  if (reads_nmea(source)) return load_nmea(source, wanted);
+  return read_log_files(source.file(), column_map_of(source, wanted), source.resample_options(),
+                        {.format = io::LogFileRead::Format::kCsv,
+                         .strict = source.strict,
+                         .jobs = source.jobs,
+                         .t_from_s = source.window_from_s,
+                         .t_to_s = source.window_to_s});
 }
 
 }  // namespace
 
 LoadedLog LogSource::load(const RoleFilter& wanted) const {
   if (memory) return load_memory(*this);
-  if (reads_nmea(*this)) return load_nmea(*this, wanted);
-  return read_log_files(log, column_map(wanted), resample_options(),
-                        {.format = io::LogFileRead::Format::kCsv, .strict = strict, .jobs = jobs});
+  LoadedLog out = naming_the_log(*this, [&] { return load_file(*this, wanted); });
+  if (!read_from.empty()) {  // the report names the log as the user gave it
+    for (io::FileReport& f : out.input.files) {
+      if (f.path == read_from.string()) f.path = log.string();
+    }
+    for (io::RoleOrigin& r : out.input.roles) {
+      if (r.file == read_from.string()) r.file = log.string();
+    }
+  }
+  return out;
 }
 
 core::ResampleOptions LogSource::resample_options() const {

@@ -14,7 +14,7 @@ bool reads_nmea(const LogSource& source) {
         "format", "unknown log format '" + source.format + "'",
         "use auto (detected from the content), csv or nmea (NMEA 0183 capture)");
   }
-  return io::looks_like_nmea(source.log);
+  return io::looks_like_nmea(source.file());
 }
 
 LoadedLog load_nmea(const LogSource& source, const RoleFilter& wanted) {
@@ -43,16 +43,21 @@ LoadedLog load_nmea(const LogSource& source, const RoleFilter& wanted) {
     const io::RoleColumn* other = map.find(channel);
     return wanted(channel) && (other == nullptr || other->file.empty());
   };
-  io::NmeaLog read = io::read_nmea_log(source.log, options);
+  io::NmeaLog read = io::read_nmea_log(source.file(), options);
   const std::size_t sentences = read.report.records;
   io::InputReport input = describe_input(read.log, source.log.string(), std::move(read.report));
   input.files.front().records = sentences;  // sentences used, not rows of the time axis
   input.origin = read.origin;
   if (read.origin) input.origin_zone = "UTC";
   LoadedLog out{std::move(read.log), std::move(input)};
+  if (!out.log.time().empty()) {
+    out.log_start_s = out.log.time().front();
+    out.log_end_s = out.log.time().back();
+  }
   if (more_files) {
-    add_log_files(out, read.origin_ns, map, source.resample_options(),
-                  {.strict = source.strict, .jobs = source.jobs});
+    add_log_files(
+        out, read.origin_ns, map, source.resample_options(),
+        io::LogFileRead{io::LogFileRead::Format::kAuto, source.strict, source.jobs, {}, {}});
   }
   return out;
 }

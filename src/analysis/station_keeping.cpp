@@ -9,6 +9,7 @@
 #include "dynpos/analysis/options.hpp"
 #include "dynpos/core/error.hpp"
 #include "dynpos/ident/local_position.hpp"
+#include "dynpos/io/csv_reader.hpp"
 
 namespace dynpos::analysis {
 namespace {
@@ -36,18 +37,35 @@ ident::StationKeepingInput make_input(const core::Log& log) {
   return in;
 }
 
+// The log, read within source's window; a window without rows is an error of --from/--to.
+LoadedLog load_window(const LogSource& source, const StationKeepingRequest& request) {
+  try {
+    return source.load(wanted_role);
+  } catch (const io::EmptyWindowError& e) {
+    throw option_error_in_file(
+        request.source.log, "from/to",
+        fmt::format("the window {:g} … {:g} s is not inside the log ({:g} … {:g} s)",
+                    *source.window_from_s, *source.window_to_s, e.first_row_s, e.last_row_read_s),
+        "choose --from/--to inside the log, or a shorter --duration");
+  }
+}
+
+// The window --from/--to give; a missing end is duration_s from the other.
+ident::TimeWindow given_window(const StationKeepingRequest& request) {
+  const std::optional<double>& from = request.t_from_s;
+  const std::optional<double>& to = request.t_to_s;
+  const double duration = request.duration_s;
+  return {"window", from.value_or(to ? *to - duration : 0.0),
+          to.value_or(from ? *from + duration : 0.0)};
+}
+
 // The given window (a missing end is duration_s from the other), else one per setpoint hold,
 // else the last duration_s of the log.
 std::vector<ident::TimeWindow> windows_of(const StationKeepingRequest& request,
                                           const core::Log& log,
                                           const ident::StationKeepingInput& in) {
-  const std::optional<double>& from = request.t_from_s;
-  const std::optional<double>& to = request.t_to_s;
+  if (request.t_from_s || request.t_to_s) return {given_window(request)};
   const double duration = request.duration_s;
-  if (from || to) {
-    return {{"window", from.value_or(to ? *to - duration : 0.0),
-             to.value_or(from ? *from + duration : 0.0)}};
-  }
   if (request.per_setpoint) {
     if (!log.has("setpoint.heading") && !log.has("setpoint.north")) {
       throw core::InputError({request.source.log.string(), {}, {}, "setpoint.heading"},
@@ -79,7 +97,21 @@ void StationKeepingRequest::validate() const {
 
 StationKeepingReport run_station_keeping(const StationKeepingRequest& request) {
   request.validate();
-  LoadedLog loaded = request.source.load(wanted_role);
+  // A window given with --from/--to is all that is read of the main log (M2 of the review:
+  // memory and time follow the window, not the file).
+  LogSource source = request.source;
+  if (request.t_from_s || request.t_to_s) {
+    const ident::TimeWindow w = given_window(request);
+    if (!(w.t_to_s > w.t_from_s)) {
+      throw option_error_in_file(
+          request.source.log, "from/to",
+          fmt::format("the window {:g} … {:g} s is empty", w.t_from_s, w.t_to_s),
+          "choose --from < --to");
+    }
+    source.window_from_s = w.t_from_s;
+    source.window_to_s = w.t_to_s;
+  }
+  LoadedLog loaded = load_window(source, request);
   const core::Log& log = loaded.log;
   if (!(log.has("north") && log.has("east")) && !(log.has("lat") && log.has("lon"))) {
     throw core::InputError({request.source.log.string(), {}, {}, "north/east"},
@@ -87,7 +119,9 @@ StationKeepingReport run_station_keeping(const StationKeepingRequest& request) {
                            "map north and east in metres (any offset, e.g. UTM: --col "
                            "north=gnss1.north --col east=gnss1.east) or lat and lon");
   }
-  const ident::StationKeepingInput in = make_input(log);
+  ident::StationKeepingInput in = make_input(log);
+  in.log_start_s = loaded.log_start_s;
+  in.log_end_s = loaded.log_end_s;
   StationKeepingReport report;
   report.log = request.source.log;
   report.input = std::move(loaded.input);
@@ -95,7 +129,16 @@ StationKeepingReport run_station_keeping(const StationKeepingRequest& request) {
   report.current = request.current;
   report.per_setpoint = request.per_setpoint;
   for (const ident::TimeWindow& w : windows_of(request, log, in)) {
-    report.windows.push_back(ident::analyse_station_keeping(in, w));
+    try {
+      report.windows.push_back(ident::analyse_station_keeping(in, w));
+    } catch (const core::InputError& e) {
+      // Named by the file; a window's problem is one of --from/--to only when they gave it.
+      if (e.where().column_name != "--from/--to") throw with_file(e, request.source.log.string());
+      if (request.t_from_s || request.t_to_s) {
+        throw option_error_in_file(request.source.log, "from/to", e.problem(), e.hint());
+      }
+      throw core::InputError({request.source.log.string(), {}, {}, w.name}, e.problem(), e.hint());
+    }
   }
   return report;
 }

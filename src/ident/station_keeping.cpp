@@ -48,8 +48,8 @@ StationKeepingResult analyse_station_keeping(const StationKeepingInput& in, cons
                                              const ChannelIntegralOptions& integrals,
                                              std::size_t min_position_samples) {
   if (in.t_s.size() < 2) throw window_error("the log has fewer than two rows");
-  const double t0 = in.t_s.front();
-  const double t1 = in.t_s.back();
+  const double t0 = in.log_start_s.value_or(in.t_s.front());
+  const double t1 = in.log_end_s.value_or(in.t_s.back());
   if (!(w.t_to_s > w.t_from_s)) {
     throw window_error("the window " + std::to_string(w.t_from_s) + " … " +
                        std::to_string(w.t_to_s) + " s is empty");

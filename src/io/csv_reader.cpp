@@ -578,13 +578,14 @@ void stream_blocks(LineReader& reader, const Header& header, const CsvFormat& fo
   }
 }
 
-// Streams the data rows after the header into the plans' vectors; returns the time axis. The
+// Streams the data rows after the header into the plans' vectors; returns the time axis and the
+// times of the first and the last row read. The
 // first kTimeDetectionRows rows are held back until their time cells have fixed the format;
 // the rest of a regular file with plain-seconds time goes through stream_blocks().
-std::vector<double> stream_rows(LineReader& reader, const Header& header, const CsvFormat& format,
-                                TimePlans& time, std::vector<ColumnPlan>& channels,
-                                const CsvReadOptions& options, TimeStampReader& stamps,
-                                const InputError* time_unit_error) {
+RowStream stream_rows(LineReader& reader, const Header& header, const CsvFormat& format,
+                      TimePlans& time, std::vector<ColumnPlan>& channels,
+                      const CsvReadOptions& options, TimeStampReader& stamps,
+                      const InputError* time_unit_error) {
   RowSplitter splitter(header, time, channels);
   splitter.path = reader.path();
   RowStream out;
@@ -641,12 +642,14 @@ std::vector<double> stream_rows(LineReader& reader, const Header& header, const 
     }
     const double t_from = options.t_from_s.value_or(-std::numeric_limits<double>::infinity());
     const double t_to = options.t_to_s.value_or(std::numeric_limits<double>::infinity());
-    throw InputError(where, fmt::format("no rows inside the window [{}, {}] s", t_from, t_to),
-                     fmt::format("the log starts at {} s{}", *out.first_t,
-                                 out.last_t > t_to ? std::string()
-                                                   : fmt::format(" and ends at {} s", out.last_t)));
+    throw EmptyWindowError(
+        where, fmt::format("no rows inside the window [{}, {}] s", t_from, t_to),
+        fmt::format(
+            "the log starts at {} s{}", *out.first_t,
+            out.last_t > t_to ? std::string() : fmt::format(" and ends at {} s", out.last_t)),
+        *out.first_t, out.last_t);
   }
-  return std::move(out.time_s);
+  return out;
 }
 
 // Index of the header cell for `column`: the full header text first, then the name without a
@@ -800,9 +803,9 @@ CsvLog read_csv_log(const std::filesystem::path& path, const ColumnMap& map,
 
   TimeStampReader stamps(map.time(), {reader.path(), time.time.header, time.time.field,
                                       time.nsec.has_value(), time.date.has_value()});
-  std::vector<double> time_s = stream_rows(reader, header, format, time, plans, options, stamps,
-                                           time_unit_error ? &*time_unit_error : nullptr);
-  CsvLog out{core::Log(std::move(time_s)), stamps.info()};
+  RowStream rows = stream_rows(reader, header, format, time, plans, options, stamps,
+                               time_unit_error ? &*time_unit_error : nullptr);
+  CsvLog out{core::Log(std::move(rows.time_s)), stamps.info(), *rows.first_t, rows.last_t};
   for (auto& plan : plans) {
     out.log.add_channel(plan.channel, plan.unit_symbol, std::move(plan.values), plan.interp);
   }
@@ -881,9 +884,7 @@ core::Log read_csv_all(const std::filesystem::path& path, const CsvReadOptions& 
   }
 
   TimeStampReader stamps({}, {reader.path(), time.time.header, 0, false, false});
-  std::vector<double> time_s =
-      stream_rows(reader, header, format, time, plans, options, stamps, nullptr);
-  core::Log log(std::move(time_s));
+  core::Log log(stream_rows(reader, header, format, time, plans, options, stamps, nullptr).time_s);
   for (auto& plan : plans) {
     if (plan.state == ColumnPlan::State::kText) continue;
     log.add_channel(plan.channel, plan.unit_symbol, std::move(plan.values), plan.interp);

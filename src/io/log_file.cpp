@@ -37,6 +37,10 @@ FileLog read_nmea_file(const std::filesystem::path& path, const ColumnMap& map, 
   NmeaLog read = read_nmea_log(path, options);
   FileLog out{core::Log(read.log.time()), std::move(read.report), read.origin_ns,
               std::move(read.origin), read.origin_ns ? "UTC" : ""};
+  if (!read.log.time().empty()) {
+    out.first_row_s = read.log.time().front();
+    out.last_row_read_s = read.log.time().back();
+  }
   for (const auto& [role, entry] : roles) {
     if (!read.log.has(entry->column)) {
       core::InputLocation where = entry->source;
@@ -65,8 +69,13 @@ FileLog read_log_file(const std::filesystem::path& path, const ColumnMap& map,
   }
   CsvReadOptions read;
   read.jobs = how.jobs;
+  read.t_from_s = how.t_from_s;
+  read.t_to_s = how.t_to_s;
   CsvLog csv = read_csv_log(path, map, read);
-  FileLog out{std::move(csv.log), {}, csv.time.origin_ns, csv.time.origin, csv.time.origin_zone};
+  FileLog out{std::move(csv.log),   {},
+              csv.time.origin_ns,   csv.time.origin,
+              csv.time.origin_zone, csv.first_row_s,
+              csv.last_row_read_s};
   out.report.path = path.string();
   out.report.format = "csv";
   out.report.time_format = csv.time.format;

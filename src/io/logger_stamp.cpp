@@ -22,14 +22,14 @@ bool digits(std::string_view text, std::size_t pos, std::size_t n, int& value) {
   return true;
 }
 
-// seconds·10⁹ + fraction [ns]; nullopt beyond the int64 nanoseconds of 1677…2262.
+// The instants a stamp may name: 1970-01-01 to 2200-01-01 UTC, so that any two of a capture
+// are less than 2^63 ns apart (a span of 1677…2262 overflowed the difference).
+constexpr std::int64_t kLastStamp_s = 7'258'118'400;
+
+// seconds·10⁹ + fraction [ns]; nullopt outside 1970…2200.
 std::optional<std::int64_t> to_ns(std::int64_t seconds, std::int64_t fraction_ns) {
-  std::int64_t ns = 0;
-  if (__builtin_mul_overflow(seconds, kSecond_ns, &ns) ||
-      __builtin_add_overflow(ns, fraction_ns, &ns)) {
-    return std::nullopt;
-  }
-  return ns;
+  if (seconds < 0 || seconds >= kLastStamp_s) return std::nullopt;
+  return seconds * kSecond_ns + fraction_ns;
 }
 
 // ".f…" at text[pos…] (up to nine digits kept) → ns; advances pos. No dot: 0.

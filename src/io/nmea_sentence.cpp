@@ -255,9 +255,9 @@ NmeaZda parse_zda(const Fields& f) {
   z.utc_s = f.time_of_day(0);
   const double day = f.number(1, "day"), month = f.number(2, "month"), year = f.number(3, "year");
   if (core::is_missing(day) || core::is_missing(month) || core::is_missing(year)) return z;
-  // Years 1900-2200: the dates whose instants fit the log's int64 nanoseconds (1677-2262).
+  // Years 1970-2199: instants any two of which are less than 2^63 ns apart.
   const bool whole = day == std::floor(day) && month == std::floor(month) &&
-                     year == std::floor(year) && year >= 1900 && year <= 2200 && month >= 1 &&
+                     year == std::floor(year) && year >= 1970 && year <= 2199 && month >= 1 &&
                      month <= 12 && day >= 1 && day <= 31;
   const UtcDate d =
       whole ? UtcDate{static_cast<int>(year), static_cast<int>(month), static_cast<int>(day)}
@@ -265,7 +265,7 @@ NmeaZda parse_zda(const Fields& f) {
   if (!whole || !is_valid(d)) {
     f.fail(1, "date",
            fmt::format("'{},{},{}' is not a date dd,mm,yyyy", f.text(1), f.text(2), f.text(3)),
-           "day 01-31, month 01-12, a four-digit year 1900-2200");
+           "day 01-31, month 01-12, a four-digit year 1970-2199");
   }
   z.date = d;
   return z;

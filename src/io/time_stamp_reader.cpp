@@ -214,8 +214,13 @@ double TimeStampReader::time_s(const TimeCells& cells, std::size_t line) {
     const bool utc = is_epoch(format_.format) || format_.format == TimeFormat::kSecNsec;
     set_origin(ns, utc ? std::optional<int>(0) : std::nullopt);
   }
-  // Integer difference first: exact, then one rounding to double.
-  return static_cast<double>(ns - origin_ns_) / 1e9;
+  // Integer difference first: exact, then one rounding to double. Stamps 2^63 ns or more apart
+  // (1677 and 2262) differ in doubles.
+  std::int64_t since_origin_ns = 0;
+  if (__builtin_sub_overflow(ns, origin_ns_, &since_origin_ns)) {
+    return (static_cast<double>(ns) - static_cast<double>(origin_ns_)) / 1e9;
+  }
+  return static_cast<double>(since_origin_ns) / 1e9;
 }
 
 bool TimeStampReader::out_of_order(double t, std::string_view cell, std::size_t line) {

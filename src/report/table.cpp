@@ -14,6 +14,16 @@ std::size_t display_width(const std::string& s) {
       std::count_if(s.begin(), s.end(), [](char c) { return (c & 0xC0) != 0x80; }));
 }
 
+// `s` cut to kMaxTextCellWidth code points, the last one "…", when it is longer.
+std::string shown_cell(const std::string& s) {
+  if (display_width(s) <= kMaxTextCellWidth) return s;
+  std::size_t points = 0, end = 0;
+  for (; end < s.size(); ++end) {
+    if ((s[end] & 0xC0) != 0x80 && ++points == kMaxTextCellWidth) break;
+  }
+  return s.substr(0, end) + "…";
+}
+
 std::string escape_markdown(const std::string& s) {
   std::string out;
   for (char c : s) {
@@ -38,20 +48,22 @@ void Table::validate() const {
 std::string render_text(const Table& t) {
   t.validate();
   std::vector<std::size_t> width(t.header.size(), 0);
-  for (std::size_t c = 0; c < t.header.size(); ++c) width[c] = display_width(t.header[c]);
+  for (std::size_t c = 0; c < t.header.size(); ++c)
+    width[c] = display_width(shown_cell(t.header[c]));
   for (const auto& row : t.rows) {
     for (std::size_t c = 0; c < row.size(); ++c) {
-      width[c] = std::max(width[c], display_width(row[c]));
+      width[c] = std::max(width[c], std::min(display_width(row[c]), kMaxTextCellWidth));
     }
   }
   std::string out;
   auto line = [&](const std::vector<std::string>& cells) {
     std::string text;
     for (std::size_t c = 0; c < cells.size(); ++c) {
-      const std::string pad(width[c] - display_width(cells[c]), ' ');
+      const std::string cell = shown_cell(cells[c]);
+      const std::string pad(width[c] - display_width(cell), ' ');
       if (c > 0) text += "  ";
       if (c >= t.first_numeric_column) text += pad;
-      text += cells[c];
+      text += cell;
       if (c < t.first_numeric_column) text += pad;
     }
     while (!text.empty() && text.back() == ' ') text.pop_back();

@@ -75,6 +75,8 @@ TEST(FourCornerAnalysis, TheWindowCutsTheLog) {
   ASSERT_EQ(report.result.legs.size(), 1u);
   EXPECT_EQ(report.track.t_s.back(), 190.0);
   EXPECT_NEAR(report.result.legs[0].t_end_s, 156.0, 1e-9);
+  // Only the window is read of the file (rows 0 … 190 s of 0 … 340 s).
+  EXPECT_EQ(report.input.files.at(0).records, 191u);
 }
 
 TEST(FourCornerAnalysis, BadOptionsNameTheirKey) {

@@ -3,12 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include <fmt/core.h>
 
 #include "../io/io_test_util.hpp"
 #include "dynpos/core/error.hpp"
+#include "dynpos/io/csv_reader.hpp"
 #include "input_error_capture.hpp"
 
 namespace dynpos::analysis {
@@ -182,6 +184,42 @@ TEST(StationKeepingAnalysis, ErrorsAboutTheLogNameIt) {
   e = input_error([&] { run_station_keeping(request); });
   EXPECT_EQ(e.where().file, no_setpoints.string());
   EXPECT_EQ(e.problem(), "--per-setpoint needs the DP setpoints in the log");
+}
+
+// A window given with --from/--to is all that is read of the file (finding M2: a 200 s window
+// of a 4.8 GB log used to read it whole), and the figures are those of the whole log in the
+// window: the same as from the log read whole into memory.
+TEST(StationKeepingAnalysis, AGivenWindowIsAllThatIsRead) {
+  TempDir dir;
+  StationKeepingRequest request;
+  request.source.log = write_log(dir);
+  request.t_from_s = 100.5;
+  request.t_to_s = 250.5;
+  const StationKeepingReport windowed = run_station_keeping(request);
+  EXPECT_EQ(windowed.input.files.at(0).records, 150u);  // rows 101 … 250 of 400
+
+  StationKeepingRequest whole = request;
+  whole.source.memory =
+      std::make_shared<const core::Log>(io::read_csv_all(request.source.log, {}, {}));
+  const StationKeepingReport in_memory = run_station_keeping(whole);
+  EXPECT_EQ(in_memory.input.files.at(0).records, 400u);
+  nlohmann::json a = to_json(windowed), b = to_json(in_memory);
+  for (nlohmann::json* j : {&a, &b}) {
+    j->erase("input");
+    j->erase("log");
+  }
+  EXPECT_EQ(a.dump(), b.dump());
+
+  // A window that reaches past either end of the log is still not inside it.
+  for (const auto& [from, to] : {std::pair{300.0, 450.0}, std::pair{-50.0, 100.0},
+                                 std::pair{500.0, 600.0}, std::pair{-90.0, -10.0}}) {
+    request.t_from_s = from;
+    request.t_to_s = to;
+    const core::InputError e = input_error([&] { run_station_keeping(request); });
+    EXPECT_EQ(e.option(), "from/to") << from;
+    EXPECT_EQ(e.where().file, request.source.log.string());
+    EXPECT_NE(e.problem().find("is not inside the log (0"), std::string::npos) << e.problem();
+  }
 }
 
 }  // namespace

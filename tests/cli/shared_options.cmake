@@ -29,3 +29,17 @@ dynpos_cli_test(col_role_twice_refused
 dynpos_cli_test(duration_out_of_range_names_the_option
   COMMAND bash ${EXPECT_EXIT} 2 "surge-steps-forward.toml \\(--duration\\): value 1e\\+300 is out of range"
           ${DYNPOS_EXE} simulate surge-steps-forward --duration 1e300 --out ${CLI_OUT}/duration)
+# Finding M6: a pipe was read twice (header, then rows) and its second read started mid-stream.
+# "-" reads standard input, and a pipe or FIFO as LOG is read once, into a temporary copy.
+dynpos_cli_test(log_from_standard_input
+  COMMAND bash -c "cat \"$2\" | \"$1\" identify step - --col input=cmd --col output=response"
+          _ ${DYNPOS_EXE} ${PROJECT_SOURCE_DIR}/tests/cli/short_steps.csv
+  PASS "input: - \\(csv, time stamps: seconds, 701 records\\)")
+dynpos_cli_test(log_from_a_pipe_names_it
+  COMMAND bash ${EXPECT_EXIT} 2 "^dynpos: error: /dev/stdin:1 \\(output\\): column 'x' for role 'output' is not in the header"
+          bash -c "cat \"$2\" | \"$1\" identify step /dev/stdin --col input=cmd --col output=x"
+          _ ${DYNPOS_EXE} ${PROJECT_SOURCE_DIR}/tests/cli/short_steps.csv)
+dynpos_cli_test(nmea_capture_from_standard_input
+  COMMAND bash -c "\"$1\" identify station-keeping - --json - < \"$2\""
+          _ ${DYNPOS_EXE} ${PROJECT_SOURCE_DIR}/tests/data/nmea/station.nmea
+  PASS "\"format\": \"nmea\"")

@@ -39,6 +39,17 @@ TEST(CsvTimeStamps, IsoWithZone) {
   EXPECT_EQ(r.log.channel_names(), std::vector<std::string>{"heading"});
 }
 
+// Stamps 2^63 ns or more apart (1677 and 2262) overflowed their integer difference; they are
+// read (in doubles), and the second is then simply far after the first.
+TEST(CsvTimeStamps, StampsCenturiesApartDoNotOverflow) {
+  TempDir dir;
+  const auto path =
+      dir.write("centuries.csv", "time,heading\n1678-01-01T00:00:00Z,1\n2262-01-01T00:00:00Z,2\n");
+  const CsvLog r = read_csv_log(path, map_of({{"time", "time"}, {"heading", "heading"}}));
+  ASSERT_EQ(r.log.size(), 2u);
+  EXPECT_NEAR(r.log.time()[1], 584.0 * 365.2425 * 86400.0, 1e6);
+}
+
 TEST(CsvTimeStamps, IsoLocalWithSlashesAcrossALeapDay) {
   const CsvLog r = read_csv_log(fixture("time_iso_local.csv"),
                                 map_of({{"time", "timestamp"}, {"heading", "heading"}}));

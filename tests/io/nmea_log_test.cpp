@@ -154,19 +154,21 @@ TEST(NmeaLog, EpochSecondsStampsGllThsAndPrefix) {
   EXPECT_NEAR(read.log.values("gnss2.heading")[1], 123.4 * kDeg, kExact);
 }
 
-// Fuzz findings: a logger stamp of year 0024 and one of twelve epoch digits overflowed the int64
-// nanoseconds. They are bad stamps: their lines are skipped and counted, the others read.
+// Fuzz findings: logger stamps of year 0024, of twelve epoch digits, and of 1731 beside 2024
+// (their difference) overflowed the int64 nanoseconds. Stamps name 1970…2199: others are bad
+// stamps, their lines skipped and counted, the others read.
 TEST(NmeaLog, StampsOutsideTheNanosecondRangeAreBadStamps) {
   TempDir dir;
   const auto file =
       dir.write("old.nmea", lines({"2024-05-01 10:00:00.000 " + framed("HEHDT,10.0,T"),
                                    "0024-05-01 10:00:00.500 " + framed("HEHDT,10.5,T"),
                                    "2024-05-01 10:00:01.000 " + framed("HEHDT,11.0,T"),
-                                   "999999999999.5 " + framed("HEHDT,11.5,T")}));
+                                   "999999999999.5 " + framed("HEHDT,11.5,T"),
+                                   "1731-05-01 10:00:01.500 " + framed("HEHDT,11.7,T")}));
   const NmeaLog read = read_nmea_log(file);
   EXPECT_EQ(*read.origin, "2024-05-01T10:00:00.000Z");
   EXPECT_THAT(read.log.values("heading"), ElementsAre(10.0 * kDeg, 11.0 * kDeg));
-  EXPECT_EQ(read.report.skipped.count("bad time stamp"), 2u);
+  EXPECT_EQ(read.report.skipped.count("bad time stamp"), 3u);
 }
 
 // Binary data of another protocol on the same serial port: a line beyond kMaxNmeaLineBytes is

@@ -22,6 +22,24 @@ TEST(Table, TextAlignsNumbersRightCountingCodePoints) {
             "tunnel              —        <1|2>\n");
 }
 
+// Finding H3: one 8 MiB cell padded every row of a compare table to 8 MiB (763 MB of output).
+// A text cell is cut at kMaxTextCellWidth code points, on a character boundary.
+TEST(Table, TextCellsAreCutSoOneLongCellDoesNotWidenEveryRow) {
+  Table t;
+  t.header = {"figure", "a"};
+  std::string long_text;
+  for (int i = 0; i < 1000; ++i) long_text += "é";  // two bytes, one column each
+  t.rows = {{long_text, "1"}, {"x", "2"}};
+  const std::string text = render_text(t);
+  EXPECT_LT(text.size(), 3 * (2 * kMaxTextCellWidth + 8));
+  const std::string cut = text.substr(text.find('\n') + 1, 2 * (kMaxTextCellWidth - 1));
+  EXPECT_EQ(cut, long_text.substr(0, 2 * (kMaxTextCellWidth - 1)));
+  EXPECT_NE(text.find(long_text.substr(0, 2 * (kMaxTextCellWidth - 1)) + "…  1\n"),
+            std::string::npos);
+  EXPECT_NE(text.find("\nx" + std::string(kMaxTextCellWidth - 1, ' ') + "  2\n"),
+            std::string::npos);
+}
+
 TEST(Table, MarkdownEscapesPipesAndAlignsNumericColumns) {
   EXPECT_EQ(render_markdown(sample()),
             "| thruster | thrust [kN] | energy [kJ] |\n"

@@ -28,10 +28,19 @@ using RoleFilter = std::function<bool(const std::string& role)>;
 struct LoadedLog {
   core::Log log;
   io::InputReport input;
+  /// The main log's first row and its last row [s] on the log's axis. When only a window was
+  /// read (LogSource::window_from_s/window_to_s), `log` holds the rows inside it, while these
+  /// still tell how far the file reaches: log_end_s is then the first row after the window.
+  double log_start_s = 0.0;
+  double log_end_s = 0.0;
 };
 
 struct LogSource {
-  std::filesystem::path log;         ///< the CSV log
+  std::filesystem::path log;  ///< the CSV log (or NMEA capture), as the user named it
+  /// Where the bytes of `log` are read from when `log` can be read only once (standard input
+  /// "-", a pipe, a FIFO): a copy made once (io::SpooledInput). Empty: `log` itself. Messages
+  /// and reports name `log` either way.
+  std::filesystem::path read_from;
   std::filesystem::path map_file;    ///< column map (TOML), or empty
   std::vector<std::string> columns;  ///< ROLE=COLUMN
   std::vector<std::string> units;    ///< ROLE=UNIT
@@ -45,6 +54,12 @@ struct LogSource {
   std::string time_format = {};  ///< --time-format; empty = the map's (auto)
   std::string date = {};         ///< --date YYYY-MM-DD; empty = the map's (none)
   std::string time_order = {};   ///< --time-order; empty = the map's (error)
+  /// Only the main log's rows with time in [window_from_s, window_to_s] are read (a CSV file:
+  /// rows before it are skipped, reading stops after it), so memory and time follow the window,
+  /// not the file; roles from other files are put on those rows. Unset: the whole log. An NMEA
+  /// capture or a log in memory is taken whole.
+  std::optional<double> window_from_s;
+  std::optional<double> window_to_s;
   /// Threads for reading the log and for an analysis' independent pieces (one fit per step);
   /// 0 = every core. Results do not depend on it.
   unsigned jobs = 0;
@@ -78,6 +93,9 @@ struct LogSource {
 
   /// {max_gap_s}, checked: throws option_error("max_gap") if it is negative or NaN.
   core::ResampleOptions resample_options() const;
+
+  /// The file to open for `log`: read_from when set, else log.
+  const std::filesystem::path& file() const noexcept { return read_from.empty() ? log : read_from; }
 };
 
 /// Reads the roles `map` assigns to the main log (time axis of the result) and to each other

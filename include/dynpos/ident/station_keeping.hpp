@@ -38,6 +38,10 @@ struct StationKeepingInput {
   std::vector<double> heading_rad;
   std::vector<double> wind_speed_mps, wind_dir_rad;  ///< direction the wind comes from
   std::vector<ThrusterChannels> thrusters;
+  /// How far the log reaches [s] when t_s holds only a window of it (read bounded by the
+  /// window); unset: t_s.front() and t_s.back().
+  std::optional<double> log_start_s;
+  std::optional<double> log_end_s;
 };
 
 /// A time window, with a name for tables (e.g. "heading 90").

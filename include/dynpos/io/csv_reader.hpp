@@ -27,6 +27,7 @@
 #include <string_view>
 #include <vector>
 
+#include "dynpos/core/error.hpp"
 #include "dynpos/core/log.hpp"
 #include "dynpos/io/column_map.hpp"
 #include "dynpos/io/time_stamp.hpp"
@@ -66,6 +67,24 @@ HeaderCell split_header_cell(std::string_view cell);
 struct CsvLog {
   core::Log log;
   TimeStampInfo time;
+  /// The time [s] of the file's first row, and of the last row read: with a window, the first
+  /// row after it when there is one (reading stops there), so a caller knows whether the file
+  /// goes on past the window without reading it.
+  double first_row_s = 0.0;
+  double last_row_read_s = 0.0;
+};
+
+/// No row of a CSV log lies inside the window of CsvReadOptions: an InputError naming the file,
+/// with where the log is, so that a caller can say it in its own terms (e.g. of --from/--to).
+class EmptyWindowError : public core::InputError {
+ public:
+  EmptyWindowError(core::InputLocation where, std::string what, std::string hint,
+                   double first_row_s, double last_row_read_s)
+      : core::InputError(std::move(where), std::move(what), std::move(hint)),
+        first_row_s(first_row_s),
+        last_row_read_s(last_row_read_s) {}
+  double first_row_s;      ///< the log's first row [s]
+  double last_row_read_s;  ///< its last row, or the first row after the window
 };
 
 /// Reads the mapped columns of a CSV log. Channels are named after their roles, in the order

@@ -26,6 +26,10 @@ struct FileLog {
   std::optional<std::int64_t> origin_ns;
   std::optional<std::string> origin;
   std::string origin_zone;
+  /// The time [s] of the file's first row and of the last row read (CsvLog): with a window,
+  /// the first row after it when the file goes on.
+  double first_row_s = 0.0;
+  double last_row_read_s = 0.0;
 };
 
 /// How read_log_file() takes a file.
@@ -34,6 +38,10 @@ struct LogFileRead {
   Format format = Format::kAuto;  ///< kAuto: an NMEA capture when io::looks_like_nmea, else CSV
   bool strict = false;            ///< an NMEA line that cannot be used is an error
   unsigned jobs = 0;              ///< threads for reading a CSV file, 0 = every core
+  /// Only the rows of a CSV file with time in [t_from_s, t_to_s] (its own axis) are read
+  /// (CsvReadOptions); an NMEA capture is read whole.
+  std::optional<double> t_from_s;
+  std::optional<double> t_to_s;
 };
 
 /// Reads the roles of `map` (one file's map, e.g. ColumnMap::for_file) from `path`, with `time`

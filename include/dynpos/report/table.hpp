@@ -4,6 +4,7 @@
 /// thesis-style tables of the analyses, on stdout and in the report. Missing values are given
 /// as "—" by the caller; cells are shown as they are (HTML-escaped in HTML).
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -19,7 +20,12 @@ struct Table {
   void validate() const;
 };
 
-/// Columns padded to their widest cell (counted in UTF-8 code points), two spaces apart.
+/// The widest cell of a text table [code points]; a longer cell is cut, its last shown character
+/// "…", so that one long text (a path, a status) does not widen every row of a large table.
+inline constexpr std::size_t kMaxTextCellWidth = 120;
+
+/// Columns padded to their widest cell (counted in UTF-8 code points, at most
+/// kMaxTextCellWidth), two spaces apart.
 std::string render_text(const Table& table);
 /// A GitHub-flavoured Markdown table; '|' in a cell is escaped.
 std::string render_markdown(const Table& table);
