@@ -2,15 +2,48 @@
 // and a virtual sea trial of R/V Gunnerus. This file only wires the subcommands together.
 
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 
 #include <CLI/CLI.hpp>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
 #include <exception>
+#include <new>
+#include <string>
+#include <thread>
+#include <vector>
 
 #include "commands.hpp"
 #include "dynpos/analysis/option_spelling.hpp"
 #include "dynpos/core/error.hpp"
+#include "dynpos/io/temporary_files.hpp"
+
+namespace {
+
+// Ctrl-C, SIGTERM and SIGHUP are blocked in every thread (the mask is inherited) and taken by
+// one thread, which removes this run's temporary files (io/temporary_files.hpp) and ends the
+// process with 128 + the signal's number, as a shell reports it. Outputs already renamed into
+// place stay; none is left half-written.
+void take_signals_on_a_thread() {
+  sigset_t signals;
+  sigemptyset(&signals);
+  for (const int s : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&signals, s);
+  if (pthread_sigmask(SIG_BLOCK, &signals, nullptr) != 0) return;
+  std::thread([signals] {
+    int signal = 0;
+    if (sigwait(&signals, &signal) != 0) return;
+    const std::size_t removed = dynpos::io::temporary_files::remove_all();
+    std::fprintf(stderr, "dynpos: stopped by signal %d; %zu temporary file(s) removed\n", signal,
+                 removed);
+    std::_Exit(128 + signal);
+  }).detach();
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
+  take_signals_on_a_thread();
   using namespace dynpos::cli;
   CLI::App app{
       "dynpos " DYNPOS_VERSION
@@ -22,7 +55,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1, 1);
   app.footer(
       "Run 'dynpos SUBCOMMAND --help' for the options of each subcommand.\n"
-      "Exit codes: 0 success, 1 failure, 2 bad input or options, 3 not in this version.");
+      "Exit codes: 0 success, 1 failure, 2 bad input or options, 3 not in this version,\n"
+      "128 + N stopped by signal N (130: Ctrl-C).");
 
   register_simulate(app);
   register_identify(app);
@@ -45,6 +79,15 @@ int main(int argc, char** argv) {
     fmt::print(stderr, "dynpos {}: not available in this version; planned: {}\n", u.command,
                u.planned);
     return kExitUnavailable;
+  } catch (const std::bad_alloc&) {
+    // The machine's memory ran out: what the input or the options asked for (a log, a window,
+    // a run length) was too much for it. Runs are checked before they start where their size
+    // is known (simulate); this is the rest.
+    fmt::print(stderr,
+               "dynpos: error: out of memory running '{}'; give a shorter log or run, a window "
+               "(--from/--to), fewer --jobs, or a machine with more memory\n",
+               fmt::join(std::vector<std::string>(argv + 1, argv + argc), " "));
+    return kExitInputError;
   } catch (const std::exception& e) {
     fmt::print(stderr, "dynpos: error: {}\n", e.what());
     return kExitFailure;

@@ -13,6 +13,8 @@
 
 #include <fmt/format.h>
 
+#include "dynpos/io/temporary_files.hpp"
+
 namespace dynpos::io {
 namespace {
 
@@ -110,6 +112,7 @@ void AtomicFile::create_temp() {
     // 0666 minus the umask: the same permissions a plain new file would get.
     const int fd = ::open(temp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd >= 0) {
+      temporary_files::add(temp_);
       if (keep_mode_ >= 0) {
         if (::geteuid() == 0) (void)::fchown(fd, keep_uid_, keep_gid_);
         (void)::fchmod(fd, static_cast<mode_t>(keep_mode_));
@@ -129,8 +132,7 @@ void AtomicFile::create_temp() {
   out_.open(temp_, std::ios::binary | std::ios::trunc);
   if (!out_) {
     const int error = errno;
-    std::error_code ignored;
-    std::filesystem::remove(temp_, ignored);
+    discard_temp();
     throw std::runtime_error(
         fmt::format("cannot open '{}' for writing: {}", temp_.string(), reason(error)));
   }
@@ -139,9 +141,13 @@ void AtomicFile::create_temp() {
 AtomicFile::~AtomicFile() {
   if (committed_) return;
   if (out_.is_open()) out_.close();
-  if (temp_.empty()) return;
+  if (!temp_.empty()) discard_temp();
+}
+
+void AtomicFile::discard_temp() {
   std::error_code ignored;
   std::filesystem::remove(temp_, ignored);
+  temporary_files::drop(temp_);
 }
 
 void AtomicFile::commit() {
@@ -154,10 +160,7 @@ void AtomicFile::commit() {
   if (written && !out_.fail() && !temp_.empty()) error = sync_path(temp_, O_RDONLY);
   if (!written || out_.fail() || error != 0) {
     if (error == 0) error = errno;
-    if (!temp_.empty()) {
-      std::error_code ignored;
-      std::filesystem::remove(temp_, ignored);
-    }
+    if (!temp_.empty()) discard_temp();
     throw std::runtime_error(
         fmt::format("writing '{}' failed: {}{}", target_.string(), reason(error),
                     error == ENOSPC ? "; free some space or write elsewhere" : ""));
@@ -168,11 +171,11 @@ void AtomicFile::commit() {
   }
   if (std::rename(temp_.c_str(), file_.c_str()) != 0) {
     error = errno;
-    std::error_code ignored;
-    std::filesystem::remove(temp_, ignored);
+    discard_temp();
     throw std::runtime_error(fmt::format("cannot rename '{}' to '{}': {}", temp_.string(),
                                          target_.string(), reason(error)));
   }
+  temporary_files::drop(temp_);
   const std::filesystem::path dir = file_.parent_path();
   (void)sync_path(dir.empty() ? std::filesystem::path(".") : dir, O_RDONLY | O_DIRECTORY);
   committed_ = true;

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "dynpos/core/error.hpp"
+#include "dynpos/io/temporary_files.hpp"
 
 namespace dynpos::io {
 namespace {
@@ -59,6 +60,7 @@ SpooledInput::SpooledInput(const std::filesystem::path& path, std::filesystem::p
          "set TMPDIR to a folder with space and write permission");
   }
   copy_ = pattern;
+  temporary_files::add(copy_);
   std::vector<char> buffer(std::size_t{1} << 20);
   int error = 0;
   bool read_failed = false;
@@ -82,6 +84,7 @@ SpooledInput::SpooledInput(const std::filesystem::path& path, std::filesystem::p
   if (error != 0) {
     std::error_code ignored;
     std::filesystem::remove(copy_, ignored);
+    temporary_files::drop(copy_);
     if (read_failed) fail(name, "reading it failed", error, "check that it is readable");
     fail(copy_.string(), "cannot copy " + name + " to read it", error,
          error == ENOSPC ? "free some space, or set TMPDIR to a folder with space"
@@ -92,6 +95,7 @@ SpooledInput::SpooledInput(const std::filesystem::path& path, std::filesystem::p
 SpooledInput::~SpooledInput() {
   std::error_code ignored;
   std::filesystem::remove(copy_, ignored);
+  temporary_files::drop(copy_);
 }
 
 }  // namespace dynpos::io

@@ -1,18 +1,24 @@
 #include "dynpos/scenario/campaign.hpp"
 
 #include <fmt/core.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <random>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
+#include "dynpos/core/error.hpp"
 #include "dynpos/core/parallel_for.hpp"
 #include "dynpos/io/atomic_file.hpp"
 #include "dynpos/io/csv_writer.hpp"
 #include "dynpos/io/json_writer.hpp"
 #include "dynpos/io/markup.hpp"
+#include "dynpos/io/temporary_files.hpp"
 #include "dynpos/scenario/device_files.hpp"
 #include "dynpos/scenario/runner.hpp"
 #include "dynpos/sim/random.hpp"
@@ -66,7 +72,9 @@ std::uint64_t campaign_seed(std::uint64_t master_seed, const std::string& scenar
   return sim::stream_seed(master_seed, scenario_name);
 }
 
-void write_scenario_run(const ScenarioRun& run, const std::filesystem::path& dir) {
+namespace {
+
+void write_run_files(const ScenarioRun& run, const std::filesystem::path& dir) {
   std::filesystem::create_directories(dir);
   io::write_csv(dir / "log.csv", run.log);
   io::write_csv(dir / "truth.csv", run.truth_log);
@@ -75,6 +83,62 @@ void write_scenario_run(const ScenarioRun& run, const std::filesystem::path& dir
     write_gnss_nmea(run, antenna, dir / (antenna + ".nmea"));
   }
   if (run.device_files) write_device_files(run, *run.device_files, dir / "devices");
+}
+
+// Renames every file under `from` to the same place under `to`, folders made as needed. Every
+// place is checked first (a folder where a file goes, a file where a folder goes: an error
+// naming it), so that the renames, each atomic, do not stop half-way for that.
+void move_files_into(const std::filesystem::path& from, const std::filesystem::path& to) {
+  std::vector<std::pair<std::filesystem::path, std::filesystem::path>> moves;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(from)) {
+    if (entry.is_regular_file()) {
+      moves.emplace_back(entry.path(), to / std::filesystem::relative(entry.path(), from));
+    }
+  }
+  const auto refuse = [](const std::filesystem::path& at, const char* what) {
+    throw core::InputError({at.string(), {}, {}, {}},
+                           fmt::format("the run's files cannot be placed: it is {}", what),
+                           "remove or rename it, or give another --out folder; nothing was "
+                           "written");
+  };
+  for (const auto& [file, target] : moves) {
+    if (std::filesystem::is_directory(target)) refuse(target, "a folder, where a file goes");
+    for (auto up = target.parent_path(); up != to && up.has_relative_path();
+         up = up.parent_path()) {
+      if (std::filesystem::exists(up) && !std::filesystem::is_directory(up)) {
+        refuse(up, "a file, where a folder goes");
+      }
+    }
+  }
+  for (const auto& [file, target] : moves) {
+    std::filesystem::create_directories(target.parent_path());
+    std::filesystem::rename(file, target);
+  }
+}
+
+}  // namespace
+
+void write_scenario_run(const ScenarioRun& run, const std::filesystem::path& dir) {
+  // The run's files appear together or not at all (finding M4: a failed run left a new log.csv
+  // beside the truth.json of another seed): written into a hidden folder in `dir`, then renamed
+  // into place. A failure, or a signal (io/temporary_files.hpp), removes the folder and leaves
+  // `dir` as it was.
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path stage =
+      dir / fmt::format(".run.tmp-{}-{:08x}", ::getpid(), std::random_device{}());
+  std::error_code ignored;
+  std::filesystem::remove_all(stage, ignored);
+  io::temporary_files::add(stage);
+  try {
+    write_run_files(run, stage);
+    move_files_into(stage, dir);
+  } catch (...) {
+    std::filesystem::remove_all(stage, ignored);
+    io::temporary_files::drop(stage);
+    throw;
+  }
+  std::filesystem::remove_all(stage, ignored);
+  io::temporary_files::drop(stage);
 }
 
 std::vector<ScenarioSpec> load_campaign(const std::filesystem::path& scenario_dir) {

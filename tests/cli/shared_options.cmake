@@ -43,3 +43,26 @@ dynpos_cli_test(nmea_capture_from_standard_input
   COMMAND bash -c "\"$1\" identify station-keeping - --json - < \"$2\""
           _ ${DYNPOS_EXE} ${PROJECT_SOURCE_DIR}/tests/data/nmea/station.nmea
   PASS "\"format\": \"nmea\"")
+# Finding M1: a run is held in memory until its files are written; one that cannot fit the
+# machine (10⁶ s at 100 Hz: about 100 GB) is refused before it starts, and nothing is written.
+dynpos_cli_test(simulate_too_large_for_memory_refused
+  COMMAND bash ${EXPECT_EXIT} 2 "\\(--duration/--log-rate\\): the run would hold about 100.0 GB in memory"
+          ${DYNPOS_EXE} simulate pure-dp --duration 1000000 --log-rate 100 --out ${CLI_OUT}/huge)
+# Out of memory is exit 2 with the command and what to do, not "std::bad_alloc" (exit 1).
+# Memory is capped with ulimit, which AddressSanitizer's reservations cannot run under: the
+# sanitizer pass leaves this test out (label rlimit).
+dynpos_cli_test(out_of_memory_is_an_input_error
+  COMMAND bash ${EXPECT_EXIT} 2 "^dynpos: error: out of memory running 'simulate pure-dp --duration 7200 --log-rate 100 .*'. give a shorter log or run"
+          bash -c "ulimit -v 400000 && exec \"$1\" simulate pure-dp --duration 7200 --log-rate 100 --out \"$2\""
+          _ ${DYNPOS_EXE} ${CLI_OUT}/oom)
+set_tests_properties(cli_out_of_memory_is_an_input_error PROPERTIES LABELS rlimit)
+dynpos_cli_test(signal_removes_temporary_files
+  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/signal_cleanup.sh ${DYNPOS_EXE}
+          ${PROJECT_SOURCE_DIR}/tests/cli/short_steps.csv ${CLI_OUT}/signal
+  PASS "^ok")
+# Finding M4: a run's files appear together or not at all. A file named "devices" where the run
+# puts a folder stops the run before any file is placed: the old log.csv stays, no stage left.
+dynpos_cli_test(simulate_outputs_appear_together_or_not_at_all
+  COMMAND bash -c "rm -rf \"$2\" && mkdir -p \"$2\" && echo old > \"$2/log.csv\" && echo x > \"$2/devices\" && \"$1\" simulate surge-steps-forward --duration 10 --out \"$2\"; code=$?; [ $code = 2 ] && [ \"$(cat \"$2/log.csv\")\" = old ] && [ -z \"$(ls -A \"$2\" | grep -v -x -e log.csv -e devices)\" ] && echo together-or-nothing"
+          _ ${DYNPOS_EXE} ${CLI_OUT}/together
+  PASS "together-or-nothing")

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <thread>
 
+#include "dynpos/io/temporary_files.hpp"
 #include "io_test_util.hpp"
 
 namespace dynpos::io {
@@ -46,6 +47,29 @@ TEST(AtomicFile, CommitLeavesOnlyTheTarget) {
   }
   EXPECT_EQ(entries(dir.path()), (std::vector<std::string>{"out.csv"}));
   EXPECT_EQ(contents(dir / "out.csv"), "a,b\n1,2\n");
+}
+
+// The temporary file is listed for the command line's signal thread until it is renamed or
+// removed: remove_all() (what a Ctrl-C does) leaves no temporary file and the old target.
+TEST(AtomicFile, ASignalsCleanupRemovesTheTemporaryFileOnly) {
+  TempDir dir;
+  const auto target = dir.write("out.json", "old");
+  temporary_files::remove_all();  // whatever earlier tests left listed
+  {
+    AtomicFile committed(dir / "done.json");
+    committed.stream() << "done";
+    committed.commit();
+  }
+  AtomicFile file(target);
+  file.stream() << "new";
+  ASSERT_TRUE(std::filesystem::exists(file.temp_path()));
+  EXPECT_EQ(temporary_files::remove_all(), 1u);  // the one not yet renamed
+  EXPECT_FALSE(std::filesystem::exists(file.temp_path()));
+  EXPECT_TRUE(std::filesystem::exists(dir / "done.json"));
+  std::ifstream in(target);
+  std::string text;
+  in >> text;
+  EXPECT_EQ(text, "old");
 }
 
 TEST(AtomicFile, NoCommitLeavesNoFile) {

@@ -52,6 +52,8 @@ class AtomicFile {
 
  private:
   void create_temp();
+  /// Removes the temporary file and takes it off temporary_files' list.
+  void discard_temp();
 
   std::filesystem::path target_;  // as given, for messages
   std::filesystem::path file_;    // what is written: the target, or what its link points to
