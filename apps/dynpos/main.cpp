@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <filesystem>
 #include <new>
 #include <string>
 #include <thread>
@@ -79,6 +80,13 @@ int main(int argc, char** argv) {
     fmt::print(stderr, "dynpos {}: not available in this version; planned: {}\n", u.command,
                u.planned);
     return kExitUnavailable;
+  } catch (const std::filesystem::filesystem_error& e) {
+    // A folder or file of the outputs that cannot be made or written (or an input that cannot
+    // be read): the path and the system's reason, not the library's wording.
+    const std::string path = e.path1().empty() ? std::string() : "'" + e.path1().string() + "': ";
+    fmt::print(stderr, "dynpos: error: {}{}; check the path and its permissions\n", path,
+               e.code().message());
+    return kExitInputError;
   } catch (const std::bad_alloc&) {
     // The machine's memory ran out: what the input or the options asked for (a log, a window,
     // a run length) was too much for it. Runs are checked before they start where their size

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 #include "dynpos/analysis/options.hpp"
 #include "dynpos/core/angle.hpp"
@@ -33,8 +34,16 @@ void apply_timing(const HybridCaseRequest& request, hybrid::CaseTiming& timing) 
   try {
     timing.validate();
   } catch (const std::invalid_argument& e) {
-    throw option_error("dwell/sample_period/noise_power/end_time", e.what(),
-                       "times must be multiples of the 1 ms step");
+    // The library names its fields ("CaseTiming: end_time …"); the message names the option.
+    std::string what = e.what();
+    if (what.rfind("CaseTiming: ", 0) == 0) what.erase(0, 12);
+    const auto field_is = [&what](std::string_view field) { return what.rfind(field, 0) == 0; };
+    const char* key = field_is("end_time")        ? "end_time"
+                      : field_is("dwell_time")    ? "dwell"
+                      : field_is("sample_period") ? "sample_period"
+                      : field_is("noise_power")   ? "noise_power"
+                                                  : "dwell/sample_period/noise_power/end_time";
+    throw option_error(key, what, "times must be multiples of the 1 ms step");
   }
 }
 
@@ -93,8 +102,13 @@ DpStudy dp_study(const HybridCaseRequest& request) {
   apply_timing(request, o.timing);
   if (request.lambda) o.params.lambda = *request.lambda;
   if (request.heading_deg) {
-    if (!std::isfinite(*request.heading_deg)) {
-      throw option_error("heading", "the set-point heading must be a finite angle [deg]");
+    // The range of every heading of a scenario file: a turn of either sign, no more (400° is
+    // more likely a typing error than 40°).
+    if (!(std::abs(*request.heading_deg) <= 360.0)) {
+      throw option_error(
+          "heading",
+          fmt::format("the set-point heading must be within ±360°, got {:g}", *request.heading_deg),
+          "give it in degrees, e.g. --heading 40");
     }
     o.params.eta_d.z() = core::wrap_pi(core::deg_to_rad(*request.heading_deg));
   }

@@ -53,7 +53,10 @@ constexpr double kMemoryPerRow_B = 1000.0;
 constexpr double kDiskPerRow_B = 1500.0;
 constexpr double kDiskPerSecond_B = 4000.0;
 
-std::string gigabytes(double bytes) { return fmt::format("{:.1f} GB", bytes / 1e9); }
+std::string gigabytes(double bytes) {
+  return bytes < 1e9 ? fmt::format("{:.0f} MB", bytes / 1e6)
+                     : fmt::format("{:.1f} GB", bytes / 1e9);
+}
 
 // Refuses, before anything is allocated, runs whose memory (the `concurrent` largest at once)
 // or files (all of them) exceed what the machine has (finding M1 of the review: the allowed

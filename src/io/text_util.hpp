@@ -44,9 +44,20 @@ inline std::size_t edit_distance(std::string_view a, std::string_view b) {
 /// third of the longer string (then a suggestion would only confuse).
 inline std::string closest_match(std::string_view name,
                                  const std::vector<std::string>& candidates) {
+  // The distance is at least the difference of the lengths: when that alone fails the test
+  // below for every candidate, nothing is suggested, and a long name (a 16 KiB cell) costs no
+  // distance at all; a candidate that cannot beat the best so far is skipped. Both are exact.
+  const auto length_gap = [&name](const std::string& c) {
+    return name.size() > c.size() ? name.size() - c.size() : c.size() - name.size();
+  };
+  const bool any_can_pass = std::any_of(candidates.begin(), candidates.end(), [&](const auto& c) {
+    return length_gap(c) * 3 <= std::max(name.size(), c.size()) + 2;
+  });
+  if (!any_can_pass) return {};
   std::string best;
   std::size_t best_distance = 0;
   for (const auto& candidate : candidates) {
+    if (!best.empty() && length_gap(candidate) >= best_distance) continue;
     const std::size_t d = edit_distance(name, candidate);
     if (best.empty() || d < best_distance) {
       best = candidate;

@@ -66,3 +66,12 @@ dynpos_cli_test(simulate_outputs_appear_together_or_not_at_all
   COMMAND bash -c "rm -rf \"$2\" && mkdir -p \"$2\" && echo old > \"$2/log.csv\" && echo x > \"$2/devices\" && \"$1\" simulate surge-steps-forward --duration 10 --out \"$2\"; code=$?; [ $code = 2 ] && [ \"$(cat \"$2/log.csv\")\" = old ] && [ -z \"$(ls -A \"$2\" | grep -v -x -e log.csv -e devices)\" ] && echo together-or-nothing"
           _ ${DYNPOS_EXE} ${CLI_OUT}/together
   PASS "together-or-nothing")
+# An output folder that cannot be made was "filesystem error: …" with exit 1.
+dynpos_cli_test(output_folder_that_cannot_be_made
+  COMMAND bash ${EXPECT_EXIT} 2 "^dynpos: error: '.*/plain-file/plots': Not a directory. check the path"
+          bash -c "mkdir -p \"$2\" && touch \"$2/plain-file\" && exec \"$1\" hybrid first-order --out \"$2/plain-file/plots\""
+          _ ${DYNPOS_EXE} ${CLI_OUT}/mkdir)
+# A library's field names ("CaseTiming: end_time") stay out of the message; the option is named.
+dynpos_cli_test(hybrid_end_time_names_the_option
+  COMMAND bash ${EXPECT_EXIT} 2 "^dynpos: error: \\(--end-time\\): end_time must be finite and > 0"
+          ${DYNPOS_EXE} hybrid first-order --end-time -1)
