@@ -14,6 +14,7 @@
 #include "dynpos/analysis/data_dir.hpp"
 #include "dynpos/analysis/leverarm_gnss.hpp"
 #include "dynpos/analysis/options.hpp"
+#include "dynpos/analysis/simulate.hpp"
 #include "dynpos/analysis/station_keeping.hpp"
 #include "dynpos/analysis/step.hpp"
 #include "dynpos/core/error.hpp"
@@ -314,6 +315,10 @@ MonteCarloReport run_montecarlo(const MonteCarloRequest& request) {
   const std::size_t n = last >= first ? static_cast<std::size_t>(last - first + 1) : 0;
   report.samples.resize(n);
   const WorkDir work(request.work_dir);
+  // The seeds at once each hold a run and its files (removed after the seed's analysis).
+  const std::size_t at_once = core::job_count(request.jobs, std::max<std::size_t>(n, 1));
+  check_simulation_resources(std::vector<scenario::ScenarioSpec>(at_once, spec), at_once,
+                             work.path);
   core::parallel_for(n, request.jobs, [&](std::size_t i) {
     report.samples[i] = run_seed(spec, vessel, first + i, work.path, request.measure);
   });
