@@ -36,7 +36,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // The first eight lines: each failing override throws, and an input of hundreds of lines
   // would spend its time in exceptions rather than in new paths.
   std::string_view rest = parts.second;
-  for (int line = 0; line < 8 && !rest.empty(); ++line) {
+  for (int n = 0; n < 8 && !rest.empty(); ++n) {
     const auto end = rest.find('\n');
     const auto line = rest.substr(0, end);
     apply(map, line, io::apply_column_override);
