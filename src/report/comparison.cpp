@@ -94,8 +94,10 @@ std::vector<Pair> pair_by_time(const json& a, const json& b, const char* key, do
     return v.is_number() ? v.get<double>() : std::nan("");
   };
   std::map<double, std::deque<std::size_t>> unpaired;  // time → indices in B, in order
+  std::deque<std::size_t> untimed;  // items of B whose time is not a number, in order
   for (std::size_t i = 0; i < b.size(); ++i) {
-    if (const double t = time_of(b[i]); !std::isnan(t)) unpaired[t].push_back(i);
+    const double t = time_of(b[i]);
+    (std::isnan(t) ? untimed : unpaired[t]).push_back(i);
   }
   std::vector<Pair> pairs;
   std::vector<bool> used(b.size(), false);
@@ -112,7 +114,11 @@ std::vector<Pair> pair_by_time(const json& a, const json& b, const char* key, do
         best_dt = dt;
       }
     };
-    if (!std::isnan(ta)) {
+    if (std::isnan(ta) && !untimed.empty()) {  // untimed items pair in their order
+      p.b = &b[untimed.front()];
+      used[untimed.front()] = true;
+      untimed.pop_front();
+    } else if (!std::isnan(ta)) {
       const auto right = unpaired.lower_bound(ta);
       if (right != unpaired.end()) consider(right);
       if (right != unpaired.begin()) consider(std::prev(right));

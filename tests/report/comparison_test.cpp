@@ -115,6 +115,12 @@ TEST(Comparison, ADocumentComparedWithItselfDiffersNowhere) {
   const json doc = json::parse(R"({"steps":[{"t_step":20,"T":2},{"t_step":820,"T":8},
       {"t_step":420,"T":4},{"t_step":820,"T":2},{"t_step":817,"T":3},{"t_step":823,"T":5}],
       "legs":[{"name":"fwd","x":1},{"name":"fwd","x":2},{"name":"aft","x":3}]})");
+  // A later finding: a step whose time is not a number (an object, null) paired with nothing.
+  const json untimed = json::parse(
+      R"({"steps":[{"t_step":{"K":0.02},"T":1},{"t_step":null,"T":2},{"t_step":5,"T":3}]})");
+  const auto u = compare_results(untimed, untimed);
+  EXPECT_EQ(u.only_in_a + u.only_in_b, 0u);
+  for (const ComparisonRow& row : u.rows) EXPECT_EQ(row.a, row.b) << row.figure;
   const auto r = compare_results(doc, doc);
   EXPECT_EQ(r.only_in_a + r.only_in_b, 0u);
   ASSERT_EQ(r.rows.size(), 15u);  // t_step and T of six steps, x of three legs
