@@ -2,6 +2,10 @@
 
 #include <array>
 
+#include <fmt/format.h>
+
+#include "dynpos/core/error.hpp"
+
 namespace dynpos::io::detail {
 
 LineStatus read_bounded_line(std::istream& in, std::string& out, std::size_t max_bytes,
@@ -48,6 +52,15 @@ bool skip_rest_of_line(std::istream& in, std::size_t max_bytes) {
     if (!full) return true;  // the line end, or the end of the file
     if (skipped > max_bytes) return false;
   }
+}
+
+void skip_overlong_line(std::istream& in, bool ended, std::size_t max_bytes,
+                        const std::string& file, std::size_t line) {
+  if (ended || skip_rest_of_line(in, max_bytes)) return;
+  throw core::InputError(
+      {file, line, {}, {}},
+      fmt::format("no line end within {} MiB: not a text capture", max_bytes >> 20),
+      "give a capture of NMEA sentences, one a line");
 }
 
 }  // namespace dynpos::io::detail

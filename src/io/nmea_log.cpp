@@ -437,12 +437,7 @@ NmeaLog read_nmea_log(const std::filesystem::path& file, const NmeaLogOptions& o
     ++line_no;
     if (status == detail::LineStatus::kTooLong) {
       reader.too_long(line_no);
-      if (!ended && !detail::skip_rest_of_line(in, kMaxNmeaJunkBytes)) {
-        throw core::InputError(
-            {name, line_no, {}, {}},
-            fmt::format("no line end within {} MiB: not a text capture", kMaxNmeaJunkBytes >> 20),
-            "give a capture of NMEA sentences, one a line");
-      }
+      detail::skip_overlong_line(in, ended, kMaxNmeaJunkBytes, name, line_no);
       continue;
     }
     const std::string_view text = detail::trim(line);

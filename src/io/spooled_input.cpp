@@ -51,6 +51,7 @@ SpooledInput::SpooledInput(const std::filesystem::path& path, std::filesystem::p
   const int in = path == "-" ? STDIN_FILENO : ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (in < 0) fail(name, "cannot open it", errno, "check the path and its permissions");
   if (dir.empty()) dir = std::filesystem::temp_directory_path();
+  // mkstemp() replaces the six X with a unique suffix and creates the file.
   std::string pattern = (dir / "dynpos-input-XXXXXX").string();
   const int out = ::mkstemp(pattern.data());
   if (out < 0) {
