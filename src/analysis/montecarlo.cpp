@@ -159,8 +159,7 @@ MonteCarloSample run_seed(const scenario::ScenarioSpec& spec, const scenario::Ve
                           std::uint64_t seed, const std::filesystem::path& work_dir,
                           const std::string& measure) {
   const std::filesystem::path dir = work_dir / fmt::format("seed-{}", seed);
-  const scenario::ScenarioRun run = scenario::run_scenario(spec, vessel, seed);
-  scenario::write_scenario_run(run, dir);
+  const scenario::ScenarioRun run = scenario::run_scenario_into(spec, vessel, seed, dir);
   MonteCarloSample out;
   out.seed = seed;
   const std::filesystem::path log = dir / "log.csv";

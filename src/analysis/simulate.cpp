@@ -72,16 +72,18 @@ SimulatedRun simulate_one(const SimulateRequest& request, const std::filesystem:
   apply_overrides(request, spec);
   check_simulation_resources({spec}, 1, request.out_dir);
   const scenario::VesselConfig vessel = scenario::load_vessel_config(vessel_file);
-  const scenario::ScenarioRun run = scenario::run_scenario(spec, vessel, request.seed);
-  scenario::write_scenario_run(run, request.out_dir);
-  return {spec.name, spec.duration_s, request.seed, run.log.size(), run.log.channels().size()};
+  std::size_t rows = 0;
+  const scenario::ScenarioRun run = scenario::run_scenario_into(
+      spec, vessel, request.seed, request.out_dir,
+      [&rows](const core::Log& log, const core::Log&) { rows += log.size(); });
+  return {spec.name, spec.duration_s, request.seed, rows, run.log.channels().size()};
 }
 
-// What a run keeps and writes per logged row: the simulator holds the whole run (the logger's
-// channels and the truth) until it writes the files. Measured: 870 B of memory and 1.46 kB of
-// files per row of a 100 Hz log with device files, plus about 3 kB of files a second at low
-// log rates (the NMEA captures, the MRU file). Rounded up: the check refuses only runs that
-// clearly do not fit.
+// What a run keeps and writes per logged row: the run holds one block of rows (the logger's
+// channels and the truth; scenario::kRunBlockRows) while it writes the files. Measured: 870 B
+// of memory and 1.46 kB of files per row of a 100 Hz log with device files, plus about 3 kB of
+// files a second at low log rates (the NMEA captures, the MRU file). Rounded up: the check
+// refuses only runs that clearly do not fit.
 constexpr double kMemoryPerRow_B = 1000.0;
 constexpr double kDiskPerRow_B = 1500.0;
 constexpr double kDiskPerSecond_B = 4000.0;
@@ -100,7 +102,8 @@ void check_simulation_resources(const std::vector<scenario::ScenarioSpec>& specs
   double disk = 0.0;
   for (const scenario::ScenarioSpec& s : specs) {
     const double rows = s.duration_s * s.log_rate_hz + 1.0;
-    memory.push_back(rows * kMemoryPerRow_B);
+    memory.push_back(std::min(rows, static_cast<double>(scenario::kRunBlockRows)) *
+                     kMemoryPerRow_B);
     disk += rows * kDiskPerRow_B + s.duration_s * kDiskPerSecond_B;
   }
   std::sort(memory.begin(), memory.end(), std::greater<>());
@@ -111,7 +114,7 @@ void check_simulation_resources(const std::vector<scenario::ScenarioSpec>& specs
     throw option_error(
         "duration/log_rate",
         fmt::format("{} would hold about {} in memory (about 1 kB a logged row "
-                    "until the files are written); {} is available",
+                    "of a block); {} is available",
                     what, gigabytes(held), gigabytes(static_cast<double>(*available))),
         "shorten --duration, lower --log-rate or run fewer --jobs");
   }

@@ -172,6 +172,11 @@ void Log::reserve(std::size_t n) {
   for (Channel& c : channels_) reserve_huge(c.values, n);
 }
 
+void Log::clear_rows() noexcept {
+  time_s_.clear();
+  for (Channel& c : channels_) c.values.clear();
+}
+
 bool Log::has(std::string_view name) const noexcept {
   return std::any_of(channels_.begin(), channels_.end(),
                      [name](const Channel& c) { return c.name == name; });

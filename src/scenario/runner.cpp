@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -51,9 +52,9 @@ TrialTruth trial_truth(const ScenarioSpec& spec, const VesselConfig& vessel, std
   return truth;
 }
 
-}  // namespace
-
-ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, std::uint64_t seed) {
+// The run, its rows kept (sink empty) or handed to `sink` every `block_rows` rows and at the end.
+ScenarioRun simulate(const ScenarioSpec& spec, const VesselConfig& vessel, std::uint64_t seed,
+                     const RunBlockSink& sink, std::size_t block_rows) {
   spec.validate();
   vessel.validate();
   const VesselPlant plant(vessel);
@@ -67,9 +68,15 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
   TruthRecorder truth_recorder(run.truth_log, control);
   TrialLogger trial_logger(run.log, spec, vessel, plant, seed, control);
   const auto rows = static_cast<std::size_t>(std::floor(spec.duration_s * spec.log_rate_hz)) + 1;
-  run.truth_log.reserve(rows);
-  run.log.reserve(rows);
+  const std::size_t held = sink ? std::min(rows, std::max<std::size_t>(block_rows, 1)) : rows;
+  run.truth_log.reserve(held);
+  run.log.reserve(held);
   VesselSampler sampler(plant, environment);
+  const auto hand_over = [&] {
+    sink(run.log, run.truth_log);
+    run.log.clear_rows();
+    run.truth_log.clear_rows();
+  };
 
   // The event order of a tick (sim/simulator.hpp): control at its rate, then the actuators'
   // dead times and the environment every tick (sample and hold), then the loggers at theirs.
@@ -92,6 +99,7 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
     const VesselSample& sample = sampler.sample(at.time(), c.state(), c.input());
     truth_recorder.record(at, sample);
     trial_logger.record(at.time(), sample);
+    if (sink && run.log.size() >= held) hand_over();
   });
 
   const sim::SimResult result = simulator.run(trim.x0);
@@ -99,11 +107,24 @@ ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, s
     throw std::runtime_error(fmt::format("simulation of '{}' stopped at t = {:.2f} s: {}",
                                          spec.name, result.final_time, result.message));
   }
+  if (sink && !run.log.empty()) hand_over();
   run.truth = trial_truth(spec, vessel, seed, plant, control);
   run.start_utc = spec.start_utc;
   run.device_files = spec.device_files;
   run.geoid_separation_m = vessel.sensors.origin.height_m;
   return run;
+}
+
+}  // namespace
+
+ScenarioRun run_scenario(const ScenarioSpec& spec, const VesselConfig& vessel, std::uint64_t seed) {
+  return simulate(spec, vessel, seed, {}, 0);
+}
+
+ScenarioRun stream_scenario(const ScenarioSpec& spec, const VesselConfig& vessel,
+                            std::uint64_t seed, const RunBlockSink& sink, std::size_t block_rows) {
+  if (!sink) throw std::invalid_argument("stream_scenario: no sink");
+  return simulate(spec, vessel, seed, sink, block_rows);
 }
 
 }  // namespace dynpos::scenario

@@ -43,18 +43,20 @@ dynpos_cli_test(nmea_capture_from_standard_input
   COMMAND bash -c "\"$1\" identify station-keeping - --json - < \"$2\""
           _ ${DYNPOS_EXE} ${PROJECT_SOURCE_DIR}/tests/data/nmea/station.nmea
   PASS "\"format\": \"nmea\"")
-# Finding M1: a run is held in memory until its files are written; one that cannot fit the
-# machine (10⁶ s at 100 Hz: about 100 GB) is refused before it starts, and nothing is written.
-dynpos_cli_test(simulate_too_large_for_memory_refused
-  COMMAND bash ${EXPECT_EXIT} 2 "\\(--duration/--log-rate\\): the run would hold about 100.0 GB in memory"
+# Finding M1: a run streams its files to disk a block at a time (scenario/run_files.hpp); one
+# whose files cannot fit the disk (10⁶ s at 100 Hz: about 154 GB) is refused before it starts,
+# and nothing is written.
+dynpos_cli_test(simulate_too_large_for_disk_refused
+  COMMAND bash ${EXPECT_EXIT} 2 "\\(--out\\): the files would take about 154.0 GB. .* is free on the disk of"
           ${DYNPOS_EXE} simulate pure-dp --duration 1000000 --log-rate 100 --out ${CLI_OUT}/huge)
-# Out of memory is exit 2 with the command and what to do, not "std::bad_alloc" (exit 1).
+# Out of memory is exit 2 with the command and what to do, not "std::bad_alloc" (exit 1): 20
+# million rows on standard input need about 480 MB of columns, more than the 400 MB allowed.
 # Memory is capped with ulimit, which AddressSanitizer's reservations cannot run under: the
 # sanitizer pass leaves this test out (label rlimit).
 dynpos_cli_test(out_of_memory_is_an_input_error
-  COMMAND bash ${EXPECT_EXIT} 2 "^dynpos: error: out of memory running 'simulate pure-dp --duration 7200 --log-rate 100 .*'. give a shorter log or run"
-          bash -c "ulimit -v 400000 && exec \"$1\" simulate pure-dp --duration 7200 --log-rate 100 --out \"$2\""
-          _ ${DYNPOS_EXE} ${CLI_OUT}/oom)
+  COMMAND bash ${EXPECT_EXIT} 2 "^dynpos: error: out of memory running 'identify step - --col input=cmd --col output=x'. give a shorter log or run"
+          bash -c "(echo 'time [s],cmd,x' && seq -f '%.0f,1,2' 1 20000000) | (ulimit -v 400000 && exec \"$1\" identify step - --col input=cmd --col output=x)"
+          _ ${DYNPOS_EXE})
 set_tests_properties(cli_out_of_memory_is_an_input_error PROPERTIES LABELS rlimit)
 dynpos_cli_test(signal_removes_temporary_files
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/signal_cleanup.sh ${DYNPOS_EXE}

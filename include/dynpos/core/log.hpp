@@ -78,6 +78,10 @@ class Log {
   /// Reserves room for n rows in the time axis and every channel.
   void reserve(std::size_t n);
 
+  /// Removes every row; the channels and the reserved room stay (a log written out a block at
+  /// a time reuses its memory).
+  void clear_rows() noexcept;
+
   bool has(std::string_view name) const noexcept;
   /// Throws std::out_of_range naming the channel (and the ones there are) if it is absent.
   const Channel& channel(std::string_view name) const;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "dynpos/scenario/run_files.hpp"
 #include "dynpos/scenario/runner.hpp"
 #include "dynpos/scenario/scenario_spec.hpp"
 #include "dynpos/scenario/vessel_config.hpp"
@@ -31,18 +32,13 @@ struct RunSummary {
 /// The seed a scenario runs with in a campaign: independent of which other scenarios run.
 std::uint64_t campaign_seed(std::uint64_t master_seed, const std::string& scenario_name);
 
-/// Writes one run into `dir` (created if needed): log.csv (the trial logger), truth.csv (the
-/// true motion), truth.json and, for each GNSS antenna K of the log, gnssK.nmea (NMEA 0183
-/// GGA, RMC, VTG, HDT at its fixes, UTC = run.start_utc + t; docs/log-format.md), each
-/// atomically.
-void write_scenario_run(const ScenarioRun& run, const std::filesystem::path& dir);
-
 /// Every scenario file of `scenario_dir` (list_scenarios), loaded, in name order. Throws
 /// core::InputError naming the folder if it holds none.
 std::vector<ScenarioSpec> load_campaign(const std::filesystem::path& scenario_dir);
 
-/// Runs each scenario with its campaign_seed() and writes DIR/<name>/ (write_scenario_run), on
-/// `jobs` threads (0 = every core; each run holds its log in memory until written). The files
+/// Runs each scenario with its campaign_seed() and writes DIR/<name>/ as it goes
+/// (run_scenario_into), on `jobs` threads (0 = every core; each run holds one block of rows,
+/// kRunBlockRows). The files
 /// do not depend on `jobs`. Returns the summaries in scenario order; the report on them is the
 /// application's (analysis/campaign_report.hpp).
 std::vector<RunSummary> run_campaign(const std::vector<ScenarioSpec>& scenarios,
