@@ -62,6 +62,33 @@ BENCHMARK(BM_FullModel)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
+// The same hour as `dynpos simulate` runs it: the rows handed on every kRunBlockRows rows
+// (stream_scenario) and the block's memory reused, here to a sink that only reads them. Run it
+// alone, `--benchmark_filter=BM_FullModelStreamedCold`, for a cold process.
+void BM_FullModelStreamed(benchmark::State& state) {
+  const dynpos::scenario::ScenarioSpec spec = full_model_hour(static_cast<double>(state.range(0)));
+  const dynpos::scenario::VesselConfig vessel;
+  std::size_t rows = 0;
+  for (auto _ : state) {
+    rows = 0;
+    dynpos::scenario::stream_scenario(
+        spec, vessel, 1, [&](const dynpos::core::Log& log, const dynpos::core::Log& truth) {
+          rows += log.size();
+          benchmark::DoNotOptimize(log.channels().back().values.data());
+          benchmark::DoNotOptimize(truth.channels().back().values.data());
+        });
+  }
+  state.counters["rows"] = static_cast<double>(rows);
+  state.counters["x_realtime"] = benchmark::Counter(
+      static_cast<double>(state.range(0) * state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_FullModelStreamed)
+    ->Name("BM_FullModelStreamedCold")
+    ->Arg(3600)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
 // The whole built-in test programme (every data/scenarios file), simulated without file output;
 // simulated_s counts the settling before each log as well.
 void BM_Campaign(benchmark::State& state) {

@@ -52,6 +52,17 @@ double median_in_place(std::span<double> values) {
 }
 
 double difference_noise_sigma(std::span<const double> x) {
+  // A piecewise-constant series (a command) without gaps: its differences and their deviations
+  // take few values, counted as they are formed, with no copy of the series.
+  if (x.size() >= 3) {
+    const auto diff = [&](std::size_t i) { return x[i + 1] - x[i]; };
+    if (const auto m = core::few_valued_median(x.size() - 1, diff)) {
+      const auto deviation = [&](std::size_t i) { return std::abs(diff(i) - *m); };
+      if (const auto mad = core::few_valued_median(x.size() - 1, deviation)) {
+        return 1.4826 * *mad / std::sqrt(2.0);
+      }
+    }
+  }
   std::vector<double> d;
   core::reserve_huge(d, x.size());
   for (std::size_t i = 1; i < x.size(); ++i) {

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "dynpos/core/error.hpp"
+#include "dynpos/core/few_valued_median.hpp"
 #include "dynpos/core/huge_pages.hpp"
 #include "series.hpp"
 
@@ -90,6 +91,19 @@ ValidSamples valid_samples(std::span<const double> t, std::span<const double> u,
 // √(mean Δu²)/√2 over the differences of consecutive valid samples, the largest 2 % left out
 // (the steps and ramps of a log with up to a few percent of its samples in transitions).
 double trimmed_rms_sigma(std::span<const double> uv) {
+  // Squared differences of few values (a command): the smallest 98 % summed from their counts.
+  const auto d2_at = [&](std::size_t i) { return (uv[i + 1] - uv[i]) * (uv[i + 1] - uv[i]); };
+  if (const auto few = core::few_values(uv.size() - 1, d2_at)) {
+    std::size_t left = std::max<std::size_t>(1, few->n - few->n / 50);
+    const double keep = static_cast<double>(left);
+    double sum = 0.0;
+    for (std::size_t k = 0; k < few->distinct && left > 0; ++k) {
+      const std::size_t take = std::min(left, few->counts[k].second);
+      sum += few->counts[k].first * static_cast<double>(take);
+      left -= take;
+    }
+    return std::sqrt(sum / keep / 2.0);
+  }
   std::vector<double> d2;
   core::reserve_huge(d2, uv.size());
   for (std::size_t i = 1; i < uv.size(); ++i)
