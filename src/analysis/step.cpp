@@ -84,6 +84,7 @@ ident::StepDetectorOptions detector_options(const StepRequest& request, const St
   d.min_plateau_s = request.min_plateau_s;
   d.timing = s.has_input ? ident::StepTiming::kCommand : ident::StepTiming::kTrigger;
   d.input_name = s.has_input ? "input" : "trigger";
+  d.jobs = request.source.jobs;
   return d;
 }
 

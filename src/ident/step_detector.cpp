@@ -8,6 +8,7 @@
 #include "dynpos/core/error.hpp"
 #include "dynpos/core/few_valued_median.hpp"
 #include "dynpos/core/huge_pages.hpp"
+#include "dynpos/core/parallel_for.hpp"
 #include "series.hpp"
 
 namespace dynpos::ident {
@@ -117,17 +118,18 @@ double trimmed_rms_sigma(std::span<const double> uv) {
 
 // Calls f(i, last, lo, hi) for each window [tᵢ, tᵢ + w] of the samples i … last, with the
 // smallest and largest value in it (monotone deques: linear time).
-template <class F>
-void for_each_window(std::span<const double> tv, std::span<const double> uv, double w, F&& f) {
+template <class Values, class F>
+void for_each_window(std::span<const double> tv, const Values& uv, double w, F&& f) {
   const std::size_t n = tv.size();
   std::deque<std::size_t> max_q;  // indices of decreasing values: front is the window maximum
   std::deque<std::size_t> min_q;
   std::size_t j = 0;  // one past the window end
   for (std::size_t i = 0; i < n; ++i) {
     while (j < n && tv[j] <= tv[i] + w) {
-      while (!max_q.empty() && uv[max_q.back()] <= uv[j]) max_q.pop_back();
+      const double uj = uv[j];
+      while (!max_q.empty() && uv[max_q.back()] <= uj) max_q.pop_back();
       max_q.push_back(j);
-      while (!min_q.empty() && uv[min_q.back()] >= uv[j]) min_q.pop_back();
+      while (!min_q.empty() && uv[min_q.back()] >= uj) min_q.pop_back();
       min_q.push_back(j);
       ++j;
     }
@@ -137,15 +139,20 @@ void for_each_window(std::span<const double> tv, std::span<const double> uv, dou
   }
 }
 
+// The 3-sample running median of a series, sample by sample as it is asked for (no copy of a
+// day-long input); the end samples are their own.
+struct RunningMedian3 {
+  std::span<const double> u;
+  double operator[](std::size_t i) const {
+    if (i == 0 || i + 1 >= u.size()) return u[i];
+    return std::max(std::min(u[i - 1], u[i]), std::min(std::max(u[i - 1], u[i]), u[i + 1]));
+  }
+};
+
 // S: the largest range of the input within any window of w seconds, after a 3-sample running
 // median (one bad sample does not set the scale of the steps).
 double largest_change(std::span<const double> tv, std::span<const double> uv, double w) {
-  std::vector<double> m;
-  core::reserve_huge(m, uv.size());
-  m.assign(uv.begin(), uv.end());
-  for (std::size_t i = 1; i + 1 < uv.size(); ++i) {
-    m[i] = std::max(std::min(uv[i - 1], uv[i]), std::min(std::max(uv[i - 1], uv[i]), uv[i + 1]));
-  }
+  const RunningMedian3 m{uv};
   double s = 0.0;
   for_each_window(
       tv, m, w, [&](std::size_t, std::size_t, double lo, double hi) { s = std::max(s, hi - lo); });
@@ -312,8 +319,14 @@ StepThreshold step_threshold(std::span<const double> t, std::span<const double> 
   options.validate();
   const ValidSamples v = valid_samples(t, u, options.input_name);
   StepThreshold s;
-  s.noise_sigma = std::max(detail::difference_noise_sigma(u), trimmed_rms_sigma(v.u));
-  s.largest_change = largest_change(v.t, v.u, options.change_window_s);
+  // Two independent passes over the whole input, side by side when allowed.
+  core::parallel_for(2, options.jobs, [&](std::size_t pass) {
+    if (pass == 0) {
+      s.noise_sigma = std::max(detail::difference_noise_sigma(u), trimmed_rms_sigma(v.u));
+    } else {
+      s.largest_change = largest_change(v.t, v.u, options.change_window_s);
+    }
+  });
   const double h_noise = options.band ? *options.band : options.noise_factor * s.noise_sigma;
   s.from_min_step = options.min_step > 0.0;
   const double threshold =

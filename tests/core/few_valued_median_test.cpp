@@ -52,3 +52,23 @@ TEST(FewValuedMedian, DeclinesManyValuesNaNAndEmpty) {
 
 }  // namespace
 }  // namespace dynpos::core
+
+namespace dynpos::core {
+namespace {
+
+TEST(FewValues, SortedDistinctValuesWithTheirCounts) {
+  const std::vector<double> v = {0.0, 4.0, 0.0, -1.0, 0.0, 4.0, 0.0};
+  const auto few = few_values(v.size(), [&](std::size_t i) { return v[i]; });
+  ASSERT_TRUE(few.has_value());
+  ASSERT_EQ(few->distinct, 3u);
+  EXPECT_EQ(few->n, 7u);
+  EXPECT_EQ(few->counts[0], (std::pair<double, std::size_t>{-1.0, 1}));
+  EXPECT_EQ(few->counts[1], (std::pair<double, std::size_t>{0.0, 4}));
+  EXPECT_EQ(few->counts[2], (std::pair<double, std::size_t>{4.0, 2}));
+  std::vector<double> sorted = v;
+  std::sort(sorted.begin(), sorted.end());
+  for (std::size_t rank = 0; rank < v.size(); ++rank) EXPECT_EQ(few->at_rank(rank), sorted[rank]);
+}
+
+}  // namespace
+}  // namespace dynpos::core

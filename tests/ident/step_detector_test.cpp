@@ -137,6 +137,53 @@ TEST(StepDetector, MinStepOverridesTheNoiseOfADitheredOrder) {
   EXPECT_NEAR(large.steps[0].t_step, 600.0, 0.5);
 }
 
+// The input's noise by selection on copies of its differences (what step_threshold gives
+// from their counts when they take few values): max(1.4826·MAD/√2, trimmed RMS/√2).
+double selected_noise_sigma(const std::vector<double>& u) {
+  std::vector<double> d;
+  for (std::size_t i = 1; i < u.size(); ++i) d.push_back(u[i] - u[i - 1]);
+  const auto median = [](std::vector<double> v) {
+    const std::size_t mid = v.size() / 2;
+    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(mid), v.end());
+    if (v.size() % 2 == 1) return v[mid];
+    return 0.5 *
+           (*std::max_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(mid)) + v[mid]);
+  };
+  const double m = median(d);
+  std::vector<double> dev, d2;
+  for (const double x : d) {
+    dev.push_back(std::abs(x - m));
+    d2.push_back(x * x);
+  }
+  const double mad_sigma = 1.4826 * median(dev) / std::sqrt(2.0);
+  const std::size_t keep = d2.size() - d2.size() / 50;
+  std::sort(d2.begin(), d2.end());
+  double sum = 0.0;
+  for (std::size_t i = 0; i < keep; ++i) sum += d2[i];
+  return std::max(mad_sigma, std::sqrt(sum / static_cast<double>(keep) / 2.0));
+}
+
+TEST(StepDetector, ThresholdOfAQuantizedOrderFromCountsAndOnEveryCore) {
+  // An rpm order logged in whole rpm with a ±2 rpm dither: its differences take 9 values, so
+  // the noise is counted, not selected from copies; the same σ̂ either way, and the same
+  // threshold on one thread or two.
+  const std::vector<double> t = time_axis(0.0, 0.5, 4001);
+  std::mt19937_64 rng(11);
+  std::uniform_int_distribution<int> dither(-2, 2);
+  std::vector<double> u(t.size());
+  for (std::size_t i = 0; i < t.size(); ++i) u[i] = (t[i] < 1000.0 ? 20.0 : 80.0) + dither(rng);
+  StepDetectorOptions one, two;
+  two.jobs = 2;
+  const StepThreshold a = step_threshold(t, u, one);
+  const StepThreshold b = step_threshold(t, u, two);
+  EXPECT_NEAR(a.noise_sigma, selected_noise_sigma(u), 1e-12 * a.noise_sigma);
+  EXPECT_EQ(a.noise_sigma, b.noise_sigma);
+  EXPECT_EQ(a.largest_change, b.largest_change);
+  EXPECT_EQ(a.threshold, b.threshold);
+  EXPECT_EQ(a.band, b.band);
+  EXPECT_NEAR(a.largest_change, 60.0, 4.0 + 1e-9);  // 20 → 80 rpm, each level ±2 rpm
+}
+
 TEST(StepDetector, ExactOnANoiseFreeCommand) {
   // A clean command (σ̂ = 0): the band shrinks to round-off, and a step of 1e-3 is found.
   const std::vector<double> t = time_axis(0.0, 1.0, 101);

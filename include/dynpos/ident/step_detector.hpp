@@ -86,6 +86,9 @@ struct StepDetectorOptions {
   StepTiming timing = StepTiming::kCommand;
   /// Channel name used in error messages.
   std::string input_name = "input";
+  /// Threads for the adapted threshold's passes over the whole input (the noise and the largest
+  /// change side by side); 0 = every core. The result does not depend on it.
+  unsigned jobs = 1;
 
   /// Throws core::InputError naming the bad option.
   void validate() const;
