@@ -80,6 +80,11 @@ std::optional<double> median_rate_hz(const core::Log& log, const core::Channel& 
   const auto missing = std::count_if(channel.values.begin(), channel.values.end(),
                                      [](double v) { return core::is_missing(v); });
   if (missing == 0 && all_valid_hz) return *all_valid_hz;
+  if (missing == 0) {  // the log's own time axis, no copy of it
+    all_valid_hz = log.size() < 2 ? std::nullopt
+                                  : std::optional<double>(1.0 / core::median_spacing_s(log.time()));
+    return *all_valid_hz;
+  }
   std::vector<double> valid_t;
   valid_t.reserve(log.size() - static_cast<std::size_t>(missing));
   for (std::size_t i = 0; i < log.size(); ++i) {
@@ -88,7 +93,6 @@ std::optional<double> median_rate_hz(const core::Log& log, const core::Channel& 
   const std::optional<double> rate =
       valid_t.size() < 2 ? std::nullopt
                          : std::optional<double>(1.0 / core::median_spacing_s(valid_t));
-  if (missing == 0) all_valid_hz = rate;
   return rate;
 }
 
