@@ -231,13 +231,17 @@ std::optional<ident::LocalPositions> local_position(const core::Log& log) {
   return std::nullopt;
 }
 
-std::vector<ident::ThrusterChannels> thrust_power_channels(const core::Log& log) {
+std::vector<std::string> thrust_power_names(const core::Log& log) {
   std::vector<std::string> names = thruster_names(log, "thrust");
   for (const std::string& n : thruster_names(log, "power")) {
     if (std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);
   }
+  return names;
+}
+
+std::vector<ident::ThrusterChannels> thrust_power_channels(const core::Log& log) {
   std::vector<ident::ThrusterChannels> out;
-  for (const std::string& n : names) {
+  for (const std::string& n : thrust_power_names(log)) {
     out.push_back({n, values_or_empty(log, "thrust." + n), values_or_empty(log, "power." + n)});
   }
   return out;

@@ -22,18 +22,33 @@ bool wanted_role(const std::string& role) {
   return role.rfind("thrust.", 0) == 0 || role.rfind("power.", 0) == 0;
 }
 
+// A channel's values moved out of `log` (empty if it has none): the input takes the log's
+// columns instead of copies of them (a day-long log would be held twice). The channel is left
+// without values; make_input() is the last to use it.
+std::vector<double> take_values(core::Log& log, const std::string& name) {
+  return log.has(name) ? std::move(log.channel(name).values) : std::vector<double>{};
+}
+
 // The position in metres: north/east as logged (any offset), else lat/lon about their first fix.
-ident::StationKeepingInput make_input(const core::Log& log) {
+// The time axis is copied (a Log keeps its own); every other column is moved out of `log`.
+ident::StationKeepingInput make_input(core::Log& log) {
   ident::StationKeepingInput in;
   in.t_s = log.time();
-  if (std::optional<ident::LocalPositions> p = local_position(log)) {
+  if (log.has("north") && log.has("east")) {
+    in.north_m = take_values(log, "north");
+    in.east_m = take_values(log, "east");
+  } else if (std::optional<ident::LocalPositions> p = local_position(log)) {
     in.north_m = std::move(p->north_m);
     in.east_m = std::move(p->east_m);
+    take_values(log, "lat");  // done with: freed
+    take_values(log, "lon");
   }
-  in.heading_rad = values_or_empty(log, "heading");
-  in.wind_speed_mps = values_or_empty(log, "wind_speed");
-  in.wind_dir_rad = values_or_empty(log, "wind_dir");
-  in.thrusters = thrust_power_channels(log);
+  in.heading_rad = take_values(log, "heading");
+  in.wind_speed_mps = take_values(log, "wind_speed");
+  in.wind_dir_rad = take_values(log, "wind_dir");
+  for (const std::string& n : thrust_power_names(log)) {
+    in.thrusters.push_back({n, take_values(log, "thrust." + n), take_values(log, "power." + n)});
+  }
   return in;
 }
 
@@ -112,7 +127,7 @@ StationKeepingReport run_station_keeping(const StationKeepingRequest& request) {
     source.window_to_s = w.t_to_s;
   }
   LoadedLog loaded = load_window(source, request);
-  const core::Log& log = loaded.log;
+  core::Log& log = loaded.log;
   if (!(log.has("north") && log.has("east")) && !(log.has("lat") && log.has("lon"))) {
     throw core::InputError({request.source.log.string(), {}, {}, "north/east"},
                            "no position in the log",

@@ -131,8 +131,11 @@ std::vector<double> values_or_empty(const core::Log& log, const std::string& nam
 /// first fix; nullopt when the log has neither pair.
 std::optional<ident::LocalPositions> local_position(const core::Log& log);
 
-/// Each thruster with a thrust.NAME or power.NAME channel (thrust names first, then power-only
-/// ones), with both series, empty where the log lacks one.
+/// The thrusters with a thrust.NAME or power.NAME channel: thrust names first, then power-only
+/// ones.
+std::vector<std::string> thrust_power_names(const core::Log& log);
+
+/// Each thruster of thrust_power_names() with both series, empty where the log lacks one.
 std::vector<ident::ThrusterChannels> thrust_power_channels(const core::Log& log);
 
 }  // namespace dynpos::analysis
