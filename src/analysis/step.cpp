@@ -30,10 +30,49 @@ struct StepSignals {
   core::Log log;
   std::vector<double> derived;
   std::span<const double> t, input, output, trigger;
+  double log_start_s = 0.0, log_end_s = 0.0;  // how far the file reaches (LoadedLog)
   bool has_input = false, has_trigger = false;
   std::string output_unit, input_unit;
   io::InputReport read;  // what was read
 };
+
+// A window with no row of the log [first_s, last_s]: the error step_from_window() gives for a
+// window outside the log.
+core::InputError window_without_rows(const StepRequest& request, double first_s, double last_s) {
+  const double from = request.from_s.value_or(first_s), to = request.to_s.value_or(last_s);
+  const bool outside = from > last_s || to < first_s;
+  return core::InputError(
+      {"", {}, {}, "input"},
+      fmt::format("window [{:g}, {:g}] s {} the log [{:g}, {:g}] s", from, to,
+                  outside ? "is outside" : "holds no sample of", first_s, last_s),
+      outside ? "choose a window inside the logged time" : "choose a wider window");
+}
+
+// The log, with --from/--to only the rows inside them (finding M2 of the reliability review:
+// a window bounds what is read; the step threshold is then the window's). A CSV log is read
+// within the window; a log read whole (an NMEA capture) is cut to it.
+LoadedLog load_window(const StepRequest& request, const RoleFilter& wanted) {
+  LogSource src = request.source;
+  const bool reversed = request.from_s && request.to_s && !(*request.from_s < *request.to_s);
+  if (!(request.from_s || request.to_s) || reversed)
+    return src.load(wanted);  // reversed: step_from_window() says so
+  src.window_from_s = request.from_s;
+  src.window_to_s = request.to_s;
+  LoadedLog loaded;
+  try {
+    loaded = src.load(wanted);
+  } catch (const io::EmptyWindowError& e) {
+    throw window_without_rows(request, e.first_row_s, e.last_row_read_s);
+  }
+  const std::vector<double>& t = loaded.log.time();
+  if (!t.empty() && (request.from_s.value_or(t.front()) > t.front() ||
+                     request.to_s.value_or(t.back()) < t.back())) {
+    const double first = t.front(), last = t.back();
+    loaded.log = loaded.log.window(request.from_s.value_or(first), request.to_s.value_or(last));
+    if (loaded.log.empty()) throw window_without_rows(request, first, last);
+  }
+  return loaded;
+}
 
 StepSignals read_signals(const StepRequest& request) {
   const LogSource& src = request.source;
@@ -48,9 +87,11 @@ StepSignals read_signals(const StepRequest& request) {
                        "map the measured response, e.g. --col output=rpm.stb, or use "
                        "--derive total-speed with u and v");
   }
-  LoadedLog loaded = src.load(wanted);
+  LoadedLog loaded = load_window(request, wanted);
   StepSignals s;
   s.log = std::move(loaded.log);
+  s.log_start_s = loaded.log_start_s;
+  s.log_end_s = loaded.log_end_s;
   const core::Log& log = s.log;
   if (total_speed && !(log.has("u") && log.has("v"))) {
     throw core::InputError({src.log.string(), {}, {}, "u, v"}, "no surge and sway speed columns",
@@ -142,7 +183,8 @@ std::vector<FoundStep> find_steps(const StepRequest& request, const StepSignals&
   }
   ident::StepThreshold scale;
   if ((s.has_input || s.has_trigger) && !request.step_at_s) {
-    // One threshold for the whole log, whatever stretch is searched.
+    // One threshold for what was read (the whole log, or the window), whatever stretch of it
+    // is searched (a segment).
     scale = ident::step_threshold(s.t, u, d);
     report.step_threshold = scale.threshold;
     report.threshold_from_min_step = scale.from_min_step;
@@ -155,7 +197,7 @@ std::vector<FoundStep> find_steps(const StepRequest& request, const StepSignals&
     const double to = request.to_s.value_or(s.t.back());
     return {
         {ident::step_from_window(s.t, s.has_input || s.has_trigger ? u : std::span<const double>(),
-                                 {from, to, request.step_at_s}, d),
+                                 {from, to, request.step_at_s, s.log_start_s, s.log_end_s}, d),
          ""}};
   }
   return detect_in_stretches(request, s, d, scale, report.notes);

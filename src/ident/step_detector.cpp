@@ -406,7 +406,11 @@ Step step_from_window(std::span<const double> t, std::span<const double> u,
   const core::InputLocation where{"", {}, {}, name};
   if (!u.empty()) detail::check_same_length(t.size(), u.size(), name);
   detail::check_time_axis(t, name);
-  if (t.empty()) throw core::InputError(where, "the log is empty", "");
+  if (t.empty() && !(window.log_start_s && window.log_end_s)) {
+    throw core::InputError(where, "the log is empty", "");
+  }
+  const double log_start = window.log_start_s.value_or(t.empty() ? 0.0 : t.front());
+  const double log_end = window.log_end_s.value_or(t.empty() ? 0.0 : t.back());
   std::string window_text = "[";
   window_text += fmt(window.t_from);
   window_text += ", ";
@@ -416,12 +420,16 @@ Step step_from_window(std::span<const double> t, std::span<const double> u,
     throw core::InputError(where, "window " + window_text + " is empty or reversed",
                            "give from < to");
   }
-  const double slack = 1e-9 * std::max({1.0, std::abs(t.front()), std::abs(t.back())});
-  if (window.t_from < t.front() - slack || window.t_to > t.back() + slack) {
+  const double slack = 1e-9 * std::max({1.0, std::abs(log_start), std::abs(log_end)});
+  if (window.t_from < log_start - slack || window.t_to > log_end + slack) {
     throw core::InputError(where,
-                           "window " + window_text + " is outside the log [" + fmt(t.front()) +
-                               ", " + fmt(t.back()) + "] s",
+                           "window " + window_text + " is outside the log [" + fmt(log_start) +
+                               ", " + fmt(log_end) + "] s",
                            "choose a window inside the logged time");
+  }
+  if (t.empty()) {
+    throw core::InputError(where, "window " + window_text + " holds no sample of the log",
+                           "choose a wider window");
   }
   const auto first = std::lower_bound(t.begin(), t.end(), window.t_from - slack);
   const auto last = std::upper_bound(t.begin(), t.end(), window.t_to + slack);

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "../io/io_test_util.hpp"
 #include "../source_dir.hpp"
 #include "dynpos/core/error.hpp"
+#include "dynpos/io/csv_reader.hpp"
 
 namespace dynpos::analysis {
 namespace {
@@ -106,6 +108,43 @@ TEST(RunStep, WindowGivesOneStep) {
   EXPECT_NEAR(report.steps[0].step.t_step, 40.0, 1e-9);
   ASSERT_TRUE(report.steps[0].gain);
   EXPECT_NEAR(*report.steps[0].gain, kGain, 0.02);
+}
+
+TEST(RunStep, AWindowIsAllThatIsRead) {
+  // Finding M2 of the reliability review: with --from/--to only the window's rows are read
+  // (301 of the 701), and the step in it is the one the whole log holds.
+  const TempDir dir;
+  StepRequest r = request_for(dir.write("steps.csv", fopdt_csv()));
+  r.from_s = 30.0;
+  r.to_s = 60.0;
+  const StepReport windowed = run_step(r);
+  ASSERT_EQ(windowed.input.files.size(), 1u);
+  EXPECT_EQ(windowed.input.files[0].records, 301u);
+  ASSERT_EQ(windowed.steps.size(), 1u);
+  EXPECT_NEAR(windowed.steps[0].step.t_step, 40.0, 1e-9);
+  EXPECT_EQ(windowed.steps[0].step.t_end, 60.0);
+  ASSERT_TRUE(windowed.steps[0].gain && windowed.steps[0].time_constant_s);
+  EXPECT_NEAR(*windowed.steps[0].gain, kGain, 0.02);
+  EXPECT_NEAR(*windowed.steps[0].time_constant_s, kTimeConstant, 0.05 * kTimeConstant);
+  // A log taken whole (in memory, or an NMEA capture) is cut to the window: the same result.
+  StepRequest in_memory = r;
+  in_memory.source.memory =
+      std::make_shared<const core::Log>(io::read_csv_all(r.source.log, {}, {}));
+  nlohmann::json a = to_json(windowed), b = to_json(run_step(in_memory));
+  for (nlohmann::json* j : {&a, &b}) {
+    j->erase("input");
+    j->erase("log");
+  }
+  EXPECT_EQ(a.dump(), b.dump());
+  // A window between two rows holds none; one past the end is outside the log.
+  r.from_s = 30.01;
+  r.to_s = 30.02;
+  EXPECT_THAT(option_error_of([&] { run_step(r); }).second,
+              HasSubstr("window [30.01, 30.02] s holds no sample of the log"));
+  r.from_s = 65.0;
+  r.to_s = 80.0;
+  EXPECT_THAT(option_error_of([&] { run_step(r); }).second,
+              HasSubstr("window [65, 80] s is outside the log [0, 70] s"));
 }
 
 TEST(RunStep, TotalSpeedIsDerivedFromUAndV) {

@@ -45,6 +45,13 @@ const std::vector<Move> kProgramme{
     {400.0, 0.40, 0.0, 4.0}, {500.0, 0.0, -0.30, 0.0}, {600.0, -0.30, -0.10, 2.0},
 };
 
+// A window [from, to] with its step time, and how far the log reaches when t holds only the
+// window's rows.
+StepWindow window(double from, double to, std::optional<double> t_step = {},
+                  std::optional<double> log_start_s = {}, std::optional<double> log_end_s = {}) {
+  return {from, to, t_step, log_start_s, log_end_s};
+}
+
 TEST(StepDetector, FindsEveryStepOfAMultiStepLog) {
   // 100 Hz with ±30 % jitter, input noise σ = 0.002, a 2 s logging gap inside a plateau.
   const std::vector<double> t = time_axis(0.0, 0.01, 70001, 0.3, 3);
@@ -242,18 +249,18 @@ TEST(StepDetector, ExplicitWindows) {
   const std::vector<double> u = sample(
       t, [](double x) { return command(kProgramme, x); }, 0.002, 4);
   // Detection inside a window around one step; the window is kept as given.
-  const Step one = step_from_window(t, u, {200.0, 380.0, {}});
+  const Step one = step_from_window(t, u, window(200.0, 380.0));
   EXPECT_NEAR(one.t_step, 250.0, 0.02);
   EXPECT_EQ(one.t_begin, 200.0);
   EXPECT_EQ(one.t_end, 380.0);
   // A given step time: levels are the medians either side (the ramp shifts the median of
   // 130 s of samples by nothing, being 3 s of 130 s above the median).
-  const Step given = step_from_window(t, u, {200.0, 380.0, 250.0});
+  const Step given = step_from_window(t, u, window(200.0, 380.0, 250.0));
   EXPECT_EQ(given.t_step, 250.0);
   EXPECT_NEAR(*given.u_before, 0.10, 2e-4);
   EXPECT_NEAR(*given.u_after, 0.40, 2e-4);
   // No input logged: the levels are missing, not zero.
-  const Step bare = step_from_window(t, {}, {200.0, 380.0, 250.0});
+  const Step bare = step_from_window(t, {}, window(200.0, 380.0, 250.0));
   EXPECT_FALSE(bare.u_before.has_value());
   EXPECT_FALSE(bare.delta_u().has_value());
 }
@@ -378,21 +385,42 @@ TEST(StepDetector, BadInputIsAnInputError) {
                         "not strictly increasing at index 10");
 
   const std::vector<double> u = sample(t, [](double x) { return x < 50.0 ? 0.0 : 1.0; });
-  EXPECT_THROW_MATCHING(step_from_window(t, u, {-10.0, 60.0, {}}), InputError,
+  EXPECT_THROW_MATCHING(step_from_window(t, u, window(-10.0, 60.0)), InputError,
                         R"(window \[-10, 60\] s is outside the log \[0, 100\] s)");
-  EXPECT_THROW_MATCHING(step_from_window(t, u, {60.0, 40.0, {}}), InputError, "empty or reversed");
-  EXPECT_THROW_MATCHING(step_from_window(t, u, {10.0, 40.0, {}}), InputError,
+  EXPECT_THROW_MATCHING(step_from_window(t, u, window(60.0, 40.0)), InputError,
+                        "empty or reversed");
+  EXPECT_THROW_MATCHING(step_from_window(t, u, window(10.0, 40.0)), InputError,
                         R"(constant input.* in the window \[10, 40\] s)");
-  EXPECT_THROW_MATCHING(step_from_window(t, u, {10.0, 40.0, 20.0}), InputError, "constant input");
-  EXPECT_THROW_MATCHING(step_from_window(t, u, {10.0, 40.0, 45.0}), InputError,
+  EXPECT_THROW_MATCHING(step_from_window(t, u, window(10.0, 40.0, 20.0)), InputError,
+                        "constant input");
+  EXPECT_THROW_MATCHING(step_from_window(t, u, window(10.0, 40.0, 45.0)), InputError,
                         "not inside the window");
-  EXPECT_THROW_MATCHING(step_from_window(t, {}, {10.0, 90.0, {}}), InputError,
+  EXPECT_THROW_MATCHING(step_from_window(t, {}, window(10.0, 90.0)), InputError,
                         "no input and no step time");
   const std::vector<double> two = sample(t, [](double x) {
     return x < 30.0 ? 0.0 : x < 60.0 ? 1.0 : 0.0;
   });
-  EXPECT_THROW_MATCHING(step_from_window(t, two, {0.0, 100.0, {}}), InputError,
+  EXPECT_THROW_MATCHING(step_from_window(t, two, window(0.0, 100.0)), InputError,
                         "2 steps found in the window");
+  // Rows of a window only (a log read within it): the log's reach is given, not the rows'.
+  const auto in_window = [&](double from, double to) {
+    std::vector<double> tw, uw;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      if (t[i] >= from && t[i] <= to) {
+        tw.push_back(t[i]);
+        uw.push_back(u[i]);
+      }
+    }
+    return std::pair{tw, uw};
+  };
+  const auto [tw, uw] = in_window(40.05, 60.0);
+  const Step inner = step_from_window(tw, uw, window(40.05, 60.0, {}, 0.0, 100.0));
+  EXPECT_NEAR(inner.t_step, 50.0, 0.1);
+  EXPECT_EQ(inner.t_begin, 40.05);
+  EXPECT_THROW_MATCHING(step_from_window(tw, uw, window(40.05, 160.0, {}, 0.0, 100.0)), InputError,
+                        R"(window \[40.05, 160\] s is outside the log \[0, 100\] s)");
+  EXPECT_THROW_MATCHING(step_from_window({}, {}, window(40.01, 40.02, {}, 0.0, 100.0)), InputError,
+                        "holds no sample of the log");
   StepDetectorOptions bad;
   bad.min_plateau_s = 0.0;
   EXPECT_THROW_MATCHING(detect_steps(t, u, bad), InputError, "minimum plateau");

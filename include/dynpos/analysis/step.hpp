@@ -27,7 +27,8 @@ struct StepRequest {
   /// "lsq": least squares with the dead time; "smith": Smith's two-point method (3.8)-(3.9);
   /// "smith2": Smith's second-order 20/60 %; "rk": Rangaiah-Krishnaswamy 14/55/91 %.
   std::string method = "lsq";
-  std::optional<double> from_s;     ///< window start [s]: one step in the window
+  std::optional<double> from_s;     ///< window start [s]: one step in the window (only the
+                                    ///< window is read, with its own step threshold)
   std::optional<double> to_s;       ///< window end [s]
   std::optional<double> step_at_s;  ///< step time [s], with or without a window
   /// "" or "total-speed": fit √(u² + v²) (3.19) from the roles u and v (sway tests).

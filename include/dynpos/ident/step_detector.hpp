@@ -151,6 +151,10 @@ struct StepWindow {
   double t_from = 0.0;
   double t_to = 0.0;
   std::optional<double> t_step;
+  /// How far the log reaches [s] when t holds only the window's rows (a log read within the
+  /// window); unset: t.front() and t.back().
+  std::optional<double> log_start_s;
+  std::optional<double> log_end_s;
 };
 
 /// The step in an explicit window. With window.t_step given, the levels are the medians of u
