@@ -79,7 +79,7 @@ SimulatedRun simulate_one(const SimulateRequest& request, const std::filesystem:
   return {spec.name, spec.duration_s, request.seed, rows, run.log.channels().size()};
 }
 
-// What a run keeps and writes per logged row: the run holds one block of rows (the logger's
+// What a run keeps and writes per logged row: the run holds two blocks of rows (the logger's
 // channels and the truth; scenario::kRunBlockRows) while it writes the files. Measured: 870 B
 // of memory and 1.46 kB of files per row of a 100 Hz log with device files, plus about 3 kB of
 // files a second at low log rates (the NMEA captures, the MRU file). Rounded up: the check
@@ -102,7 +102,8 @@ void check_simulation_resources(const std::vector<scenario::ScenarioSpec>& specs
   double disk = 0.0;
   for (const scenario::ScenarioSpec& s : specs) {
     const double rows = s.duration_s * s.log_rate_hz + 1.0;
-    memory.push_back(std::min(rows, static_cast<double>(scenario::kRunBlockRows)) *
+    // Two blocks: the one the run fills, and the writing thread's copy of the last one.
+    memory.push_back(std::min(rows, 2.0 * static_cast<double>(scenario::kRunBlockRows)) *
                      kMemoryPerRow_B);
     disk += rows * kDiskPerRow_B + s.duration_s * kDiskPerSecond_B;
   }
@@ -114,7 +115,7 @@ void check_simulation_resources(const std::vector<scenario::ScenarioSpec>& specs
     throw option_error(
         "duration/log_rate",
         fmt::format("{} would hold about {} in memory (about 1 kB a logged row "
-                    "of a block); {} is available",
+                    "of two blocks); {} is available",
                     what, gigabytes(held), gigabytes(static_cast<double>(*available))),
         "shorten --duration, lower --log-rate or run fewer --jobs");
   }

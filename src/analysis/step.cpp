@@ -36,16 +36,24 @@ struct StepSignals {
   io::InputReport read;  // what was read
 };
 
-// A window with no row of the log [first_s, last_s]: the error step_from_window() gives for a
-// window outside the log.
+// A window with no row of the log, whose first row is at first_s and whose last row read is at
+// last_s (reading stops at the first row after the window): the error step_from_window() gives
+// for a window outside the log.
 core::InputError window_without_rows(const StepRequest& request, double first_s, double last_s) {
   const double from = request.from_s.value_or(first_s), to = request.to_s.value_or(last_s);
-  const bool outside = from > last_s || to < first_s;
-  return core::InputError(
-      {"", {}, {}, "input"},
-      fmt::format("window [{:g}, {:g}] s {} the log [{:g}, {:g}] s", from, to,
-                  outside ? "is outside" : "holds no sample of", first_s, last_s),
-      outside ? "choose a window inside the logged time" : "choose a wider window");
+  const std::string window = fmt::format("window [{:g}, {:g}] s", from, to);
+  const core::InputLocation where{"", {}, {}, "input"};
+  if (to < first_s) {
+    return core::InputError(where,
+                            fmt::format("{} ends before the log starts ({:g} s)", window, first_s),
+                            "choose a window inside the logged time");
+  }
+  if (from > last_s) {
+    return core::InputError(
+        where, fmt::format("{} is outside the log [{:g}, {:g}] s", window, first_s, last_s),
+        "choose a window inside the logged time");
+  }
+  return core::InputError(where, window + " holds no sample of the log", "choose a wider window");
 }
 
 // The log, with --from/--to only the rows inside them (finding M2 of the reliability review:
@@ -68,7 +76,9 @@ LoadedLog load_window(const StepRequest& request, const RoleFilter& wanted) {
   if (!t.empty() && (request.from_s.value_or(t.front()) > t.front() ||
                      request.to_s.value_or(t.back()) < t.back())) {
     const double first = t.front(), last = t.back();
-    loaded.log = loaded.log.window(request.from_s.value_or(first), request.to_s.value_or(last));
+    const double from = request.from_s.value_or(first), to = request.to_s.value_or(last);
+    if (from > last || to < first) throw window_without_rows(request, first, last);
+    loaded.log = loaded.log.window(from, to);
     if (loaded.log.empty()) throw window_without_rows(request, first, last);
   }
   return loaded;
@@ -193,6 +203,7 @@ std::vector<FoundStep> find_steps(const StepRequest& request, const StepSignals&
     d.band = scale.band;
   }
   if (window) {
+    if (s.t.empty()) throw core::InputError({"", {}, {}, "time"}, "the log has no rows", "");
     const double from = request.from_s.value_or(s.t.front());
     const double to = request.to_s.value_or(s.t.back());
     return {

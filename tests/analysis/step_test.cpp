@@ -136,6 +136,19 @@ TEST(RunStep, AWindowIsAllThatIsRead) {
     j->erase("log");
   }
   EXPECT_EQ(a.dump(), b.dump());
+  // One end past the log: outside it, however the log was read.
+  in_memory.from_s = 500.0;
+  in_memory.to_s.reset();
+  EXPECT_THAT(option_error_of([&] { run_step(in_memory); }).second,
+              HasSubstr("window [500, 70] s is outside the log [0, 70] s"));
+  in_memory.from_s.reset();
+  in_memory.to_s = -5.0;
+  EXPECT_THAT(option_error_of([&] { run_step(in_memory); }).second,
+              HasSubstr("window [0, -5] s ends before the log starts (0 s)"));
+  r.from_s.reset();
+  r.to_s = -5.0;  // the same when the reading stops at the log's first row
+  EXPECT_THAT(option_error_of([&] { run_step(r); }).second,
+              HasSubstr("window [0, -5] s ends before the log starts (0 s)"));
   // A window between two rows holds none; one past the end is outside the log.
   r.from_s = 30.01;
   r.to_s = 30.02;

@@ -68,10 +68,10 @@ struct SimulateReport {
 SimulateReport run_simulate(const SimulateRequest& request);
 
 /// Refuses, before anything is allocated, simulated runs whose memory (the `concurrent` largest
-/// held at once: a run is kept in memory until its files are written) or files (all of them)
-/// exceed what the machine has: option_error "duration/log_rate" naming the memory needed and
-/// available, "out" the disk space needed and free on out_dir's file system. Estimates: 1 kB
-/// a logged row in memory, 1.5 kB a row and 4 kB a second of files.
+/// held at once: a run holds two blocks of scenario::kRunBlockRows rows while it writes its
+/// files) or files (all of them) exceed what the machine has: option_error "duration/log_rate"
+/// naming the memory needed and available, "out" the disk space needed and free on out_dir's
+/// file system. Estimates: 1 kB a held row, 1.5 kB a row and 4 kB a second of files.
 void check_simulation_resources(const std::vector<scenario::ScenarioSpec>& specs,
                                 std::size_t concurrent, const std::filesystem::path& out_dir);
 
