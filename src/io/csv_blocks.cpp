@@ -8,8 +8,10 @@
 #include <bit>
 #include <cerrno>
 #include <cmath>
+#include <condition_variable>
 #include <cstring>
 #include <limits>
+#include <mutex>
 #include <string_view>
 
 #include <fmt/format.h>
@@ -72,13 +74,13 @@ struct BlockReader::State {
   std::vector<std::size_t> channel_slot;
   std::size_t slots = 0;
   std::size_t last_field = 0;  // the last field that is parsed
-  std::vector<Block> blocks;
+  std::vector<Block> blocks;   // the blocks in flight, each with its buffer
   std::vector<Buffer> buffers;
 
   // Reads [from, from + bytes) (up to the end of the file) into `b`, keeping what it holds.
   void read_into(Buffer& b, std::uint64_t from, std::uint64_t bytes, std::uint64_t file_size);
-  void parse_block(std::size_t index, std::uint64_t start, std::uint64_t stop,
-                   std::uint64_t file_size);
+  void parse_block(Block& block, Buffer& buffer, bool at_line_start, std::uint64_t start,
+                   std::uint64_t stop, std::uint64_t file_size);
   bool parse_row(std::string_view line, std::vector<std::string_view>& cells, Block& block,
                  std::uint32_t line_in_block) const;
 };
@@ -153,12 +155,10 @@ bool BlockReader::State::parse_row(std::string_view line, std::vector<std::strin
   return true;
 }
 
-// Block `index`: the lines that start in [start, stop) (start itself if it is the wave's first
-// block, which begins at a line start).
-void BlockReader::State::parse_block(std::size_t index, std::uint64_t start, std::uint64_t stop,
+// The block of the lines that start in [start, stop) (start itself when `at_line_start`).
+void BlockReader::State::parse_block(Block& block, Buffer& buffer, bool at_line_start,
+                                     std::uint64_t start, std::uint64_t stop,
                                      std::uint64_t file_size) {
-  Block& block = blocks[index];
-  Buffer& buffer = buffers[index];
   block.time_s.clear();
   block.row_line.clear();
   block.values.resize(layout.channels.size());
@@ -166,7 +166,7 @@ void BlockReader::State::parse_block(std::size_t index, std::uint64_t start, std
   block.lines = 0;
   block.clean = true;
 
-  const std::uint64_t from = index == 0 ? start : start - 1;
+  const std::uint64_t from = at_line_start ? start : start - 1;
   read_into(buffer, from, stop - from + kSlackBytes, file_size);
   // Finds the end of the line from buffer offset `at`, reading on while it is not in view;
   // returns the offset of its '\n' or of the end of the file, or kTooLong past
@@ -184,7 +184,7 @@ void BlockReader::State::parse_block(std::size_t index, std::uint64_t start, std
     }
   };
   std::size_t at = 0;
-  if (index != 0) {  // the first line start at or after `start`
+  if (!at_line_start) {  // the first line start at or after `start`
     const std::size_t nl = line_end(0);
     at = nl == kTooLong ? buffer.size : std::min(nl + 1, buffer.size);
     block.clean = nl != kTooLong;
@@ -250,21 +250,69 @@ BlockReader::~BlockReader() {
   if (state_ && state_->fd >= 0) ::close(state_->fd);
 }
 
-const std::vector<Block>& BlockReader::read_wave(std::uint64_t offset) {
+void BlockReader::stream(std::uint64_t offset, const std::function<bool(const Block&)>& take) {
   State& s = *state_;
-  std::size_t count = 0;
-  if (offset < file_size_) {
-    const std::uint64_t left = file_size_ - offset;
-    count = static_cast<std::size_t>(
-        std::min<std::uint64_t>(2 * s.jobs, (left + kBlockBytes - 1) / kBlockBytes));
-  }
-  s.blocks.resize(count);
-  if (s.buffers.size() < count) s.buffers.resize(count);
-  core::parallel_for(count, s.jobs, [&](std::size_t b) {
-    const std::uint64_t start = offset + b * kBlockBytes;
-    s.parse_block(b, start, std::min(start + kBlockBytes, file_size_), file_size_);
-  });
-  return s.blocks;
+  if (offset >= file_size_) return;
+  const std::uint64_t count = (file_size_ - offset + kBlockBytes - 1) / kBlockBytes;
+  // Two blocks in flight per thread: one being parsed, one parsed and waiting its turn.
+  const auto slots = static_cast<std::size_t>(std::min<std::uint64_t>(2 * s.jobs, count));
+  if (s.blocks.size() < slots) s.blocks.resize(slots);
+  if (s.buffers.size() < slots) s.buffers.resize(slots);
+  std::mutex mutex;  // guards what follows, up to the workers
+  std::condition_variable freed;
+  std::uint64_t next = 0;   // the next block to parse
+  std::uint64_t taken = 0;  // the blocks handed on
+  std::vector<char> parsed(slots, 0);
+  bool stop = false;    // a block was refused, or a thread failed
+  bool taking = false;  // a thread is handing blocks on; it takes the others' too
+  // Hands on the parsed blocks in file order, one at a time, while other threads parse on.
+  const auto hand_on = [&](std::unique_lock<std::mutex>& lock) {
+    taking = true;
+    while (!stop && taken < count && parsed[taken % slots] != 0) {
+      const std::size_t slot = taken % slots;
+      lock.unlock();
+      bool go = false;
+      try {
+        go = take(s.blocks[slot]);
+      } catch (...) {
+        lock.lock();
+        stop = true;
+        taking = false;
+        freed.notify_all();
+        throw;
+      }
+      lock.lock();
+      parsed[slot] = 0;
+      ++taken;
+      stop = stop || !go;
+      freed.notify_all();
+    }
+    taking = false;
+  };
+  const auto worker = [&](std::size_t) {
+    for (;;) {
+      std::unique_lock lock(mutex);
+      freed.wait(lock, [&] { return stop || next >= count || next < taken + slots; });
+      if (stop || next >= count) return;
+      const std::uint64_t k = next++;
+      lock.unlock();
+      const std::size_t slot = k % slots;
+      const std::uint64_t start = offset + k * kBlockBytes;
+      try {
+        s.parse_block(s.blocks[slot], s.buffers[slot], k == 0, start,
+                      std::min(start + kBlockBytes, file_size_), file_size_);
+      } catch (...) {
+        lock.lock();
+        stop = true;
+        freed.notify_all();
+        throw;
+      }
+      lock.lock();
+      parsed[slot] = 1;
+      if (!taking) hand_on(lock);
+    }
+  };
+  core::parallel_for(core::job_count(s.jobs, count), s.jobs, worker);
 }
 
 }  // namespace dynpos::io::detail

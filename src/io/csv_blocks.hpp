@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -45,7 +46,7 @@ struct Block {
   std::vector<std::uint32_t> row_line;      // per row: its line, counted from the block's first
 };
 
-/// Parses the rows of a regular file from a line start on, a wave of blocks at a time.
+/// Parses the rows of a regular file from a line start on, block by block.
 class BlockReader {
  public:
   /// `jobs` threads (0 = every core); throws nothing until read.
@@ -54,10 +55,12 @@ class BlockReader {
   BlockReader(const BlockReader&) = delete;
   BlockReader& operator=(const BlockReader&) = delete;
 
-  /// Parses the next blocks from `offset` (a line start) on: several blocks in parallel, in file
-  /// order, the last one ending at the end of the file or at a line start. Empty at the end of
-  /// the file. Throws core::InputError if the file cannot be read.
-  const std::vector<Block>& read_wave(std::uint64_t offset);
+  /// Parses the blocks from `offset` (a line start) on, on several threads, and hands each to
+  /// `take` in file order, one at a time, while the next ones are parsed; stops after the first
+  /// block `take` returns false for, or at the end of the file. A block ends at the end of the
+  /// file or at a line start. Throws core::InputError if the file cannot be read, and what `take`
+  /// throws, once every thread has stopped.
+  void stream(std::uint64_t offset, const std::function<bool(const Block&)>& take);
 
   std::uint64_t file_size() const noexcept { return file_size_; }
 

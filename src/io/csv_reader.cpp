@@ -10,6 +10,8 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <optional>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -508,17 +510,16 @@ bool merge_block(const detail::Block& block, std::size_t line_base,
   return true;
 }
 
-// Room for the rows still to come, estimated from the wave's bytes per row (huge pages advised;
-// room never written costs no memory). Not for a window that ends early.
-void reserve_rows(const std::vector<detail::Block>& wave, std::uint64_t file_size,
+// Room for the rows still to come, estimated from the first block's bytes per row (huge pages
+// advised; room never written costs no memory). Not for a window that ends early.
+void reserve_rows(const detail::Block& block, std::uint64_t file_size,
                   const std::vector<std::size_t>& plan_of, std::vector<ColumnPlan>& channels,
                   const CsvReadOptions& options, RowStream& out) {
-  if (options.t_to_s || wave.empty()) return;
-  std::size_t rows = 0;
-  for (const detail::Block& b : wave) rows += b.time_s.size();
-  const std::uint64_t bytes = wave.back().end - wave.front().begin;
+  if (options.t_to_s) return;
+  const std::size_t rows = block.time_s.size();
+  const std::uint64_t bytes = block.end - block.begin;
   if (rows == 0 || bytes == 0) return;
-  const double left = static_cast<double>(file_size - wave.front().begin);
+  const double left = static_cast<double>(file_size - block.begin);
   const auto more = static_cast<std::size_t>(1.02 * left * static_cast<double>(rows) /
                                              static_cast<double>(bytes)) +
                     4096;
@@ -550,31 +551,33 @@ void stream_blocks(LineReader& reader, const Header& header, const CsvFormat& fo
   detail::BlockReader blocks(reader.path(), std::move(layout), options.jobs);
   std::uint64_t offset = reader.offset();
   std::size_t line = reader.line();
-  bool first_wave = true;
-  while (more) {
-    const std::vector<detail::Block>& wave = blocks.read_wave(offset);
-    if (wave.empty()) return;
-    if (first_wave) reserve_rows(wave, blocks.file_size(), plan_of, channels, options, out);
-    first_wave = false;
-    for (const detail::Block& block : wave) {
+  bool first_block = true;
+  while (more && offset < blocks.file_size()) {
+    // Blocks are merged in file order while the next ones are parsed; the first that is not
+    // clean stops them.
+    std::optional<std::pair<std::uint64_t, std::uint64_t>> by_rows;  // its [begin, end)
+    blocks.stream(offset, [&](const detail::Block& block) {
+      if (first_block) reserve_rows(block, blocks.file_size(), plan_of, channels, options, out);
+      first_block = false;
       if (block.clean && merge_block(block, line, plan_of, channels, options, stamps, out, more)) {
         offset = block.end;
         line += block.lines;
-        if (!more) return;
-        continue;
+        return more;
       }
-      // Row by row, exactly as without blocks; then a new wave from where that ended.
-      reader.seek(block.begin, line);
-      std::string record;
-      std::size_t record_line = 0;
-      while (more && reader.offset() < block.end && reader.next(record, record_line)) {
-        splitter.split(record, record_line, &reader);
-        more = store(record_line);
-      }
-      offset = reader.offset();
-      line = reader.line();
-      break;
+      by_rows.emplace(block.begin, block.end);
+      return false;
+    });
+    if (!by_rows) return;  // the end of the file or of the window
+    // Row by row, exactly as without blocks; then blocks again from where that ended.
+    reader.seek(by_rows->first, line);
+    std::string record;
+    std::size_t record_line = 0;
+    while (more && reader.offset() < by_rows->second && reader.next(record, record_line)) {
+      splitter.split(record, record_line, &reader);
+      more = store(record_line);
     }
+    offset = reader.offset();
+    line = reader.line();
   }
 }
 

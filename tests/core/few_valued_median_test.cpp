@@ -72,3 +72,35 @@ TEST(FewValues, SortedDistinctValuesWithTheirCounts) {
 
 }  // namespace
 }  // namespace dynpos::core
+
+namespace dynpos::core {
+namespace {
+
+// The table that finds a value holds up to kMaxDistinct of them, in any order of arrival, and
+// tells values apart as == does: +0 and −0 are one value.
+TEST(FewValues, UpToTheLimitInAnyOrderAndSignedZerosAsOne) {
+  std::mt19937_64 engine(11);
+  std::vector<double> v;
+  for (std::size_t k = 0; k < FewValues::kMaxDistinct; ++k) {
+    for (std::size_t r = 0; r <= k % 5; ++r) v.push_back(1e-3 * static_cast<double>(k * k) - 1.0);
+  }
+  std::shuffle(v.begin(), v.end(), engine);
+  const auto few = few_values(v.size(), [&](std::size_t i) { return v[i]; });
+  ASSERT_TRUE(few.has_value());
+  EXPECT_EQ(few->distinct, FewValues::kMaxDistinct);
+  std::vector<double> sorted = v;
+  std::sort(sorted.begin(), sorted.end());
+  for (std::size_t rank = 0; rank < v.size(); ++rank) EXPECT_EQ(few->at_rank(rank), sorted[rank]);
+  v.push_back(12345.0);  // one value more than the table holds
+  EXPECT_FALSE(few_values(v.size(), [&](std::size_t i) { return v[i]; }));
+
+  const std::vector<double> zeros = {-0.0, 1.0, 0.0, -0.0, 0.0, 2.0};
+  const auto z = few_values(zeros.size(), [&](std::size_t i) { return zeros[i]; });
+  ASSERT_TRUE(z.has_value());
+  ASSERT_EQ(z->distinct, 3u);
+  EXPECT_EQ(z->counts[0].second, 4u);
+  EXPECT_TRUE(std::signbit(z->counts[0].first));  // kept as first seen
+}
+
+}  // namespace
+}  // namespace dynpos::core

@@ -7,7 +7,9 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <utility>
 
@@ -32,13 +34,23 @@ struct FewValues {
 };
 
 /// The distinct values of value(0) … value(n − 1) with their counts, in one pass with no copy;
-/// nullopt when there are more than FewValues::kMaxDistinct, a NaN, or n = 0.
+/// nullopt when there are more than FewValues::kMaxDistinct, a NaN, or n = 0. Values are told
+/// apart as == does (+0 and −0 are one value, kept as first seen).
 template <class Value>
 std::optional<FewValues> few_values(std::size_t n, Value&& value) {
   if (n == 0) return std::nullopt;
   FewValues out;
   out.n = n;
   auto& seen = out.counts;
+  // An open-addressing table on the value's bits, twice as many slots as values: a value is
+  // found in about one probe however many there are (a time axis' spacings alternate between a
+  // few round-off variants, so the last value seen is often not the next one).
+  constexpr std::size_t kSlots = 2 * FewValues::kMaxDistinct;
+  constexpr std::uint8_t kEmpty = 0xFF;
+  static_assert(FewValues::kMaxDistinct < kEmpty);
+  std::array<std::uint64_t, kSlots> slot_bits{};
+  std::array<std::uint8_t, kSlots> slot_index;
+  slot_index.fill(kEmpty);
   std::size_t last = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const double v = value(i);
@@ -47,14 +59,17 @@ std::optional<FewValues> few_values(std::size_t n, Value&& value) {
       continue;
     }
     if (v != v) return std::nullopt;  // NaN
-    std::size_t k = 0;
-    while (k < out.distinct && !(seen[k].first == v)) ++k;
-    if (k == out.distinct) {
+    const std::uint64_t bits = std::bit_cast<std::uint64_t>(v == 0.0 ? 0.0 : v);
+    std::size_t h = static_cast<std::size_t>((bits * 0x9E3779B97F4A7C15ULL) >> 57);
+    while (slot_index[h] != kEmpty && slot_bits[h] != bits) h = (h + 1) % kSlots;
+    if (slot_index[h] == kEmpty) {
       if (out.distinct == FewValues::kMaxDistinct) return std::nullopt;
+      slot_bits[h] = bits;
+      slot_index[h] = static_cast<std::uint8_t>(out.distinct);
       seen[out.distinct++] = {v, 0};
     }
-    ++seen[k].second;
-    last = k;
+    last = slot_index[h];
+    ++seen[last].second;
   }
   std::sort(seen.begin(), seen.begin() + static_cast<std::ptrdiff_t>(out.distinct));
   return out;
