@@ -62,6 +62,14 @@ struct Buffer {
   std::size_t size = 0;
 };
 
+// The cells of a row that are parsed: each one's text and, when it was a plain decimal read as
+// the row was cut (scan_plain_decimal), its number.
+struct RowCells {
+  std::vector<std::string_view> text;
+  std::vector<double> number;
+  std::vector<char> is_number;
+};
+
 }  // namespace
 
 struct BlockReader::State {
@@ -74,6 +82,7 @@ struct BlockReader::State {
   std::vector<std::size_t> channel_slot;
   std::size_t slots = 0;
   std::size_t last_field = 0;  // the last field that is parsed
+  bool scan_numbers = true;    // no missing token is itself a plain decimal
   std::vector<Block> blocks;   // the blocks in flight, each with its buffer
   std::vector<Buffer> buffers;
 
@@ -81,8 +90,9 @@ struct BlockReader::State {
   void read_into(Buffer& b, std::uint64_t from, std::uint64_t bytes, std::uint64_t file_size);
   void parse_block(Block& block, Buffer& buffer, bool at_line_start, std::uint64_t start,
                    std::uint64_t stop, std::uint64_t file_size);
-  bool parse_row(std::string_view line, std::vector<std::string_view>& cells, Block& block,
+  bool parse_row(std::string_view line, RowCells& cells, Block& block,
                  std::uint32_t line_in_block) const;
+  CellKind cell(const RowCells& cells, std::size_t slot, double& value) const;
 };
 
 void BlockReader::State::read_into(Buffer& b, std::uint64_t from, std::uint64_t bytes,
@@ -111,19 +121,39 @@ void BlockReader::State::read_into(Buffer& b, std::uint64_t from, std::uint64_t 
   }
 }
 
+// What the cell in `slot` holds, `value` set for a number.
+CellKind BlockReader::State::cell(const RowCells& cells, std::size_t slot, double& value) const {
+  if (cells.is_number[slot] != 0) {
+    value = cells.number[slot];
+    return CellKind::kNumber;
+  }
+  return parse_cell(cells.text[slot], layout.missing_tokens, value);
+}
+
 // One row into the block (the caller has checked it holds no quote); false when it is not
 // plain (the block is then read row by row).
-bool BlockReader::State::parse_row(std::string_view line, std::vector<std::string_view>& cells,
-                                   Block& block, std::uint32_t line_in_block) const {
-  // The fields up to the last one parsed are cut out; the rest are only counted.
+bool BlockReader::State::parse_row(std::string_view line, RowCells& cells, Block& block,
+                                   std::uint32_t line_in_block) const {
+  // The fields up to the last one parsed are cut out; the rest are only counted. A parsed field
+  // that is a plain decimal up to the delimiter is read as it is cut (the same number parse_cell
+  // gives: it has nothing to trim and is no missing token); any other is cut, then parsed.
   const char delimiter = layout.delimiter;
   const char* start = line.data();
   const char* const end = start + line.size();
   std::size_t field = 0;
   for (;;) {
-    const char* stop = find_byte(start, end, delimiter);
-    if (slot_of_field[field] != kNoSlot) {
-      cells[slot_of_field[field]] = std::string_view(start, static_cast<std::size_t>(stop - start));
+    const std::size_t slot = slot_of_field[field];
+    const char* stop = nullptr;
+    if (slot != kNoSlot) {
+      double value = 0.0;
+      const char* scanned = scan_numbers ? scan_plain_decimal(start, end, value) : nullptr;
+      const bool number = scanned != nullptr && (scanned == end || *scanned == delimiter);
+      stop = number ? scanned : find_byte(start, end, delimiter);
+      cells.text[slot] = std::string_view(start, static_cast<std::size_t>(stop - start));
+      cells.number[slot] = value;
+      cells.is_number[slot] = number ? 1 : 0;
+    } else {
+      stop = find_byte(start, end, delimiter);
     }
     ++field;
     if (stop == end) break;
@@ -135,11 +165,11 @@ bool BlockReader::State::parse_row(std::string_view line, std::vector<std::strin
   }
   if (field != layout.field_count) return false;
   double raw = 0.0;
-  if (parse_cell(cells[time_slot], layout.missing_tokens, raw) != CellKind::kNumber) return false;
+  if (cell(cells, time_slot, raw) != CellKind::kNumber) return false;
   const double t = to_si(layout.time.unit, raw * layout.time.scale);
   if (!std::isfinite(t) || (!block.time_s.empty() && !(t > block.time_s.back()))) return false;
   for (std::size_t k = 0; k < channel_slot.size(); ++k) {
-    const CellKind kind = parse_cell(cells[channel_slot[k]], layout.missing_tokens, raw);
+    const CellKind kind = cell(cells, channel_slot[k], raw);
     if (kind == CellKind::kNumber) {
       const double value = to_si(layout.channels[k].unit, raw * layout.channels[k].scale);
       if (!std::isfinite(value)) return false;  // the row reader names the cell
@@ -190,7 +220,8 @@ void BlockReader::State::parse_block(Block& block, Buffer& buffer, bool at_line_
     block.clean = nl != kTooLong;
   }
   block.begin = buffer.from + at;
-  std::vector<std::string_view> cells(slots);
+  RowCells cells{std::vector<std::string_view>(slots), std::vector<double>(slots),
+                 std::vector<char>(slots)};
   const std::string_view prefix = layout.comment_prefix;
   std::size_t quotes_checked = at;
   while (buffer.from + at < stop && buffer.from + at < file_size) {
@@ -243,6 +274,10 @@ BlockReader::BlockReader(std::filesystem::path path, BlockLayout layout, unsigne
     return s.slot_of_field[field];
   };
   s.time_slot = slot(s.layout.time.field);
+  double token_value = 0.0;
+  s.scan_numbers = std::none_of(
+      s.layout.missing_tokens.begin(), s.layout.missing_tokens.end(),
+      [&](const std::string& token) { return parse_plain_decimal(trim(token), token_value); });
   for (const BlockColumn& c : s.layout.channels) s.channel_slot.push_back(slot(c.field));
 }
 

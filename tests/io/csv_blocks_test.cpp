@@ -200,5 +200,38 @@ TEST(CsvBlocks, AWindowAcrossBlocksAndAnUnterminatedLastLine) {
   EXPECT_THAT(cut.error, ::testing::HasSubstr(fmt::format("LOG:{}", kRows + 2)));
 }
 
+// A missing token that is itself a number ("-999") is missing, in a block as row by row; cells
+// with spaces, exponents or a '+' are read by the full cell parser, as row by row.
+TEST(CsvBlocks, ANumericMissingTokenAndCellsThatAreNotPlainDecimals) {
+  ColumnMap map = map_of();
+  map.format().missing_tokens = {"-999"};
+  const Outcome r = check_all_ways(log_text([](std::size_t k) -> std::string {
+                                     const double t = 0.01 * static_cast<double>(k);
+                                     if (k % 977 == 5)
+                                       return fmt::format("{:.2f},-999,-999,1\n", t);
+                                     if (k % 977 == 6)
+                                       return fmt::format("{:.2f}, 2.5 ,1e-3,1\n", t);
+                                     if (k % 977 == 7) return fmt::format("{:.2f},+3,-0,1\n", t);
+                                     return "";
+                                   }),
+                                   map);
+  ASSERT_TRUE(r.log);
+  const core::Log& log = r.log->log;
+  EXPECT_TRUE(std::isnan(log.values("input")[5]));
+  EXPECT_TRUE(std::isnan(log.values("output")[977 + 5]));
+  EXPECT_EQ(log.values("input")[6], 2.5);
+  EXPECT_EQ(log.values("output")[6], 1e-3);
+  EXPECT_EQ(log.values("input")[7], 3.0);
+  EXPECT_TRUE(std::signbit(log.values("output")[7]));
+  ColumnMap plain = map_of();  // without the token, -999 is a number
+  const Outcome n =
+      check_all_ways(log_text([](std::size_t k) -> std::string {
+                       return k == 5 ? std::string("0.05,-999,0.5,1\n") : std::string();
+                     }),
+                     plain);
+  ASSERT_TRUE(n.log);
+  EXPECT_EQ(n.log->log.values("input")[5], -999.0);
+}
+
 }  // namespace
 }  // namespace dynpos::io
