@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "dynpos/core/huge_pages.hpp"
+#include "dynpos/core/time_order.hpp"
 #include "dynpos/core/time_spacing.hpp"
 
 namespace dynpos::core {
@@ -24,18 +25,15 @@ std::string single_quoted(std::string_view name) { return "'" + std::string(name
 
 // Throws std::invalid_argument unless every time is finite and strictly increasing.
 void check_time_axis(const std::vector<double>& time_s, std::string_view context) {
-  for (std::size_t i = 0; i < time_s.size(); ++i) {
-    if (!std::isfinite(time_s[i])) {
-      throw std::invalid_argument(std::string(context) + ": time[" + std::to_string(i) +
-                                  "] = " + num(time_s[i]) + " is not finite");
-    }
-    if (i > 0 && !(time_s[i] > time_s[i - 1])) {
-      throw std::invalid_argument(
-          std::string(context) + ": time is not strictly increasing at index " + std::to_string(i) +
-          " (" + num(time_s[i - 1]) + " s then " + num(time_s[i]) +
-          " s); sort the samples and drop duplicate times");
-    }
+  const std::size_t i = first_unordered_time(time_s);
+  if (i == time_s.size()) return;
+  if (!std::isfinite(time_s[i])) {
+    throw std::invalid_argument(std::string(context) + ": time[" + std::to_string(i) +
+                                "] = " + num(time_s[i]) + " is not finite");
   }
+  throw std::invalid_argument(std::string(context) + ": time is not strictly increasing at index " +
+                              std::to_string(i) + " (" + num(time_s[i - 1]) + " s then " +
+                              num(time_s[i]) + " s); sort the samples and drop duplicate times");
 }
 
 // The range [lo, lo + 2π) an angle channel's interpolated values are put back in, from its valid

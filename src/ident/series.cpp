@@ -1,27 +1,29 @@
 #include "series.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <optional>
 
 #include "dynpos/core/error.hpp"
 #include "dynpos/core/few_valued_median.hpp"
 #include "dynpos/core/huge_pages.hpp"
+#include "dynpos/core/time_order.hpp"
 
 namespace dynpos::ident::detail {
 
 void check_time_axis(std::span<const double> t, const std::string& name) {
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    if (!std::isfinite(t[i])) {
-      throw core::InputError({"", {}, {}, name}, "time is not finite at index " + std::to_string(i),
-                             "remove or fill rows without a time stamp");
-    }
-    if (i > 0 && !(t[i] > t[i - 1])) {
-      throw core::InputError({"", {}, {}, name},
-                             "time is not strictly increasing at index " + std::to_string(i),
-                             "sort the log by time and drop duplicate rows");
-    }
+  const std::size_t i = core::first_unordered_time(t);
+  if (i == t.size()) return;
+  if (!std::isfinite(t[i])) {
+    throw core::InputError({"", {}, {}, name}, "time is not finite at index " + std::to_string(i),
+                           "remove or fill rows without a time stamp");
   }
+  throw core::InputError({"", {}, {}, name},
+                         "time is not strictly increasing at index " + std::to_string(i),
+                         "sort the log by time and drop duplicate rows");
 }
 
 void check_same_length(std::size_t n_t, std::size_t n_x, const std::string& name) {
@@ -35,6 +37,54 @@ void check_same_length(std::size_t n_t, std::size_t n_x, const std::string& name
 
 double median(std::vector<double> values) { return median_in_place(values); }
 
+namespace {
+
+// The mean of the values of ranks r0 and r1 = r0 or r0 + 1 of a long series, exactly, with one
+// pass over it: two order statistics of a strided sample bracket them (Floyd and Rivest's
+// idea), and only the values between those are selected from. nullopt when the bracket misses
+// (a sample unlike the series), a NaN, or a short series: then select from all.
+std::optional<double> bracketed_ranks(std::span<const double> values, std::size_t r0,
+                                      std::size_t r1) {
+  constexpr std::size_t kSample = 1024;
+  constexpr std::size_t kMargin = 64;  // 4σ of a sample rank near the median (σ ≈ √(1024/4))
+  const std::size_t n = values.size();
+  if (n < 16 * kSample) return std::nullopt;
+  std::array<double, kSample> sample{};
+  const std::size_t stride = n / kSample;
+  for (std::size_t k = 0; k < kSample; ++k) sample[k] = values[k * stride];
+  if (std::any_of(sample.begin(), sample.end(), [](double x) { return std::isnan(x); })) {
+    return std::nullopt;
+  }
+  std::sort(sample.begin(), sample.end());
+  const std::size_t centre = r0 / stride;
+  const double inf = std::numeric_limits<double>::infinity();
+  const double lo = centre >= kMargin ? sample[centre - kMargin] : -inf;
+  const double hi = centre + kMargin < kSample ? sample[centre + kMargin] : inf;
+  std::size_t below = 0;
+  std::size_t above = 0;
+  std::vector<double> between;
+  between.reserve(n / 4);
+  for (const double x : values) {
+    if (x < lo) {
+      ++below;
+    } else if (x > hi) {
+      ++above;
+    } else if (x <= hi) {
+      between.push_back(x);
+    }
+  }
+  if (below + above + between.size() != n || below > r0 || below + between.size() <= r1) {
+    return std::nullopt;  // a NaN, or the ranks outside the bracket
+  }
+  const auto k1 = static_cast<std::ptrdiff_t>(r1 - below);
+  std::nth_element(between.begin(), between.begin() + k1, between.end());
+  const double upper = between[static_cast<std::size_t>(k1)];
+  if (r0 == r1) return upper;
+  return 0.5 * (*std::max_element(between.begin(), between.begin() + k1) + upper);
+}
+
+}  // namespace
+
 double median_in_place(std::span<double> values) {
   if (values.empty()) return std::nan("");
   // A piecewise-constant signal's differences take few values: counted, not selected.
@@ -43,6 +93,9 @@ double median_in_place(std::span<double> values) {
     return *counted;
   }
   const std::size_t mid = values.size() / 2;
+  if (const auto bracketed = bracketed_ranks(values, values.size() % 2 == 1 ? mid : mid - 1, mid)) {
+    return *bracketed;
+  }
   std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(mid), values.end());
   const double upper = values[mid];
   if (values.size() % 2 == 1) return upper;
