@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
 #include <optional>
 
 #include "dynpos/core/error.hpp"
@@ -60,22 +61,21 @@ std::optional<double> bracketed_ranks(std::span<const double> values, std::size_
   const double inf = std::numeric_limits<double>::infinity();
   const double lo = centre >= kMargin ? sample[centre - kMargin] : -inf;
   const double hi = centre + kMargin < kSample ? sample[centre + kMargin] : inf;
+  // Without branches: a value far from the median is as likely below as above it.
   std::size_t below = 0;
   std::size_t above = 0;
-  std::vector<double> between;
-  between.reserve(n / 4);
+  std::size_t kept = 0;
+  const auto buffer = std::make_unique_for_overwrite<double[]>(n);
   for (const double x : values) {
-    if (x < lo) {
-      ++below;
-    } else if (x > hi) {
-      ++above;
-    } else if (x <= hi) {
-      between.push_back(x);
-    }
+    below += static_cast<std::size_t>(x < lo);
+    above += static_cast<std::size_t>(x > hi);
+    buffer[kept] = x;
+    kept += static_cast<std::size_t>((x >= lo) & (x <= hi));
   }
-  if (below + above + between.size() != n || below > r0 || below + between.size() <= r1) {
+  if (below + above + kept != n || below > r0 || below + kept <= r1) {
     return std::nullopt;  // a NaN, or the ranks outside the bracket
   }
+  const std::span<double> between(buffer.get(), kept);
   const auto k1 = static_cast<std::ptrdiff_t>(r1 - below);
   std::nth_element(between.begin(), between.begin() + k1, between.end());
   const double upper = between[static_cast<std::size_t>(k1)];
