@@ -116,7 +116,13 @@ void BlockReader::State::read_into(Buffer& b, std::uint64_t from, std::uint64_t 
       if (errno == EINTR) continue;
       throw_read_error(path, errno);
     }
-    if (got == 0) break;  // the file shrank: what was read is all there is
+    if (got == 0) {  // the file is shorter than when reading began (a logger cut it)
+      core::InputLocation where;
+      where.file = path;
+      throw core::InputError(
+          where, fmt::format("the file shrank while it was read (to {} bytes)", from + b.size),
+          "read a copy of the file, or wait until the logger has finished with it");
+    }
     b.size += static_cast<std::size_t>(got);
   }
 }

@@ -37,6 +37,18 @@ TEST(Median, ExactForLongNoisySeriesWithOutliersAndPatterns) {
   }
 }
 
+TEST(Median, AZeroMedianIsPlusZeroWhateverTheSignsOfTheZeros) {
+  for (std::size_t n : {5u, 1001u, 40'001u}) {
+    std::vector<double> v(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      v[i] = i % 3 == 0 ? -0.0 : (i % 3 == 1 ? 0.0 : (i % 2 == 0 ? 1.0 : -1.0) * (1.0 + i));
+    }
+    const double m = median(v);
+    EXPECT_EQ(m, 0.0) << n;
+    EXPECT_FALSE(std::signbit(m)) << n;
+  }
+}
+
 TEST(Median, DifferenceNoiseOfAWhiteSeries) {
   std::mt19937_64 engine(9);
   std::normal_distribution<double> noise(0.0, 0.2);

@@ -20,6 +20,7 @@
 
 #include <fmt/format.h>
 
+#include "csv_blocks.hpp"
 #include "dynpos/io/csv_reader.hpp"
 #include "io_test_util.hpp"
 
@@ -231,6 +232,35 @@ TEST(CsvBlocks, ANumericMissingTokenAndCellsThatAreNotPlainDecimals) {
                      plain);
   ASSERT_TRUE(n.log);
   EXPECT_EQ(n.log->log.values("input")[5], -999.0);
+}
+
+// A logger that cuts its file while it is read (a rotation by copy and truncate): an error
+// naming the file, never a reader waiting for bytes that will not come.
+TEST(CsvBlocks, AFileThatShrinksWhileReadIsAnError) {
+  TempDir dir;
+  const auto file = dir.write("log.csv", log_text());
+  detail::BlockLayout layout;
+  layout.field_count = 4;
+  layout.time.field = 0;
+  layout.channels.push_back({2, {}, 1.0});
+  const std::uint64_t data_start = log_text().find('\n', 12) + 1;  // after the header line
+  for (const unsigned jobs : {1u, 2u}) {
+    detail::BlockReader reader(file, layout, jobs);
+    std::filesystem::resize_file(file, std::filesystem::file_size(file) / 2);
+    std::size_t rows = 0;
+    try {
+      reader.stream(data_start, [&](const detail::Block& block) {
+        rows += block.time_s.size();
+        return true;
+      });
+      ADD_FAILURE() << "no error, " << rows << " rows";
+    } catch (const core::InputError& e) {
+      EXPECT_THAT(e.what(), ::testing::HasSubstr("the file shrank while it was read")) << jobs;
+      EXPECT_THAT(e.what(), ::testing::HasSubstr(file.string())) << jobs;
+    }
+    std::filesystem::resize_file(file, 0);
+    dir.write("log.csv", log_text());
+  }
 }
 
 }  // namespace
