@@ -92,10 +92,6 @@ std::optional<double> bracketed_ranks(std::span<const double> values, std::size_
   return 0.5 * (*std::max_element(between.begin(), between.begin() + k1) + upper);
 }
 
-}  // namespace
-
-namespace {
-
 double selected_median(std::span<double> values) {
   // A piecewise-constant signal's differences take few values: counted, not selected.
   if (const auto counted =
