@@ -75,7 +75,7 @@ LoadedLog read_log_files(const std::filesystem::path& main_log, const io::Column
   io::FileLog main = io::read_log_file(main_log, map.for_file(""), how);
   LoadedLog out{std::move(main.log), {}, main.first_row_s, main.last_row_read_s};
   const std::string main_path = main.report.path;
-  out.input = describe_input(out.log, main_path, std::move(main.report));
+  out.input = describe_input(out.log, main_path, std::move(main.report), how.jobs);
   out.input.origin = main.origin;
   out.input.origin_zone = main.origin_zone;
   add_log_files(out, main.origin_ns, map, options, how);
@@ -104,7 +104,8 @@ void add_log_files(LoadedLog& out, std::optional<std::int64_t> main_origin_ns,
     }
     // Rates on the file's own clock: a 1 Hz role stays 1 Hz on a 10 Hz main log.
     const std::string part_path = part.report.path;
-    io::InputReport part_input = describe_input(part.log, part_path, std::move(part.report));
+    io::InputReport part_input =
+        describe_input(part.log, part_path, std::move(part.report), how.jobs);
     out.input.files.push_back(std::move(part_input.files.front()));
     for (io::RoleOrigin& role : part_input.roles) out.input.roles.push_back(std::move(role));
   }

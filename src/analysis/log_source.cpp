@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "dynpos/analysis/options.hpp"
+#include "dynpos/core/parallel_for.hpp"
 #include "dynpos/core/time_spacing.hpp"
 #include "dynpos/io/csv_reader.hpp"
 #include "dynpos/io/roles.hpp"
@@ -76,37 +77,45 @@ namespace {
 // The rate [Hz] of a channel's valid samples, from their median spacing; nullopt with fewer
 // than two. `all_valid_hz` is the rate of a channel without gaps (the log's own, computed once).
 std::optional<double> median_rate_hz(const core::Log& log, const core::Channel& channel,
-                                     std::optional<std::optional<double>>& all_valid_hz) {
-  const auto missing = std::count_if(channel.values.begin(), channel.values.end(),
-                                     [](double v) { return core::is_missing(v); });
+                                     std::size_t missing,
+                                     std::optional<std::optional<double>>& all_valid_hz,
+                                     unsigned jobs) {
   if (missing == 0 && all_valid_hz) return *all_valid_hz;
   if (missing == 0) {  // the log's own time axis, no copy of it
-    all_valid_hz = log.size() < 2 ? std::nullopt
-                                  : std::optional<double>(1.0 / core::median_spacing_s(log.time()));
+    all_valid_hz = log.size() < 2
+                       ? std::nullopt
+                       : std::optional<double>(1.0 / core::median_spacing_s(log.time(), jobs));
     return *all_valid_hz;
   }
   std::vector<double> valid_t;
-  valid_t.reserve(log.size() - static_cast<std::size_t>(missing));
+  valid_t.reserve(log.size() - missing);
   for (std::size_t i = 0; i < log.size(); ++i) {
     if (!core::is_missing(channel.values[i])) valid_t.push_back(log.time()[i]);
   }
   const std::optional<double> rate =
       valid_t.size() < 2 ? std::nullopt
-                         : std::optional<double>(1.0 / core::median_spacing_s(valid_t));
+                         : std::optional<double>(1.0 / core::median_spacing_s(valid_t, jobs));
   return rate;
 }
 
 }  // namespace
 
 io::InputReport describe_input(const core::Log& log, const std::string& file,
-                               io::FileReport file_report) {
+                               io::FileReport file_report, unsigned jobs) {
   io::InputReport input;
   file_report.path = file;
   file_report.records = log.size();
   input.files.push_back(std::move(file_report));
+  const std::vector<core::Channel>& channels = log.channels();
+  std::vector<std::size_t> missing(channels.size());  // counted side by side
+  core::parallel_for(channels.size(), jobs, [&](std::size_t c) {
+    const std::vector<double>& v = channels[c].values;
+    missing[c] = static_cast<std::size_t>(std::count_if(v.begin(), v.end(), core::is_missing));
+  });
   std::optional<std::optional<double>> all_valid_hz;
-  for (const core::Channel& c : log.channels()) {
-    input.roles.push_back({c.name, file, median_rate_hz(log, c, all_valid_hz)});
+  for (std::size_t c = 0; c < channels.size(); ++c) {
+    input.roles.push_back(
+        {channels[c].name, file, median_rate_hz(log, channels[c], missing[c], all_valid_hz, jobs)});
   }
   return input;
 }

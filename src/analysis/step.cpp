@@ -180,6 +180,21 @@ std::vector<FoundStep> detect_in_stretches(const StepRequest& request, const Ste
   return found;
 }
 
+// The steps of the whole log, its threshold found in the same pass over the input (as
+// step_threshold() would find it).
+std::vector<FoundStep> detect_in_whole_log(const StepSignals& s, std::span<const double> u,
+                                           const ident::StepDetectorOptions& d,
+                                           StepReport& report) {
+  const ident::StepDetection r = ident::detect_steps(s.t, u, d);
+  report.step_threshold = r.threshold;
+  report.threshold_from_min_step = d.min_step > 0.0;
+  report.input_noise_sigma = r.noise_sigma;
+  if (!r.message.empty()) report.notes.push_back(r.message);
+  std::vector<FoundStep> found;
+  for (const ident::Step& step : r.steps) found.push_back({step, ""});
+  return found;
+}
+
 // Finds the steps and sets the report's threshold and notes.
 std::vector<FoundStep> find_steps(const StepRequest& request, const StepSignals& s,
                                   StepReport& report) {
@@ -193,6 +208,7 @@ std::vector<FoundStep> find_steps(const StepRequest& request, const StepSignals&
   }
   ident::StepThreshold scale;
   if ((s.has_input || s.has_trigger) && !request.step_at_s) {
+    if (!window && request.segments_file.empty()) return detect_in_whole_log(s, u, d, report);
     // One threshold for what was read (the whole log, or the window), whatever stretch of it
     // is searched (a segment).
     scale = ident::step_threshold(s.t, u, d);

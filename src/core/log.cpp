@@ -7,7 +7,6 @@
 #include <stdexcept>
 #include <utility>
 
-#include "dynpos/core/huge_pages.hpp"
 #include "dynpos/core/time_order.hpp"
 #include "dynpos/core/time_spacing.hpp"
 
@@ -166,8 +165,8 @@ void Log::append_row(double t_s, std::span<const double> values) {
 }
 
 void Log::reserve(std::size_t n) {
-  reserve_huge(time_s_, n);
-  for (Channel& c : channels_) reserve_huge(c.values, n);
+  time_s_.reserve(n);
+  for (Channel& c : channels_) c.values.reserve(n);
 }
 
 void Log::clear_rows() noexcept {

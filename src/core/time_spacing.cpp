@@ -5,19 +5,16 @@
 #include <stdexcept>
 
 #include "dynpos/core/few_valued_median.hpp"
-#include "dynpos/core/huge_pages.hpp"
 
 namespace dynpos::core {
 
-double median_spacing_s(const std::vector<double>& time_s) {
+double median_spacing_s(const std::vector<double>& time_s, unsigned jobs) {
   if (time_s.size() < 2) throw std::invalid_argument("median_spacing_s: fewer than two times");
   // A regular axis has few distinct spacings: counted in one pass, no copy.
-  if (const auto counted = few_valued_median(
-          time_s.size() - 1, [&](std::size_t i) { return time_s[i + 1] - time_s[i]; })) {
-    return *counted;
-  }
+  const auto spacing = [&](std::size_t i) { return time_s[i + 1] - time_s[i]; };
+  if (const auto counted = few_values(time_s.size() - 1, jobs, spacing)) return counted->median();
   std::vector<double> dt;
-  reserve_huge(dt, time_s.size() - 1);
+  dt.reserve(time_s.size() - 1);
   for (std::size_t i = 0; i + 1 < time_s.size(); ++i) dt.push_back(time_s[i + 1] - time_s[i]);
   const std::size_t mid = dt.size() / 2;
   std::nth_element(dt.begin(), dt.begin() + static_cast<std::ptrdiff_t>(mid), dt.end());

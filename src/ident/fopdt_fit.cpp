@@ -14,9 +14,19 @@ namespace dynpos::ident {
 
 using detail::fmt;
 
+namespace {
+
+// Beyond this many time constants e^(−x/T) < 4.3·10⁻¹⁸: 1 − e rounds to 1 in double precision,
+// so the model is its final value and the exponential need not be computed (most samples of a
+// long window of a fast response).
+constexpr double kSettledTimeConstants = 40.0;
+
+}  // namespace
+
 double FopdtModel::operator()(double t) const {
   const double x = t - t_step - dead_time;
   if (x <= 0.0) return y0;
+  if (time_constant > 0.0 && x > kSettledTimeConstants * time_constant) return y0 + amplitude;
   return y0 + amplitude * (1.0 - std::exp(-x / time_constant));  // (3.7)
 }
 
@@ -54,11 +64,6 @@ struct Bounds {
   double delta_max = 0.0;
   bool delta_free = true;
 };
-
-// Beyond this many time constants e^(−x/T) < 4.3·10⁻¹⁸: 1 − e rounds to 1 in double precision,
-// so the model is its final value and the exponential need not be computed (most samples of a
-// long window of a fast response).
-constexpr double kSettledTimeConstants = 40.0;
 
 // The settled samples (tail) of a window in O(1) per evaluation: there the model is the constant
 // c = y₀ + A, so Σ(y − c) and Σ(y − c)² follow from prefix sums of y − ȳ and (y − ȳ)², ȳ the

@@ -10,13 +10,12 @@
 
 #include "dynpos/core/error.hpp"
 #include "dynpos/core/few_valued_median.hpp"
-#include "dynpos/core/huge_pages.hpp"
 #include "dynpos/core/time_order.hpp"
 
 namespace dynpos::ident::detail {
 
-void check_time_axis(std::span<const double> t, const std::string& name) {
-  const std::size_t i = core::first_unordered_time(t);
+void check_time_axis(std::span<const double> t, const std::string& name, unsigned jobs) {
+  const std::size_t i = core::first_unordered_time(t, jobs);
   if (i == t.size()) return;
   if (!std::isfinite(t[i])) {
     throw core::InputError({"", {}, {}, name}, "time is not finite at index " + std::to_string(i),
@@ -56,11 +55,22 @@ std::optional<double> bracketed_ranks(std::span<const double> values, std::size_
   if (std::any_of(sample.begin(), sample.end(), [](double x) { return std::isnan(x); })) {
     return std::nullopt;
   }
-  std::sort(sample.begin(), sample.end());
+  // The sample's order statistics centre ∓ kMargin, each selected (not the whole sample sorted).
   const std::size_t centre = r0 / stride;
   const double inf = std::numeric_limits<double>::infinity();
-  const double lo = centre >= kMargin ? sample[centre - kMargin] : -inf;
-  const double hi = centre + kMargin < kSample ? sample[centre + kMargin] : inf;
+  double lo = -inf;
+  double hi = inf;
+  auto rest = sample.begin();
+  if (centre >= kMargin) {
+    rest = sample.begin() + static_cast<std::ptrdiff_t>(centre - kMargin);
+    std::nth_element(sample.begin(), rest, sample.end());
+    lo = *rest;
+  }
+  if (centre + kMargin < kSample) {
+    const auto at = sample.begin() + static_cast<std::ptrdiff_t>(centre + kMargin);
+    std::nth_element(rest, at, sample.end());
+    hi = *at;
+  }
   // Without branches: a value far from the median is as likely below as above it.
   std::size_t below = 0;
   std::size_t above = 0;
@@ -132,7 +142,7 @@ double difference_noise_sigma(std::span<const double> x) {
     }
   }
   std::vector<double> d;
-  core::reserve_huge(d, x.size());
+  d.reserve(x.size());
   for (std::size_t i = 1; i < x.size(); ++i) {
     if (!std::isnan(x[i]) && !std::isnan(x[i - 1])) d.push_back(x[i] - x[i - 1]);
   }

@@ -8,8 +8,9 @@
 
 namespace dynpos::ident::detail {
 
-/// Throws core::InputError (naming `name`) unless t is finite and strictly increasing.
-void check_time_axis(std::span<const double> t, const std::string& name);
+/// Throws core::InputError (naming `name`) unless t is finite and strictly increasing; checked
+/// in pieces on `jobs` threads (0 = every core).
+void check_time_axis(std::span<const double> t, const std::string& name, unsigned jobs = 1);
 
 /// Throws core::InputError unless the two spans have the same length.
 void check_same_length(std::size_t n_t, std::size_t n_x, const std::string& name);

@@ -2,18 +2,19 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <limits>
 
 #include "dynpos/core/error.hpp"
 #include "dynpos/core/few_valued_median.hpp"
-#include "dynpos/core/huge_pages.hpp"
 #include "dynpos/core/parallel_for.hpp"
+#include "plateaus.hpp"
 #include "series.hpp"
+#include "window_scan.hpp"
 
 namespace dynpos::ident {
 
 using detail::fmt;
+using detail::Plateau;
 
 std::optional<double> Step::delta_u() const {
   if (!u_before || !u_after) return std::nullopt;
@@ -58,17 +59,20 @@ namespace {
 struct ValidSamples {
   std::span<const double> t, u;
   std::vector<double> t_copy, u_copy;
+  bool all_valid = false;  // t and u are the input's own
 };
 
 ValidSamples valid_samples(std::span<const double> t, std::span<const double> u,
-                           const std::string& name) {
+                           const StepDetectorOptions& options) {
+  const std::string& name = options.input_name;
   detail::check_same_length(t.size(), u.size(), name);
-  detail::check_time_axis(t, name);
+  detail::check_time_axis(t, name, options.jobs);
   ValidSamples v;
   const auto missing = std::count_if(u.begin(), u.end(), [](double x) { return std::isnan(x); });
   if (missing == 0) {
     v.t = t;
     v.u = u;
+    v.all_valid = true;
   } else {
     v.t_copy.reserve(u.size() - static_cast<std::size_t>(missing));
     v.u_copy.reserve(u.size() - static_cast<std::size_t>(missing));
@@ -89,24 +93,27 @@ ValidSamples valid_samples(std::span<const double> t, std::span<const double> u,
   return v;
 }
 
+// √(mean Δu²)/√2 from the counts of the squared differences Δu²: the smallest 98 % summed.
+double trimmed_rms_of_counts(const core::FewValues& d2) {
+  std::size_t left = std::max<std::size_t>(1, d2.n - d2.n / 50);
+  const double keep = static_cast<double>(left);
+  double sum = 0.0;
+  for (std::size_t k = 0; k < d2.distinct && left > 0; ++k) {
+    const std::size_t take = std::min(left, d2.counts[k].second);
+    sum += d2.counts[k].first * static_cast<double>(take);
+    left -= take;
+  }
+  return std::sqrt(sum / keep / 2.0);
+}
+
 // √(mean Δu²)/√2 over the differences of consecutive valid samples, the largest 2 % left out
 // (the steps and ramps of a log with up to a few percent of its samples in transitions).
 double trimmed_rms_sigma(std::span<const double> uv) {
-  // Squared differences of few values (a command): the smallest 98 % summed from their counts.
+  // Squared differences of few values (a command): summed from their counts.
   const auto d2_at = [&](std::size_t i) { return (uv[i + 1] - uv[i]) * (uv[i + 1] - uv[i]); };
-  if (const auto few = core::few_values(uv.size() - 1, d2_at)) {
-    std::size_t left = std::max<std::size_t>(1, few->n - few->n / 50);
-    const double keep = static_cast<double>(left);
-    double sum = 0.0;
-    for (std::size_t k = 0; k < few->distinct && left > 0; ++k) {
-      const std::size_t take = std::min(left, few->counts[k].second);
-      sum += few->counts[k].first * static_cast<double>(take);
-      left -= take;
-    }
-    return std::sqrt(sum / keep / 2.0);
-  }
+  if (const auto few = core::few_values(uv.size() - 1, d2_at)) return trimmed_rms_of_counts(*few);
   std::vector<double> d2;
-  core::reserve_huge(d2, uv.size());
+  d2.reserve(uv.size());
   for (std::size_t i = 1; i < uv.size(); ++i)
     d2.push_back((uv[i] - uv[i - 1]) * (uv[i] - uv[i - 1]));
   const std::size_t keep = std::max<std::size_t>(1, d2.size() - d2.size() / 50);
@@ -116,27 +123,22 @@ double trimmed_rms_sigma(std::span<const double> uv) {
   return std::sqrt(sum / static_cast<double>(keep) / 2.0);
 }
 
-// Calls f(i, last, lo, hi) for each window [tᵢ, tᵢ + w] of the samples i … last, with the
-// smallest and largest value in it (monotone deques: linear time).
-template <class Values, class F>
-void for_each_window(std::span<const double> tv, const Values& uv, double w, F&& f) {
-  const std::size_t n = tv.size();
-  std::deque<std::size_t> max_q;  // indices of decreasing values: front is the window maximum
-  std::deque<std::size_t> min_q;
-  std::size_t j = 0;  // one past the window end
-  for (std::size_t i = 0; i < n; ++i) {
-    while (j < n && tv[j] <= tv[i] + w) {
-      const double uj = uv[j];
-      while (!max_q.empty() && uv[max_q.back()] <= uj) max_q.pop_back();
-      max_q.push_back(j);
-      while (!min_q.empty() && uv[min_q.back()] >= uj) min_q.pop_back();
-      min_q.push_back(j);
-      ++j;
+// σ̂ of the file comment. A gap-free input whose differences take few values (a command) is
+// counted once: the median and MAD of Δu and the trimmed sum of Δu² all follow from the counts
+// of Δu, each the value its own pass gives.
+double input_noise_sigma(std::span<const double> u, const ValidSamples& v) {
+  if (v.all_valid && u.size() >= 3) {
+    const auto du = core::few_values(u.size() - 1, [&](std::size_t i) { return u[i + 1] - u[i]; });
+    if (du) {
+      const double m = du->median();
+      const auto deviation = du->mapped([m](double d) { return std::abs(d - m); });
+      const auto d2 = du->mapped([](double d) { return d * d; });
+      if (deviation && d2) {
+        return std::max(1.4826 * deviation->median() / std::sqrt(2.0), trimmed_rms_of_counts(*d2));
+      }
     }
-    while (max_q.front() < i) max_q.pop_front();
-    while (min_q.front() < i) min_q.pop_front();
-    f(i, j - 1, uv[min_q.front()], uv[max_q.front()]);
   }
+  return std::max(detail::difference_noise_sigma(u), trimmed_rms_sigma(v.u));
 }
 
 // The 3-sample running median of a series, sample by sample as it is asked for (no copy of a
@@ -149,119 +151,114 @@ struct RunningMedian3 {
   }
 };
 
-// S: the largest range of the input within any window of w seconds, after a 3-sample running
-// median (one bad sample does not set the scale of the steps).
-double largest_change(std::span<const double> tv, std::span<const double> uv, double w) {
-  const RunningMedian3 m{uv};
-  double s = 0.0;
-  for_each_window(
-      tv, m, w, [&](std::size_t, std::size_t, double lo, double hi) { s = std::max(s, hi - lo); });
-  return s;
-}
+// What the threshold is set from: the input's noise, its largest change within change_window_s
+// (S, after a 3-sample running median, so one bad sample does not set the scale of the steps)
+// and its range (the first smallest and last largest value, as std::minmax_element).
+struct InputScan {
+  static constexpr std::size_t kBlock = 512;  // window starts taken at a time
 
-struct Plateau {
-  std::size_t begin = 0;  // first and last index into the valid samples
-  std::size_t end = 0;
-  double start_level = 0.0;  // median of its first min_plateau_s/2: the level next to a step
-  double end_level = 0.0;    // median of its last min_plateau_s/2
-  double head_level = 0.0;   // median of its first 20·min_plateau_s: the level after a step
-  double tail_level = 0.0;   // median of its last 20·min_plateau_s: the level before a step
+  double noise_sigma = 0.0;
+  double largest_change = 0.0;
+  double min = std::numeric_limits<double>::infinity();
+  double max = -std::numeric_limits<double>::infinity();
+
+  // The scan of the windows starting in [i0, i1) and of their first samples. The windows are
+  // taken a block of starts at a time, and a block is scanned only when the range of the
+  // samples its windows can hold exceeds the largest change found so far: S is the same as
+  // scanning every window, and the flat stretches of a command are passed over.
+  void scan_windows(std::span<const double> tv, std::span<const double> uv, double w,
+                    std::size_t i0, std::size_t i1) {
+    const RunningMedian3 m{uv};
+    std::size_t last = i0;  // the last sample of the window of the block's last start
+    const std::vector<std::pair<double, double>> extremes = block_extremes(tv, m, w, i0, i1);
+    for (std::size_t b0 = i0; b0 < i1; b0 += kBlock) {
+      const std::size_t b1 = std::min(i1, b0 + kBlock);
+      while (last + 1 < tv.size() && tv[last + 1] <= tv[b1 - 1] + w) ++last;
+      double lo = extremes[(b0 - i0) / kBlock].first, hi = extremes[(b0 - i0) / kBlock].second;
+      for (std::size_t k = (b0 - i0) / kBlock + 1; k <= (last - i0) / kBlock; ++k) {
+        lo = std::min(lo, extremes[k].first);
+        hi = std::max(hi, extremes[k].second);
+      }
+      if (!(hi - lo > largest_change)) continue;
+      detail::for_each_window(tv, m, w, b0, b1, [&](std::size_t, std::size_t, double l, double h) {
+        largest_change = std::max(largest_change, h - l);
+        return true;
+      });
+    }
+    for (std::size_t i = i0; i < i1; ++i) {
+      if (uv[i] < min) min = uv[i];
+      if (uv[i] >= max) max = uv[i];
+    }
+  }
+
+  // The smallest and largest running median of each block of kBlock samples from i0 on, up to
+  // the end of the window of start i1 − 1.
+  static std::vector<std::pair<double, double>> block_extremes(std::span<const double> tv,
+                                                               const RunningMedian3& m, double w,
+                                                               std::size_t i0, std::size_t i1) {
+    std::size_t end = i1;  // one past the last sample a window of these starts holds
+    while (end < tv.size() && tv[end] <= tv[i1 - 1] + w) ++end;
+    std::vector<std::pair<double, double>> out;
+    out.reserve((end - i0) / kBlock + 1);
+    for (std::size_t b = i0; b < end; b += kBlock) {
+      double lo = m[b], hi = m[b];
+      for (std::size_t k = b + 1; k < std::min(end, b + kBlock); ++k) {
+        lo = std::min(lo, m[k]);
+        hi = std::max(hi, m[k]);
+      }
+      out.emplace_back(lo, hi);
+    }
+    return out;
+  }
+
+  // Joins the scan of the pieces after this one's.
+  void join(const InputScan& later) {
+    largest_change = std::max(largest_change, later.largest_change);
+    if (later.min < min) min = later.min;
+    if (later.max >= max) max = later.max;
+  }
 };
 
-double median_of(std::span<const double> x, std::size_t begin, std::size_t end) {
-  return detail::median(std::vector<double>(x.begin() + static_cast<std::ptrdiff_t>(begin),
-                                            x.begin() + static_cast<std::ptrdiff_t>(end) + 1));
-}
-
-// First index of the samples within `w` [s] before index `last` (dir −1), or last index of
-// those within `w` after `first` (dir +1).
-std::size_t reach(std::span<const double> tv, std::size_t from, std::size_t stop, double w,
-                  int dir) {
-  std::size_t k = from;
-  if (dir < 0) {
-    while (k > stop && tv[k - 1] >= tv[from] - w) --k;
-  } else {
-    while (k < stop && tv[k + 1] <= tv[from] + w) ++k;
-  }
-  return k;
-}
-
-// The levels of a plateau: the medians of its first and last w/2 (next to a transition) and of
-// its first and last 20w (the levels a step goes from and to: long enough to average the noise,
-// short enough that a drift or a merged small change far from the step does not move them). A
-// plateau window may take in the first or last 2h of a ramp, so the edge samples more than h
-// from the median of the plateau's nearest w are left out.
-void set_levels(Plateau& p, std::span<const double> tv, std::span<const double> uv, double h,
-                double w) {
-  std::size_t first = p.begin;
-  std::size_t last = p.end;
-  while (tv[last] - tv[first] > w) {
-    if (std::abs(uv[last] - median_of(uv, reach(tv, last, first, w, -1), last)) <= h) break;
-    --last;
-  }
-  while (tv[last] - tv[first] > w) {
-    if (std::abs(uv[first] - median_of(uv, first, reach(tv, first, last, w, +1))) <= h) break;
-    ++first;
-  }
-  p.start_level = median_of(uv, first, reach(tv, first, last, 0.5 * w, +1));
-  p.end_level = median_of(uv, reach(tv, last, first, 0.5 * w, -1), last);
-  p.head_level = median_of(uv, first, reach(tv, first, last, 20.0 * w, +1));
-  p.tail_level = median_of(uv, reach(tv, last, first, 20.0 * w, -1), last);
-}
-
-// Plateaus: unions of windows [tᵢ, tᵢ + w] in which the input varies by at most 2h, split where
-// the window level moves more than h from the plateau's first level (a slow drift).
-std::vector<Plateau> find_plateaus(std::span<const double> tv, std::span<const double> uv, double h,
-                                   double w) {
-  std::vector<Plateau> plateaus;
-  double ref = 0.0;
-  for_each_window(tv, uv, w, [&](std::size_t i, std::size_t last, double lo, double hi) {
-    // A window cut short by a gap or the end of the log must still span half the duration.
-    if (tv[last] - tv[i] < 0.5 * w || hi - lo > 2.0 * h) return;
-    const double mid = 0.5 * (hi + lo);
-    if (!plateaus.empty() && i <= plateaus.back().end + 1 && std::abs(mid - ref) <= h) {
-      plateaus.back().end = std::max(plateaus.back().end, last);
-    } else {
-      const std::size_t begin = plateaus.empty() ? i : std::max(i, plateaus.back().end + 1);
-      if (begin > last) return;
-      plateaus.push_back({begin, last});
-      ref = mid;
+// The noise and the windows of the whole input, in pieces on `jobs` threads: the same result
+// for any number.
+InputScan scan_input(std::span<const double> u, const ValidSamples& v,
+                     const StepDetectorOptions& options) {
+  const std::size_t n = v.u.size();
+  const std::size_t pieces = detail::scan_pieces(n, 4 * core::job_count(options.jobs, n));
+  std::vector<InputScan> scans(pieces);
+  double noise = 0.0;
+  core::parallel_for(pieces + 1, options.jobs, [&](std::size_t k) {
+    if (k == 0) {
+      noise = input_noise_sigma(u, v);
+      return;
     }
+    const auto [i0, i1] = detail::piece_of(n, pieces, k - 1);
+    scans[k - 1].scan_windows(v.t, v.u, options.change_window_s, i0, i1);
   });
-  // Levels next to a transition over w/2: on a drift slow enough to hold plateaus (2h per w)
-  // they differ by at most h, half the smallest threshold.
-  for (Plateau& p : plateaus) set_levels(p, tv, uv, h, w);
-  return plateaus;
+  for (std::size_t k = 1; k < pieces; ++k) scans.front().join(scans[k]);
+  scans.front().noise_sigma = noise;
+  return scans.front();
 }
 
-// Neighbouring plateaus are one level unless the input changes by the threshold between them
-// (a spike, a gap, wiggles or a drift split them); a short level left by a small change back
-// is the re-settling of the step into it.
-std::vector<Plateau> merge_levels(const std::vector<Plateau>& in, std::span<const double> tv,
-                                  std::span<const double> uv, double h, double threshold,
-                                  const StepDetectorOptions& options) {
-  std::vector<Plateau> out;
-  for (const Plateau& p : in) {
-    if (!out.empty()) {
-      Plateau& back = out.back();
-      const double change = p.start_level - back.end_level;
-      bool merge = std::abs(change) < threshold;
-      bool settle = false;
-      if (!merge && out.size() >= 2) {
-        const double step = back.start_level - out[out.size() - 2].end_level;
-        settle = tv[back.end] - tv[back.begin] < options.settle_s && change * step < 0.0 &&
-                 std::abs(change) < options.settle_fraction * std::abs(step);
-      }
-      if (merge || settle) {
-        back.end = p.end;
-        set_levels(back, tv, uv, h, options.min_plateau_s);
-        if (settle) back.head_level = p.head_level;  // the settled level
-        continue;
-      }
-    }
-    out.push_back(p);
-  }
-  return out;
+StepThreshold threshold_from(const InputScan& scan, const StepDetectorOptions& options) {
+  StepThreshold s;
+  s.noise_sigma = scan.noise_sigma;
+  s.largest_change = scan.largest_change;
+  const double h_noise = options.band ? *options.band : options.noise_factor * s.noise_sigma;
+  s.from_min_step = options.min_step > 0.0;
+  const double threshold =
+      s.from_min_step ? options.min_step
+                      : std::max(2.0 * h_noise, options.large_change_fraction * s.largest_change);
+  double h = options.band ? *options.band : std::max(h_noise, 0.25 * threshold);
+  // The user's min_step overrides the noise: the band narrows to half of it, so a step of
+  // min_step leaves the band of its old level (a dithered order, whose dither is bounded).
+  if (s.from_min_step && !options.band) h = std::min(h, 0.5 * threshold);
+  // A noise-free input: a band of round-off size only (and > 0 for an input of zeros).
+  h = std::max({h, 1e-9 * std::max({scan.max - scan.min, std::abs(scan.min), std::abs(scan.max)}),
+                std::numeric_limits<double>::min()});
+  s.band = h;
+  s.threshold = std::max(threshold, 2.0 * h);
+  return s;
 }
 
 // Crossing of the line u = a + b·t with the level L.
@@ -314,52 +311,16 @@ Step step_between(const Plateau& p0, const Plateau& p1, std::span<const double> 
 
 }  // namespace
 
-StepThreshold step_threshold(std::span<const double> t, std::span<const double> u,
-                             const StepDetectorOptions& options) {
-  options.validate();
-  const ValidSamples v = valid_samples(t, u, options.input_name);
-  StepThreshold s;
-  // Two independent passes over the whole input, side by side when allowed.
-  core::parallel_for(2, options.jobs, [&](std::size_t pass) {
-    if (pass == 0) {
-      s.noise_sigma = std::max(detail::difference_noise_sigma(u), trimmed_rms_sigma(v.u));
-    } else {
-      s.largest_change = largest_change(v.t, v.u, options.change_window_s);
-    }
-  });
-  const double h_noise = options.band ? *options.band : options.noise_factor * s.noise_sigma;
-  s.from_min_step = options.min_step > 0.0;
-  const double threshold =
-      s.from_min_step ? options.min_step
-                      : std::max(2.0 * h_noise, options.large_change_fraction * s.largest_change);
-  double h = options.band ? *options.band : std::max(h_noise, 0.25 * threshold);
-  // The user's min_step overrides the noise: the band narrows to half of it, so a step of
-  // min_step leaves the band of its old level (a dithered order, whose dither is bounded).
-  if (s.from_min_step && !options.band) h = std::min(h, 0.5 * threshold);
-  // A noise-free input: a band of round-off size only (and > 0 for an input of zeros).
-  const auto [min_it, max_it] = std::minmax_element(v.u.begin(), v.u.end());
-  h = std::max({h, 1e-9 * std::max({*max_it - *min_it, std::abs(*min_it), std::abs(*max_it)}),
-                std::numeric_limits<double>::min()});
-  s.band = h;
-  s.threshold = std::max(threshold, 2.0 * h);
-  return s;
-}
+namespace {
 
-StepDetection detect_steps(std::span<const double> t, std::span<const double> u,
-                           const StepDetectorOptions& options) {
-  return detect_steps(t, u, options, step_threshold(t, u, options));
-}
-
-StepDetection detect_steps(std::span<const double> t, std::span<const double> u,
-                           const StepDetectorOptions& options, const StepThreshold& scale) {
-  options.validate();
-  const ValidSamples v = valid_samples(t, u, options.input_name);
-  std::span<const double> tv = v.t;
-  std::span<const double> uv = v.u;
-  const auto [min_it, max_it] = std::minmax_element(uv.begin(), uv.end());
-  const double range = *max_it - *min_it;
+// The steps of the valid samples v of u(t), on the scale found for them; `range` is the largest
+// minus the smallest valid sample.
+StepDetection detect_in(std::span<const double> t, const ValidSamples& v,
+                        const StepDetectorOptions& options, const StepThreshold& scale,
+                        double range) {
+  const std::span<const double> tv = v.t;
+  const std::span<const double> uv = v.u;
   const double h = scale.band;
-
   StepDetection out;
   out.noise_sigma = scale.noise_sigma;
   out.band = h;
@@ -369,8 +330,9 @@ StepDetection detect_steps(std::span<const double> t, std::span<const double> u,
                   fmt(out.threshold);
     return out;
   }
-  const std::vector<Plateau> plateaus = merge_levels(
-      find_plateaus(tv, uv, h, options.min_plateau_s), tv, uv, h, out.threshold, options);
+  const std::vector<detail::Plateau> plateaus =
+      detail::merge_levels(detail::find_plateaus(tv, uv, h, options.min_plateau_s, options.jobs),
+                           tv, uv, h, out.threshold, options);
   if (plateaus.size() < 2) {
     out.message = plateaus.empty() ? "no step found: the input never holds a level (±" + fmt(h) +
                                          ") for " + fmt(options.min_plateau_s) + " s"
@@ -397,6 +359,31 @@ StepDetection detect_steps(std::span<const double> t, std::span<const double> u,
     }
   }
   return out;
+}
+
+}  // namespace
+
+StepThreshold step_threshold(std::span<const double> t, std::span<const double> u,
+                             const StepDetectorOptions& options) {
+  options.validate();
+  const ValidSamples v = valid_samples(t, u, options);
+  return threshold_from(scan_input(u, v, options), options);
+}
+
+StepDetection detect_steps(std::span<const double> t, std::span<const double> u,
+                           const StepDetectorOptions& options) {
+  options.validate();
+  const ValidSamples v = valid_samples(t, u, options);
+  const InputScan scan = scan_input(u, v, options);
+  return detect_in(t, v, options, threshold_from(scan, options), scan.max - scan.min);
+}
+
+StepDetection detect_steps(std::span<const double> t, std::span<const double> u,
+                           const StepDetectorOptions& options, const StepThreshold& scale) {
+  options.validate();
+  const ValidSamples v = valid_samples(t, u, options);
+  const auto [min_it, max_it] = std::minmax_element(v.u.begin(), v.u.end());
+  return detect_in(t, v, options, scale, *max_it - *min_it);
 }
 
 Step step_from_window(std::span<const double> t, std::span<const double> u,

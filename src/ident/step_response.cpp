@@ -70,24 +70,22 @@ StepResponse prepare_step_response(std::span<const double> t, std::span<const do
   const auto hi = std::upper_bound(lo, t.end(), step.t_end + slack);
   const auto i0 = static_cast<std::size_t>(lo - t.begin());
   const auto i1 = static_cast<std::size_t>(hi - t.begin());
+  if (i0 == i1) {
+    throw core::InputError(
+        where, "no log sample in the window [" + fmt(step.t_begin) + ", " + fmt(step.t_end) + "] s",
+        "widen the window");
+  }
+  // Bisection found the window's samples on an increasing axis; each is checked as it is taken.
+  r.tau.reserve(i1 - i0);
+  r.y.reserve(i1 - i0);
   for (std::size_t i = i0; i < i1; ++i) {
     if (!std::isfinite(t[i]) || (i > i0 && !(t[i] > t[i - 1]))) {
       check_time_axis(t, name);  // throws, naming the first bad index of the whole axis
     }
-  }
-  bool any_in_window = false;
-  for (std::size_t i = i0; i < i1; ++i) {
-    if (t[i] < step.t_begin - slack || t[i] > step.t_end + slack) continue;
-    any_in_window = true;
     if (t[i] < t_from - slack || std::isnan(y[i])) continue;
     r.tau.push_back(t[i] - step.t_step);
     r.y.push_back(y[i]);
     if (t[i] <= step.t_step) ++r.n_pre;
-  }
-  if (!any_in_window) {
-    throw core::InputError(
-        where, "no log sample in the window [" + fmt(step.t_begin) + ", " + fmt(step.t_end) + "] s",
-        "widen the window");
   }
   if (r.y.empty()) {
     throw core::InputError(where,

@@ -15,8 +15,6 @@
 
 #include <fmt/format.h>
 
-#include "dynpos/core/huge_pages.hpp"
-
 #include "bounded_line.hpp"
 #include "csv_blocks.hpp"
 #include "csv_cell.hpp"
@@ -510,8 +508,8 @@ bool merge_block(const detail::Block& block, std::size_t line_base,
   return true;
 }
 
-// Room for the rows still to come, estimated from the first block's bytes per row (huge pages
-// advised; room never written costs no memory). Not for a window that ends early.
+// Room for the rows still to come, estimated from the first block's bytes per row (room never
+// written costs no memory). Not for a window that ends early.
 void reserve_rows(const detail::Block& block, std::uint64_t file_size,
                   const std::vector<std::size_t>& plan_of, std::vector<ColumnPlan>& channels,
                   const CsvReadOptions& options, RowStream& out) {
@@ -523,9 +521,9 @@ void reserve_rows(const detail::Block& block, std::uint64_t file_size,
   const auto more = static_cast<std::size_t>(1.02 * left * static_cast<double>(rows) /
                                              static_cast<double>(bytes)) +
                     4096;
-  core::reserve_huge(out.time_s, out.time_s.size() + more);
+  out.time_s.reserve(out.time_s.size() + more);
   for (const std::size_t p : plan_of) {
-    core::reserve_huge(channels[p].values, channels[p].values.size() + more);
+    channels[p].values.reserve(channels[p].values.size() + more);
   }
 }
 

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -100,6 +101,63 @@ TEST(FewValues, UpToTheLimitInAnyOrderAndSignedZerosAsOne) {
   ASSERT_EQ(z->distinct, 3u);
   EXPECT_EQ(z->counts[0].second, 4u);
   EXPECT_TRUE(std::signbit(z->counts[0].first));  // kept as first seen
+}
+
+// Counted in pieces on several threads and joined, a series gives what it gives counted whole:
+// the same values, counts and zero sign, and no answer when the pieces hold too many values
+// together or one holds a NaN.
+TEST(FewValues, CountedInPiecesAsWhole) {
+  const std::size_t n = 2 * (std::size_t{1} << 18) + 3;
+  std::mt19937_64 engine(5);
+  std::uniform_int_distribution<int> pick(-20, 20);
+  std::vector<double> v(n);
+  for (double& x : v) x = 0.25 * pick(engine);
+  v[n - 1] = -0.0;  // the last piece's zero comes after the first piece's +0
+  const auto whole = few_values(n, [&](std::size_t i) { return v[i]; });
+  ASSERT_TRUE(whole.has_value());
+  for (unsigned jobs : {1u, 2u, 3u, 0u}) {
+    const auto pieces = few_values(n, jobs, [&](std::size_t i) { return v[i]; });
+    ASSERT_TRUE(pieces.has_value()) << jobs;
+    ASSERT_EQ(pieces->distinct, whole->distinct);
+    EXPECT_EQ(pieces->n, n);
+    for (std::size_t k = 0; k < whole->distinct; ++k) {
+      EXPECT_EQ(pieces->counts[k].second, whole->counts[k].second) << k;
+      EXPECT_EQ(std::signbit(pieces->counts[k].first), std::signbit(whole->counts[k].first));
+      EXPECT_EQ(pieces->counts[k].first, whole->counts[k].first);
+    }
+    EXPECT_EQ(pieces->median(), whole->median());
+  }
+  std::vector<double> halves(n);  // 40 values in the first half, 40 others in the second
+  for (std::size_t i = 0; i < n; ++i) halves[i] = static_cast<double>(i % 40 + (2 * i / n) * 40);
+  EXPECT_TRUE(few_values(n / 2, 2, [&](std::size_t i) { return halves[i]; }));
+  EXPECT_FALSE(few_values(n, 2, [&](std::size_t i) { return halves[i]; }));
+  v[n - 2] = std::nan("");
+  EXPECT_FALSE(few_values(n, 3, [&](std::size_t i) { return v[i]; }));
+}
+
+// The counts of f(v) from the counts of v are those of the series f(v): values f maps together
+// are merged, and a NaN result gives no counts.
+TEST(FewValues, MappedCountsAreTheCountsOfTheMappedSeries) {
+  std::mt19937_64 engine(9);
+  std::uniform_int_distribution<int> pick(-12, 12);
+  std::vector<double> v(5001);
+  for (double& x : v) x = 0.1 * pick(engine);
+  const auto few = few_values(v.size(), [&](std::size_t i) { return v[i]; });
+  ASSERT_TRUE(few.has_value());
+  const double m = few->median();
+  const auto check = [&](auto f) {
+    const auto mapped = few->mapped(f);
+    const auto direct = few_values(v.size(), [&](std::size_t i) { return f(v[i]); });
+    ASSERT_TRUE(mapped && direct);
+    ASSERT_EQ(mapped->distinct, direct->distinct);
+    for (std::size_t k = 0; k < direct->distinct; ++k)
+      EXPECT_EQ(mapped->counts[k], direct->counts[k]);
+    EXPECT_EQ(mapped->median(), direct->median());
+  };
+  check([](double x) { return x * x; });
+  check([m](double x) { return std::abs(x - m); });
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_FALSE(few->mapped([inf](double x) { return x * 0.0 * inf; }));
 }
 
 }  // namespace

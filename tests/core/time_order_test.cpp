@@ -60,5 +60,33 @@ TEST(FirstUnorderedTime, EveryDefectAtEveryPlaceOfAChunk) {
   }
 }
 
+// A long axis is checked in pieces, one per thread: the first defect is found wherever it falls
+// against the pieces' edges, and an earlier defect in a later piece's thread still wins.
+TEST(FirstUnorderedTime, InPiecesOnAnyNumberOfThreads) {
+  const std::size_t n = 3 * (std::size_t{1} << 18) + 5;
+  const std::vector<double> clean = axis(n);
+  EXPECT_EQ(first_unordered_time(clean, 4), n);
+  std::vector<std::size_t> places = {0, 1, n - 1};
+  for (std::size_t pieces = 2; pieces <= 4; ++pieces) {
+    for (std::size_t k = 1; k < pieces; ++k) {
+      const std::size_t edge = n * k / pieces;
+      for (std::size_t at : {edge - 1, edge, edge + 1}) places.push_back(at);
+    }
+  }
+  for (const std::size_t at : places) {
+    for (const bool repeat : {false, true}) {
+      std::vector<double> t = clean;
+      t[at] = repeat && at > 0 ? t[at - 1] : std::nan("");
+      for (unsigned jobs : {1u, 2u, 3u, 4u, 0u}) {
+        EXPECT_EQ(first_unordered_time(t, jobs), plain_loop(t)) << at << " on " << jobs;
+      }
+    }
+  }
+  std::vector<double> two = clean;  // defects in the first and the last piece
+  two[n - 10] = std::nan("");
+  two[10] = two[9];
+  for (unsigned jobs : {2u, 3u, 4u}) EXPECT_EQ(first_unordered_time(two, jobs), 10u);
+}
+
 }  // namespace
 }  // namespace dynpos::core

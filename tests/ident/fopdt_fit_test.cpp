@@ -47,6 +47,22 @@ TEST(FopdtModel, MatchesClosedForm) {
   EXPECT_NEAR(kTruth(1e6), 7.0, 1e-12);
 }
 
+// Past 40 T the model is its final value without the exponential: bit for bit what (3.7) gives,
+// since 1 − e^(−x/T) rounds to 1 there, for fast and slow responses and a negative step.
+TEST(FopdtModel, SettledValueIsTheClosedFormBitForBit) {
+  for (const double tc : {1e-3, 0.7, 5.0, 250.0}) {
+    for (const double amplitude : {6.0, -0.37, 1e-9}) {
+      const FopdtModel model{12.0, 1.0, amplitude, tc, 0.4};
+      for (const double k : {39.0, 39.999, 40.0, 40.001, 41.0, 80.0, 1e4}) {
+        const double x = k * tc;
+        const double t = 12.0 + 0.4 + x;
+        const double closed = 1.0 + amplitude * (1.0 - std::exp(-(t - 12.0 - 0.4) / tc));
+        EXPECT_EQ(model(t), closed) << "T " << tc << ", A " << amplitude << ", x/T " << k;
+      }
+    }
+  }
+}
+
 TEST(FopdtFit, LeastSquaresRecoversNoiseFreeModel) {
   const std::vector<double> t = time_axis(0.0, 0.01, 10001);  // 0 … 100 s at 100 Hz
   const std::vector<double> y = sample(t, kTruth);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "dynpos/core/error.hpp"
@@ -427,6 +428,146 @@ TEST(StepDetector, BadInputIsAnInputError) {
   bad = {};
   bad.band = -1.0;
   EXPECT_THROW_MATCHING(bad.validate(), InputError, "band");
+}
+
+// A long log for the scans in pieces: steps and ramps of many sizes every 150 s, a logging gap,
+// a noisy hold of 900 s (a piece with no step, whose plateau runs in from the piece before) and
+// a slow drift. 100 Hz with jitter, 3600 s.
+std::vector<double> long_input(const std::vector<double>& t, double quantum) {
+  std::vector<Move> moves;
+  double level = 0.0;
+  for (int k = 0; k < 12; ++k) {
+    const double to = 0.05 * ((k * 7) % 11) - 0.2;
+    moves.push_back({100.0 + 150.0 * k, level, to, k % 3 == 0 ? 0.0 : 0.5 * k});
+    level = to;
+  }
+  std::vector<double> u = sample(
+      t,
+      [&](double x) {
+        const double drift = x > 2900.0 ? 2e-5 * (x - 2900.0) : 0.0;
+        return command(moves, std::min(x, 1900.0)) + drift;
+      },
+      0.002, 21);
+  if (quantum > 0.0) {
+    for (double& x : u) x = quantum * std::round(x / quantum);
+  }
+  return u;
+}
+
+void expect_same_detection(const StepDetection& a, const StepDetection& b,
+                           const std::string& what) {
+  EXPECT_EQ(a.noise_sigma, b.noise_sigma) << what;
+  EXPECT_EQ(a.band, b.band) << what;
+  EXPECT_EQ(a.threshold, b.threshold) << what;
+  EXPECT_EQ(a.message, b.message) << what;
+  ASSERT_EQ(a.steps.size(), b.steps.size()) << what;
+  for (std::size_t k = 0; k < a.steps.size(); ++k) {
+    const Step& x = a.steps[k];
+    const Step& y = b.steps[k];
+    EXPECT_EQ(x.t_step, y.t_step) << what << " step " << k;
+    EXPECT_EQ(x.t_ramp_end, y.t_ramp_end) << what << " step " << k;
+    EXPECT_EQ(x.t_begin, y.t_begin) << what << " step " << k;
+    EXPECT_EQ(x.t_end, y.t_end) << what << " step " << k;
+    EXPECT_EQ(x.u_before, y.u_before) << what << " step " << k;
+    EXPECT_EQ(x.u_after, y.u_after) << what << " step " << k;
+  }
+}
+
+// The plateaus and the largest change are scanned in pieces, one per thread, and joined: the
+// steps, levels, times and threshold are the same on any number of threads, to the bit. With 16
+// threads the 360 000 samples are cut into 16 pieces; the noisy hold has pieces with no step.
+TEST(StepDetector, SameStepsOnAnyNumberOfThreads) {
+  const std::vector<double> t = time_axis(0.0, 0.01, 360'001, 0.3, 17);
+  for (const double quantum : {0.0, 0.001}) {  // selected noise, and counted (a quantized order)
+    std::vector<double> u = long_input(t, quantum);
+    if (quantum == 0.0) make_gap(t, u, 1210.0, 1214.0);
+    StepDetectorOptions one;
+    const StepDetection serial = detect_steps(t, u, one);
+    ASSERT_GE(serial.steps.size(), 10u);
+    for (unsigned jobs : {2u, 3u, 8u, 16u}) {
+      StepDetectorOptions many;
+      many.jobs = jobs;
+      expect_same_detection(serial, detect_steps(t, u, many),
+                            "quantum " + std::to_string(quantum) + ", " + std::to_string(jobs));
+      const StepThreshold a = step_threshold(t, u, one);
+      const StepThreshold b = step_threshold(t, u, many);
+      EXPECT_EQ(a.largest_change, b.largest_change);
+      EXPECT_EQ(a.noise_sigma, b.noise_sigma);
+    }
+  }
+}
+
+// detect_steps() finds the threshold and the steps with one check and scan of the input: the
+// same as step_threshold() followed by detect_steps() on that threshold. The noise of a gap-free
+// quantized order is counted once from its differences (σ̂ from their median, MAD and trimmed
+// squares); with one missing sample at the end the separate passes run, and give the same σ̂.
+TEST(StepDetector, OnePassGivesWhatTheThresholdAndTheDetectionGiveApart) {
+  const std::vector<double> t = time_axis(0.0, 0.01, 360'001, 0.3, 17);
+  const std::vector<double> u = long_input(t, 0.001);
+  StepDetectorOptions options;
+  options.jobs = 2;
+  const StepThreshold scale = step_threshold(t, u, options);
+  expect_same_detection(detect_steps(t, u, options), detect_steps(t, u, options, scale), "apart");
+  std::vector<double> t_more = t, u_more = u;
+  t_more.push_back(t.back() + 0.01);
+  u_more.push_back(std::nan(""));
+  const StepThreshold passes = step_threshold(t_more, u_more, options);
+  EXPECT_EQ(scale.noise_sigma, passes.noise_sigma);
+  EXPECT_NEAR(scale.noise_sigma, selected_noise_sigma(u), 1e-12 * scale.noise_sigma);
+}
+
+// S by its definition: the largest range of the 3-sample running median over every window
+// [tᵢ, tᵢ + w], each window taken whole.
+double largest_change_by_definition(const std::vector<double>& t, const std::vector<double>& u,
+                                    double w) {
+  const auto m = [&](std::size_t i) {
+    if (i == 0 || i + 1 >= u.size()) return u[i];
+    return std::max(std::min(u[i - 1], u[i]), std::min(std::max(u[i - 1], u[i]), u[i + 1]));
+  };
+  double s = 0.0;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    double lo = m(i), hi = m(i);
+    for (std::size_t j = i + 1; j < t.size() && t[j] <= t[i] + w; ++j) {
+      lo = std::min(lo, m(j));
+      hi = std::max(hi, m(j));
+    }
+    s = std::max(s, hi - lo);
+  }
+  return s;
+}
+
+// The largest change skips the blocks of windows that cannot hold a larger range than the one
+// found: S is still the largest range of any window, on steps, spikes, ramps and flat stretches,
+// and for a clean step placed anywhere against the blocks.
+TEST(StepDetector, LargestChangeIsTheLargestRangeOfAnyWindow) {
+  const std::vector<double> t = time_axis(0.0, 0.1, 60'001, 0.3, 5);
+  std::vector<double> u = sample(
+      t,
+      [](double x) {
+        // Steps of 0.3, 0.2 and then 0.35, all in the last of the three pieces a scan of 60 000
+        // samples is cut into: the block that holds the largest change comes after blocks whose
+        // ranges are nearly as large.
+        double v = x < 4300.0 ? 0.0 : (x < 4800.0 ? 0.3 : (x < 5400.0 ? 0.1 : 0.45));
+        if (x > 1000.0 && x < 1100.0) v += 0.001 * (x - 1000.0);  // a ramp over 100 s
+        return v;
+      },
+      0.01, 6);
+  u[25'000] += 5.0;  // a spike: one sample, which the running median drops
+  u[26'001] += 0.1;  // ... and a two-sample one, which it keeps
+  u[26'002] += 0.1;
+  for (unsigned jobs : {1u, 3u}) {
+    StepDetectorOptions options;
+    options.jobs = jobs;
+    const double s = largest_change_by_definition(t, u, options.change_window_s);
+    EXPECT_GT(s, 0.35);  // set by the last step
+    EXPECT_EQ(step_threshold(t, u, options).largest_change, s) << jobs;
+  }
+  const std::vector<double> t_clean = time_axis(0.0, 0.1, 20'001);
+  for (const std::size_t at : {511u, 512u, 513u, 9'000u, 19'990u}) {
+    const std::vector<double> u_clean =
+        sample(t_clean, [&](double x) { return x < t_clean[at] ? 0.0 : 0.125; });
+    EXPECT_EQ(step_threshold(t_clean, u_clean).largest_change, 0.125) << at;
+  }
 }
 
 }  // namespace

@@ -113,9 +113,10 @@ LoadedLog read_log_files(const std::filesystem::path& main_log, const io::Column
                          const io::LogFileRead& how = {});
 
 /// The InputReport of a log read from one file: `file_report` completed with the path and the
-/// record count, and every channel as a role from that file with its median rate.
+/// record count, and every channel as a role from that file with its median rate. The passes
+/// over a long log run on `jobs` threads (0 = every core); the report does not depend on it.
 io::InputReport describe_input(const core::Log& log, const std::string& file,
-                               io::FileReport file_report);
+                               io::FileReport file_report, unsigned jobs = 1);
 
 /// `input` with each file path below `base` made relative to it, e.g. for a report folder that
 /// moves with its logs; other paths stay as they are.

@@ -12,6 +12,9 @@
 #include <cstdint>
 #include <optional>
 #include <utility>
+#include <vector>
+
+#include "dynpos/core/parallel_for.hpp"
 
 namespace dynpos::core {
 
@@ -30,6 +33,33 @@ struct FewValues {
       if (rank < below) return counts[k].first;
     }
     return counts[distinct - 1].first;
+  }
+
+  /// The median of the counted values (the mean of the two middle ones for an even n); n > 0.
+  double median() const {
+    const std::size_t mid = n / 2;
+    const double upper = at_rank(mid);
+    return n % 2 == 1 ? upper : 0.5 * (at_rank(mid - 1) + upper);
+  }
+
+  /// The counts of f(v) for the counted values v, or nullopt when f gives a NaN, as a count of
+  /// f over the series itself would: values that f maps to equal results (as == tells them
+  /// apart) are merged. For an f whose results are never −0 (a square, an absolute value):
+  /// which zero a merged value keeps is otherwise the first counted, not the first in the series.
+  template <class F>
+  std::optional<FewValues> mapped(F&& f) const {
+    FewValues out;
+    out.n = n;
+    for (std::size_t k = 0; k < distinct; ++k) {
+      const double y = f(counts[k].first);
+      if (y != y) return std::nullopt;  // NaN
+      std::size_t j = 0;
+      while (j < out.distinct && !(out.counts[j].first == y)) ++j;
+      if (j == out.distinct) out.counts[out.distinct++] = {y, 0};
+      out.counts[j].second += counts[k].second;
+    }
+    std::sort(out.counts.begin(), out.counts.begin() + static_cast<std::ptrdiff_t>(out.distinct));
+    return out;
   }
 };
 
@@ -75,6 +105,47 @@ std::optional<FewValues> few_values(std::size_t n, Value&& value) {
   return out;
 }
 
+/// The counts of a series from those of its first part and of the rest: the same as counting it
+/// whole (a value seen in both keeps the first part's zero sign), nullopt when they hold more than
+/// FewValues::kMaxDistinct values together.
+inline std::optional<FewValues> joined_counts(const FewValues& first, const FewValues& rest) {
+  FewValues out;
+  out.n = first.n + rest.n;
+  std::size_t a = 0, b = 0;
+  while (a < first.distinct || b < rest.distinct) {
+    if (out.distinct == FewValues::kMaxDistinct) return std::nullopt;
+    const bool take_a = b == rest.distinct ||
+                        (a < first.distinct && !(rest.counts[b].first < first.counts[a].first));
+    const bool take_b = a == first.distinct ||
+                        (b < rest.distinct && !(first.counts[a].first < rest.counts[b].first));
+    out.counts[out.distinct] = take_a ? first.counts[a] : rest.counts[b];
+    if (take_a && take_b) out.counts[out.distinct].second += rest.counts[b].second;
+    ++out.distinct;
+    a += take_a ? 1 : 0;
+    b += take_b ? 1 : 0;
+  }
+  return out;
+}
+
+/// few_values() of a long series counted in pieces on `jobs` threads (0 = every core), then
+/// joined: the same result, whatever the number of threads.
+template <class Value>
+std::optional<FewValues> few_values(std::size_t n, unsigned jobs, const Value& value) {
+  constexpr std::size_t kShortest = 1 << 18;  // a piece is counted in about a millisecond
+  const std::size_t pieces = std::min<std::size_t>(job_count(jobs, n), n / kShortest + 1);
+  if (pieces <= 1) return few_values(n, value);
+  std::vector<std::optional<FewValues>> counted(pieces);
+  parallel_for(pieces, jobs, [&](std::size_t k) {
+    const std::size_t begin = n * k / pieces, end = n * (k + 1) / pieces;
+    counted[k] = few_values(end - begin, [&](std::size_t i) { return value(begin + i); });
+  });
+  std::optional<FewValues> out = counted.front();
+  for (std::size_t k = 1; k < pieces && out; ++k) {
+    out = counted[k] ? joined_counts(*out, *counted[k]) : std::nullopt;
+  }
+  return out;
+}
+
 /// The median of value(0) … value(n − 1) (the mean of the two middle ones for an even n), or
 /// nullopt when there are more than FewValues::kMaxDistinct distinct values, a NaN, or n = 0:
 /// then select.
@@ -82,9 +153,7 @@ template <class Value>
 std::optional<double> few_valued_median(std::size_t n, Value&& value) {
   const std::optional<FewValues> few = few_values(n, std::forward<Value>(value));
   if (!few) return std::nullopt;
-  const std::size_t mid = n / 2;
-  const double upper = few->at_rank(mid);
-  return n % 2 == 1 ? upper : 0.5 * (few->at_rank(mid - 1) + upper);
+  return few->median();
 }
 
 }  // namespace dynpos::core

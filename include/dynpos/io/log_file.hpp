@@ -37,7 +37,7 @@ struct LogFileRead {
   enum class Format { kAuto, kCsv, kNmea };
   Format format = Format::kAuto;  ///< kAuto: an NMEA capture when io::looks_like_nmea, else CSV
   bool strict = false;            ///< an NMEA line that cannot be used is an error
-  unsigned jobs = 0;              ///< threads for reading a CSV file, 0 = every core
+  unsigned jobs = 0;  ///< threads for reading a CSV file and describing it, 0 = every core
   /// Only the rows of a CSV file with time in [t_from_s, t_to_s] (its own axis) are read
   /// (CsvReadOptions); an NMEA capture is read whole.
   std::optional<double> t_from_s;

@@ -1,0 +1,160 @@
+#include "plateaus.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "dynpos/core/parallel_for.hpp"
+#include "series.hpp"
+#include "window_scan.hpp"
+
+namespace dynpos::ident::detail {
+namespace {
+
+double median_of(std::span<const double> x, std::size_t begin, std::size_t end) {
+  return median(std::vector<double>(x.begin() + static_cast<std::ptrdiff_t>(begin),
+                                    x.begin() + static_cast<std::ptrdiff_t>(end) + 1));
+}
+
+// First index of the samples within `w` [s] before index `last` (dir −1), or last index of
+// those within `w` after `first` (dir +1).
+std::size_t reach(std::span<const double> tv, std::size_t from, std::size_t stop, double w,
+                  int dir) {
+  std::size_t k = from;
+  if (dir < 0) {
+    while (k > stop && tv[k - 1] >= tv[from] - w) --k;
+  } else {
+    while (k < stop && tv[k + 1] <= tv[from] + w) ++k;
+  }
+  return k;
+}
+
+// The levels of a plateau: the medians of its first and last w/2 (next to a transition) and of
+// its first and last 20w (the levels a step goes from and to: long enough to average the noise,
+// short enough that a drift or a merged small change far from the step does not move them). A
+// plateau window may take in the first or last 2h of a ramp, so the edge samples more than h
+// from the median of the plateau's nearest w are left out.
+void set_levels(Plateau& p, std::span<const double> tv, std::span<const double> uv, double h,
+                double w) {
+  std::size_t first = p.begin;
+  std::size_t last = p.end;
+  while (tv[last] - tv[first] > w) {
+    if (std::abs(uv[last] - median_of(uv, reach(tv, last, first, w, -1), last)) <= h) break;
+    --last;
+  }
+  while (tv[last] - tv[first] > w) {
+    if (std::abs(uv[first] - median_of(uv, first, reach(tv, first, last, w, +1))) <= h) break;
+    ++first;
+  }
+  p.start_level = median_of(uv, first, reach(tv, first, last, 0.5 * w, +1));
+  p.end_level = median_of(uv, reach(tv, last, first, 0.5 * w, -1), last);
+  p.head_level = median_of(uv, first, reach(tv, first, last, 20.0 * w, +1));
+  p.tail_level = median_of(uv, reach(tv, last, first, 20.0 * w, -1), last);
+}
+
+// The plateau rule, fed one window at a time. Its state is the last plateau's end and the level
+// it started at: two scans in the same state move alike on the same windows.
+struct PlateauScan {
+  std::span<const double> tv;
+  double h = 0.0, w = 0.0;
+  std::vector<Plateau> plateaus;
+  std::vector<double> refs;          // each plateau's first window level
+  std::vector<std::size_t> started;  // the window (its first sample) that started each plateau
+
+  void add(std::size_t i, std::size_t last, double lo, double hi) {
+    // A window cut short by a gap or the end of the log must still span half the duration.
+    if (tv[last] - tv[i] < 0.5 * w || hi - lo > 2.0 * h) return;
+    const double mid = 0.5 * (hi + lo);
+    if (!plateaus.empty() && i <= plateaus.back().end + 1 && std::abs(mid - refs.back()) <= h) {
+      plateaus.back().end = std::max(plateaus.back().end, last);
+      return;
+    }
+    const std::size_t begin = plateaus.empty() ? i : std::max(i, plateaus.back().end + 1);
+    if (begin > last) return;
+    plateaus.push_back({begin, last});
+    refs.push_back(mid);
+    started.push_back(i);
+  }
+};
+
+// Carries `whole` (the scan of every window before piece [i0, i1)) through the piece, given
+// `local`, the piece scanned from an empty state. Once both hold a plateau started at the same
+// level, their ends agree too (each is the last sample of the newest window that held a level),
+// so from there on the piece's own plateaus are the whole scan's: only the windows before that
+// are scanned again (up to the first step in the piece, as a rule; the whole piece for an input
+// that holds one level throughout it).
+void join_piece(PlateauScan& whole, const PlateauScan& local, std::span<const double> uv,
+                std::size_t i0, std::size_t i1) {
+  std::size_t started = 0;  // local plateaus started by window i
+  bool joined = false;
+  for_each_window(
+      whole.tv, uv, whole.w, i0, i1, [&](std::size_t i, std::size_t last, double lo, double hi) {
+        whole.add(i, last, lo, hi);
+        while (started < local.started.size() && local.started[started] <= i) ++started;
+        joined =
+            started > 0 && !whole.plateaus.empty() && whole.refs.back() == local.refs[started - 1];
+        return !joined;
+      });
+  if (!joined) return;
+  whole.plateaus.back().end = local.plateaus[started - 1].end;
+  for (std::size_t k = started; k < local.plateaus.size(); ++k) {
+    whole.plateaus.push_back(local.plateaus[k]);
+    whole.refs.push_back(local.refs[k]);
+    whole.started.push_back(local.started[k]);
+  }
+}
+
+}  // namespace
+
+std::vector<Plateau> find_plateaus(std::span<const double> tv, std::span<const double> uv, double h,
+                                   double w, unsigned jobs) {
+  const std::size_t n = tv.size();
+  const std::size_t pieces = scan_pieces(n, core::job_count(jobs, n));
+  std::vector<PlateauScan> scans(pieces, PlateauScan{tv, h, w, {}, {}, {}});
+  core::parallel_for(pieces, jobs, [&](std::size_t k) {
+    const auto [i0, i1] = piece_of(n, pieces, k);
+    for_each_window(tv, uv, w, i0, i1, [&](std::size_t i, std::size_t last, double lo, double hi) {
+      scans[k].add(i, last, lo, hi);
+      return true;
+    });
+  });
+  PlateauScan whole = std::move(scans.front());
+  for (std::size_t k = 1; k < pieces; ++k) {
+    const auto [i0, i1] = piece_of(n, pieces, k);
+    join_piece(whole, scans[k], uv, i0, i1);
+  }
+  // Levels next to a transition over w/2: on a drift slow enough to hold plateaus (2h per w)
+  // they differ by at most h, half the smallest threshold.
+  std::vector<Plateau>& plateaus = whole.plateaus;
+  core::parallel_for(plateaus.size(), jobs,
+                     [&](std::size_t p) { set_levels(plateaus[p], tv, uv, h, w); });
+  return plateaus;
+}
+
+std::vector<Plateau> merge_levels(const std::vector<Plateau>& in, std::span<const double> tv,
+                                  std::span<const double> uv, double h, double threshold,
+                                  const StepDetectorOptions& options) {
+  std::vector<Plateau> out;
+  for (const Plateau& p : in) {
+    if (!out.empty()) {
+      Plateau& back = out.back();
+      const double change = p.start_level - back.end_level;
+      bool merge = std::abs(change) < threshold;
+      bool settle = false;
+      if (!merge && out.size() >= 2) {
+        const double step = back.start_level - out[out.size() - 2].end_level;
+        settle = tv[back.end] - tv[back.begin] < options.settle_s && change * step < 0.0 &&
+                 std::abs(change) < options.settle_fraction * std::abs(step);
+      }
+      if (merge || settle) {
+        back.end = p.end;
+        set_levels(back, tv, uv, h, options.min_plateau_s);
+        if (settle) back.head_level = p.head_level;  // the settled level
+        continue;
+      }
+    }
+    out.push_back(p);
+  }
+  return out;
+}
+
+}  // namespace dynpos::ident::detail

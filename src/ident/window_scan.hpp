@@ -1,0 +1,83 @@
+#pragma once
+// Sliding windows over a sampled series (private): each window [tᵢ, tᵢ + w] with its smallest
+// and largest value, in linear time, for a range of window starts, so that a day-long input is
+// scanned in pieces on several threads.
+
+#include <algorithm>
+#include <cstddef>
+#include <span>
+#include <utility>
+#include <vector>
+
+namespace dynpos::ident::detail {
+
+/// A queue of sample indices in a ring of slots that doubles when full: a sliding window's
+/// monotone queue, without std::deque's blocks.
+class IndexQueue {
+ public:
+  bool empty() const { return head_ == tail_; }
+  std::size_t front() const { return slots_[head_ & mask_]; }
+  std::size_t back() const { return slots_[(tail_ - 1) & mask_]; }
+  void pop_front() { ++head_; }
+  void pop_back() { --tail_; }
+  void push_back(std::size_t index) {
+    if (tail_ - head_ == slots_.size()) grow();
+    slots_[tail_++ & mask_] = index;
+  }
+
+ private:
+  void grow() {
+    std::vector<std::size_t> more(2 * slots_.size());
+    for (std::size_t k = head_; k != tail_; ++k) more[k - head_] = slots_[k & mask_];
+    tail_ -= head_;
+    head_ = 0;
+    slots_ = std::move(more);
+    mask_ = slots_.size() - 1;
+  }
+
+  std::vector<std::size_t> slots_ = std::vector<std::size_t>(64);
+  std::size_t mask_ = 63;
+  std::size_t head_ = 0, tail_ = 0;  // the queue is [head_, tail_), each taken modulo the slots
+};
+
+/// Calls f(i, last, lo, hi) for each window start i in [i0, i1) in turn: the window
+/// [tᵢ, tᵢ + w] holds the samples i … last, lo and hi are the smallest and largest of them
+/// (monotone queues: linear time). f returns false to stop the scan early.
+template <class Values, class F>
+void for_each_window(std::span<const double> tv, const Values& uv, double w, std::size_t i0,
+                     std::size_t i1, F&& f) {
+  const std::size_t n = tv.size();
+  IndexQueue max_q;  // indices of decreasing values: front is the window maximum
+  IndexQueue min_q;
+  std::size_t j = i0;  // one past the window end
+  for (std::size_t i = i0; i < i1; ++i) {
+    const double t_end = tv[i] + w;
+    while (j < n && tv[j] <= t_end) {
+      const double uj = uv[j];
+      while (!max_q.empty() && uv[max_q.back()] <= uj) max_q.pop_back();
+      max_q.push_back(j);
+      while (!min_q.empty() && uv[min_q.back()] >= uj) min_q.pop_back();
+      min_q.push_back(j);
+      ++j;
+    }
+    while (max_q.front() < i) max_q.pop_front();
+    while (min_q.front() < i) min_q.pop_front();
+    if (!f(i, j - 1, uv[min_q.front()], uv[max_q.front()])) return;
+  }
+}
+
+/// Piece k of `pieces` nearly equal pieces of [0, n): [first, last).
+inline std::pair<std::size_t, std::size_t> piece_of(std::size_t n, std::size_t pieces,
+                                                    std::size_t k) {
+  return {n * k / pieces, n * (k + 1) / pieces};
+}
+
+/// How many pieces a scan of n samples is cut into for `threads` threads: none shorter than
+/// 16 384 samples (shorter ones cost more to hand out than to scan), at least one.
+inline std::size_t scan_pieces(std::size_t n, unsigned threads) {
+  constexpr std::size_t kShortest = 16384;
+  const std::size_t most = n / kShortest;
+  return std::max<std::size_t>(1, std::min<std::size_t>(threads, most));
+}
+
+}  // namespace dynpos::ident::detail
