@@ -23,8 +23,9 @@ std::string num(double x) {
 std::string single_quoted(std::string_view name) { return "'" + std::string(name) + "'"; }
 
 // Throws std::invalid_argument unless every time is finite and strictly increasing.
-void check_time_axis(const std::vector<double>& time_s, std::string_view context) {
-  const std::size_t i = first_unordered_time(time_s);
+void check_time_axis(const std::vector<double>& time_s, std::string_view context,
+                     unsigned jobs = 1) {
+  const std::size_t i = first_unordered_time(time_s, jobs);
   if (i == time_s.size()) return;
   if (!std::isfinite(time_s[i])) {
     throw std::invalid_argument(std::string(context) + ": time[" + std::to_string(i) +
@@ -121,6 +122,10 @@ std::vector<double> resample_channel(const std::vector<double>& time_s, const Ch
 
 Log::Log(std::vector<double> time_s) : time_s_(std::move(time_s)) {
   check_time_axis(time_s_, "Log");
+}
+
+Log::Log(std::vector<double> time_s, unsigned jobs) : time_s_(std::move(time_s)) {
+  check_time_axis(time_s_, "Log", jobs);
 }
 
 void Log::add_channel(std::string name, std::string unit, std::vector<double> values,

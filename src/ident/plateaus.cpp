@@ -103,6 +103,42 @@ void join_piece(PlateauScan& whole, const PlateauScan& local, std::span<const do
   }
 }
 
+// Scans the windows starting in [i0, i1) a block at a time. A block whose windows all hold the
+// current plateau's level (every sample they can hold within ±h of its first level, and within
+// 2h of each other) needs no window's extremes, only where each window ends: it extends the
+// plateau, or, after a gap, ends the shortcut there. The rest are scanned window by window. The
+// result is the window-by-window scan's; a held level is passed at the speed of reading it.
+void scan_range(PlateauScan& scan, std::span<const double> uv, std::size_t i0, std::size_t i1) {
+  constexpr std::size_t kBlock = 4096;
+  const std::span<const double> tv = scan.tv;
+  const double w = scan.w;
+  const auto extremes = block_extremes(tv, uv, w, i0, i1, kBlock);
+  const auto add = [&scan](std::size_t i, std::size_t last, double lo, double hi) {
+    scan.add(i, last, lo, hi);
+    return true;
+  };
+  std::size_t j = i0;  // one past the last sample of the current window
+  for (std::size_t b0 = i0; b0 < i1; b0 += kBlock) {
+    const std::size_t b1 = std::min(i1, b0 + kBlock);
+    std::size_t reach = std::max(j, b1);  // one past the last sample of the window of b1 − 1
+    while (reach < tv.size() && tv[reach] <= tv[b1 - 1] + w) ++reach;
+    const auto [lo, hi] = bounds_of(extremes, (b0 - i0) / kBlock, (reach - 1 - i0) / kBlock);
+    const bool held =
+        !scan.plateaus.empty() && hi - lo <= 2.0 * scan.h &&
+        std::max(std::abs(lo - scan.refs.back()), std::abs(hi - scan.refs.back())) <= scan.h;
+    std::size_t i = b0;
+    for (; held && i < b1; ++i) {
+      while (j < tv.size() && tv[j] <= tv[i] + w) ++j;
+      const std::size_t last = j - 1;
+      if (tv[last] - tv[i] < 0.5 * w) continue;     // cut short by a gap: no plateau window
+      if (i > scan.plateaus.back().end + 1) break;  // a new plateau: its level is needed
+      scan.plateaus.back().end = std::max(scan.plateaus.back().end, last);
+    }
+    if (i < b1) for_each_window(tv, uv, w, i, b1, add);
+    j = std::max(j, b1);
+  }
+}
+
 }  // namespace
 
 std::vector<Plateau> find_plateaus(std::span<const double> tv, std::span<const double> uv, double h,
@@ -112,10 +148,7 @@ std::vector<Plateau> find_plateaus(std::span<const double> tv, std::span<const d
   std::vector<PlateauScan> scans(pieces, PlateauScan{tv, h, w, {}, {}, {}});
   core::parallel_for(pieces, jobs, [&](std::size_t k) {
     const auto [i0, i1] = piece_of(n, pieces, k);
-    for_each_window(tv, uv, w, i0, i1, [&](std::size_t i, std::size_t last, double lo, double hi) {
-      scans[k].add(i, last, lo, hi);
-      return true;
-    });
+    scan_range(scans[k], uv, i0, i1);
   });
   PlateauScan whole = std::move(scans.front());
   for (std::size_t k = 1; k < pieces; ++k) {

@@ -170,15 +170,11 @@ struct InputScan {
                     std::size_t i0, std::size_t i1) {
     const RunningMedian3 m{uv};
     std::size_t last = i0;  // the last sample of the window of the block's last start
-    const std::vector<std::pair<double, double>> extremes = block_extremes(tv, m, w, i0, i1);
+    const auto extremes = detail::block_extremes(tv, m, w, i0, i1, kBlock);
     for (std::size_t b0 = i0; b0 < i1; b0 += kBlock) {
       const std::size_t b1 = std::min(i1, b0 + kBlock);
       while (last + 1 < tv.size() && tv[last + 1] <= tv[b1 - 1] + w) ++last;
-      double lo = extremes[(b0 - i0) / kBlock].first, hi = extremes[(b0 - i0) / kBlock].second;
-      for (std::size_t k = (b0 - i0) / kBlock + 1; k <= (last - i0) / kBlock; ++k) {
-        lo = std::min(lo, extremes[k].first);
-        hi = std::max(hi, extremes[k].second);
-      }
+      const auto [lo, hi] = detail::bounds_of(extremes, (b0 - i0) / kBlock, (last - i0) / kBlock);
       if (!(hi - lo > largest_change)) continue;
       detail::for_each_window(tv, m, w, b0, b1, [&](std::size_t, std::size_t, double l, double h) {
         largest_change = std::max(largest_change, h - l);
@@ -189,26 +185,6 @@ struct InputScan {
       if (uv[i] < min) min = uv[i];
       if (uv[i] >= max) max = uv[i];
     }
-  }
-
-  // The smallest and largest running median of each block of kBlock samples from i0 on, up to
-  // the end of the window of start i1 − 1.
-  static std::vector<std::pair<double, double>> block_extremes(std::span<const double> tv,
-                                                               const RunningMedian3& m, double w,
-                                                               std::size_t i0, std::size_t i1) {
-    std::size_t end = i1;  // one past the last sample a window of these starts holds
-    while (end < tv.size() && tv[end] <= tv[i1 - 1] + w) ++end;
-    std::vector<std::pair<double, double>> out;
-    out.reserve((end - i0) / kBlock + 1);
-    for (std::size_t b = i0; b < end; b += kBlock) {
-      double lo = m[b], hi = m[b];
-      for (std::size_t k = b + 1; k < std::min(end, b + kBlock); ++k) {
-        lo = std::min(lo, m[k]);
-        hi = std::max(hi, m[k]);
-      }
-      out.emplace_back(lo, hi);
-    }
-    return out;
   }
 
   // Joins the scan of the pieces after this one's.

@@ -66,6 +66,42 @@ void for_each_window(std::span<const double> tv, const Values& uv, double w, std
   }
 }
 
+/// The smallest and largest value of each block of `block` samples from i0 on, up to the last
+/// sample a window [tᵢ, tᵢ + w] of a start i < i1 holds: the bounds of the values a run of
+/// windows can see, so that runs that cannot matter are passed over.
+template <class Values>
+std::vector<std::pair<double, double>> block_extremes(std::span<const double> tv, const Values& uv,
+                                                      double w, std::size_t i0, std::size_t i1,
+                                                      std::size_t block) {
+  std::size_t end = i1;  // one past the last sample the window of i1 − 1 holds
+  while (end < tv.size() && tv[end] <= tv[i1 - 1] + w) ++end;
+  std::vector<std::pair<double, double>> out;
+  out.reserve((end - i0) / block + 1);
+  for (std::size_t b = i0; b < end; b += block) {
+    double lo = uv[b], hi = uv[b];
+    const std::size_t stop = std::min(end, b + block);
+    for (std::size_t k = b + 1; k < stop; ++k) {
+      const double x = uv[k];
+      lo = x < lo ? x : lo;
+      hi = x > hi ? x : hi;
+    }
+    const std::pair<double, double> extremes{lo, hi};  // lo and hi stay in registers: their
+    out.push_back(extremes);                           // addresses are not passed on
+  }
+  return out;
+}
+
+/// The bounds of blocks first … last of block_extremes(): the smallest and largest value.
+inline std::pair<double, double> bounds_of(const std::vector<std::pair<double, double>>& blocks,
+                                           std::size_t first, std::size_t last) {
+  std::pair<double, double> out = blocks[first];
+  for (std::size_t k = first + 1; k <= last; ++k) {
+    out.first = std::min(out.first, blocks[k].first);
+    out.second = std::max(out.second, blocks[k].second);
+  }
+  return out;
+}
+
 /// Piece k of `pieces` nearly equal pieces of [0, n): [first, last).
 inline std::pair<std::size_t, std::size_t> piece_of(std::size_t n, std::size_t pieces,
                                                     std::size_t k) {

@@ -806,7 +806,8 @@ CsvLog read_csv_log(const std::filesystem::path& path, const ColumnMap& map,
                                       time.nsec.has_value(), time.date.has_value()});
   RowStream rows = stream_rows(reader, header, format, time, plans, options, stamps,
                                time_unit_error ? &*time_unit_error : nullptr);
-  CsvLog out{core::Log(std::move(rows.time_s)), stamps.info(), *rows.first_t, rows.last_t};
+  CsvLog out{core::Log(std::move(rows.time_s), options.jobs), stamps.info(), *rows.first_t,
+             rows.last_t};
   for (auto& plan : plans) {
     out.log.add_channel(plan.channel, plan.unit_symbol, std::move(plan.values), plan.interp);
   }

@@ -58,6 +58,8 @@ class Log {
   /// A log with the given time axis and no channels.
   /// Throws std::invalid_argument if a time is not finite or not strictly increasing.
   explicit Log(std::vector<double> time_s);
+  /// Log(time_s), a long axis checked in pieces on `jobs` threads (0 = every core).
+  Log(std::vector<double> time_s, unsigned jobs);
 
   std::size_t size() const noexcept { return time_s_.size(); }
   bool empty() const noexcept { return time_s_.empty(); }
