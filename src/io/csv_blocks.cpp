@@ -25,7 +25,7 @@
 namespace dynpos::io::detail {
 namespace {
 
-constexpr std::uint64_t kBlockBytes = std::uint64_t{4} << 20;   // nominal block size
+constexpr std::uint64_t kBlockBytes = std::uint64_t{1} << 20;   // nominal block size
 constexpr std::uint64_t kSlackBytes = std::uint64_t{64} << 10;  // read past it for the last line
 constexpr std::size_t kNoSlot = std::numeric_limits<std::size_t>::max();
 

@@ -1,6 +1,6 @@
 // The CSV reader parses a regular file in blocks on several threads (src/io/csv_blocks.hpp) and
 // reads a pipe row by row. Both must give the same log, the same notes and the same errors, bit
-// for bit: here every case is a file of several 4 MiB blocks, read as a file with 1, 2 and 3
+// for bit: here every case is a file of several 1 MiB blocks, read as a file with 1, 2 and 3
 // threads and through a FIFO (the row-by-row reference), with a defect placed mid-file.
 
 #include <sys/stat.h>
@@ -29,7 +29,7 @@ namespace {
 
 using testing::TempDir;
 
-constexpr std::size_t kRows = 400'000;  // about 14 MB: four blocks and a part
+constexpr std::size_t kRows = 400'000;  // about 14 MB: thirteen blocks and a part
 
 // Row k of a clean log: time, a command, a response and a spare column, 100 Hz.
 std::string row(std::size_t k) {
