@@ -86,8 +86,8 @@ struct StepDetectorOptions {
   StepTiming timing = StepTiming::kCommand;
   /// Channel name used in error messages.
   std::string input_name = "input";
-  /// Threads for the adapted threshold's passes over the whole input (the noise and the largest
-  /// change side by side); 0 = every core. The result does not depend on it.
+  /// Threads for the passes over the whole input (the time check, the noise, the largest change
+  /// and the plateaus, each in pieces); 0 = every core. The result does not depend on it.
   unsigned jobs = 1;
 
   /// Throws core::InputError naming the bad option.
@@ -132,7 +132,8 @@ struct StepDetection {
   std::string message;       ///< why no step was found; empty when steps were found
 };
 
-/// Finds every step in an input u(t) (see the file comment for the method).
+/// Finds every step in an input u(t) (see the file comment for the method), with the threshold
+/// step_threshold() gives, from one check and scan of the input.
 /// t [s] strictly increasing and finite; u same length, NaN = missing.
 /// Finding no step (a constant input, one level only) is a result: `steps` is empty and
 /// `message` says why. Throws core::InputError if the lengths differ, t is not increasing, or
