@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "dynpos/core/parallel_for.hpp"
 #include "series.hpp"
@@ -76,66 +77,81 @@ struct PlateauScan {
   }
 };
 
-// Carries `whole` (the scan of every window before piece [i0, i1)) through the piece, given
-// `local`, the piece scanned from an empty state. Once both hold a plateau started at the same
-// level, their ends agree too (each is the last sample of the newest window that held a level),
-// so from there on the piece's own plateaus are the whole scan's: only the windows before that
-// are scanned again (up to the first step in the piece, as a rule; the whole piece for an input
-// that holds one level throughout it).
-void join_piece(PlateauScan& whole, const PlateauScan& local, std::span<const double> uv,
-                std::size_t i0, std::size_t i1) {
-  std::size_t started = 0;  // local plateaus started by window i
-  bool joined = false;
-  for_each_window(
-      whole.tv, uv, whole.w, i0, i1, [&](std::size_t i, std::size_t last, double lo, double hi) {
-        whole.add(i, last, lo, hi);
-        while (started < local.started.size() && local.started[started] <= i) ++started;
-        joined =
-            started > 0 && !whole.plateaus.empty() && whole.refs.back() == local.refs[started - 1];
-        return !joined;
-      });
-  if (!joined) return;
-  whole.plateaus.back().end = local.plateaus[started - 1].end;
-  for (std::size_t k = started; k < local.plateaus.size(); ++k) {
-    whole.plateaus.push_back(local.plateaus[k]);
-    whole.refs.push_back(local.refs[k]);
-    whole.started.push_back(local.started[k]);
+// Whether every window whose samples lie in [lo, hi] holds the current plateau's level: within
+// 2h of each other and ±h of its first level. Values within half the largest double keep a
+// window's mid-level 0.5·(hi + lo) finite and inside [lo, hi], as the window-by-window rule
+// computes it.
+bool holds_level(const PlateauScan& scan, double lo, double hi) {
+  constexpr double kHalfMax = 0.5 * std::numeric_limits<double>::max();
+  if (scan.plateaus.empty() || !(std::abs(lo) <= kHalfMax && std::abs(hi) <= kHalfMax)) {
+    return false;
   }
+  const double ref = scan.refs.back();
+  return hi - lo <= 2.0 * scan.h && std::max(std::abs(lo - ref), std::abs(hi - ref)) <= scan.h;
 }
 
-// Scans the windows starting in [i0, i1) a block at a time. A block whose windows all hold the
-// current plateau's level (every sample they can hold within ±h of its first level, and within
-// 2h of each other) needs no window's extremes, only where each window ends: it extends the
+// Scans the windows starting in [i0, i1) a block at a time, until stop(i) is true after window
+// i (it is asked after every window scanned one by one and after every block passed whole); the
+// window it stopped after, or i1. A block whose windows all hold the current plateau's level
+// (holds_level) needs no window's extremes, only where each window ends: it extends the
 // plateau, or, after a gap, ends the shortcut there. The rest are scanned window by window. The
 // result is the window-by-window scan's; a held level is passed at the speed of reading it.
-void scan_range(PlateauScan& scan, std::span<const double> uv, std::size_t i0, std::size_t i1) {
+template <class Stop>
+std::size_t scan_range(PlateauScan& scan, std::span<const double> uv, std::size_t i0,
+                       std::size_t i1, Stop&& stop) {
   constexpr std::size_t kBlock = 4096;
   const std::span<const double> tv = scan.tv;
   const double w = scan.w;
-  const auto extremes = block_extremes(tv, uv, w, i0, i1, kBlock);
-  const auto add = [&scan](std::size_t i, std::size_t last, double lo, double hi) {
+  std::size_t stopped = i1;
+  const auto add = [&](std::size_t i, std::size_t last, double lo, double hi) {
     scan.add(i, last, lo, hi);
-    return true;
+    if (stop(i)) stopped = i;
+    return stopped == i1;
   };
   std::size_t j = i0;  // one past the last sample of the current window
   for (std::size_t b0 = i0; b0 < i1; b0 += kBlock) {
     const std::size_t b1 = std::min(i1, b0 + kBlock);
-    std::size_t reach = std::max(j, b1);  // one past the last sample of the window of b1 − 1
-    while (reach < tv.size() && tv[reach] <= tv[b1 - 1] + w) ++reach;
-    const auto [lo, hi] = bounds_of(extremes, (b0 - i0) / kBlock, (reach - 1 - i0) / kBlock);
-    const bool held =
-        !scan.plateaus.empty() && hi - lo <= 2.0 * scan.h &&
-        std::max(std::abs(lo - scan.refs.back()), std::abs(hi - scan.refs.back())) <= scan.h;
+    std::size_t window_end = std::max(j, b1);  // one past the window of b1 − 1
+    while (window_end < tv.size() && tv[window_end] <= tv[b1 - 1] + w) ++window_end;
+    const auto [lo, hi] = value_bounds(uv, b0, window_end);  // what its windows can hold
     std::size_t i = b0;
-    for (; held && i < b1; ++i) {
+    for (const bool held = holds_level(scan, lo, hi); held && i < b1; ++i) {
       while (j < tv.size() && tv[j] <= tv[i] + w) ++j;
       const std::size_t last = j - 1;
       if (tv[last] - tv[i] < 0.5 * w) continue;     // cut short by a gap: no plateau window
       if (i > scan.plateaus.back().end + 1) break;  // a new plateau: its level is needed
       scan.plateaus.back().end = std::max(scan.plateaus.back().end, last);
     }
-    if (i < b1) for_each_window(tv, uv, w, i, b1, add);
+    if (i < b1) {
+      for_each_window(tv, uv, w, i, b1, add);
+    } else if (stop(b1 - 1)) {
+      stopped = b1 - 1;
+    }
+    if (stopped != i1) return stopped;
     j = std::max(j, b1);
+  }
+  return i1;
+}
+
+// Carries `whole` (the scan of every window before piece [i0, i1)) through the piece, given
+// `local`, the piece scanned from an empty state. Once both hold a plateau started at the same
+// level, their ends agree too (each is the last sample of the newest window that held a level),
+// and then they move alike: from there on the piece's own plateaus are the whole scan's. Only
+// the windows before that are scanned again (up to the first step in the piece, as a rule; the
+// whole piece, held levels passed by blocks, for an input that holds one level throughout it).
+void join_piece(PlateauScan& whole, const PlateauScan& local, std::span<const double> uv,
+                std::size_t i0, std::size_t i1) {
+  std::size_t started = 0;  // local plateaus started by window i
+  const auto same_state = [&](std::size_t i) {
+    while (started < local.started.size() && local.started[started] <= i) ++started;
+    return started > 0 && !whole.plateaus.empty() && whole.refs.back() == local.refs[started - 1];
+  };
+  if (scan_range(whole, uv, i0, i1, same_state) == i1) return;  // the piece scanned whole
+  whole.plateaus.back().end = local.plateaus[started - 1].end;
+  for (std::size_t k = started; k < local.plateaus.size(); ++k) {
+    whole.plateaus.push_back(local.plateaus[k]);
+    whole.refs.push_back(local.refs[k]);
+    whole.started.push_back(local.started[k]);
   }
 }
 
@@ -148,7 +164,7 @@ std::vector<Plateau> find_plateaus(std::span<const double> tv, std::span<const d
   std::vector<PlateauScan> scans(pieces, PlateauScan{tv, h, w, {}, {}, {}});
   core::parallel_for(pieces, jobs, [&](std::size_t k) {
     const auto [i0, i1] = piece_of(n, pieces, k);
-    scan_range(scans[k], uv, i0, i1);
+    scan_range(scans[k], uv, i0, i1, [](std::size_t) { return false; });
   });
   PlateauScan whole = std::move(scans.front());
   for (std::size_t k = 1; k < pieces; ++k) {

@@ -14,7 +14,6 @@
 namespace dynpos::ident {
 
 using detail::fmt;
-using detail::Plateau;
 
 std::optional<double> Step::delta_u() const {
   if (!u_before || !u_after) return std::nullopt;
@@ -241,7 +240,7 @@ StepThreshold threshold_from(const InputScan& scan, const StepDetectorOptions& o
 double line_time(const detail::LineFit& line, double level) { return (level - line.a) / line.b; }
 
 // The step between plateaus p0 and p1, timed from the levels next to the transition.
-Step step_between(const Plateau& p0, const Plateau& p1, std::span<const double> tv,
+Step step_between(const detail::Plateau& p0, const detail::Plateau& p1, std::span<const double> tv,
                   std::span<const double> uv, double h, StepTiming timing) {
   const double l0 = p0.end_level;
   const double l1 = p1.start_level;

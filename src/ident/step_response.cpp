@@ -30,8 +30,13 @@ void validate_window_options(const std::optional<double>& pre_step_s, double tai
   if (min_samples < 5) bad("minimum samples " + std::to_string(min_samples), "give at least 5");
 }
 
-StepResponse prepare_step_response(std::span<const double> t, std::span<const double> y,
-                                   const Step& step, const LevelOptions& options) {
+namespace {
+
+// The valid output samples of the step's window, as time after the step τ and value, checked:
+// the window inside the log and around the step, an increasing time axis, samples before and
+// at least 5 after the step, a change of input.
+StepResponse window_samples(std::span<const double> t, std::span<const double> y, const Step& step,
+                            const LevelOptions& options) {
   const std::string& name = options.output_name;
   check_same_length(t.size(), y.size(), name);
   const core::InputLocation where{"", {}, {}, name};
@@ -112,7 +117,16 @@ StepResponse prepare_step_response(std::span<const double> t, std::span<const do
         "constant input: the input is " + fmt(*step.u_before) + " both before and after the step",
         "check the step levels or the input channel");
   }
+  return r;
+}
 
+}  // namespace
+
+StepResponse prepare_step_response(std::span<const double> t, std::span<const double> y,
+                                   const Step& step, const LevelOptions& options) {
+  StepResponse r = window_samples(t, y, step, options);
+  const double after = r.tau_end;
+  const std::size_t n_post = r.y.size() - r.n_pre;
   double sum = 0.0;
   for (std::size_t i = 0; i < r.n_pre; ++i) sum += r.y[i];
   r.y0 = sum / static_cast<double>(r.n_pre);

@@ -66,6 +66,18 @@ void for_each_window(std::span<const double> tv, const Values& uv, double w, std
   }
 }
 
+/// The smallest and largest of uv[begin] … uv[end − 1]; begin < end.
+template <class Values>
+std::pair<double, double> value_bounds(const Values& uv, std::size_t begin, std::size_t end) {
+  double lo = uv[begin], hi = uv[begin];
+  for (std::size_t k = begin + 1; k < end; ++k) {
+    const double x = uv[k];
+    lo = x < lo ? x : lo;
+    hi = x > hi ? x : hi;
+  }
+  return {lo, hi};
+}
+
 /// The smallest and largest value of each block of `block` samples from i0 on, up to the last
 /// sample a window [tᵢ, tᵢ + w] of a start i < i1 holds: the bounds of the values a run of
 /// windows can see, so that runs that cannot matter are passed over.
@@ -78,15 +90,7 @@ std::vector<std::pair<double, double>> block_extremes(std::span<const double> tv
   std::vector<std::pair<double, double>> out;
   out.reserve((end - i0) / block + 1);
   for (std::size_t b = i0; b < end; b += block) {
-    double lo = uv[b], hi = uv[b];
-    const std::size_t stop = std::min(end, b + block);
-    for (std::size_t k = b + 1; k < stop; ++k) {
-      const double x = uv[k];
-      lo = x < lo ? x : lo;
-      hi = x > hi ? x : hi;
-    }
-    const std::pair<double, double> extremes{lo, hi};  // lo and hi stay in registers: their
-    out.push_back(extremes);                           // addresses are not passed on
+    out.push_back(value_bounds(uv, b, std::min(end, b + block)));
   }
   return out;
 }

@@ -86,8 +86,8 @@ struct StepDetectorOptions {
   StepTiming timing = StepTiming::kCommand;
   /// Channel name used in error messages.
   std::string input_name = "input";
-  /// Threads for the passes over the whole input (the time check, the noise, the largest change
-  /// and the plateaus, each in pieces); 0 = every core. The result does not depend on it.
+  /// Threads for the passes over the whole input (the time check, the largest change and the
+  /// plateaus in pieces, the noise beside them); 0 = every core. The result does not depend on it.
   unsigned jobs = 1;
 
   /// Throws core::InputError naming the bad option.
