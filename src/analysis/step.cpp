@@ -145,19 +145,14 @@ struct FoundStep {
   std::string segment;
 };
 
-// The steps of the whole log, or of each segment; why a stretch has none goes to `notes`.
-std::vector<FoundStep> detect_in_stretches(const StepRequest& request, const StepSignals& s,
-                                           const ident::StepDetectorOptions& d,
-                                           const ident::StepThreshold& scale,
-                                           std::vector<std::string>& notes) {
+// The steps of each segment (--segments), on the whole log's threshold; why a segment has none
+// goes to `notes`.
+std::vector<FoundStep> detect_in_segments(const StepRequest& request, const StepSignals& s,
+                                          const ident::StepDetectorOptions& d,
+                                          const ident::StepThreshold& scale,
+                                          std::vector<std::string>& notes) {
   const std::span<const double> u = s.has_input ? s.input : s.trigger;
   std::vector<FoundStep> found;
-  if (request.segments_file.empty()) {
-    const ident::StepDetection r = ident::detect_steps(s.t, u, d, scale);
-    if (!r.message.empty()) notes.push_back(r.message);
-    for (const ident::Step& step : r.steps) found.push_back({step, ""});
-    return found;
-  }
   const std::span<const double> t = s.t;
   for (const io::Segment& seg : io::read_segments(request.segments_file)) {
     const auto i0 =
@@ -227,7 +222,7 @@ std::vector<FoundStep> find_steps(const StepRequest& request, const StepSignals&
                                  {from, to, request.step_at_s, s.log_start_s, s.log_end_s}, d),
          ""}};
   }
-  return detect_in_stretches(request, s, d, scale, report.notes);
+  return detect_in_segments(request, s, d, scale, report.notes);
 }
 
 // FOPDT (3.7) by least squares or Smith's two-point method (3.8)-(3.9).

@@ -14,6 +14,14 @@ unsigned job_count(unsigned jobs, std::size_t n) {
   return static_cast<unsigned>(std::max<std::size_t>(1, std::min<std::size_t>(wanted, n)));
 }
 
+std::size_t piece_count(std::size_t n, unsigned threads, std::size_t shortest) {
+  return std::max<std::size_t>(1, std::min<std::size_t>(threads, n / shortest));
+}
+
+std::pair<std::size_t, std::size_t> piece_of(std::size_t n, std::size_t pieces, std::size_t k) {
+  return {n * k / pieces, n * (k + 1) / pieces};
+}
+
 void parallel_for(std::size_t n, unsigned jobs, const std::function<void(std::size_t)>& body) {
   const unsigned threads = job_count(jobs, n);
   if (threads <= 1) {

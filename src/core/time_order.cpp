@@ -26,12 +26,12 @@ std::size_t first_unordered_time(std::span<const double> t) noexcept {
 std::size_t first_unordered_time(std::span<const double> t, unsigned jobs) {
   constexpr std::size_t kShortest = 1 << 18;  // a piece is checked in about half a millisecond
   const std::size_t n = t.size();
-  const std::size_t pieces = std::min<std::size_t>(job_count(jobs, n), n / kShortest + 1);
+  const std::size_t pieces = piece_count(n, job_count(jobs, n), kShortest);
   if (pieces <= 1) return first_unordered_time(t);
   std::vector<std::size_t> first(pieces);
   parallel_for(pieces, jobs, [&](std::size_t k) {
     // Piece k compares its samples with the ones before them, the first with the last of k − 1.
-    const std::size_t begin = n * k / pieces, end = n * (k + 1) / pieces;
+    const auto [begin, end] = piece_of(n, pieces, k);
     const std::size_t from = begin == 0 ? 0 : begin - 1;
     const std::size_t i = first_unordered_time(t.subspan(from, end - from));
     first[k] = i == end - from ? n : (k == 0 ? i : std::max<std::size_t>(from + i, begin));

@@ -160,15 +160,15 @@ void join_piece(PlateauScan& whole, const PlateauScan& local, std::span<const do
 std::vector<Plateau> find_plateaus(std::span<const double> tv, std::span<const double> uv, double h,
                                    double w, unsigned jobs) {
   const std::size_t n = tv.size();
-  const std::size_t pieces = scan_pieces(n, core::job_count(jobs, n));
+  const std::size_t pieces = core::piece_count(n, core::job_count(jobs, n), kShortestScanPiece);
   std::vector<PlateauScan> scans(pieces, PlateauScan{tv, h, w, {}, {}, {}});
   core::parallel_for(pieces, jobs, [&](std::size_t k) {
-    const auto [i0, i1] = piece_of(n, pieces, k);
+    const auto [i0, i1] = core::piece_of(n, pieces, k);
     scan_range(scans[k], uv, i0, i1, [](std::size_t) { return false; });
   });
   PlateauScan whole = std::move(scans.front());
   for (std::size_t k = 1; k < pieces; ++k) {
-    const auto [i0, i1] = piece_of(n, pieces, k);
+    const auto [i0, i1] = core::piece_of(n, pieces, k);
     join_piece(whole, scans[k], uv, i0, i1);
   }
   // Levels next to a transition over w/2: on a drift slow enough to hold plateaus (2h per w)

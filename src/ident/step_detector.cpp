@@ -199,7 +199,8 @@ struct InputScan {
 InputScan scan_input(std::span<const double> u, const ValidSamples& v,
                      const StepDetectorOptions& options) {
   const std::size_t n = v.u.size();
-  const std::size_t pieces = detail::scan_pieces(n, 4 * core::job_count(options.jobs, n));
+  const std::size_t pieces =
+      core::piece_count(n, 4 * core::job_count(options.jobs, n), detail::kShortestScanPiece);
   std::vector<InputScan> scans(pieces);
   double noise = 0.0;
   core::parallel_for(pieces + 1, options.jobs, [&](std::size_t k) {
@@ -207,7 +208,7 @@ InputScan scan_input(std::span<const double> u, const ValidSamples& v,
       noise = input_noise_sigma(u, v);
       return;
     }
-    const auto [i0, i1] = detail::piece_of(n, pieces, k - 1);
+    const auto [i0, i1] = core::piece_of(n, pieces, k - 1);
     scans[k - 1].scan_windows(v.t, v.u, options.change_window_s, i0, i1);
   });
   for (std::size_t k = 1; k < pieces; ++k) scans.front().join(scans[k]);

@@ -106,18 +106,7 @@ inline std::pair<double, double> bounds_of(const std::vector<std::pair<double, d
   return out;
 }
 
-/// Piece k of `pieces` nearly equal pieces of [0, n): [first, last).
-inline std::pair<std::size_t, std::size_t> piece_of(std::size_t n, std::size_t pieces,
-                                                    std::size_t k) {
-  return {n * k / pieces, n * (k + 1) / pieces};
-}
-
-/// How many pieces a scan of n samples is cut into for `threads` threads: none shorter than
-/// 16 384 samples (shorter ones cost more to hand out than to scan), at least one.
-inline std::size_t scan_pieces(std::size_t n, unsigned threads) {
-  constexpr std::size_t kShortest = 16384;
-  const std::size_t most = n / kShortest;
-  return std::max<std::size_t>(1, std::min<std::size_t>(threads, most));
-}
+/// The shortest piece a scan of a series is cut into (core::piece_count): 16 384 samples.
+constexpr std::size_t kShortestScanPiece = 16384;
 
 }  // namespace dynpos::ident::detail

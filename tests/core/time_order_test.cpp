@@ -63,7 +63,7 @@ TEST(FirstUnorderedTime, EveryDefectAtEveryPlaceOfAChunk) {
 // A long axis is checked in pieces, one per thread: the first defect is found wherever it falls
 // against the pieces' edges, and an earlier defect in a later piece's thread still wins.
 TEST(FirstUnorderedTime, InPiecesOnAnyNumberOfThreads) {
-  const std::size_t n = 3 * (std::size_t{1} << 18) + 5;
+  const std::size_t n = 4 * (std::size_t{1} << 18) + 5;
   const std::vector<double> clean = axis(n);
   EXPECT_EQ(first_unordered_time(clean, 4), n);
   std::vector<std::size_t> places = {0, 1, n - 1};

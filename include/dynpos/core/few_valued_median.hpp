@@ -132,11 +132,11 @@ inline std::optional<FewValues> joined_counts(const FewValues& first, const FewV
 template <class Value>
 std::optional<FewValues> few_values(std::size_t n, unsigned jobs, const Value& value) {
   constexpr std::size_t kShortest = 1 << 18;  // a piece is counted in about a millisecond
-  const std::size_t pieces = std::min<std::size_t>(job_count(jobs, n), n / kShortest + 1);
+  const std::size_t pieces = piece_count(n, job_count(jobs, n), kShortest);
   if (pieces <= 1) return few_values(n, value);
   std::vector<std::optional<FewValues>> counted(pieces);
   parallel_for(pieces, jobs, [&](std::size_t k) {
-    const std::size_t begin = n * k / pieces, end = n * (k + 1) / pieces;
+    const auto [begin, end] = piece_of(n, pieces, k);
     counted[k] = few_values(end - begin, [&](std::size_t i) { return value(begin + i); });
   });
   std::optional<FewValues> out = counted.front();

@@ -5,12 +5,20 @@
 
 #include <cstddef>
 #include <functional>
+#include <utility>
 
 namespace dynpos::core {
 
 /// The number of threads `jobs` stands for: 0 = every core (at least 1), never more than `n`
 /// pieces of work (and at least 1).
 unsigned job_count(unsigned jobs, std::size_t n);
+
+/// How many pieces a series of n items is cut into for `threads` threads: none shorter than
+/// `shortest` items (a shorter one costs more to hand out than to work through), at least one.
+std::size_t piece_count(std::size_t n, unsigned threads, std::size_t shortest);
+
+/// Piece k of [0, n) cut into `pieces` nearly equal pieces: [first, last).
+std::pair<std::size_t, std::size_t> piece_of(std::size_t n, std::size_t pieces, std::size_t k);
 
 /// Calls body(i) for every i in [0, n), on job_count(jobs, n) threads (the calling thread is one
 /// of them); pieces are handed out in order of i. body must only write what belongs to piece i.
