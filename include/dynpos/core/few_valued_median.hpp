@@ -136,7 +136,8 @@ std::optional<FewValues> few_values(std::size_t n, unsigned jobs, const Value& v
   if (pieces <= 1) return few_values(n, value);
   std::vector<std::optional<FewValues>> counted(pieces);
   parallel_for(pieces, jobs, [&](std::size_t k) {
-    const auto [begin, end] = piece_of(n, pieces, k);
+    const std::pair<std::size_t, std::size_t> piece = piece_of(n, pieces, k);
+    const std::size_t begin = piece.first, end = piece.second;  // captured below: no binding
     counted[k] = few_values(end - begin, [&](std::size_t i) { return value(begin + i); });
   });
   std::optional<FewValues> out = counted.front();
