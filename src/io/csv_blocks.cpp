@@ -90,8 +90,7 @@ struct BlockReader::State {
   void read_into(Buffer& b, std::uint64_t from, std::uint64_t bytes, std::uint64_t file_size);
   void parse_block(Block& block, Buffer& buffer, bool at_line_start, std::uint64_t start,
                    std::uint64_t stop, std::uint64_t file_size);
-  bool parse_row(std::string_view line, RowCells& cells, Block& block,
-                 std::uint32_t line_in_block) const;
+  bool parse_row(std::string_view line, RowCells& cells, Block& block) const;
   CellKind cell(const RowCells& cells, std::size_t slot, double& value) const;
 };
 
@@ -138,8 +137,7 @@ CellKind BlockReader::State::cell(const RowCells& cells, std::size_t slot, doubl
 
 // One row into the block (the caller has checked it holds no quote); false when it is not
 // plain (the block is then read row by row).
-bool BlockReader::State::parse_row(std::string_view line, RowCells& cells, Block& block,
-                                   std::uint32_t line_in_block) const {
+bool BlockReader::State::parse_row(std::string_view line, RowCells& cells, Block& block) const {
   // The fields up to the last one parsed are cut out; the rest are only counted. A parsed field
   // that is a plain decimal up to the delimiter is read as it is cut (the same number parse_cell
   // gives: it has nothing to trim and is no missing token); any other is cut, then parsed.
@@ -179,15 +177,14 @@ bool BlockReader::State::parse_row(std::string_view line, RowCells& cells, Block
     if (kind == CellKind::kNumber) {
       const double value = to_si(layout.channels[k].unit, raw * layout.channels[k].scale);
       if (!std::isfinite(value)) return false;  // the row reader names the cell
-      block.values[k].push_back(value);
+      block.channels[k].values.push_back(value);
     } else if (kind == CellKind::kMissing) {
-      block.values[k].push_back(core::kMissing);
+      block.channels[k].values.push_back(core::kMissing);
     } else {
       return false;
     }
   }
   block.time_s.push_back(t);
-  block.row_line.push_back(line_in_block);
   return true;
 }
 
@@ -196,9 +193,9 @@ void BlockReader::State::parse_block(Block& block, Buffer& buffer, bool at_line_
                                      std::uint64_t start, std::uint64_t stop,
                                      std::uint64_t file_size) {
   block.time_s.clear();
-  block.row_line.clear();
-  block.values.resize(layout.channels.size());
-  for (auto& v : block.values) v.clear();
+  block.skipped.clear();
+  block.channels.resize(layout.channels.size());
+  for (auto& c : block.channels) c.values.clear();
   block.lines = 0;
   block.clean = true;
 
@@ -238,7 +235,6 @@ void BlockReader::State::parse_block(Block& block, Buffer& buffer, bool at_line_
       break;
     }
     std::string_view line(buffer.data.get() + at, nl - at);
-    const auto line_in_block = static_cast<std::uint32_t>(block.lines);
     ++block.lines;
     at = std::min(nl + 1, buffer.size);
     if (!block.clean) continue;          // only counting the lines now
@@ -252,12 +248,12 @@ void BlockReader::State::parse_block(Block& block, Buffer& buffer, bool at_line_
     const char first = line.empty() ? ' ' : line.front();
     if (first == ' ' || first == '\t' || (!prefix.empty() && first == prefix.front())) {
       const std::string_view text = trim(line);  // blank, a comment, or a row after spaces
-      if (text.empty() || (!prefix.empty() && text.substr(0, prefix.size()) == prefix)) continue;
+      if (text.empty() || (!prefix.empty() && text.substr(0, prefix.size()) == prefix)) {
+        block.skipped.push_back(block.time_s.size());
+        continue;
+      }
     }
-    if (block.lines > std::numeric_limits<std::uint32_t>::max() ||
-        !parse_row(line, cells, block, line_in_block)) {
-      block.clean = false;
-    }
+    if (!parse_row(line, cells, block)) block.clean = false;
   }
   block.end = buffer.from + at;
 }

@@ -6,6 +6,7 @@
 // mapped columns. Only clean blocks are used as parsed; the reader reads any other block row by
 // row, so that values, errors, dropped rows and notes are exactly those of reading row by row.
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -35,15 +36,27 @@ struct BlockLayout {
   std::vector<BlockColumn> channels;
 };
 
+/// One channel's values in a block. Blocks and their channels sit on cache lines of their own:
+/// threads parsing neighbouring blocks would otherwise write the same lines with every row.
+struct alignas(64) BlockValues {
+  std::vector<double> values;  // per row (SI, NaN = missing)
+};
+
 /// One block of rows as parsed.
-struct Block {
+struct alignas(64) Block {
   std::uint64_t begin = 0;     // byte offset of its first line
   std::uint64_t end = 0;       // byte offset after its last line
   std::size_t lines = 0;       // physical lines in [begin, end), blank and comment lines included
   bool clean = false;          // every row plain (see the file comment); the values are then valid
   std::vector<double> time_s;  // per row [s]
-  std::vector<std::vector<double>> values;  // per channel, per row (SI, NaN = missing)
-  std::vector<std::uint32_t> row_line;      // per row: its line, counted from the block's first
+  std::vector<BlockValues> channels;  // per channel
+  std::vector<std::size_t> skipped;   // per blank or comment line: the rows before it
+
+  /// The line of row `row`, counted from the block's first line.
+  std::size_t line_of_row(std::size_t row) const {
+    return row + static_cast<std::size_t>(std::upper_bound(skipped.begin(), skipped.end(), row) -
+                                          skipped.begin());
+  }
 };
 
 /// Parses the rows of a regular file from a line start on, block by block.

@@ -482,7 +482,7 @@ bool merge_block(const detail::Block& block, std::size_t line_base,
       options.t_to_s ? index(std::upper_bound(t.begin(), t.end(), *options.t_to_s)) : n;
   const std::size_t counted = std::min(k_end + 1, n);
   if (!stamps.accept_increasing(t.front(), t[counted - 1], counted,
-                                line_base + block.row_line[counted - 1] + 1)) {
+                                line_base + block.line_of_row(counted - 1) + 1)) {
     return false;
   }
   if (!out.first_t) out.first_t = t.front();
@@ -497,7 +497,7 @@ bool merge_block(const detail::Block& block, std::size_t line_base,
   out.time_s.insert(out.time_s.end(), t.begin() + first, t.begin() + last);
   for (std::size_t k = 0; k < plan_of.size(); ++k) {
     ColumnPlan& plan = channels[plan_of[k]];
-    const std::vector<double>& v = block.values[k];
+    const std::vector<double>& v = block.channels[k].values;
     if (plan.state == ColumnPlan::State::kUnknown &&
         std::any_of(v.begin() + first, v.begin() + last, [](double x) { return !std::isnan(x); })) {
       plan.state = ColumnPlan::State::kNumeric;

@@ -234,6 +234,48 @@ TEST(CsvBlocks, ANumericMissingTokenAndCellsThatAreNotPlainDecimals) {
   EXPECT_EQ(n.log->log.values("input")[5], -999.0);
 }
 
+// Each row of a clean block knows its line, with blank and comment lines between rows, after a
+// block's last row and at a block's start: the line a row's time is found on in the text.
+TEST(CsvBlocks, EachRowOfABlockKnowsItsLine) {
+  TempDir dir;
+  const std::string text = log_text([](std::size_t k) -> std::string {
+    if (k % 977 == 5) return "# note\n\n" + row(k);
+    if (k % 1500 == 9) return row(k) + "\n";
+    return "";
+  });
+  const auto file = dir.write("log.csv", text);
+  std::vector<std::size_t> line_start = {0};  // byte offset of each line (0-based lines)
+  for (std::size_t i = 0; i + 1 < text.size(); ++i) {
+    if (text[i] == '\n') line_start.push_back(i + 1);
+  }
+  detail::BlockLayout layout;
+  layout.field_count = 4;
+  layout.comment_prefix = "#";
+  layout.time.field = 0;
+  layout.channels.push_back({2, {}, 1.0});
+  const std::uint64_t data_start = line_start[2];  // after the comment and the header
+  for (const unsigned jobs : {1u, 2u}) {
+    detail::BlockReader reader(file, layout, jobs);
+    std::size_t blocks = 0, checked = 0;
+    reader.stream(data_start, [&](const detail::Block& block) {
+      EXPECT_TRUE(block.clean);
+      const auto first = static_cast<std::size_t>(
+          std::lower_bound(line_start.begin(), line_start.end(), block.begin) - line_start.begin());
+      for (std::size_t i = 0; i < block.time_s.size(); ++i) {
+        const std::size_t line = first + block.line_of_row(i);
+        const std::size_t end = text.find(',', line_start[line]);
+        EXPECT_EQ(std::stod(text.substr(line_start[line], end - line_start[line])), block.time_s[i])
+            << "block " << blocks << " row " << i;
+        ++checked;
+      }
+      ++blocks;
+      return true;
+    });
+    EXPECT_GE(blocks, 10u);
+    EXPECT_EQ(checked, kRows);
+  }
+}
+
 // A logger that cuts its file while it is read (a rotation by copy and truncate): an error
 // naming the file, never a reader waiting for bytes that will not come.
 TEST(CsvBlocks, AFileThatShrinksWhileReadIsAnError) {

@@ -21,7 +21,9 @@ std::size_t piece_count(std::size_t n, unsigned threads, std::size_t shortest);
 std::pair<std::size_t, std::size_t> piece_of(std::size_t n, std::size_t pieces, std::size_t k);
 
 /// Calls body(i) for every i in [0, n), on job_count(jobs, n) threads (the calling thread is one
-/// of them); pieces are handed out in order of i. body must only write what belongs to piece i.
+/// of them); pieces are handed out in order of i. body must only write what belongs to piece i;
+/// what it updates over and over is best kept in a local and stored once at the end, since
+/// neighbouring slots share cache lines and threads writing one line slow each other down.
 /// After an exception no new piece starts; the first exception (in time) is rethrown once every
 /// thread has stopped.
 void parallel_for(std::size_t n, unsigned jobs, const std::function<void(std::size_t)>& body);
