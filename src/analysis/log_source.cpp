@@ -5,7 +5,6 @@
 #include <fmt/format.h>
 
 #include "dynpos/analysis/options.hpp"
-#include "dynpos/core/parallel_for.hpp"
 #include "dynpos/core/time_spacing.hpp"
 #include "dynpos/io/csv_reader.hpp"
 #include "dynpos/io/roles.hpp"
@@ -107,15 +106,11 @@ io::InputReport describe_input(const core::Log& log, const std::string& file,
   file_report.records = log.size();
   input.files.push_back(std::move(file_report));
   const std::vector<core::Channel>& channels = log.channels();
-  std::vector<std::size_t> missing(channels.size());  // counted side by side
-  core::parallel_for(channels.size(), jobs, [&](std::size_t c) {
-    const std::vector<double>& v = channels[c].values;
-    missing[c] = static_cast<std::size_t>(std::count_if(v.begin(), v.end(), core::is_missing));
-  });
   std::optional<std::optional<double>> all_valid_hz;
-  for (std::size_t c = 0; c < channels.size(); ++c) {
+  for (const core::Channel& channel : channels) {
+    const std::size_t missing = core::missing_count(channel.values, jobs);
     input.roles.push_back(
-        {channels[c].name, file, median_rate_hz(log, channels[c], missing[c], all_valid_hz, jobs)});
+        {channel.name, file, median_rate_hz(log, channel, missing, all_valid_hz, jobs)});
   }
   return input;
 }

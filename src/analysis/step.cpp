@@ -180,7 +180,7 @@ std::vector<FoundStep> detect_in_segments(const StepRequest& request, const Step
 std::vector<FoundStep> detect_in_whole_log(const StepSignals& s, std::span<const double> u,
                                            const ident::StepDetectorOptions& d,
                                            StepReport& report) {
-  const ident::StepDetection r = ident::detect_steps(s.t, u, d);
+  const ident::StepDetection r = ident::detect_steps(s.log, u, d);
   report.step_threshold = r.threshold;
   report.threshold_from_min_step = d.min_step > 0.0;
   report.input_noise_sigma = r.noise_sigma;

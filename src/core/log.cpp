@@ -7,10 +7,27 @@
 #include <stdexcept>
 #include <utility>
 
+#include "dynpos/core/parallel_for.hpp"
 #include "dynpos/core/time_order.hpp"
 #include "dynpos/core/time_spacing.hpp"
 
 namespace dynpos::core {
+
+std::size_t missing_count(std::span<const double> values, unsigned jobs) {
+  constexpr std::size_t kShortest = 1 << 18;  // a piece is counted in about 0.1 ms
+  const std::size_t n = values.size();
+  const std::size_t pieces = piece_count(n, job_count(jobs, n), kShortest);
+  std::vector<std::size_t> missing(pieces);
+  parallel_for(pieces, jobs, [&](std::size_t k) {
+    const auto [first, last] = piece_of(n, pieces, k);
+    const std::span<const double> piece = values.subspan(first, last - first);
+    missing[k] = static_cast<std::size_t>(std::count_if(piece.begin(), piece.end(), is_missing));
+  });
+  std::size_t total = 0;
+  for (const std::size_t m : missing) total += m;
+  return total;
+}
+
 namespace {
 
 // Compact text of a time or value for messages.

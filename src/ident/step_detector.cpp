@@ -61,20 +61,21 @@ struct ValidSamples {
   bool all_valid = false;  // t and u are the input's own
 };
 
+// `time_checked`: t is a core::Log's time axis, finite and strictly increasing by its invariant.
 ValidSamples valid_samples(std::span<const double> t, std::span<const double> u,
-                           const StepDetectorOptions& options) {
+                           const StepDetectorOptions& options, bool time_checked = false) {
   const std::string& name = options.input_name;
   detail::check_same_length(t.size(), u.size(), name);
-  detail::check_time_axis(t, name, options.jobs);
+  if (!time_checked) detail::check_time_axis(t, name, options.jobs);
   ValidSamples v;
-  const auto missing = std::count_if(u.begin(), u.end(), [](double x) { return std::isnan(x); });
+  const std::size_t missing = core::missing_count(u, options.jobs);
   if (missing == 0) {
     v.t = t;
     v.u = u;
     v.all_valid = true;
   } else {
-    v.t_copy.reserve(u.size() - static_cast<std::size_t>(missing));
-    v.u_copy.reserve(u.size() - static_cast<std::size_t>(missing));
+    v.t_copy.reserve(u.size() - missing);
+    v.u_copy.reserve(u.size() - missing);
     for (std::size_t i = 0; i < t.size(); ++i) {
       if (!std::isnan(u[i])) {
         v.t_copy.push_back(t[i]);
@@ -208,8 +209,11 @@ InputScan scan_input(std::span<const double> u, const ValidSamples& v,
       noise = input_noise_sigma(u, v);
       return;
     }
+    // Scanned into a local, not into its slot: neighbouring slots share cache lines.
     const auto [i0, i1] = core::piece_of(n, pieces, k - 1);
-    scans[k - 1].scan_windows(v.t, v.u, options.change_window_s, i0, i1);
+    InputScan scan;
+    scan.scan_windows(v.t, v.u, options.change_window_s, i0, i1);
+    scans[k - 1] = scan;
   });
   for (std::size_t k = 1; k < pieces; ++k) scans.front().join(scans[k]);
   scans.front().noise_sigma = noise;
@@ -346,12 +350,26 @@ StepThreshold step_threshold(std::span<const double> t, std::span<const double> 
   return threshold_from(scan_input(u, v, options), options);
 }
 
-StepDetection detect_steps(std::span<const double> t, std::span<const double> u,
-                           const StepDetectorOptions& options) {
+namespace {
+
+StepDetection detect_with_threshold(std::span<const double> t, std::span<const double> u,
+                                    const StepDetectorOptions& options, bool time_checked) {
   options.validate();
-  const ValidSamples v = valid_samples(t, u, options);
+  const ValidSamples v = valid_samples(t, u, options, time_checked);
   const InputScan scan = scan_input(u, v, options);
   return detect_in(t, v, options, threshold_from(scan, options), scan.max - scan.min);
+}
+
+}  // namespace
+
+StepDetection detect_steps(std::span<const double> t, std::span<const double> u,
+                           const StepDetectorOptions& options) {
+  return detect_with_threshold(t, u, options, false);
+}
+
+StepDetection detect_steps(const core::Log& log, std::span<const double> u,
+                           const StepDetectorOptions& options) {
+  return detect_with_threshold(log.time(), u, options, true);
 }
 
 StepDetection detect_steps(std::span<const double> t, std::span<const double> u,

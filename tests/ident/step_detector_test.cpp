@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "dynpos/core/error.hpp"
+#include "dynpos/core/log.hpp"
 #include "synthetic.hpp"
 
 namespace dynpos::ident {
@@ -495,6 +496,28 @@ TEST(StepDetector, SameStepsOnAnyNumberOfThreads) {
       EXPECT_EQ(a.noise_sigma, b.noise_sigma);
     }
   }
+}
+
+// The steps of a log's channel: the same as of its time axis and values, missing samples
+// (counted in pieces) and a gap included; the log checked its own time axis, and a channel of
+// another length is still refused.
+TEST(StepDetector, StepsOfALogChannelAreThoseOfItsAxisAndValues) {
+  std::vector<double> t = time_axis(0.0, 0.01, 360'001, 0.3, 17);
+  std::vector<double> u = long_input(t, 0.0);
+  make_gap(t, u, 1210.0, 1214.0);
+  for (std::size_t i = 1000; i < u.size(); i += 70'001) u[i] = std::nan("");
+  core::Log log(t);
+  log.add_channel("input", "1", u);
+  for (unsigned jobs : {1u, 3u}) {
+    StepDetectorOptions options;
+    options.jobs = jobs;
+    const StepDetection of_spans = detect_steps(t, u, options);
+    ASSERT_GE(of_spans.steps.size(), 10u);
+    expect_same_detection(of_spans, detect_steps(log, log.values("input"), options),
+                          "log, " + std::to_string(jobs));
+  }
+  const std::vector<double> shorter(u.begin(), u.end() - 1);
+  EXPECT_THROW(detect_steps(log, shorter), core::InputError);
 }
 
 // detect_steps() finds the threshold and the steps with one check and scan of the input: the

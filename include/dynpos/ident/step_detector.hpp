@@ -53,6 +53,8 @@
 #include <string>
 #include <vector>
 
+#include "dynpos/core/log.hpp"
+
 namespace dynpos::ident {
 
 /// How step times are read from the signal the detector runs on.
@@ -139,6 +141,12 @@ struct StepDetection {
 /// `message` says why. Throws core::InputError if the lengths differ, t is not increasing, or
 /// u has fewer than 3 valid samples.
 StepDetection detect_steps(std::span<const double> t, std::span<const double> u,
+                           const StepDetectorOptions& options = {});
+
+/// detect_steps() of an input u of `log` (one value per row, NaN = missing): the log's time
+/// axis, which the log has checked, is not checked again. The same result as detect_steps() of
+/// log.time() and u.
+StepDetection detect_steps(const core::Log& log, std::span<const double> u,
                            const StepDetectorOptions& options = {});
 
 /// detect_steps() with the band and threshold of `scale`, a step_threshold() of this input (or
