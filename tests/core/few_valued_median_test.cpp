@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <random>
 #include <vector>
 
@@ -101,6 +102,38 @@ TEST(FewValues, UpToTheLimitInAnyOrderAndSignedZerosAsOne) {
   ASSERT_EQ(z->distinct, 3u);
   EXPECT_EQ(z->counts[0].second, 4u);
   EXPECT_TRUE(std::signbit(z->counts[0].first));  // kept as first seen
+}
+
+// The two values seen last are counted apart from the table: a series that switches between two
+// values at random, with runs, returns to older values and new ones in between, gets the counts a
+// plain tally gives.
+TEST(FewValues, SwitchingValuesAreCountedAsATallyCountsThem) {
+  std::mt19937_64 engine(23);
+  std::uniform_int_distribution<int> move(0, 9);
+  std::uniform_int_distribution<int> any(0, 29);
+  for (int trial = 0; trial < 20; ++trial) {
+    std::vector<double> v = {0.5};
+    double before = -1.5;
+    for (int i = 0; i < 5000; ++i) {
+      const int m = move(engine);
+      double next = v.back();                        // a run
+      if (m < 4) next = before;                      // back to the one before
+      if (m == 9) next = 0.125 * any(engine) - 2.0;  // any value, seen or new
+      if (next != v.back()) before = v.back();
+      v.push_back(next == 0.0 && i % 2 == 0 ? -0.0 : next);
+    }
+    std::map<double, std::size_t> tally;  // keys compare as == does: +0 and −0 are one
+    for (double x : v) ++tally[x];
+    const auto few = few_values(v.size(), [&](std::size_t i) { return v[i]; });
+    ASSERT_TRUE(few.has_value()) << trial;
+    ASSERT_EQ(few->distinct, tally.size()) << trial;
+    std::size_t k = 0;
+    for (const auto& [value, count] : tally) {
+      EXPECT_EQ(few->counts[k].first, value) << trial;
+      EXPECT_EQ(few->counts[k].second, count) << trial << " value " << value;
+      ++k;
+    }
+  }
 }
 
 // Counted in pieces on several threads and joined, a series gives what it gives counted whole:
