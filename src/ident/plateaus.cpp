@@ -164,7 +164,9 @@ std::vector<Plateau> find_plateaus(std::span<const double> tv, std::span<const d
   std::vector<PlateauScan> scans(pieces, PlateauScan{tv, h, w, {}, {}, {}});
   core::parallel_for(pieces, jobs, [&](std::size_t k) {
     const auto [i0, i1] = core::piece_of(n, pieces, k);
-    scan_range(scans[k], uv, i0, i1, [](std::size_t) { return false; });
+    PlateauScan scan{tv, h, w, {}, {}, {}};  // a local: neighbouring slots share cache lines
+    scan_range(scan, uv, i0, i1, [](std::size_t) { return false; });
+    scans[k] = std::move(scan);
   });
   PlateauScan whole = std::move(scans.front());
   for (std::size_t k = 1; k < pieces; ++k) {
