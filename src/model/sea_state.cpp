@@ -140,10 +140,14 @@ WaveMotion6 WaveMotion::motion(double heading_rad, double heading_rate,
   d1 << -sb, cb, 0.0, cb, sb, 2.0 * c2b;
   d2 << -cb, -sb, 0.0, -sb, cb, -4.0 * s2b;
   Eigen::Matrix<double, 6, 1> x = Eigen::Matrix<double, 6, 1>::Zero(), v = x, a = x;
+  // The complex products are written out: the same numbers as std::complex's operator*, without
+  // its check for a NaN result (which keeps the loop from running straight through).
   for (std::size_t i = 0; i < components_.size(); ++i) {
     const double w = components_[i].omega;
+    const double p_re = phasor_[i].real(), p_im = phasor_[i].imag();
     for (int dof = 0; dof < 6; ++dof) {
-      const std::complex<double> z = phasor_[i] * lag_[i][dof];
+      const double l_re = lag_[i][dof].real(), l_im = lag_[i][dof].imag();
+      const std::complex<double> z(p_re * l_re - p_im * l_im, p_re * l_im + p_im * l_re);
       const double amp = gain_[i][dof];
       // x = A cos(ωt + φ − lag), ẋ = −Aω sin(·), ẍ = −Aω² cos(·).
       x[dof] += amp * z.real();
@@ -160,7 +164,11 @@ WaveMotion6 WaveMotion::motion(double heading_rad, double heading_rate,
 }
 
 void WaveMotion::advance() noexcept {
-  for (std::size_t i = 0; i < phasor_.size(); ++i) phasor_[i] *= rotor_[i];
+  for (std::size_t i = 0; i < phasor_.size(); ++i) {  // phasor × rotor, written out as above
+    const double p_re = phasor_[i].real(), p_im = phasor_[i].imag();
+    const double r_re = rotor_[i].real(), r_im = rotor_[i].imag();
+    phasor_[i] = {p_re * r_re - p_im * r_im, p_re * r_im + p_im * r_re};
+  }
 }
 
 Eigen::Vector3d drift_force_b(const WaveResponseParams& response, double hs_m,

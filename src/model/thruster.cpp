@@ -47,11 +47,14 @@ std::vector<core::ParamField> param_fields(ThrusterParams& params) { return fiel
 
 void ThrusterParams::validate() const { core::check_ranges("propeller", fields(*this)); }
 
-Thruster::Thruster(const ThrusterParams& params) : params_(params) { params_.validate(); }
+Thruster::Thruster(const ThrusterParams& params)
+    : params_(params), diameter_pow4_(std::pow(params.diameter, 4)) {
+  params_.validate();
+}
 
 double Thruster::thrust_coefficient(double n) const noexcept {
   const double kt = n >= 0.0 ? params_.kt_forward : params_.kt_reverse;
-  return params_.rho * kt * std::pow(params_.diameter, 4);
+  return params_.rho * kt * diameter_pow4_;
 }
 
 double Thruster::thrust(double n, double advance_speed) const noexcept {

@@ -42,7 +42,8 @@ std::vector<core::ParamField> param_fields(TunnelThrusterParams& params) { retur
 
 void TunnelThrusterParams::validate() const { core::check_ranges("tunnel", fields(*this)); }
 
-TunnelThruster::TunnelThruster(const TunnelThrusterParams& params) : params_(params) {
+TunnelThruster::TunnelThruster(const TunnelThrusterParams& params)
+    : params_(params), diameter_pow4_(std::pow(params.diameter, 4)) {
   params_.validate();
 }
 
@@ -58,7 +59,7 @@ double TunnelThruster::speed_factor(double surge_speed) const noexcept {
 
 double TunnelThruster::thrust_coefficient(double n) const noexcept {
   const double kt = n >= 0.0 ? params_.kt_starboard : params_.kt_port;
-  return params_.rho * kt * std::pow(params_.diameter, 4);
+  return params_.rho * kt * diameter_pow4_;
 }
 
 double TunnelThruster::thrust(double n, double surge_speed) const noexcept {

@@ -14,7 +14,11 @@ VesselPlant::VesselPlant(const VesselConfig& config)
 ActuatorState VesselPlant::actuators(const sim::ConstVectorRef& x,
                                      const Eigen::Vector2d& current_n) const {
   const double psi = x[kHull + model::Hull::kYaw];
-  const double c = std::cos(psi), s = std::sin(psi);
+  return actuators(x, current_n, std::cos(psi), std::sin(psi));
+}
+
+ActuatorState VesselPlant::actuators(const sim::ConstVectorRef& x, const Eigen::Vector2d& current_n,
+                                     double c, double s) const {
   // Velocity through the water in BODY, ν_r = ν − R(ψ)ᵀ v_c.
   const Eigen::Vector3d nu_r(
       x[kHull + model::Hull::kSurge] - (c * current_n.x() + s * current_n.y()),
@@ -45,9 +49,9 @@ ActuatorState VesselPlant::actuators(const sim::ConstVectorRef& x,
 void VesselPlant::flow(double /*t*/, const sim::ConstVectorRef& x, const sim::ConstVectorRef& u,
                        sim::VectorRef dxdt) const {
   const Eigen::Vector2d current_n = u.segment<2>(kCurrentNed);
-  const ActuatorState a = actuators(x, current_n);
   const double psi = x[kHull + model::Hull::kYaw];
   const double c = std::cos(psi), s = std::sin(psi);
+  const ActuatorState a = actuators(x, current_n, c, s);
   const Eigen::Vector3d f_n = u.segment<3>(kForceNed);
   // NED force into BODY: R(ψ)ᵀ b, as in (2.21).
   const Eigen::Vector3d f_b(c * f_n.x() + s * f_n.y(), -s * f_n.x() + c * f_n.y(), f_n.z());

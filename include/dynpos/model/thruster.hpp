@@ -164,6 +164,7 @@ class Thruster {
 
  private:
   ThrusterParams params_;
+  double diameter_pow4_;  // D⁴ [m⁴], as std::pow gives it, taken once
 };
 
 /// Simulates a step of the commanded shaft speed n_from → n_to [rps] at advance speed 0 (dead

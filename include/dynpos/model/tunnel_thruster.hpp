@@ -106,6 +106,7 @@ class TunnelThruster {
 
  private:
   TunnelThrusterParams params_;
+  double diameter_pow4_;  // D⁴ [m⁴], as std::pow gives it, taken once
 };
 
 /// Simulates a shaft-speed command step n_from → n_to [rps] (dead time included, RK4 at dt

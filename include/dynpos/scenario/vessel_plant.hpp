@@ -60,6 +60,10 @@ class VesselPlant final : public sim::HybridSystem {
   const model::ThrustConfiguration& layout() const noexcept { return layout_; }
 
  private:
+  // actuators() with cos ψ and sin ψ of x's heading given (flow() needs them too).
+  ActuatorState actuators(const sim::ConstVectorRef& x, const Eigen::Vector2d& current_n,
+                          double cos_psi, double sin_psi) const;
+
   model::Hull hull_;
   model::Thruster propeller_;
   model::Rudder rudder_;
