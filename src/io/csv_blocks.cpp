@@ -91,6 +91,8 @@ struct BlockReader::State {
   void parse_block(Block& block, Buffer& buffer, bool at_line_start, std::uint64_t start,
                    std::uint64_t stop, std::uint64_t file_size);
   bool parse_row(std::string_view line, RowCells& cells, Block& block) const;
+  const char* scan_plain_row(const char* p, const char* end, RowCells& cells) const;
+  bool store_row(const RowCells& cells, Block& block) const;
   CellKind cell(const RowCells& cells, std::size_t slot, double& value) const;
 };
 
@@ -167,7 +169,46 @@ bool BlockReader::State::parse_row(std::string_view line, RowCells& cells, Block
       break;
     }
   }
-  if (field != layout.field_count) return false;
+  return field == layout.field_count && store_row(cells, block);
+}
+
+// The line from p on, when every parsed field is a plain decimal up to its delimiter or the end
+// of the line and the line has the header's number of fields: its '\n' (the row's cells set),
+// else nullptr. The line is found as it is read, [p, end) being the bytes read so far: nullptr
+// too when its end is not among them. For such a line parse_row() gives the same cells.
+const char* BlockReader::State::scan_plain_row(const char* p, const char* const end,
+                                               RowCells& cells) const {
+  const char delimiter = layout.delimiter;
+  std::size_t field = 0;
+  for (;;) {
+    const std::size_t slot = slot_of_field[field];
+    const char* stop = p;
+    if (slot != kNoSlot) {
+      double value = 0.0;
+      stop = scan_plain_decimal(p, end, value);
+      if (stop == nullptr) return nullptr;
+      cells.number[slot] = value;
+      cells.is_number[slot] = 1;
+    } else {
+      while (stop != end && *stop != delimiter && *stop != '\n') ++stop;
+    }
+    ++field;
+    if (stop == end) return nullptr;
+    if (*stop == delimiter) {
+      p = stop + 1;
+      if (field <= last_field) continue;
+      std::size_t more = 1;  // the fields after it, only counted
+      while (p != end && *p != '\n') more += *p++ == delimiter ? 1 : 0;
+      return p != end && field + more == layout.field_count ? p : nullptr;
+    }
+    if (*stop == '\r' && stop + 1 != end) ++stop;  // a CRLF line end
+    return *stop == '\n' && field == layout.field_count ? stop : nullptr;
+  }
+}
+
+// The cells of a row with the header's number of fields into the block; false when it is not
+// plain.
+bool BlockReader::State::store_row(const RowCells& cells, Block& block) const {
   double raw = 0.0;
   if (cell(cells, time_slot, raw) != CellKind::kNumber) return false;
   const double t = to_si(layout.time.unit, raw * layout.time.scale);
@@ -228,6 +269,23 @@ void BlockReader::State::parse_block(Block& block, Buffer& buffer, bool at_line_
   const std::string_view prefix = layout.comment_prefix;
   std::size_t quotes_checked = at;
   while (buffer.from + at < stop && buffer.from + at < file_size) {
+    if (block.clean && quotes_checked < buffer.size) {  // a quote anywhere read: row by row
+      block.clean = std::memchr(buffer.data.get() + quotes_checked, '"',
+                                buffer.size - quotes_checked) == nullptr;
+      quotes_checked = buffer.size;
+    }
+    // The common row, all its parsed cells plain decimals, is read as its end is looked for;
+    // any other line (blank, a comment, spaces, text, cut off by the bytes read) as below.
+    const char* const data = buffer.data.get();
+    if (block.clean && scan_numbers && at < buffer.size &&
+        (prefix.empty() || data[at] != prefix.front())) {
+      if (const char* nl = scan_plain_row(data + at, data + buffer.size, cells)) {
+        ++block.lines;
+        at = static_cast<std::size_t>(nl - data) + 1;
+        if (!store_row(cells, block)) block.clean = false;
+        continue;
+      }
+    }
     const std::size_t nl = line_end(at);
     if (nl == kTooLong) {  // read row by row, which stops at this line
       block.clean = false;

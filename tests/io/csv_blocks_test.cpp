@@ -8,12 +8,14 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <cstring>
 #include <fstream>
 #include <functional>
 #include <optional>
+#include <random>
 #include <string>
 #include <thread>
 #include <vector>
@@ -232,6 +234,88 @@ TEST(CsvBlocks, ANumericMissingTokenAndCellsThatAreNotPlainDecimals) {
                      plain);
   ASSERT_TRUE(n.log);
   EXPECT_EQ(n.log->log.values("input")[5], -999.0);
+}
+
+// Rows that are not the common case, sprinkled among plain ones at random: CRLF and CR CR LF
+// ends, blank and comment lines, leading spaces, missing and padded cells, numbers that are not
+// plain decimals, a CR inside a cell; then, in some logs, one row that stops the reading (a field
+// too many or too few, text in a number column). A row that is all plain decimals is read as its
+// end is looked for; every other line must be read as row by row, with the last mapped field
+// inside the line and at its end, and an unmapped field between mapped ones.
+TEST(CsvBlocks, OddLinesAmongPlainRowsReadAsRowByRow) {
+  const auto line = [](std::size_t k, int kind) -> std::string {
+    const std::string t = fmt::format("{:.2f}", 0.01 * static_cast<double>(k));
+    switch (kind) {
+      case 0:
+        return fmt::format("{},1.5,0.25,7\r\n", t);
+      case 1:
+        return fmt::format("{},1.5,0.25,7\r\r\n", t);
+      case 2:
+        return "\n" + row(k);
+      case 3:
+        return "# note\n" + row(k);
+      case 4:
+        return "  " + row(k);
+      case 5:
+        return fmt::format("{},,0.25,7\n", t);
+      case 6:
+        return fmt::format("{}, 1.5 ,0.25,7\n", t);
+      case 7:
+        return fmt::format("{},1e-3,+0.25,7\n", t);
+      case 8:
+        return fmt::format("{},1.,.5,7\n", t);
+      case 9:
+        return fmt::format("{},1.5\r,0.25,7\n", t);
+      case 10:
+        return fmt::format("{},1.5,0.25,\n", t);
+      case 11:
+        return fmt::format("{},1.5,0.25,7\r8\n", t);  // text, if the last field is mapped
+      case 12:
+        return fmt::format("{},1.5,0.25\r\n", t);  // a field too few
+      default:
+        return fmt::format("{},1.5,0.25,7,9\n", t);  // a field too many
+    }
+  };
+  ColumnMap last_mapped = map_of();  // the last field parsed too
+  last_mapped.set_column("trigger", "spare");
+  ColumnMap gap;  // an unmapped field between the time and the output
+  gap.set_column("time", "time");
+  gap.set_column("output", "resp");
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    for (const ColumnMap* map : {&last_mapped, &gap}) {
+      SCOPED_TRACE(fmt::format("seed {}, {}", seed, map == &gap ? "gap" : "last field mapped"));
+      std::mt19937_64 engine(seed);
+      std::bernoulli_distribution is_odd(seed % 2 == 1 ? 2e-4 : 3e-3);
+      std::uniform_int_distribution<int> benign(0, map == &gap ? 11 : 10);
+      const std::size_t stop_at =  // a row that stops the reading, in the second half
+          seed >= 3 ? std::uniform_int_distribution<std::size_t>(200'000, 380'000)(engine) : kRows;
+      const std::string text = log_text([&](std::size_t k) {
+        if (k == stop_at) return line(k, seed == 3 ? 13 : 12);
+        return k > 100 && is_odd(engine) ? line(k, benign(engine)) : std::string();
+      });
+      const Outcome r = check_all_ways(text, *map);
+      EXPECT_EQ(r.log.has_value(), stop_at == kRows) << r.error;
+      if (r.log) {
+        EXPECT_EQ(r.log->log.size(), kRows);
+      }
+    }
+  }
+}
+
+// A comment prefix that looks like the start of a number: the rows whose time begins with it
+// are comments, in a block as row by row.
+TEST(CsvBlocks, ACommentPrefixThatLooksLikeANumber) {
+  ColumnMap map = map_of();
+  map.format().comment_prefix = "9";
+  std::string text = log_text();
+  text.front() = '9';  // the first line, "# logger v1", stays a comment
+  const Outcome r = check_all_ways(text, map);
+  ASSERT_TRUE(r.log);
+  const auto& t = r.log->log.time();
+  EXPECT_EQ(std::count_if(t.begin(), t.end(),
+                          [](double x) { return fmt::format("{:.2f}", x).front() == '9'; }),
+            0);
+  EXPECT_LT(t.size(), kRows);
 }
 
 // Each row of a clean block knows its line, with blank and comment lines between rows, after a
