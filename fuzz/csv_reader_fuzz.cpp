@@ -1,13 +1,26 @@
 // libFuzzer target: the CSV reader with a column map. An input is a TOML column map, a line
 // "%%", then the CSV log (fuzz_input.hpp); without the marker the whole input is a log, read
 // with every numeric column (read_csv_all) and by its header. With a map the log is read
-// whole, within a window, and by block parsing on two threads, which must give what the row
-// reader gives (csv_blocks.hpp): the same channels, values and errors.
+// whole, within a window, and by block parsing on one and on two threads, which must give what
+// the row reader gives when it reads the same bytes through a pipe (csv_blocks.hpp): the same
+// channels, values and errors.
 
+#include <fcntl.h>
+#include <pthread.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cerrno>
 #include <cmath>
+#include <csignal>
 #include <cstring>
+#include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <thread>
 
 #include "dynpos/core/error.hpp"
 #include "dynpos/io/column_map.hpp"
@@ -25,18 +38,69 @@ struct Outcome {
   std::string error;
 };
 
+// The error's text names the file as LOG, so that a file and a pipe of the same bytes compare.
 Outcome read(const std::filesystem::path& path, const io::ColumnMap& map,
              const io::CsvReadOptions& options) {
   try {
     return {io::read_csv_log(path, map, options).log, {}};
   } catch (const InputError& e) {
-    return {std::nullopt, e.what()};
+    std::string error = e.what();
+    for (std::size_t at; (at = error.find(path.string())) != std::string::npos;) {
+      error.replace(at, path.string().size(), "LOG");
+    }
+    return {std::nullopt, error};
   }
+}
+
+// The same bytes through a FIFO, which the reader reads row by row. The writer waits for the
+// reader's open without blocking, and gives up once the read is over (a read that failed before
+// it opened the FIFO); a reader that stops early breaks the pipe, and the writer's write fails
+// (SIGPIPE is ignored).
+Outcome read_through_pipe(const std::filesystem::path& file, std::string_view bytes,
+                          const io::ColumnMap& map, const io::CsvReadOptions& options) {
+  const std::filesystem::path fifo = file.string() + ".fifo";
+  std::error_code ec;
+  std::filesystem::remove(fifo, ec);
+  if (::mkfifo(fifo.c_str(), 0600) != 0) __builtin_trap();
+  std::signal(SIGPIPE, SIG_IGN);
+  std::atomic<bool> read_over{false};
+  sigset_t alarm, before;
+  sigemptyset(&alarm);
+  sigaddset(&alarm, SIGALRM);
+  pthread_sigmask(SIG_BLOCK, &alarm, &before);  // inherited by the two threads below
+  std::thread writer([&] {
+    int fd = -1;
+    while ((fd = ::open(fifo.c_str(), O_WRONLY | O_NONBLOCK)) < 0) {
+      if (errno != ENXIO || read_over.load()) return;
+      std::this_thread::yield();
+    }
+    ::fcntl(fd, F_SETFL, 0);  // blocking writes from here on
+    for (std::size_t at = 0; at < bytes.size();) {
+      const ssize_t n = ::write(fd, bytes.data() + at, bytes.size() - at);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) break;
+      at += static_cast<std::size_t>(n);
+    }
+    ::close(fd);
+  });
+  // The pipe is read on a thread of its own with SIGALRM blocked: libFuzzer's timer would
+  // otherwise interrupt a read that waits for the writer (EINTR), which a regular file never sees.
+  Outcome out;
+  std::thread reader([&] {
+    out = read(fifo, map, options);
+    read_over.store(true);
+  });
+  pthread_sigmask(SIG_SETMASK, &before, nullptr);
+  reader.join();
+  writer.join();
+  std::filesystem::remove(fifo, ec);
+  return out;
 }
 
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
-// Block parsing on two threads against one: the reader promises the same result for any number.
+// Two reads of one log: the reader promises the same result for any number of threads, and for
+// a pipe.
 void check_same(const Outcome& one, const Outcome& two) {
   if (one.error != two.error || one.log.has_value() != two.log.has_value()) __builtin_trap();
   if (!one.log) return;
@@ -55,7 +119,8 @@ void check_same(const Outcome& one, const Outcome& two) {
   }
 }
 
-void read_with_map(const std::filesystem::path& path, std::string_view map_text) {
+void read_with_map(const std::filesystem::path& path, std::string_view bytes,
+                   std::string_view map_text) {
   io::ColumnMap map;
   try {
     map = io::parse_column_map(map_text, "map.toml");
@@ -65,6 +130,12 @@ void read_with_map(const std::filesystem::path& path, std::string_view map_text)
   io::CsvReadOptions options;
   options.jobs = 1;
   const Outcome one = read(path, map, options);
+  // Past the rows that fix the time format a regular file is parsed in blocks: those against the
+  // row reader.
+  if (static_cast<std::size_t>(std::count(bytes.begin(), bytes.end(), '\n')) >
+      io::kTimeDetectionRows) {
+    check_same(read_through_pipe(path, bytes, map, options), one);
+  }
   options.jobs = 2;
   check_same(one, read(path, map, options));
   options.t_from_s = 0.5;
@@ -79,7 +150,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const auto parts = dynpos::fuzz::split_at_marker(dynpos::fuzz::as_text(data, size));
   const auto& path = file.write(parts.second);
   if (!parts.first.empty()) {
-    read_with_map(path, parts.first);
+    read_with_map(path, parts.second, parts.first);
     return 0;
   }
   try {
