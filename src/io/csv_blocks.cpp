@@ -267,13 +267,16 @@ void BlockReader::State::parse_block(Block& block, Buffer& buffer, bool at_line_
   RowCells cells{std::vector<std::string_view>(slots), std::vector<double>(slots),
                  std::vector<char>(slots)};
   const std::string_view prefix = layout.comment_prefix;
+  // A quote anywhere read: the block is read row by row. Checked again as the buffer grows.
   std::size_t quotes_checked = at;
+  const auto check_quotes = [&] {
+    if (quotes_checked >= buffer.size) return;
+    block.clean = std::memchr(buffer.data.get() + quotes_checked, '"',
+                              buffer.size - quotes_checked) == nullptr;
+    quotes_checked = buffer.size;
+  };
   while (buffer.from + at < stop && buffer.from + at < file_size) {
-    if (block.clean && quotes_checked < buffer.size) {  // a quote anywhere read: row by row
-      block.clean = std::memchr(buffer.data.get() + quotes_checked, '"',
-                                buffer.size - quotes_checked) == nullptr;
-      quotes_checked = buffer.size;
-    }
+    if (block.clean) check_quotes();
     // The common row, all its parsed cells plain decimals, is read as its end is looked for;
     // any other line (blank, a comment, spaces, text, cut off by the bytes read) as below.
     const char* const data = buffer.data.get();
@@ -295,13 +298,9 @@ void BlockReader::State::parse_block(Block& block, Buffer& buffer, bool at_line_
     std::string_view line(buffer.data.get() + at, nl - at);
     ++block.lines;
     at = std::min(nl + 1, buffer.size);
-    if (!block.clean) continue;          // only counting the lines now
-    if (quotes_checked < buffer.size) {  // a quote anywhere read: the block is read row by row
-      block.clean = std::memchr(buffer.data.get() + quotes_checked, '"',
-                                buffer.size - quotes_checked) == nullptr;
-      quotes_checked = buffer.size;
-      if (!block.clean) continue;
-    }
+    if (!block.clean) continue;  // only counting the lines now
+    check_quotes();
+    if (!block.clean) continue;
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     const char first = line.empty() ? ' ' : line.front();
     if (first == ' ' || first == '\t' || (!prefix.empty() && first == prefix.front())) {
