@@ -38,6 +38,10 @@ constexpr std::array kSpellings{
     Spelling{"s", "s", Q::kTime, 1.0, kCase},
     Spelling{"sec", "s", Q::kTime, 1.0, kAny},
     Spelling{"ms", "ms", Q::kTime, 1e-3, kCase},
+    Spelling{"us", "us", Q::kTime, 1e-6, kCase},
+    Spelling{"\u00b5s", "us", Q::kTime, 1e-6, kCase},  // micro sign
+    Spelling{"\u03bcs", "us", Q::kTime, 1e-6, kCase},  // Greek mu
+    Spelling{"ns", "ns", Q::kTime, 1e-9, kCase},
     Spelling{"min", "min", Q::kTime, 60.0, kAny},
     Spelling{"h", "h", Q::kTime, 3600.0, kCase},
     // length

@@ -103,11 +103,30 @@ class LineReader {
     }
     if (status == detail::LineStatus::kEnd) return false;
     ++line_;
+    if (!out.empty() && out.back() == '\r' && status != detail::LineStatus::kTooLong) {
+      out.pop_back();
+      offset_ += 1;
+    }
+    if (line_ == 1) refuse_cr_line_ends(out);
     if (status == detail::LineStatus::kTooLong) too_long("line");
     offset_ += out.size() + (ended ? 1 : 0);
-    if (!out.empty() && out.back() == '\r') out.pop_back();
     if (line_ == 1 && out.compare(0, 3, "\xEF\xBB\xBF") == 0) out.erase(0, 3);
     return true;
+  }
+
+  // A carriage return within the first line: lines that end with CR alone (classic Mac OS)
+  // would be read as one line, the whole file a header.
+  void refuse_cr_line_ends(std::string_view first_line) const {
+    const std::size_t cr = first_line.find('\r');
+    if (cr == std::string_view::npos) return;
+    InputLocation where;
+    where.file = path_;
+    where.line = 1;
+    where.column = cr + 1;
+    throw InputError(where,
+                     "a carriage return (CR) within the first line: the file's lines seem to end "
+                     "with CR alone",
+                     "convert the line ends to LF or CR LF, e.g. tr '\\r' '\\n' < IN > OUT");
   }
 
   // A line (or a record of lines joined by a quoted field) beyond kMaxCsvRecordBytes.
@@ -752,6 +771,8 @@ CsvLog read_csv_log(const std::filesystem::path& path, const ColumnMap& map,
   std::vector<ColumnPlan> plans;
   TimePlans time;
   std::optional<InputError> time_unit_error;
+  std::string declared_time_unit;  // a unit or scale the map or the header gives the time
+  double declared_time_unit_s = 0.0;
   for (const auto& [role, entry] : map.roles()) {
     const std::optional<RoleSpec> spec = find_role(role);
     assert(spec && "ColumnMap only holds known roles");
@@ -789,6 +810,13 @@ CsvLog read_csv_log(const std::filesystem::path& path, const ColumnMap& map,
       plan.unit = *unit;
     }
     plan.unit_symbol = core::si_unit(plan.unit.quantity).symbol;
+    if (role == "time" && !time_unit_error &&
+        (entry.unit || entry.scale != 1.0 || !split_header_cell(plan.header).unit.empty())) {
+      declared_time_unit = entry.scale != 1.0
+                               ? fmt::format("{} × {}", entry.scale, plan.unit.symbol)
+                               : plan.unit.symbol;
+      declared_time_unit_s = plan.unit.scale * entry.scale;
+    }
     if (role == "time" || role == "time.sec") {
       time.time = std::move(plan);
     } else if (role == "time.nsec") {
@@ -803,7 +831,8 @@ CsvLog read_csv_log(const std::filesystem::path& path, const ColumnMap& map,
                    [](const ColumnPlan& a, const ColumnPlan& b) { return a.field < b.field; });
 
   TimeStampReader stamps(map.time(), {reader.path(), time.time.header, time.time.field,
-                                      time.nsec.has_value(), time.date.has_value()});
+                                      time.nsec.has_value(), time.date.has_value(),
+                                      declared_time_unit, declared_time_unit_s});
   RowStream rows = stream_rows(reader, header, format, time, plans, options, stamps,
                                time_unit_error ? &*time_unit_error : nullptr);
   CsvLog out{core::Log(std::move(rows.time_s), options.jobs), stamps.info(), *rows.first_t,
@@ -885,7 +914,10 @@ core::Log read_csv_all(const std::filesystem::path& path, const CsvReadOptions& 
     plans.push_back(std::move(plan));
   }
 
-  TimeStampReader stamps({}, {reader.path(), time.time.header, 0, false, false});
+  const bool time_unit_declared = !split_header_cell(time.time.header).unit.empty();
+  TimeStampReader stamps({}, {reader.path(), time.time.header, 0, false, false,
+                              time_unit_declared ? time.time.unit.symbol : std::string(),
+                              time_unit_declared ? time.time.unit.scale : 0.0});
   core::Log log(stream_rows(reader, header, format, time, plans, options, stamps, nullptr).time_s);
   for (auto& plan : plans) {
     if (plan.state == ColumnPlan::State::kText) continue;

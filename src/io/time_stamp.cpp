@@ -1,5 +1,6 @@
 #include "dynpos/io/time_stamp.hpp"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -73,8 +74,10 @@ bool read_fraction_ns(std::string_view s, std::size_t& pos, std::int64_t& ns) no
   return digits > 0;
 }
 
-// hh:mm[:ss[.f…]] at s[pos] → nanoseconds since midnight. The hour has 1 or 2 digits.
-bool read_clock(std::string_view s, std::size_t& pos, std::int64_t& ns) noexcept {
+// hh:mm[:ss[.f…]] at s[pos] → nanoseconds since midnight. The hour has 1 or 2 digits. With
+// `leap`, a leap second hh:59:60[.f…] is read as the next minute's first second and flagged.
+bool read_clock(std::string_view s, std::size_t& pos, std::int64_t& ns,
+                bool* leap = nullptr) noexcept {
   unsigned h = 0, m = 0, sec = 0;
   const std::size_t hour_digits = pos + 1 < s.size() && s[pos + 1] == ':' ? 1 : 2;
   if (!read_digits(s, pos, hour_digits, h) || pos >= s.size() || s[pos] != ':') return false;
@@ -85,7 +88,9 @@ bool read_clock(std::string_view s, std::size_t& pos, std::int64_t& ns) noexcept
     ++pos;
     if (!read_digits(s, pos, 2, sec) || !read_fraction_ns(s, pos, fraction)) return false;
   }
-  if (h > 23 || m > 59 || sec > 59) return false;
+  const bool leap_second = leap != nullptr && sec == 60 && m == 59;
+  if (h > 23 || m > 59 || (sec > 59 && !leap_second)) return false;
+  if (leap != nullptr) *leap = leap_second;
   ns = ((h * 60 + m) * 60 + sec) * kNsPerS + fraction;
   return true;
 }
@@ -238,11 +243,16 @@ std::optional<ParsedStamp> parse_iso8601(std::string_view text) noexcept {
   if (days < kFirstDay || days > kLastDay) return std::nullopt;  // outside int64 ns
   if (s[pos] != 'T' && s[pos] != 't' && s[pos] != ' ') return std::nullopt;
   ++pos;
-  if (!read_clock(s, pos, clock_ns)) return std::nullopt;
   ParsedStamp out;
+  if (!read_clock(s, pos, clock_ns, &out.leap_second)) return std::nullopt;
   if (!read_zone(s, pos, out.utc_offset_min)) return std::nullopt;
   out.ns = days * kNsPerDay + clock_ns -
            static_cast<std::int64_t>(out.utc_offset_min.value_or(0)) * 60 * kNsPerS;
+  // A zoned leap second is the last second of a UTC day (23:59:60Z, 01:59:60+02:00).
+  if (out.leap_second && out.utc_offset_min && (out.ns % kNsPerDay + kNsPerDay) % kNsPerDay >=
+                                                   kNsPerS) {
+    return std::nullopt;
+  }
   return out;
 }
 
@@ -343,10 +353,16 @@ std::string format_iso8601(std::int64_t ns, std::optional<int> utc_offset_min) {
 }
 
 bool looks_like_unpadded_ns(std::span<const std::string_view> cells) {
-  std::optional<std::size_t> fraction_digits;
-  bool lengths_vary = false, decimal_back = false;
+  // The bug's signature is systematic: read as unpadded nanoseconds the stamps never go back
+  // and run at the logger's own pace; read as decimals they go back where the fraction grows
+  // longer ("16.99…" then "16.1…"). One row out of order in a decimal log also goes back from a
+  // shorter to a longer fraction ("12.9" then "12.85"), but read as nanoseconds its rows then
+  // crowd into nanoseconds and jump by whole seconds: the median step tells the two apart.
+  std::optional<std::size_t> last_digits;
   std::optional<double> last_decimal;
   std::optional<std::int64_t> last_ns;
+  std::size_t decimal_backs = 0;
+  std::vector<double> ns_steps_s, decimal_steps_s;
   for (const std::string_view cell : cells) {
     const std::string_view text = detail::trim(cell);
     if (text.empty()) continue;
@@ -354,14 +370,28 @@ bool looks_like_unpadded_ns(std::span<const std::string_view> cells) {
     const std::optional<double> decimal = parse_double(text);
     if (!ns || !decimal) return false;
     const std::size_t digits = text.size() - text.find('.') - 1;
-    if (fraction_digits && digits != *fraction_digits) lengths_vary = true;
-    fraction_digits = digits;
-    if (last_ns && *ns < *last_ns) return false;  // backwards either way: not this bug
-    if (last_decimal && *decimal < *last_decimal) decimal_back = true;
+    if (last_ns) {
+      if (*ns <= *last_ns) return false;  // back or repeated either way: not this bug
+      ns_steps_s.push_back(static_cast<double>(*ns - *last_ns) * 1e-9);
+      if (*decimal < *last_decimal) {
+        if (digits <= *last_digits) return false;  // back without a longer fraction
+        ++decimal_backs;
+      } else if (*decimal > *last_decimal) {
+        decimal_steps_s.push_back(*decimal - *last_decimal);
+      }
+    }
+    last_digits = digits;
     last_ns = ns;
     last_decimal = decimal;
   }
-  return lengths_vary && decimal_back;
+  if (decimal_backs == 0 || decimal_steps_s.empty()) return false;
+  const auto median = [](std::vector<double>& v) {
+    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+    return v[v.size() / 2];
+  };
+  // The logger's pace read both ways agrees within a factor of ten for the bug; for a decimal
+  // log with rows out of order the nanosecond reading's median step is below a microsecond.
+  return median(ns_steps_s) >= 0.1 * median(decimal_steps_s);
 }
 
 std::optional<TimeStampFormat> detect_time_format(std::span<const std::string_view> cells) {

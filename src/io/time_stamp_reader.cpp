@@ -102,6 +102,17 @@ void TimeStampReader::start(std::span<const std::string_view> first_cells,
       bad_cell("", first_line, "", "");
     }
     format_ = *detected;
+    const double epoch_unit_s = std::pow(10.0, -epoch_exponent(format_.format));
+    if (!column_.declared_unit.empty() && is_epoch(format_.format) &&
+        !(std::fabs(column_.declared_unit_s / epoch_unit_s - 1.0) < 1e-12)) {
+      // The declared unit wins over the epoch magnitude rule: plain counts of that unit.
+      info_.notes.push_back(fmt::format(
+          "the time column declares its unit ({0}), so its numbers are read as {0} from any "
+          "origin, not as epoch time by their size; force --time-format epoch-s (or -ms, -us, "
+          "-ns) for Unix time",
+          column_.declared_unit));
+      format_ = {TimeFormat::kSeconds, false};
+    }
   } else {
     format_ = {forced, false};
     if (forced == TimeFormat::kSeconds || forced == TimeFormat::kEpochSeconds) {
@@ -142,7 +153,12 @@ std::int64_t TimeStampReader::absolute_ns(const TimeCells& cells, std::size_t li
       bad_cell(cells.nsec, line, "nanoseconds (0 to 999999999) in the time.nsec column",
                "the time.nsec column holds the integer nanoseconds of the second");
     }
-    return *sec * kNsPerS + *nsec;
+    std::int64_t ns = 0;
+    if (__builtin_mul_overflow(*sec, kNsPerS, &ns) || __builtin_add_overflow(ns, *nsec, &ns)) {
+      bad_cell(cells.time, line, "a second within 64-bit nanoseconds (years 1678 to 2261)",
+               "the time.sec column holds whole seconds since power-on or since 1970");
+    }
+    return ns;
   }
   if (format_.unpadded_ns) {
     const std::optional<std::int64_t> ns = parse_unpadded_ns(cells.time);
@@ -165,7 +181,7 @@ std::int64_t TimeStampReader::absolute_ns(const TimeCells& cells, std::size_t li
       bad_cell(cells.time, line, "in the first row's form",
                "the file mixes time stamps with and without a time zone");
     }
-    return stamp->ns;
+    return stamp->ns + leap_seconds_ns(stamp->leap_second, line);
   }
   // Time of day on the date of --date, of the date column, or of none.
   const std::optional<std::int64_t> tod = parse_time_of_day_ns(cells.time);
@@ -186,6 +202,20 @@ std::int64_t TimeStampReader::absolute_ns(const TimeCells& cells, std::size_t li
     days += rollover_days_;
   }
   return days * kNsPerDay + *tod;
+}
+
+std::int64_t TimeStampReader::leap_seconds_ns(bool leap_second, std::size_t line) {
+  // POSIX time gives 23:59:60.5 the instant of 00:00:00.5: the rows after a leap second are
+  // one second later in elapsed time than their stamps say, so the axis keeps running.
+  if (leap_second && !in_leap_second_) {
+    info_.notes.push_back(fmt::format(
+        "a leap second (hh:59:60) at line {}: the time axis counts it, so t after it is one "
+        "second more than the stamps' difference",
+        line));
+  }
+  if (!leap_second && in_leap_second_) leap_ns_ += kNsPerS;
+  in_leap_second_ = leap_second;
+  return leap_ns_;
 }
 
 void TimeStampReader::set_origin(std::int64_t ns, std::optional<int> utc_offset_min) {

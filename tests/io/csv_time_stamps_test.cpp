@@ -3,7 +3,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <string>
 #include <vector>
+
+#include <fmt/format.h>
 
 #include "dynpos/io/csv_reader.hpp"
 #include "io_test_util.hpp"
@@ -185,6 +188,105 @@ TEST(CsvTimeStamps, DetectionLooksPastTheFirstRowsHeldBack) {
   ASSERT_EQ(all.log.size(), 1000u);
   EXPECT_EQ(all.log.values("output")[255], 510.0);
   EXPECT_EQ(all.log.values("output")[256], 512.0);
+}
+
+// A time column whose header or map declares a unit is read in that unit whatever its size:
+// an uptime counter in ms past 10⁹ (11.6 days) is no epoch second.
+TEST(CsvTimeStamps, ADeclaredUnitIsNotOverriddenByTheEpochMagnitudes) {
+  TempDir dir;
+  struct Case {
+    const char* unit;
+    std::int64_t first;  // first count, in the unit
+    std::int64_t step;   // 0.1 s in the unit
+  };
+  for (const Case c : {Case{"ms", 1'000'000'000, 100}, Case{"us", 1'000'000'000'000, 100'000},
+                       Case{"ns", 1'000'000'000'000'000, 100'000'000}}) {
+    std::string text = fmt::format("time [{}],heading\n", c.unit);
+    for (int k = 0; k < 5; ++k) text += fmt::format("{},{}\n", c.first + k * c.step, k);
+    const auto path = dir.write(fmt::format("uptime_{}.csv", c.unit), text);
+    const CsvLog r = read_csv_log(path, map_of({{"time", fmt::format("time [{}]", c.unit).c_str()},
+                                                {"heading", "heading"}}));
+    EXPECT_EQ(r.time.format, "seconds") << c.unit;
+    ASSERT_EQ(r.log.size(), 5u);
+    EXPECT_NEAR(r.log.time()[4] - r.log.time()[0], 0.4, 1e-9) << c.unit;
+    ASSERT_EQ(r.time.notes.size(), 1u) << c.unit;
+    EXPECT_THAT(r.time.notes[0], ContainsRegex("declares its unit"));
+
+    // The same unit declared by --unit (the map) instead of the header.
+    const auto bare = dir.write(fmt::format("bare_{}.csv", c.unit),
+                                "time" + text.substr(text.find(',')));
+    ColumnMap map = map_of({{"time", "time"}, {"heading", "heading"}});
+    map.set_unit("time", c.unit);
+    EXPECT_EQ(read_csv_log(bare, map).time.format, "seconds") << c.unit;
+    // Undeclared, the size still says epoch time.
+    EXPECT_NE(read_csv_log(bare, map_of({{"time", "time"}, {"heading", "heading"}})).time.format,
+              "seconds")
+        << c.unit;
+  }
+  // A declared unit that is the epoch form's own unit keeps the epoch reading.
+  const auto epoch_ms = dir.write("epoch_ms.csv", "t [ms],h\n1714557600000,1\n1714557600100,2\n");
+  const CsvLog e = read_csv_log(epoch_ms, map_of({{"time", "t [ms]"}, {"heading", "h"}}));
+  EXPECT_EQ(e.time.format, "epoch-ms");
+  EXPECT_EQ(e.time.origin, "2024-05-01T10:00:00Z");
+}
+
+// One row 50 ms back among decimals of varying length ("12.85" after "12.9") is a row out of
+// order, not the unpadded-nanosecond exporter bug: an error by default, dropped on request.
+TEST(CsvTimeStamps, OneRowBackIsNotTheUnpaddedNanosecondBug) {
+  TempDir dir;
+  std::string text = "time,heading\n";
+  for (int k = 0; k < 300; ++k) {
+    text += fmt::format("{:.1f},{}\n", 0.1 * k, k);
+    if (k == 129) text += "12.85,-1\n";  // after 12.9, at line 132
+  }
+  const auto path = dir.write("one_back.csv", text);
+  ColumnMap map = map_of({{"time", "time"}, {"heading", "heading"}});
+  EXPECT_THAT(input_error_message([&] { read_csv_log(path, map); }),
+              ContainsRegex("one_back\\.csv:132:1 \\(time\\): time 12\\.85 s goes back"));
+  map.time().order = TimeOrder::kDropNonIncreasing;
+  const CsvLog r = read_csv_log(path, map);
+  EXPECT_EQ(r.time.format, "seconds");
+  EXPECT_TRUE(r.time.notes.empty());
+  ASSERT_EQ(r.log.size(), 300u);
+  EXPECT_EQ(r.time.skipped.count("time going back"), 1u);
+  EXPECT_DOUBLE_EQ(r.log.time()[299], 29.9);
+}
+
+// Lines that end with CR alone would make the whole file one header line.
+TEST(CsvTimeStamps, CarriageReturnOnlyLineEndsAreRefused) {
+  TempDir dir;
+  const auto path = dir.write("mac.csv", "time,heading\r0,1\r0.1,2\r");
+  EXPECT_THAT(input_error_message([&] {
+                read_csv_log(path, map_of({{"time", "time"}, {"heading", "heading"}}));
+              }),
+              ContainsRegex("mac\\.csv:1:13.*carriage return.*end with CR alone"));
+}
+
+// A leap second in ISO stamps: read, and counted in the time axis (t runs on by 1 s).
+TEST(CsvTimeStamps, LeapSecondInIsoStamps) {
+  TempDir dir;
+  const auto path = dir.write("leap.csv",
+                              "time,heading\n"
+                              "2016-12-31T23:59:59.5Z,1\n"
+                              "2016-12-31T23:59:60.0Z,2\n"
+                              "2016-12-31T23:59:60.5Z,3\n"
+                              "2017-01-01T00:00:00.0Z,4\n"
+                              "2017-01-01T00:00:00.5Z,5\n");
+  const CsvLog r = read_csv_log(path, map_of({{"time", "time"}, {"heading", "heading"}}));
+  EXPECT_EQ(r.log.time(), (std::vector<double>{0.0, 0.5, 1.0, 1.5, 2.0}));
+  ASSERT_EQ(r.time.notes.size(), 1u);
+  EXPECT_THAT(r.time.notes[0], ContainsRegex("leap second.*line 3"));
+}
+
+// sec-nsec seconds whose nanoseconds leave 64 bits (after 2262) are an error, not a wrap.
+TEST(CsvTimeStamps, SecNsecBeyond2262IsAnError) {
+  TempDir dir;
+  const auto path = dir.write("far.csv", "sec,nsec,h\n9300000000,0,1\n9300000001,0,2\n");
+  EXPECT_THAT(
+      input_error_message([&] {
+        read_csv_log(path, map_of({{"time.sec", "sec"}, {"time.nsec", "nsec"}, {"heading", "h"}}));
+      }),
+      ContainsRegex("far\\.csv:2:1 \\(sec\\): '9300000000' is not a second within 64-bit"));
 }
 
 }  // namespace

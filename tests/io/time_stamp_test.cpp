@@ -162,6 +162,22 @@ TEST(TimeStamp, UnpaddedNanoseconds) {
   EXPECT_FALSE(parse_unpadded_ns("-16.5"));
 }
 
+TEST(TimeStamp, LeapSecondsOnlyAtTheEndOfAUtcDayOrAnHourWithoutZone) {
+  const auto utc = parse_iso8601("2016-12-31T23:59:60.25Z");
+  ASSERT_TRUE(utc);
+  EXPECT_TRUE(utc->leap_second);
+  EXPECT_EQ(utc->ns, (days_from_civil(2017, 1, 1) * 86400) * kS + kS / 4);
+  const auto zoned = parse_iso8601("2017-01-01T00:59:60+01:00");
+  ASSERT_TRUE(zoned);
+  EXPECT_TRUE(zoned->leap_second);
+  EXPECT_TRUE(parse_iso8601("2016-12-31 23:59:60")->leap_second);  // local: any hh:59:60
+  EXPECT_FALSE(parse_iso8601("2016-12-31T12:59:60Z"));               // not the end of a UTC day
+  EXPECT_FALSE(parse_iso8601("2016-12-31T23:58:60Z"));
+  EXPECT_FALSE(parse_iso8601("2016-12-31T23:59:61Z"));
+  EXPECT_FALSE(parse_iso8601("2016-12-31T23:59:59Z")->leap_second);
+  EXPECT_FALSE(parse_time_of_day_ns("23:59:60"));  // times of day: no leap seconds
+}
+
 TEST(TimeStamp, FormatIso8601ShowsOffsetAndShortestFraction) {
   const std::int64_t ns = kMay1At10Z + 250'000'000;
   EXPECT_EQ(format_iso8601(ns, 0), "2024-05-01T10:00:00.250Z");
@@ -240,7 +256,10 @@ TEST(TimeStamp, DetectsUnpaddedNanosecondsOnlyWhenDecimalsGoBack) {
                                                   {"16.500", "16.400", "16.600"},
                                                   {"16.9", "16.10", "16.05"},
                                                   {"16.79441101", "17.79441101", "18.7944110"},
-                                                  {"16.79441101", "abc", "16.179441101"}}) {
+                                                  {"16.79441101", "abc", "16.179441101"},
+                                                  // one row back at 10 Hz, decimals
+                                                  {"12.7", "12.8", "12.9", "12.85", "13.0",
+                                                   "13.1", "13.2", "13.3"}}) {
     EXPECT_FALSE(looks_like_unpadded_ns(cells)) << cells.front() << ", " << cells[1];
   }
 }
@@ -271,7 +290,7 @@ TimeColumn read(const std::vector<std::string_view>& time, TimeStampOptions opti
     lines.push_back(i + 2);
   }
   return read_time_column(cells, lines, options,
-                          {"f.csv", "Time", 1, !nsec.empty(), !date.empty()});
+                          {"f.csv", "Time", 1, !nsec.empty(), !date.empty(), {}, 0.0});
 }
 
 TEST(TimeStampReader, IsoWithZoneBecomesSecondsSinceTheFirstRow) {

@@ -105,11 +105,16 @@ bool is_valid_date(std::int64_t year, unsigned month, unsigned day) noexcept;
 struct ParsedStamp {
   std::int64_t ns = 0;
   std::optional<int> utc_offset_min;  ///< the cell's zone: 0 for "Z", 120 for "+02:00"
+  /// A leap second, "23:59:60.5Z": `ns` is then that of the next day's 00:00:00.5, the
+  /// instant POSIX time gives it; TimeStampReader counts the extra second in the time axis.
+  bool leap_second = false;
 };
 
 /// An ISO 8601 date-time: YYYY-MM-DD or YYYY/MM/DD, 'T' or one space, hh:mm[:ss[.f…]] (fraction
 /// digits beyond 9 truncated), then nothing, "Z", ±hh:mm, ±hhmm or ±hh (optionally after one
-/// space). nullopt if the text is not one or names an impossible date or time.
+/// space). A second 60 is a leap second: in the last minute of an hour without a zone, in the
+/// last minute of the UTC day with one. nullopt if the text is not one or names an impossible
+/// date or time.
 std::optional<ParsedStamp> parse_iso8601(std::string_view text) noexcept;
 /// Days since 1970-01-01 of "YYYY-MM-DD" or "YYYY/MM/DD"; nullopt if not a valid date.
 std::optional<std::int64_t> parse_date_days(std::string_view text) noexcept;
@@ -154,6 +159,13 @@ struct TimeColumnSpec {
   std::size_t field = 0;  ///< 0-based field index
   bool has_nsec = false;  ///< a time.nsec column is mapped (two-column form)
   bool has_date = false;  ///< a date column is mapped (dates of time-of-day stamps)
+  /// The time unit the header, the map or --unit declares ("ms"), empty when none, and its
+  /// length [s] (times the map's scale). Numbers in such a column are read as epoch time by
+  /// their size only when that epoch form counts the declared unit (10¹² ms is epoch-ms); any
+  /// other size is a count of the unit from any origin (an uptime counter in ms passes 10⁹,
+  /// the size of epoch seconds, after 11.6 days).
+  std::string declared_unit;
+  double declared_unit_s = 0.0;
 };
 
 /// What a file's time stamps turned out to be, for io::FileReport and io::InputReport.
@@ -215,6 +227,7 @@ class TimeStampReader {
                              std::string hint) const;
   core::InputLocation where(std::size_t line) const;
   void set_origin(std::int64_t ns, std::optional<int> utc_offset_min);
+  std::int64_t leap_seconds_ns(bool leap_second, std::size_t line);
 
   TimeStampOptions options_;
   TimeColumnSpec column_;
@@ -226,6 +239,8 @@ class TimeStampReader {
   std::int64_t origin_ns_ = 0;
   std::int64_t previous_tod_ns_ = -1;
   std::int64_t rollover_days_ = 0;
+  std::int64_t leap_ns_ = 0;  // leap seconds passed, added to later stamps
+  bool in_leap_second_ = false;
   double last_t_ = 0.0;
   std::size_t last_line_ = 0;
   std::size_t kept_ = 0;
