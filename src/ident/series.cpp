@@ -189,4 +189,9 @@ std::string fmt(double value) {
   return buffer;
 }
 
+double time_rounding_slack_s(double t_a, double t_b) {
+  return 16.0 * std::numeric_limits<double>::epsilon() *
+         std::max({1.0, std::abs(t_a), std::abs(t_b)});
+}
+
 }  // namespace dynpos::ident::detail

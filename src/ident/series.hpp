@@ -12,6 +12,12 @@ namespace dynpos::ident::detail {
 /// in pieces on `jobs` threads (0 = every core).
 void check_time_axis(std::span<const double> t, const std::string& name, unsigned jobs = 1);
 
+/// How far a window bound computed from a log's times [s] may stray from them by rounding
+/// alone: 16 ulps of the largest |time| (at least of 1 s). Relative to the time's size, not to
+/// 10⁻⁹ of it: a clock with an origin of 6.4·10¹⁰ s (seconds since year 1) gives 2.3·10⁻⁴ s,
+/// not 64 s, which would take the previous step's samples into a window.
+double time_rounding_slack_s(double t_a, double t_b);
+
 /// Throws core::InputError unless the two spans have the same length.
 void check_same_length(std::size_t n_t, std::size_t n_x, const std::string& name);
 

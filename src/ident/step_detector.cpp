@@ -401,7 +401,7 @@ Step step_from_window(std::span<const double> t, std::span<const double> u,
     throw core::InputError(where, "window " + window_text + " is empty or reversed",
                            "give from < to");
   }
-  const double slack = 1e-9 * std::max({1.0, std::abs(log_start), std::abs(log_end)});
+  const double slack = detail::time_rounding_slack_s(log_start, log_end);
   if (window.t_from < log_start - slack || window.t_to > log_end + slack) {
     throw core::InputError(where,
                            "window " + window_text + " is outside the log [" + fmt(log_start) +

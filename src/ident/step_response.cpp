@@ -48,7 +48,7 @@ StepResponse window_samples(std::span<const double> t, std::span<const double> y
                            "give a window that starts before the step and ends after it");
   }
   // A window from the same log may differ from its time stamps by rounding only.
-  const double slack = 1e-9 * std::max({1.0, std::abs(t.front()), std::abs(t.back())});
+  const double slack = detail::time_rounding_slack_s(t.front(), t.back());
   if (step.t_begin < t.front() - slack || step.t_end > t.back() + slack) {
     throw core::InputError(where,
                            "window [" + fmt(step.t_begin) + ", " + fmt(step.t_end) +

@@ -26,7 +26,7 @@ using ::testing::HasSubstr;
 // steps 0 → 1 at 10 s and 1 → 0.5 at 40 s, the output is the sum of both step responses.
 constexpr double kGain = 2.0, kTimeConstant = 3.0, kDeadTime = 1.0;
 
-std::string fopdt_csv() {
+std::string fopdt_csv(double origin_s = 0.0) {
   const auto response = [](double t, double t_step, double du) {
     const double s = t - t_step - kDeadTime;
     return s > 0.0 ? kGain * du * (1.0 - std::exp(-s / kTimeConstant)) : 0.0;
@@ -37,7 +37,8 @@ std::string fopdt_csv() {
     const double u = t < 10.0 ? 0.0 : (t < 40.0 ? 1.0 : 0.5);
     const double y = response(t, 10.0, 1.0) + response(t, 40.0, -0.5);
     // Sway-test shape for --derive total-speed: √(u² + v²) = y with u = 0.6·y, v = 0.8·y.
-    csv += fmt::format("{:.1f},{},{:.12g},{:.12g},{:.12g}\n", t, u, y, 0.6 * y, 0.8 * y);
+    csv += fmt::format("{:.1f},{},{:.12g},{:.12g},{:.12g}\n", origin_s + t, u, y, 0.6 * y,
+                       0.8 * y);
   }
   return csv;
 }
@@ -85,6 +86,27 @@ TEST(RunStep, LeastSquaresRecoversBothStepsOfAnAnalyticLog) {
   // y after the second step: K·0.5 = 1.
   ASSERT_TRUE(report.steps[1].y_after);
   EXPECT_NEAR(*report.steps[1].y_after, 1.0, 0.01);
+}
+
+// A clock with a huge origin (seconds since year 1, MATLAB datenum × 86400: 6.4·10¹⁰ s) gives
+// the fits of a clock from 0. Its stamps round to 7.6 µs, 8·10⁻⁵ of the 0.1 s spacing: K, T
+// and δ agree to 10⁻³ (they failed before, the windows widened by 64 s into the other step).
+TEST(RunStep, AHugeClockOriginGivesTheSameFits) {
+  const TempDir dir;
+  constexpr double kOrigin = 6.4e10;
+  const StepReport zero = run_step(request_for(dir.write("zero.csv", fopdt_csv())));
+  const StepReport huge = run_step(request_for(dir.write("huge.csv", fopdt_csv(kOrigin))));
+  ASSERT_EQ(huge.steps.size(), zero.steps.size());
+  for (std::size_t i = 0; i < huge.steps.size(); ++i) {
+    const StepFit& a = zero.steps[i];
+    const StepFit& b = huge.steps[i];
+    EXPECT_EQ(b.status, core::Status::kOk) << b.message;
+    EXPECT_NEAR(b.step.t_step - kOrigin, a.step.t_step, 1e-4);
+    ASSERT_TRUE(b.gain && b.time_constant_s && b.dead_time_s);
+    EXPECT_NEAR(*b.gain, *a.gain, 1e-3);
+    EXPECT_NEAR(*b.time_constant_s, *a.time_constant_s, 1e-3);
+    EXPECT_NEAR(*b.dead_time_s, *a.dead_time_s, 1e-3);
+  }
 }
 
 TEST(RunStep, SecondOrderMethodsReportTheirOwnDetails) {
