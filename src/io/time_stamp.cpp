@@ -352,46 +352,116 @@ std::string format_iso8601(std::int64_t ns, std::optional<int> utc_offset_min) {
   return out;
 }
 
-bool looks_like_unpadded_ns(std::span<const std::string_view> cells) {
-  // The bug's signature is systematic: read as unpadded nanoseconds the stamps never go back
-  // and run at the logger's own pace; read as decimals they go back where the fraction grows
-  // longer ("16.99…" then "16.1…"). One row out of order in a decimal log also goes back from a
-  // shorter to a longer fraction ("12.9" then "12.85"), but read as nanoseconds its rows then
-  // crowd into nanoseconds and jump by whole seconds: the median step tells the two apart.
-  std::optional<std::size_t> last_digits;
-  std::optional<double> last_decimal;
-  std::optional<std::int64_t> last_ns;
+namespace {
+
+// One cell read both ways: its fraction as decimals, and as integer nanoseconds.
+struct FractionReadings {
+  std::int64_t decimal_ns = 0;   // relative to the first cell
+  std::int64_t unpadded_ns = 0;  // relative to the first cell
+  std::size_t digits = 0;        // fraction digits
+};
+
+// The exporter bug's signature is systematic: read as unpadded nanoseconds the stamps never go
+// back and run at the logger's own pace; read as decimals they go back where the fraction
+// grows longer ("16.99…" then "16.1…"). One row out of order in a decimal log also goes back
+// from a shorter to a longer fraction ("12.9" then "12.85"), but read as nanoseconds its rows
+// then crowd into nanoseconds and jump by whole seconds: the median step tells the two apart.
+bool unpadded_evidence(std::span<const FractionReadings> rows) {
   std::size_t decimal_backs = 0;
-  std::vector<double> ns_steps_s, decimal_steps_s;
-  for (const std::string_view cell : cells) {
-    const std::string_view text = detail::trim(cell);
-    if (text.empty()) continue;
-    const std::optional<std::int64_t> ns = parse_unpadded_ns(text);
-    const std::optional<double> decimal = parse_double(text);
-    if (!ns || !decimal) return false;
-    const std::size_t digits = text.size() - text.find('.') - 1;
-    if (last_ns) {
-      if (*ns <= *last_ns) return false;  // back or repeated either way: not this bug
-      ns_steps_s.push_back(static_cast<double>(*ns - *last_ns) * 1e-9);
-      if (*decimal < *last_decimal) {
-        if (digits <= *last_digits) return false;  // back without a longer fraction
-        ++decimal_backs;
-      } else if (*decimal > *last_decimal) {
-        decimal_steps_s.push_back(*decimal - *last_decimal);
-      }
+  std::vector<double> ns_steps, decimal_steps;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const FractionReadings& a = rows[i - 1];
+    const FractionReadings& b = rows[i];
+    if (b.unpadded_ns <= a.unpadded_ns) return false;  // back or repeated: not this bug
+    ns_steps.push_back(static_cast<double>(b.unpadded_ns - a.unpadded_ns));
+    if (b.decimal_ns < a.decimal_ns) {
+      if (b.digits <= a.digits) return false;  // back without a longer fraction
+      ++decimal_backs;
+    } else if (b.decimal_ns > a.decimal_ns) {
+      decimal_steps.push_back(static_cast<double>(b.decimal_ns - a.decimal_ns));
     }
-    last_digits = digits;
-    last_ns = ns;
-    last_decimal = decimal;
   }
-  if (decimal_backs == 0 || decimal_steps_s.empty()) return false;
+  if (decimal_backs == 0 || decimal_steps.empty()) return false;
   const auto median = [](std::vector<double>& v) {
     std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
     return v[v.size() / 2];
   };
   // The logger's pace read both ways agrees within a factor of ten for the bug; for a decimal
   // log with rows out of order the nanosecond reading's median step is below a microsecond.
-  return median(ns_steps_s) >= 0.1 * median(decimal_steps_s);
+  return median(ns_steps) >= 0.1 * median(decimal_steps);
+}
+
+// An ISO 8601 stamp without its fraction, and the fraction's digits; nullopt without one.
+struct IsoFraction {
+  std::string whole;  // the stamp with ".digits" taken out
+  std::string_view digits;
+};
+std::optional<IsoFraction> split_iso_fraction(std::string_view text) {
+  const std::string_view s = detail::trim(text);
+  const std::size_t dot = s.find('.');
+  if (dot == std::string_view::npos) return std::nullopt;
+  std::size_t end = dot + 1;
+  while (end < s.size() && is_digit(s[end])) ++end;
+  if (end == dot + 1) return std::nullopt;
+  IsoFraction out;
+  out.whole = std::string(s.substr(0, dot)) + std::string(s.substr(end));
+  out.digits = s.substr(dot + 1, end - dot - 1);
+  return out;
+}
+
+}  // namespace
+
+bool looks_like_unpadded_ns(std::span<const std::string_view> cells) {
+  std::vector<FractionReadings> rows;
+  std::optional<double> first_decimal;
+  std::optional<std::int64_t> first_ns;
+  for (const std::string_view cell : cells) {
+    const std::string_view text = detail::trim(cell);
+    if (text.empty()) continue;
+    const std::optional<std::int64_t> ns = parse_unpadded_ns(text);
+    const std::optional<double> decimal = parse_double(text);
+    if (!ns || !decimal) return false;
+    if (!first_ns) {
+      first_ns = ns;
+      first_decimal = decimal;
+    }
+    // Decimal seconds to integer ns about the first cell: exact enough for the order and pace.
+    rows.push_back({std::llround((*decimal - *first_decimal) * 1e9), *ns - *first_ns,
+                    text.size() - text.find('.') - 1});
+  }
+  return unpadded_evidence(rows);
+}
+
+std::optional<ParsedStamp> parse_iso8601_unpadded_ns(std::string_view text) noexcept {
+  try {
+    const std::optional<IsoFraction> split = split_iso_fraction(text);
+    if (!split || split->digits.size() > 9) return std::nullopt;
+    std::optional<ParsedStamp> stamp = parse_iso8601(split->whole);
+    const std::optional<std::int64_t> nsec = parse_int(split->digits);
+    if (!stamp || !nsec || stamp->leap_second) return std::nullopt;
+    stamp->ns += *nsec;
+    return stamp;
+  } catch (...) {  // std::bad_alloc of the copy
+    return std::nullopt;
+  }
+}
+
+bool looks_like_unpadded_iso8601(std::span<const std::string_view> cells) {
+  std::vector<FractionReadings> rows;
+  std::optional<std::int64_t> first_decimal, first_ns;
+  for (const std::string_view cell : cells) {
+    if (detail::trim(cell).empty()) continue;
+    const std::optional<ParsedStamp> decimal = parse_iso8601(cell);
+    const std::optional<ParsedStamp> ns = parse_iso8601_unpadded_ns(cell);
+    if (!decimal || !ns) return false;
+    if (!first_ns) {
+      first_ns = ns->ns;
+      first_decimal = decimal->ns;
+    }
+    rows.push_back(
+        {decimal->ns - *first_decimal, ns->ns - *first_ns, split_iso_fraction(cell)->digits.size()});
+  }
+  return unpadded_evidence(rows);
 }
 
 std::optional<TimeStampFormat> detect_time_format(std::span<const std::string_view> cells) {
@@ -401,7 +471,9 @@ std::optional<TimeStampFormat> detect_time_format(std::span<const std::string_vi
     if (!first.empty()) break;
   }
   if (first.empty()) return std::nullopt;
-  if (parse_iso8601(first)) return TimeStampFormat{TimeFormat::kIso8601, false};
+  if (parse_iso8601(first)) {
+    return TimeStampFormat{TimeFormat::kIso8601, looks_like_unpadded_iso8601(cells)};
+  }
   if (parse_time_of_day_ns(first)) return TimeStampFormat{TimeFormat::kTimeOfDay, false};
   const std::optional<double> value = parse_double(first);
   if (!value) return std::nullopt;

@@ -117,6 +117,8 @@ void TimeStampReader::start(std::span<const std::string_view> first_cells,
     format_ = {forced, false};
     if (forced == TimeFormat::kSeconds || forced == TimeFormat::kEpochSeconds) {
       format_.unpadded_ns = looks_like_unpadded_ns(first_cells);
+    } else if (forced == TimeFormat::kIso8601) {
+      format_.unpadded_ns = looks_like_unpadded_iso8601(first_cells);
     }
   }
 
@@ -160,7 +162,7 @@ std::int64_t TimeStampReader::absolute_ns(const TimeCells& cells, std::size_t li
     }
     return ns;
   }
-  if (format_.unpadded_ns) {
+  if (format_.unpadded_ns && f != TimeFormat::kIso8601) {
     const std::optional<std::int64_t> ns = parse_unpadded_ns(cells.time);
     if (!ns) bad_cell(cells.time, line, "seconds.nanoseconds", kFormsHint);
     return *ns;
@@ -171,7 +173,9 @@ std::int64_t TimeStampReader::absolute_ns(const TimeCells& cells, std::size_t li
     return *ns;
   }
   if (f == TimeFormat::kIso8601) {
-    const std::optional<ParsedStamp> stamp = parse_iso8601(cells.time);
+    const std::optional<ParsedStamp> stamp = format_.unpadded_ns
+                                                 ? parse_iso8601_unpadded_ns(cells.time)
+                                                 : parse_iso8601(cells.time);
     if (!stamp) bad_cell(cells.time, line, "an ISO 8601 date-time", kFormsHint);
     if (!zoned_) {
       zoned_ = stamp->utc_offset_min.has_value();

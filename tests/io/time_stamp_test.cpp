@@ -379,6 +379,35 @@ TEST(TimeStampReader, UnpaddedNanosecondsAreReadAndNoted) {
   EXPECT_EQ(c.t_s[11], 17179441101 / 1e9);
 }
 
+// The same exporter bug in date-time stamps: "2025/04/28 11:39:17.78903511" is 17.078903511 s.
+TEST(TimeStampReader, UnpaddedNanosecondsInDateTimeStamps) {
+  std::vector<std::string> text;
+  for (int k = 0; k < 25; ++k) {
+    const std::int64_t ns = 17'078'903'511 + k * (kS / 10);
+    text.push_back(fmt::format("2025/04/28 11:39:{:02}.{}", ns / kS, ns % kS));
+  }
+  EXPECT_EQ(text[0], "2025/04/28 11:39:17.78903511");
+  const std::vector<std::string_view> cells(text.begin(), text.end());
+  const TimeColumn c = read(cells);
+  EXPECT_EQ(c.info.format, "iso8601 (unpadded nanoseconds)");
+  EXPECT_EQ(c.info.origin, "2025-04-28T11:39:17.078903511");
+  ASSERT_EQ(c.t_s.size(), 25u);
+  for (std::size_t k = 0; k < c.t_s.size(); ++k) {
+    EXPECT_EQ(c.t_s[k], static_cast<double>(k * (kS / 10)) / 1e9) << k;
+  }
+  TimeStampOptions forced;
+  forced.format = TimeFormat::kIso8601;
+  EXPECT_EQ(read(cells, forced).info.format, "iso8601 (unpadded nanoseconds)");
+
+  // Decimals of varying length, one row back: a row out of order, not the bug.
+  const std::vector<std::string_view> one_back = {
+      "2025/04/28 11:39:17.7", "2025/04/28 11:39:17.8", "2025/04/28 11:39:17.9",
+      "2025/04/28 11:39:17.85", "2025/04/28 11:39:18.0", "2025/04/28 11:39:18.1"};
+  EXPECT_FALSE(looks_like_unpadded_iso8601(one_back));
+  EXPECT_THAT(input_error_message([&] { read(one_back); }),
+              ContainsRegex("f\\.csv:5:2 \\(Time\\): time '2025/04/28 11:39:17\\.85' .* goes back"));
+}
+
 TEST(TimeStampReader, OrderPolicies) {
   const std::vector<std::string_view> cells = {"0", "0.1", "0.1", "0.05", "0.2"};
   EXPECT_THAT(

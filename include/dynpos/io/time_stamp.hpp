@@ -82,7 +82,8 @@ struct TimeStampOptions {
 /// A detected or forced form.
 struct TimeStampFormat {
   TimeFormat format = TimeFormat::kSeconds;
-  /// seconds/epoch-s/sec-nsec only: the fraction is integer nanoseconds without zero padding.
+  /// seconds, epoch-s and iso8601 only: the fraction is integer nanoseconds without zero
+  /// padding.
   bool unpadded_ns = false;
 };
 
@@ -137,9 +138,16 @@ std::string format_iso8601(std::int64_t ns, std::optional<int> utc_offset_min);
 /// 1e18…1e19 epoch-ns, anything else seconds; then the unpadded-nanosecond check for seconds
 /// and epoch-s. nullopt if the first cell is none of these.
 std::optional<TimeStampFormat> detect_time_format(std::span<const std::string_view> cells);
-/// True when the cells are "S.N" with varying fraction lengths, read as decimals they go back
-/// somewhere and read as unpadded nanoseconds they never do.
+/// True on systematic evidence that the cells are "S.N" with N integer nanoseconds without
+/// leading zeros: read so they never go back; read as decimals they go back, only where the
+/// fraction grows longer; and the median step of the nanosecond reading is at least a tenth of
+/// the decimal reading's (one row out of order among decimals fails this).
 bool looks_like_unpadded_ns(std::span<const std::string_view> cells);
+/// The same evidence for ISO 8601 stamps whose fraction is unpadded nanoseconds
+/// ("2025/04/28 11:39:17.78903511" is 17.078903511 s).
+bool looks_like_unpadded_iso8601(std::span<const std::string_view> cells);
+/// parse_iso8601() with the fraction read as integer nanoseconds (at most 9 digits).
+std::optional<ParsedStamp> parse_iso8601_unpadded_ns(std::string_view text) noexcept;
 
 /// One row's time cells: the time column (time.sec for sec-nsec), and the time.nsec and date
 /// columns when mapped.
