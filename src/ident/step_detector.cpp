@@ -246,12 +246,18 @@ double line_time(const detail::LineFit& line, double level) { return (level - li
 
 // The step between plateaus p0 and p1, timed from the levels next to the transition.
 Step step_between(const detail::Plateau& p0, const detail::Plateau& p1, std::span<const double> tv,
-                  std::span<const double> uv, double h, StepTiming timing) {
+                  std::span<const double> uv, const StepThreshold& scale, StepTiming timing) {
+  const double h = scale.band;
   const double l0 = p0.end_level;
   const double l1 = p1.start_level;
   // Last sample in the band around the old level, first in the band around the new one.
   std::size_t i_old = p1.begin - 1;
   while (i_old > p0.begin && std::abs(uv[i_old] - l0) > h) --i_old;
+  // Last sample still at the old level (within 3σ̂ of it: exactly on it for a clean order).
+  std::size_t i_at_old = i_old;
+  while (i_at_old > p0.begin && std::abs(uv[i_at_old] - l0) > 3.0 * scale.noise_sigma) {
+    --i_at_old;
+  }
   std::size_t i_new = i_old + 1;
   while (i_new < p1.end && std::abs(uv[i_new] - l1) > h) ++i_new;
 
@@ -279,7 +285,14 @@ Step step_between(const detail::Plateau& p0, const detail::Plateau& p1, std::spa
   if (xs.size() >= needed) {
     const detail::LineFit line = detail::fit_line(xs, ys);
     if (line.b * jump > 0.0) {
-      step.t_step = std::clamp(line_time(line, l0), step.t_begin, tv[i_old + 1]);
+      // A command's ramp starts after its last sample at the old level, however its line
+      // extends (less the time the ramp takes to cross 3σ̂ of noise, which a sample on it may
+      // still be within); a trigger's onset may be earlier (see the file comment).
+      const double earliest =
+          trigger ? step.t_begin
+                  : std::max(step.t_begin,
+                             tv[i_at_old] - 3.0 * scale.noise_sigma / std::abs(line.b));
+      step.t_step = std::clamp(line_time(line, l0), earliest, tv[i_old + 1]);
       if (!trigger) {
         step.t_ramp_end =
             std::clamp(line_time(line, l1), std::max(tv[i_new - 1], step.t_step), tv[p1.end]);
@@ -319,14 +332,27 @@ StepDetection detect_in(std::span<const double> t, const ValidSamples& v,
                                    : "no step found: the input holds one level only";
     return out;
   }
+  std::size_t below_threshold = 0;
   for (std::size_t k = 0; k + 1 < plateaus.size(); ++k) {
-    Step step = step_between(plateaus[k], plateaus[k + 1], tv, uv, h, options.timing);
+    Step step = step_between(plateaus[k], plateaus[k + 1], tv, uv, scale, options.timing);
+    // The levels next to the transition changed by the threshold, but the levels the step
+    // reports (the medians before and after it) did not: a wiggle on a drift, no step.
+    if (std::abs(*step.u_after - *step.u_before) < out.threshold) {
+      ++below_threshold;
+      continue;
+    }
     // The plateau may begin on the last ±2h of the previous ramp; the window starts after it,
     // but never after this step (a slow drift can end the previous ramp late).
     if (!out.steps.empty()) {
       step.t_begin = std::min(std::max(step.t_begin, out.steps.back().t_ramp_end), step.t_step);
     }
     out.steps.push_back(step);
+  }
+  if (out.steps.empty()) {
+    out.message = "no step found: the " + std::to_string(below_threshold) +
+                  " level change(s) found differ by less than the step threshold " +
+                  fmt(out.threshold) + " between the levels before and after them";
+    return out;
   }
   // Each window runs to the last log sample before the next step, the last one to the end.
   for (std::size_t k = 0; k < out.steps.size(); ++k) {

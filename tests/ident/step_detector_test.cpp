@@ -324,6 +324,53 @@ TEST(StepDetector, RampOverFourSamplesIsOneStepTimedAtItsStart) {
   EXPECT_EQ(*found.steps[0].u_after, 30.0);
 }
 
+// An order that ramps fast and slows to its new level (a first-order-like ramp): the line
+// through its 10–90 % samples reaches back before the ramp's start. A command's step time is
+// never before its last sample at the old level (600.0 s; the ramp starts at 600.05 s). A
+// 20 min log at 10 Hz: the ramp's 100 samples are among the 2 % of differences the noise
+// estimate leaves out, so σ̂ is the held order's, 0, and the bound is exact.
+TEST(StepDetector, ACurvedRampIsNeverTimedBeforeTheLastSampleAtTheOldLevel) {
+  const std::vector<double> t = time_axis(0.0, 0.1, 12001);
+  const std::vector<double> u = sample(t, [](double x) {
+    const double s = std::clamp((x - 600.05) / 10.0, 0.0, 1.0);
+    return 20.0 * (1.0 - (1.0 - s) * (1.0 - s));
+  });
+  const StepDetection found = detect_steps(t, u);
+  ASSERT_EQ(found.steps.size(), 1u);
+  EXPECT_EQ(found.noise_sigma, 0.0);
+  EXPECT_GE(found.steps[0].t_step, 600.0);
+  EXPECT_LE(found.steps[0].t_step, 600.1);
+}
+
+// Every reported step changes the input by at least the threshold between the levels it
+// reports: random programmes of holds, ramps, drifts and jumps of every size around the
+// threshold, with noise.
+TEST(StepDetector, EveryStepReportedChangesTheLevelByTheThreshold) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const std::vector<double> t = time_axis(0.0, 0.5, 4001);
+  std::size_t steps = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<double> u(t.size());
+    double level = 0.0, rate = 0.0;
+    std::normal_distribution<double> noise(0.0, 0.02 * unit(rng));
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      if (unit(rng) < 0.01) level += 4.0 * (unit(rng) - 0.5);    // jumps of up to ±2
+      if (unit(rng) < 0.005) rate = 0.02 * (unit(rng) - 0.5);    // drifts of up to 0.01/s
+      level += rate * 0.5;
+      u[i] = level + noise(rng);
+    }
+    StepDetectorOptions options;
+    options.min_step = 1.0;
+    const StepDetection found = detect_steps(t, u, options);
+    for (const Step& step : found.steps) {
+      ++steps;
+      EXPECT_GE(std::abs(*step.delta_u()), found.threshold) << trial << " at " << step.t_step;
+    }
+  }
+  EXPECT_GT(steps, 200u);  // the programmes do have steps
+}
+
 TEST(StepDetector, ReSettlingAfterAStepIsPartOfIt) {
   // The order is set to 33.3°, held for 2, 5 or 8 s, and re-settled to 30.7° (a change back
   // of 2.6°, above the 1.7° threshold of this log but 8 % of the step): one step to 30.7°.

@@ -24,6 +24,9 @@
 /// and still finds 5 % lever steps. Band: h = max(noise_factor·σ̂, threshold/4), or `band` when
 /// given.
 ///
+/// A transition whose reported levels (the medians below) differ by less than the threshold is
+/// no step, though the levels next to it did (a wiggle on a drift).
+///
 /// Levels: neighbouring plateaus are one level (a spike, a gap, wiggles or a slow drift split
 /// them) unless the input changes by at least the threshold between the end of the one and the
 /// start of the next (medians over min_plateau_s/2): comparing the levels next to the transition,
@@ -37,8 +40,10 @@
 /// Timing: the plateau before the step has level L₀, the one after L₁. For a command
 /// (StepTiming::kCommand) the samples of the transition between 10 % and 90 % of L₁ − L₀ are
 /// fitted by a straight line, and its crossings of L₀ and L₁ give the step time (start of the
-/// ramp) and the end of the ramp; with fewer than 3 such samples (an ideal step) the step time
-/// is the first sample that left the band around L₀. A ramp is one step, timed at its start: a
+/// ramp) and the end of the ramp, the start never before the last sample at L₀ (within 3σ̂,
+/// less the time the ramp takes to cross 3σ̂: a ramp that starts fast and slows, whose line
+/// reaches back before its start, is timed at that sample); with fewer than 3 such samples (an
+/// ideal step) the step time is the first sample that left the band around L₀. A ramp is one step, timed at its start: a
 /// FOPDT fitted from there sees the ramp's delay to its mid-point, R/2, in the dead time, K and
 /// T unchanged to first order in R/T. For a trigger (StepTiming::kTrigger, e.g.
 /// power feedback, which the thesis used to time steps when no setpoint was logged, section
