@@ -289,9 +289,9 @@ Step step_between(const detail::Plateau& p0, const detail::Plateau& p1, std::spa
       // extends (less the time the ramp takes to cross 3σ̂ of noise, which a sample on it may
       // still be within); a trigger's onset may be earlier (see the file comment).
       const double earliest =
-          trigger ? step.t_begin
-                  : std::max(step.t_begin,
-                             tv[i_at_old] - 3.0 * scale.noise_sigma / std::abs(line.b));
+          trigger
+              ? step.t_begin
+              : std::max(step.t_begin, tv[i_at_old] - 3.0 * scale.noise_sigma / std::abs(line.b));
       step.t_step = std::clamp(line_time(line, l0), earliest, tv[i_old + 1]);
       if (!trigger) {
         step.t_ramp_end =

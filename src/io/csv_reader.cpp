@@ -830,9 +830,9 @@ CsvLog read_csv_log(const std::filesystem::path& path, const ColumnMap& map,
   std::stable_sort(plans.begin(), plans.end(),
                    [](const ColumnPlan& a, const ColumnPlan& b) { return a.field < b.field; });
 
-  TimeStampReader stamps(map.time(), {reader.path(), time.time.header, time.time.field,
-                                      time.nsec.has_value(), time.date.has_value(),
-                                      declared_time_unit, declared_time_unit_s});
+  TimeStampReader stamps(map.time(),
+                         {reader.path(), time.time.header, time.time.field, time.nsec.has_value(),
+                          time.date.has_value(), declared_time_unit, declared_time_unit_s});
   RowStream rows = stream_rows(reader, header, format, time, plans, options, stamps,
                                time_unit_error ? &*time_unit_error : nullptr);
   CsvLog out{core::Log(std::move(rows.time_s), options.jobs), stamps.info(), *rows.first_t,

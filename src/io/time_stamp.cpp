@@ -249,8 +249,8 @@ std::optional<ParsedStamp> parse_iso8601(std::string_view text) noexcept {
   out.ns = days * kNsPerDay + clock_ns -
            static_cast<std::int64_t>(out.utc_offset_min.value_or(0)) * 60 * kNsPerS;
   // A zoned leap second is the last second of a UTC day (23:59:60Z, 01:59:60+02:00).
-  if (out.leap_second && out.utc_offset_min && (out.ns % kNsPerDay + kNsPerDay) % kNsPerDay >=
-                                                   kNsPerS) {
+  if (out.leap_second && out.utc_offset_min &&
+      (out.ns % kNsPerDay + kNsPerDay) % kNsPerDay >= kNsPerS) {
     return std::nullopt;
   }
   return out;
@@ -458,8 +458,8 @@ bool looks_like_unpadded_iso8601(std::span<const std::string_view> cells) {
       first_ns = ns->ns;
       first_decimal = decimal->ns;
     }
-    rows.push_back(
-        {decimal->ns - *first_decimal, ns->ns - *first_ns, split_iso_fraction(cell)->digits.size()});
+    rows.push_back({decimal->ns - *first_decimal, ns->ns - *first_ns,
+                    split_iso_fraction(cell)->digits.size()});
   }
   return unpadded_evidence(rows);
 }

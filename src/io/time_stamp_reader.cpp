@@ -173,9 +173,8 @@ std::int64_t TimeStampReader::absolute_ns(const TimeCells& cells, std::size_t li
     return *ns;
   }
   if (f == TimeFormat::kIso8601) {
-    const std::optional<ParsedStamp> stamp = format_.unpadded_ns
-                                                 ? parse_iso8601_unpadded_ns(cells.time)
-                                                 : parse_iso8601(cells.time);
+    const std::optional<ParsedStamp> stamp =
+        format_.unpadded_ns ? parse_iso8601_unpadded_ns(cells.time) : parse_iso8601(cells.time);
     if (!stamp) bad_cell(cells.time, line, "an ISO 8601 date-time", kFormsHint);
     if (!zoned_) {
       zoned_ = stamp->utc_offset_min.has_value();

@@ -37,8 +37,7 @@ std::string fopdt_csv(double origin_s = 0.0) {
     const double u = t < 10.0 ? 0.0 : (t < 40.0 ? 1.0 : 0.5);
     const double y = response(t, 10.0, 1.0) + response(t, 40.0, -0.5);
     // Sway-test shape for --derive total-speed: √(u² + v²) = y with u = 0.6·y, v = 0.8·y.
-    csv += fmt::format("{:.1f},{},{:.12g},{:.12g},{:.12g}\n", origin_s + t, u, y, 0.6 * y,
-                       0.8 * y);
+    csv += fmt::format("{:.1f},{},{:.12g},{:.12g},{:.12g}\n", origin_s + t, u, y, 0.6 * y, 0.8 * y);
   }
   return csv;
 }

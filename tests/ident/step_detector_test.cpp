@@ -355,8 +355,8 @@ TEST(StepDetector, EveryStepReportedChangesTheLevelByTheThreshold) {
     double level = 0.0, rate = 0.0;
     std::normal_distribution<double> noise(0.0, 0.02 * unit(rng));
     for (std::size_t i = 0; i < t.size(); ++i) {
-      if (unit(rng) < 0.01) level += 4.0 * (unit(rng) - 0.5);    // jumps of up to ±2
-      if (unit(rng) < 0.005) rate = 0.02 * (unit(rng) - 0.5);    // drifts of up to 0.01/s
+      if (unit(rng) < 0.01) level += 4.0 * (unit(rng) - 0.5);  // jumps of up to ±2
+      if (unit(rng) < 0.005) rate = 0.02 * (unit(rng) - 0.5);  // drifts of up to 0.01/s
       level += rate * 0.5;
       u[i] = level + noise(rng);
     }

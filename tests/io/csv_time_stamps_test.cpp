@@ -204,8 +204,8 @@ TEST(CsvTimeStamps, ADeclaredUnitIsNotOverriddenByTheEpochMagnitudes) {
     std::string text = fmt::format("time [{}],heading\n", c.unit);
     for (int k = 0; k < 5; ++k) text += fmt::format("{},{}\n", c.first + k * c.step, k);
     const auto path = dir.write(fmt::format("uptime_{}.csv", c.unit), text);
-    const CsvLog r = read_csv_log(path, map_of({{"time", fmt::format("time [{}]", c.unit).c_str()},
-                                                {"heading", "heading"}}));
+    const CsvLog r = read_csv_log(
+        path, map_of({{"time", fmt::format("time [{}]", c.unit).c_str()}, {"heading", "heading"}}));
     EXPECT_EQ(r.time.format, "seconds") << c.unit;
     ASSERT_EQ(r.log.size(), 5u);
     EXPECT_NEAR(r.log.time()[4] - r.log.time()[0], 0.4, 1e-9) << c.unit;
@@ -213,8 +213,8 @@ TEST(CsvTimeStamps, ADeclaredUnitIsNotOverriddenByTheEpochMagnitudes) {
     EXPECT_THAT(r.time.notes[0], ContainsRegex("declares its unit"));
 
     // The same unit declared by --unit (the map) instead of the header.
-    const auto bare = dir.write(fmt::format("bare_{}.csv", c.unit),
-                                "time" + text.substr(text.find(',')));
+    const auto bare =
+        dir.write(fmt::format("bare_{}.csv", c.unit), "time" + text.substr(text.find(',')));
     ColumnMap map = map_of({{"time", "time"}, {"heading", "heading"}});
     map.set_unit("time", c.unit);
     EXPECT_EQ(read_csv_log(bare, map).time.format, "seconds") << c.unit;

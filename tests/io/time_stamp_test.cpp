@@ -171,7 +171,7 @@ TEST(TimeStamp, LeapSecondsOnlyAtTheEndOfAUtcDayOrAnHourWithoutZone) {
   ASSERT_TRUE(zoned);
   EXPECT_TRUE(zoned->leap_second);
   EXPECT_TRUE(parse_iso8601("2016-12-31 23:59:60")->leap_second);  // local: any hh:59:60
-  EXPECT_FALSE(parse_iso8601("2016-12-31T12:59:60Z"));               // not the end of a UTC day
+  EXPECT_FALSE(parse_iso8601("2016-12-31T12:59:60Z"));             // not the end of a UTC day
   EXPECT_FALSE(parse_iso8601("2016-12-31T23:58:60Z"));
   EXPECT_FALSE(parse_iso8601("2016-12-31T23:59:61Z"));
   EXPECT_FALSE(parse_iso8601("2016-12-31T23:59:59Z")->leap_second);
@@ -251,15 +251,14 @@ TEST(TimeStamp, DetectsUnpaddedNanosecondsOnlyWhenDecimalsGoBack) {
 
   // Negative cases: true decimals with trailing zeros dropped (lengths vary, never back); fixed
   // lengths going back (a real disorder); both readings going back; one row per second.
-  for (const std::vector<std::string_view>& cells :
-       std::vector<std::vector<std::string_view>>{{"16.5", "16.55", "16.6", "16.75"},
-                                                  {"16.500", "16.400", "16.600"},
-                                                  {"16.9", "16.10", "16.05"},
-                                                  {"16.79441101", "17.79441101", "18.7944110"},
-                                                  {"16.79441101", "abc", "16.179441101"},
-                                                  // one row back at 10 Hz, decimals
-                                                  {"12.7", "12.8", "12.9", "12.85", "13.0",
-                                                   "13.1", "13.2", "13.3"}}) {
+  for (const std::vector<std::string_view>& cells : std::vector<std::vector<std::string_view>>{
+           {"16.5", "16.55", "16.6", "16.75"},
+           {"16.500", "16.400", "16.600"},
+           {"16.9", "16.10", "16.05"},
+           {"16.79441101", "17.79441101", "18.7944110"},
+           {"16.79441101", "abc", "16.179441101"},
+           // one row back at 10 Hz, decimals
+           {"12.7", "12.8", "12.9", "12.85", "13.0", "13.1", "13.2", "13.3"}}) {
     EXPECT_FALSE(looks_like_unpadded_ns(cells)) << cells.front() << ", " << cells[1];
   }
 }
@@ -400,12 +399,13 @@ TEST(TimeStampReader, UnpaddedNanosecondsInDateTimeStamps) {
   EXPECT_EQ(read(cells, forced).info.format, "iso8601 (unpadded nanoseconds)");
 
   // Decimals of varying length, one row back: a row out of order, not the bug.
-  const std::vector<std::string_view> one_back = {
-      "2025/04/28 11:39:17.7", "2025/04/28 11:39:17.8", "2025/04/28 11:39:17.9",
-      "2025/04/28 11:39:17.85", "2025/04/28 11:39:18.0", "2025/04/28 11:39:18.1"};
+  const std::vector<std::string_view> one_back = {"2025/04/28 11:39:17.7", "2025/04/28 11:39:17.8",
+                                                  "2025/04/28 11:39:17.9", "2025/04/28 11:39:17.85",
+                                                  "2025/04/28 11:39:18.0", "2025/04/28 11:39:18.1"};
   EXPECT_FALSE(looks_like_unpadded_iso8601(one_back));
-  EXPECT_THAT(input_error_message([&] { read(one_back); }),
-              ContainsRegex("f\\.csv:5:2 \\(Time\\): time '2025/04/28 11:39:17\\.85' .* goes back"));
+  EXPECT_THAT(
+      input_error_message([&] { read(one_back); }),
+      ContainsRegex("f\\.csv:5:2 \\(Time\\): time '2025/04/28 11:39:17\\.85' .* goes back"));
 }
 
 TEST(TimeStampReader, OrderPolicies) {

@@ -43,10 +43,10 @@
 /// ramp) and the end of the ramp, the start never before the last sample at L₀ (within 3σ̂,
 /// less the time the ramp takes to cross 3σ̂: a ramp that starts fast and slows, whose line
 /// reaches back before its start, is timed at that sample); with fewer than 3 such samples (an
-/// ideal step) the step time is the first sample that left the band around L₀. A ramp is one step, timed at its start: a
-/// FOPDT fitted from there sees the ramp's delay to its mid-point, R/2, in the dead time, K and
-/// T unchanged to first order in R/T. For a trigger (StepTiming::kTrigger, e.g.
-/// power feedback, which the thesis used to time steps when no setpoint was logged, section
+/// ideal step) the step time is the first sample that left the band around L₀. A ramp is one step,
+/// timed at its start: a FOPDT fitted from there sees the ramp's delay to its mid-point, R/2, in
+/// the dead time, K and T unchanged to first order in R/T. For a trigger (StepTiming::kTrigger,
+/// e.g. power feedback, which the thesis used to time steps when no setpoint was logged, section
 /// 3.5.4) the onset of change is wanted: the line is fitted to the transition samples between
 /// leaving the band and 30 % of the change, and extended back to L₀; this is exact for a
 /// straight onset and a little early (never late) for a concave one such as a first-order
