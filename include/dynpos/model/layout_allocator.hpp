@@ -1,0 +1,114 @@
+#pragma once
+/// \file
+/// Thrust allocation for any layout of units (thruster_unit.hpp): from a desired generalised
+/// force τ_d = (X, Y, N) [N, N, N·m] in BODY to each unit's force.
+///
+/// Variables, each over its unit's rated thrust s (x = f/s): an azimuth's force (F_x, F_y), a
+/// tunnel's side force, a propeller's thrust, a propeller-with-rudder's thrust T and rudder
+/// side force Y (over κ·s + c). τ = B·S·x with B's columns (1, 0, −y) for a surge force and
+/// (0, 1, x) for a side force at (x, y) (2.2). The allocation solves the convex programme
+///
+///     min ρ‖Q^{½}D(B·S·x − τ_d)‖² + xᵀWx   s.t. each unit's region,
+///
+/// D the normalisation of (X, Y, N) by the force and moment scales, Q the priority, W the unit
+/// weights, ρ = 10⁸: an attainable demand is met to 10⁻⁸ of the scales (the weighted effort
+/// over ρ), and an unattainable one leaves the least priority-weighted unmet part (to the same
+/// order). Regions:
+///   - azimuth: the disc of radius s as an inscribed polygon of `polygon_sides` sides (the
+///     thrust between two corners is short of s by at most 1 − cos(π/sides), 0.48 % at 32), cut
+///     to one allowed arc of directions (allowed_arcs(): arcs of ≤ 180°, convex wedges);
+///   - tunnel and propeller: [−reverse, ahead];
+///   - propeller with rudder: T ∈ [0, ahead] with |Y| ≤ κ·T + c, or T ∈ [−reverse, 0] with
+///     |Y| ≤ c (the rudder cone is convex within each sign of T, not across it).
+/// The union of an azimuth's arcs and of a rudder's two signs is not convex. The allocation
+/// first solves the convex relaxation (each azimuth's whole polygon, each rudder's T over both
+/// signs with |Y| ≤ κ·ahead + c): when every unit's force lies in its true region, that is the
+/// optimum. Otherwise it solves in the region each unit's relaxed force lies in or is nearest
+/// to, and when that leaves the demand unmet, in every combination of regions (at most
+/// `max_region_combinations`), keeping the least priority-weighted unmet part. An
+/// attainable demand is therefore met (up to the polygon), and no azimuth ever points into a
+/// forbidden sector. Each convex programme is solved by the primal active-set method from the
+/// origin, which every region contains.
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "dynpos/model/thruster_unit.hpp"
+
+namespace dynpos::model {
+
+/// Options of the allocation for a layout.
+struct LayoutAllocationOptions {
+  /// Priority Q on the normalised (X, Y, N) residual [-]: heading first, then sway, then surge,
+  /// as in DP and ThrustAllocationOptions.
+  Eigen::Vector3d priority{1.0, 3.0, 10.0};
+  /// Normalisation of τ: force scale [N] and moment scale [N·m], > 0.
+  double force_scale = 1.0e5;
+  double moment_scale = 1.3e6;
+  /// Sides of the polygon inscribed in an azimuth's disc, 8…256.
+  int polygon_sides = 32;
+  /// Cost of a rudder's side force relative to its propeller's thrust [-], > 0: lift costs
+  /// only drag.
+  double rudder_weight = 0.3;
+  /// Largest number of region combinations tried for a demand the first guess misses, ≥ 1.
+  int max_region_combinations = 256;
+
+  /// Throws core::InputError naming the first option out of range.
+  void validate() const;
+};
+
+/// One unit's command.
+struct UnitCommand {
+  Eigen::Vector2d force_b = Eigen::Vector2d::Zero();  ///< (F_x, F_y) in BODY [N], rudder too
+  /// Azimuth: thrust magnitude ≥ 0; tunnel: side force (+ starboard); propeller (with rudder):
+  /// thrust (+ ahead) [N].
+  double thrust_N = 0.0;
+  /// Azimuth: thrust direction α [rad] in [0, 2π) (0 for no thrust); else 0.
+  double angle_rad = 0.0;
+  /// Propeller with rudder: the rudder's side force [N]; else 0.
+  double rudder_force_N = 0.0;
+};
+
+/// Outcome of one allocation.
+struct LayoutAllocation {
+  bool met = true;  ///< every residual within 10⁻⁶ of its scale
+  std::vector<UnitCommand> units;
+  Eigen::Vector3d tau_achieved_b = Eigen::Vector3d::Zero();
+  Eigen::Vector3d tau_unmet_b = Eigen::Vector3d::Zero();  ///< τ_d − τ_achieved
+  int programmes = 0;                                     ///< convex programmes solved
+  int iterations = 0;  ///< active-set iterations over all of them
+};
+
+/// The allocator of one layout: const, deterministic, never throws after construction.
+class LayoutAllocator {
+ public:
+  /// Throws core::InputError naming the first bad unit or option (or two units of one name).
+  explicit LayoutAllocator(std::vector<ThrusterUnit> units, LayoutAllocationOptions options = {});
+
+  /// Allocates τ_d (see the file comment); `capacity` per unit in [0, 1] scales its rated thrust
+  /// (0: failed), empty for all 1. A τ_d that is not finite gives zero commands, not met.
+  LayoutAllocation allocate(const Eigen::Vector3d& tau_d_b,
+                            const std::vector<double>& capacity = {}) const;
+
+  const std::vector<ThrusterUnit>& units() const noexcept { return units_; }
+  const LayoutAllocationOptions& options() const noexcept { return options_; }
+
+ private:
+  struct Setup;  // the programme of one region combination
+  Setup setup(const Eigen::Vector3d& tau_d_b, const std::vector<double>& capacity,
+              const std::vector<int>& regions) const;
+  // One region combination; least_effort: when unmet, the least effort for what is achieved.
+  LayoutAllocation solve(const Setup& s, const Eigen::Vector3d& tau_d_b,
+                         bool least_effort = false) const;
+  void project(const Setup& s, Eigen::VectorXd& x) const;  // each unit into its region
+  std::vector<int> nearest_regions(const LayoutAllocation& relaxed) const;
+  int region_count(std::size_t unit) const;
+
+  std::vector<ThrusterUnit> units_;
+  LayoutAllocationOptions options_;
+  std::vector<std::vector<AllowedArc>> arcs_;  // per unit (azimuths), else empty
+};
+
+}  // namespace dynpos::model

@@ -1,0 +1,34 @@
+#pragma once
+// A small dense convex quadratic programme, solved by the primal active-set method (Nocedal &
+// Wright, Numerical Optimization, 2nd ed., algorithm 16.3) from a feasible start (private).
+//
+//     min ½xᵀHx + cᵀx   s.t.  Gx ≤ h,   H symmetric positive definite.
+//
+// Each iteration solves the equality-constrained step on the working set W by the null-space
+// method (a QR of G_Wᵀ), so the working constraints hold to round-off whatever the conditioning
+// of H; a blocking constraint added on the way is never a combination of W's (G_W p = 0 while
+// G_i p > 0), so G_W keeps full rank. For the few tens of variables and a hundred constraints
+// of a thrust allocation.
+
+#include <Eigen/Dense>
+#include <vector>
+
+namespace dynpos::model::detail {
+
+struct ConvexQp {
+  Eigen::MatrixXd H;
+  Eigen::VectorXd c;
+  Eigen::MatrixXd G;
+  Eigen::VectorXd h;
+};
+
+struct QpSolution {
+  Eigen::VectorXd x;
+  bool converged = false;  // false: the iteration cap ended it; x is feasible all the same
+  int iterations = 0;
+};
+
+// Solves `qp` from x0, which must satisfy Gx0 ≤ h (within 1e-9 of each |h_i| + 1).
+QpSolution solve_convex_qp(const ConvexQp& qp, const Eigen::VectorXd& x0);
+
+}  // namespace dynpos::model::detail

@@ -1,0 +1,454 @@
+#include "dynpos/model/layout_allocator.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "convex_qp.hpp"
+#include "dynpos/core/error.hpp"
+
+namespace dynpos::model {
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+constexpr double kDemandWeight = 1e8;   // ρ: the demand over the effort
+constexpr double kMetTolerance = 1e-6;  // of the force and moment scales
+constexpr int kRelaxed = -1;            // region code: the unit's convex hull
+
+int variable_count(UnitType type) {
+  return type == UnitType::kAzimuth || type == UnitType::kPropellerRudder ? 2 : 1;
+}
+
+double wrap_2pi(double a) { return std::fmod(std::fmod(a, kTwoPi) + kTwoPi, kTwoPi); }
+
+// Angle from arc start `from` to `a`, in [0, 2π).
+double angle_after(double a, double from) { return wrap_2pi(a - from); }
+
+// One row a·x ≤ b on the variables at `offset`.
+struct Rows {
+  std::vector<Eigen::Index> column;
+  std::vector<std::pair<Eigen::Vector2d, double>> rows;  // (coefficients of 1 or 2 vars, bound)
+  std::vector<int> width;
+  void add(Eigen::Index offset, int w, Eigen::Vector2d a, double b) {
+    column.push_back(offset);
+    width.push_back(w);
+    rows.emplace_back(a, b);
+  }
+};
+
+}  // namespace
+
+void LayoutAllocationOptions::validate() const {
+  for (int i = 0; i < 3; ++i) {
+    if (!std::isfinite(priority(i)) || priority(i) <= 0.0) {
+      throw core::InputError::for_option("allocation.priority",
+                                         "each priority must be finite and > 0");
+    }
+  }
+  if (!std::isfinite(force_scale) || force_scale <= 0.0) {
+    throw core::InputError::for_option("allocation.force_scale", "must be finite and > 0");
+  }
+  if (!std::isfinite(moment_scale) || moment_scale <= 0.0) {
+    throw core::InputError::for_option("allocation.moment_scale", "must be finite and > 0");
+  }
+  if (polygon_sides < 8 || polygon_sides > 256) {
+    throw core::InputError::for_option("allocation.polygon_sides",
+                                       fmt::format("{} is not in 8…256", polygon_sides));
+  }
+  if (!std::isfinite(rudder_weight) || rudder_weight <= 0.0) {
+    throw core::InputError::for_option("allocation.rudder_weight", "must be finite and > 0");
+  }
+  if (max_region_combinations < 1) {
+    throw core::InputError::for_option("allocation.max_region_combinations", "must be ≥ 1");
+  }
+}
+
+struct LayoutAllocator::Setup {
+  detail::ConvexQp qp;
+  Eigen::MatrixXd A;      // τ = A·x [N, N, N·m]
+  Eigen::VectorXd scale;  // s per variable [N]
+  std::vector<Eigen::Index> offset;
+  std::vector<int> regions;  // per unit
+};
+
+LayoutAllocator::LayoutAllocator(std::vector<ThrusterUnit> units, LayoutAllocationOptions options)
+    : units_(std::move(units)), options_(std::move(options)) {
+  options_.validate();
+  if (units_.empty()) throw core::InputError::for_option("thruster", "the layout has no unit");
+  std::set<std::string> names;
+  for (const ThrusterUnit& u : units_) {
+    u.validate();
+    if (!names.insert(u.name).second) {
+      throw core::InputError::for_option("thruster.name",
+                                         fmt::format("two units are named '{}'", u.name));
+    }
+    arcs_.push_back(u.type == UnitType::kAzimuth ? allowed_arcs(u.forbidden_deg)
+                                                 : std::vector<AllowedArc>{});
+  }
+}
+
+int LayoutAllocator::region_count(std::size_t unit) const {
+  switch (units_[unit].type) {
+    case UnitType::kAzimuth:
+      return static_cast<int>(arcs_[unit].size());
+    case UnitType::kPropellerRudder:
+      return 2;
+    default:
+      return 1;
+  }
+}
+
+LayoutAllocator::Setup LayoutAllocator::setup(const Eigen::Vector3d& tau_d_b,
+                                              const std::vector<double>& capacity,
+                                              const std::vector<int>& regions) const {
+  Setup s;
+  s.regions = regions;
+  Eigen::Index n = 0;
+  for (const ThrusterUnit& u : units_) {
+    s.offset.push_back(n);
+    n += variable_count(u.type);
+  }
+  s.A = Eigen::MatrixXd::Zero(3, n);
+  s.scale = Eigen::VectorXd::Zero(n);
+  Eigen::VectorXd weight = Eigen::VectorXd::Zero(n);
+  Rows rows;
+  const double cos_half = std::cos(std::numbers::pi / options_.polygon_sides);
+  for (std::size_t k = 0; k < units_.size(); ++k) {
+    const ThrusterUnit& u = units_[k];
+    const Eigen::Index o = s.offset[k];
+    const double cap = capacity.empty() ? 1.0 : capacity[k];
+    const Eigen::Vector3d surge{1.0, 0.0, -u.y_m};  // B's column of a force along x at (x, y)
+    const Eigen::Vector3d sway{0.0, 1.0, u.x_m};
+    const double rated = std::max(u.max_thrust_N, u.max_reverse_thrust_N);
+    const double ahead = u.max_thrust_N / rated;  // bounds of x over the larger rating
+    const double astern = u.max_reverse_thrust_N / rated;
+    const int region = regions[k];
+    switch (u.type) {
+      case UnitType::kAzimuth: {
+        s.scale.segment(o, 2).setConstant(cap * u.max_thrust_N);
+        s.A.col(o) = surge * s.scale(o);
+        s.A.col(o + 1) = sway * s.scale(o + 1);
+        weight.segment(o, 2).setConstant(u.weight);
+        for (int j = 0; j < options_.polygon_sides; ++j) {
+          const double theta = (j + 0.5) * kTwoPi / options_.polygon_sides;
+          rows.add(o, 2, {std::cos(theta), std::sin(theta)}, cos_half);
+        }
+        if (region != kRelaxed && arcs_[k][region].span_rad < kTwoPi) {
+          const double a = arcs_[k][region].from_rad;
+          const double b = a + arcs_[k][region].span_rad;
+          rows.add(o, 2, {std::sin(a), -std::cos(a)}, 0.0);  // not before the arc's start
+          rows.add(o, 2, {-std::sin(b), std::cos(b)}, 0.0);  // not after its end
+        }
+        break;
+      }
+      case UnitType::kTunnel:
+      case UnitType::kPropeller: {
+        s.scale(o) = cap * rated;
+        s.A.col(o) = (u.type == UnitType::kTunnel ? sway : surge) * s.scale(o);
+        weight(o) = u.weight;
+        rows.add(o, 1, {1.0, 0.0}, ahead);
+        rows.add(o, 1, {-1.0, 0.0}, astern);
+        break;
+      }
+      case UnitType::kPropellerRudder: {
+        s.scale(o) = cap * rated;
+        const double lift_max =
+            u.rudder_lift_per_thrust * cap * u.max_thrust_N + u.rudder_lift_at_zero_N;
+        s.scale(o + 1) = lift_max > 0.0 ? lift_max : 0.0;
+        s.A.col(o) = surge * s.scale(o);
+        s.A.col(o + 1) = sway * s.scale(o + 1);
+        weight(o) = u.weight;
+        weight(o + 1) = u.weight * options_.rudder_weight;
+        // In x: |Y|·lift_max ≤ κ·T·cap·rated + c, i.e. |y| ≤ a·t + b (y = 0 without lift).
+        const double a = lift_max > 0.0 ? u.rudder_lift_per_thrust * cap * rated / lift_max : 0.0;
+        const double b = lift_max > 0.0 ? u.rudder_lift_at_zero_N / lift_max : 0.0;
+        if (region == 0) {  // ahead: the cone
+          rows.add(o, 2, {1.0, 0.0}, ahead);
+          rows.add(o, 2, {-1.0, 0.0}, 0.0);
+          rows.add(o, 2, {-a, 1.0}, b);
+          rows.add(o, 2, {-a, -1.0}, b);
+        } else if (region == 1) {  // astern: no slipstream over the rudder
+          rows.add(o, 2, {1.0, 0.0}, 0.0);
+          rows.add(o, 2, {-1.0, 0.0}, astern);
+          rows.add(o, 2, {0.0, 1.0}, b);
+          rows.add(o, 2, {0.0, -1.0}, b);
+        } else {  // the hull of both
+          rows.add(o, 2, {1.0, 0.0}, ahead);
+          rows.add(o, 2, {-1.0, 0.0}, astern);
+          rows.add(o, 2, {0.0, 1.0}, lift_max > 0.0 ? 1.0 : 0.0);
+          rows.add(o, 2, {0.0, -1.0}, lift_max > 0.0 ? 1.0 : 0.0);
+        }
+        break;
+      }
+    }
+  }
+  // min ρ‖Q^{½}D(A·x − τ_d)‖² + xᵀWx as ½xᵀHx + cᵀx.
+  const Eigen::Vector3d d{1.0 / options_.force_scale, 1.0 / options_.force_scale,
+                          1.0 / options_.moment_scale};
+  const Eigen::Vector3d qd2 = options_.priority.cwiseProduct(d).cwiseProduct(d);
+  const Eigen::MatrixXd At_qd2 = s.A.transpose() * qd2.asDiagonal();
+  s.qp.H = 2.0 * kDemandWeight * At_qd2 * s.A;
+  s.qp.H.diagonal() += 2.0 * weight;
+  s.qp.c = -2.0 * kDemandWeight * At_qd2 * tau_d_b;
+  const auto m = static_cast<Eigen::Index>(rows.rows.size());
+  s.qp.G = Eigen::MatrixXd::Zero(m, n);
+  s.qp.h.resize(m);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    const auto& [a, b] = rows.rows[static_cast<std::size_t>(i)];
+    const Eigen::Index o = rows.column[static_cast<std::size_t>(i)];
+    s.qp.G(i, o) = a(0);
+    if (rows.width[static_cast<std::size_t>(i)] == 2) s.qp.G(i, o + 1) = a(1);
+    // Moved out by 10⁻⁹ of the rating, each by its own amount: the cone and wedge sides all
+    // meet at the origin, where the active-set method could cycle among them (degeneracy);
+    // solve() projects each unit back into its region exactly.
+    s.qp.h(i) = b + 1e-9 * (1.0 + 0.1 * static_cast<double>(i % 10));
+  }
+  return s;
+}
+
+void LayoutAllocator::project(const Setup& s, Eigen::VectorXd& x) const {
+  const double cos_half = std::cos(std::numbers::pi / options_.polygon_sides);
+  for (std::size_t k = 0; k < units_.size(); ++k) {
+    const ThrusterUnit& u = units_[k];
+    const Eigen::Index o = s.offset[k];
+    const int region = s.regions[k];
+    const double rated = std::max(u.max_thrust_N, u.max_reverse_thrust_N);
+    const double ahead = u.max_thrust_N / rated;
+    const double astern = u.max_reverse_thrust_N / rated;
+    if (u.type == UnitType::kTunnel || u.type == UnitType::kPropeller) {
+      x(o) = std::clamp(x(o), -astern, ahead);
+    } else if (u.type == UnitType::kPropellerRudder) {
+      const double lift_max = s.scale(o + 1);
+      const double a = lift_max > 0.0 ? u.rudder_lift_per_thrust * s.scale(o) / lift_max : 0.0;
+      const double b = lift_max > 0.0 ? u.rudder_lift_at_zero_N / lift_max : 0.0;
+      const double lo = region == 0 ? 0.0 : -astern;
+      x(o) = std::clamp(x(o), lo, region == 1 ? 0.0 : ahead);
+      const double y_max =
+          region == kRelaxed ? (lift_max > 0.0 ? 1.0 : 0.0) : (region == 0 ? a * x(o) + b : b);
+      x(o + 1) = std::clamp(x(o + 1), -y_max, y_max);
+    } else {
+      Eigen::Vector2d v = x.segment(o, 2);
+      if (region != kRelaxed && arcs_[k][region].span_rad < kTwoPi) {
+        // Onto the nearer edge ray of the arc when the direction left it.
+        const AllowedArc& arc = arcs_[k][region];
+        const double after = angle_after(std::atan2(v.y(), v.x()), arc.from_rad);
+        if (after > arc.span_rad) {
+          const double edge =
+              after - arc.span_rad < kTwoPi - after ? arc.from_rad + arc.span_rad : arc.from_rad;
+          const Eigen::Vector2d ray{std::cos(edge), std::sin(edge)};
+          v = std::max(v.dot(ray), 0.0) * ray;
+        }
+      }
+      double largest = 0.0;  // the polygon's most violated side, as n·v over its distance
+      for (int j = 0; j < options_.polygon_sides; ++j) {
+        const double theta = (j + 0.5) * kTwoPi / options_.polygon_sides;
+        largest = std::max(largest, (std::cos(theta) * v.x() + std::sin(theta) * v.y()) / cos_half);
+      }
+      if (largest > 1.0) v /= largest;
+      x.segment(o, 2) = v;
+    }
+  }
+}
+
+LayoutAllocation LayoutAllocator::solve(const Setup& s, const Eigen::Vector3d& tau_d_b,
+                                        bool least_effort) const {
+  detail::QpSolution q = detail::solve_convex_qp(s.qp, Eigen::VectorXd::Zero(s.qp.c.size()));
+  // The active-set iterates hold the constraints to round-off, which an ill-conditioned
+  // demand term can grow to 10⁻⁵ of a rating: each unit is put back into its region exactly.
+  project(s, q.x);
+  int programmes = 1, iterations = q.iterations;
+  const Eigen::Vector3d d{1.0 / options_.force_scale, 1.0 / options_.force_scale,
+                          1.0 / options_.moment_scale};
+  const Eigen::Vector3d unmet_n = d.cwiseProduct(tau_d_b - s.A * q.x);
+  if (least_effort && unmet_n.cwiseAbs().maxCoeff() > kMetTolerance) {
+    // Unmet, the effort ρ outweighs is lost in round-off of the demand term: hold what was
+    // achieved (to 10⁻⁹ of the scales) and minimise the effort alone, from there.
+    const Eigen::Index n = q.x.size(), m = s.qp.G.rows();
+    detail::ConvexQp effort;
+    effort.H = s.qp.H.diagonal().asDiagonal();
+    effort.H.diagonal() -= (2.0 * kDemandWeight * s.A.transpose() *
+                            (options_.priority.cwiseProduct(d).cwiseProduct(d)).asDiagonal() * s.A)
+                               .diagonal();
+    effort.c = Eigen::VectorXd::Zero(n);
+    effort.G.resize(m + 6, n);
+    effort.h.resize(m + 6);
+    effort.G.topRows(m) = s.qp.G;
+    effort.h.head(m) = s.qp.h;
+    const Eigen::MatrixXd DA = d.asDiagonal() * s.A;
+    const Eigen::Vector3d achieved = DA * q.x;
+    effort.G.middleRows(m, 3) = DA;
+    effort.G.bottomRows(3) = -DA;
+    effort.h.segment(m, 3) = achieved.array() + 1e-9;
+    effort.h.tail(3) = -achieved.array() + 1e-9;
+    const detail::QpSolution e = detail::solve_convex_qp(effort, q.x);
+    q.x = e.x;
+    project(s, q.x);
+    ++programmes;
+    iterations += e.iterations;
+  }
+  LayoutAllocation out;
+  out.programmes = programmes;
+  out.iterations = iterations;
+  const Eigen::VectorXd f = s.scale.cwiseProduct(q.x);
+  for (std::size_t k = 0; k < units_.size(); ++k) {
+    const ThrusterUnit& u = units_[k];
+    const Eigen::Index o = s.offset[k];
+    UnitCommand c;
+    switch (u.type) {
+      case UnitType::kAzimuth: {
+        c.force_b = f.segment(o, 2);
+        c.thrust_N = c.force_b.norm();
+        const int region = s.regions[k];
+        if (c.thrust_N > 1e-9 * std::max(s.scale(o), 1.0)) {
+          c.angle_rad = wrap_2pi(std::atan2(c.force_b.y(), c.force_b.x()));
+        } else {  // no thrust: point along the middle of the arc it was allocated in
+          c.force_b.setZero();
+          c.thrust_N = 0.0;
+          c.angle_rad = region == kRelaxed
+                            ? arcs_[k].front().from_rad
+                            : wrap_2pi(arcs_[k][region].from_rad + 0.5 * arcs_[k][region].span_rad);
+        }
+        break;
+      }
+      case UnitType::kTunnel:
+        c.thrust_N = f(o);
+        c.force_b = {0.0, f(o)};
+        break;
+      case UnitType::kPropeller:
+        c.thrust_N = f(o);
+        c.force_b = {f(o), 0.0};
+        break;
+      case UnitType::kPropellerRudder:
+        c.thrust_N = f(o);
+        c.rudder_force_N = f(o + 1);
+        c.force_b = {f(o), f(o + 1)};
+        break;
+    }
+    out.units.push_back(c);
+  }
+  out.tau_achieved_b = s.A * q.x;
+  out.tau_unmet_b = tau_d_b - out.tau_achieved_b;
+  const Eigen::Vector3d unmet{out.tau_unmet_b(0) / options_.force_scale,
+                              out.tau_unmet_b(1) / options_.force_scale,
+                              out.tau_unmet_b(2) / options_.moment_scale};
+  out.met = unmet.cwiseAbs().maxCoeff() <= kMetTolerance;
+  return out;
+}
+
+std::vector<int> LayoutAllocator::nearest_regions(const LayoutAllocation& relaxed) const {
+  std::vector<int> regions(units_.size(), 0);
+  for (std::size_t k = 0; k < units_.size(); ++k) {
+    const UnitCommand& c = relaxed.units[k];
+    if (units_[k].type == UnitType::kPropellerRudder) {
+      regions[k] = c.thrust_N >= 0.0 ? 0 : 1;
+    } else if (units_[k].type == UnitType::kAzimuth && arcs_[k].size() > 1) {
+      // The arc holding the relaxed direction, else the one whose edge is nearest to it.
+      double best = kTwoPi;
+      for (std::size_t j = 0; j < arcs_[k].size(); ++j) {
+        const AllowedArc& arc = arcs_[k][j];
+        const double after = angle_after(c.angle_rad, arc.from_rad);
+        const double distance =
+            after <= arc.span_rad ? 0.0 : std::min(after - arc.span_rad, kTwoPi - after);
+        if (distance < best) {
+          best = distance;
+          regions[k] = static_cast<int>(j);
+        }
+      }
+    }
+  }
+  return regions;
+}
+
+namespace {
+
+// Whether a relaxed command lies in the unit's true region (to 10⁻⁹ of its rating).
+bool in_region(const ThrusterUnit& u, const UnitCommand& c) {
+  const double tol = 1e-9 * std::max(u.max_thrust_N, 1.0);
+  if (u.type == UnitType::kAzimuth) {
+    return c.thrust_N <= tol || !in_forbidden_sector(c.angle_rad, u.forbidden_deg);
+  }
+  if (u.type == UnitType::kPropellerRudder) {
+    const double lift = c.thrust_N >= 0.0
+                            ? u.rudder_lift_per_thrust * c.thrust_N + u.rudder_lift_at_zero_N
+                            : u.rudder_lift_at_zero_N;
+    return std::abs(c.rudder_force_N) <= lift + tol;
+  }
+  return true;
+}
+
+}  // namespace
+
+LayoutAllocation LayoutAllocator::allocate(const Eigen::Vector3d& tau_d_b,
+                                           const std::vector<double>& capacity) const {
+  const bool capacity_ok =
+      (capacity.empty() || capacity.size() == units_.size()) &&
+      std::all_of(capacity.begin(), capacity.end(), [](double c) { return c >= 0.0 && c <= 1.0; });
+  if (!tau_d_b.allFinite() || !capacity_ok) {
+    LayoutAllocation zero;
+    zero.met = false;
+    zero.units.resize(units_.size());
+    zero.tau_unmet_b = tau_d_b;
+    return zero;
+  }
+  LayoutAllocation relaxed =
+      solve(setup(tau_d_b, capacity, std::vector<int>(units_.size(), kRelaxed)), tau_d_b);
+  bool feasible = true;
+  for (std::size_t k = 0; k < units_.size() && feasible; ++k) {
+    feasible = in_region(units_[k], relaxed.units[k]);
+  }
+  if (feasible && relaxed.met) return relaxed;  // the relaxation's optimum is the problem's
+  if (feasible) {  // unmet: the least effort in the regions the relaxed commands lie in
+    LayoutAllocation least =
+        solve(setup(tau_d_b, capacity, nearest_regions(relaxed)), tau_d_b, true);
+    least.programmes += relaxed.programmes;
+    least.iterations += relaxed.iterations;
+    return least;
+  }
+
+  int programmes = relaxed.programmes, iterations = relaxed.iterations;
+  const std::vector<int> guess = nearest_regions(relaxed);
+  std::vector<int> best_regions = guess;
+  LayoutAllocation best = solve(setup(tau_d_b, capacity, guess), tau_d_b);
+  programmes += best.programmes;
+  iterations += best.iterations;
+  if (!best.met) {
+    // Every combination of regions, in order, up to the cap: the least weighted unmet part.
+    const auto unmet_of = [&](const LayoutAllocation& a) {
+      const Eigen::Vector3d d{a.tau_unmet_b(0) / options_.force_scale,
+                              a.tau_unmet_b(1) / options_.force_scale,
+                              a.tau_unmet_b(2) / options_.moment_scale};
+      return d.cwiseProduct(d).dot(options_.priority);
+    };
+    std::vector<int> regions(units_.size(), 0);
+    for (int tried = 0; tried < options_.max_region_combinations; ++tried) {
+      if (regions != guess) {
+        LayoutAllocation a = solve(setup(tau_d_b, capacity, regions), tau_d_b);
+        programmes += a.programmes;
+        iterations += a.iterations;
+        if (unmet_of(a) < unmet_of(best) * (1.0 - 1e-9) - 1e-18) {
+          best = std::move(a);
+          best_regions = regions;
+        }
+      }
+      std::size_t k = 0;  // the next combination, as an odometer
+      for (; k < units_.size(); ++k) {
+        if (++regions[k] < region_count(k)) break;
+        regions[k] = 0;
+      }
+      if (k == units_.size()) break;
+    }
+  }
+  if (!best.met) {  // the least effort for the least unmet part
+    best = solve(setup(tau_d_b, capacity, best_regions), tau_d_b, true);
+    programmes += best.programmes;
+    iterations += best.iterations;
+  }
+  best.programmes = programmes;
+  best.iterations = iterations;
+  return best;
+}
+
+}  // namespace dynpos::model

@@ -1,0 +1,270 @@
+#include "dynpos/model/layout_allocator.hpp"
+
+#include <fmt/format.h>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "dynpos/core/error.hpp"
+
+namespace dynpos::model {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kDeg = kPi / 180.0;
+
+ThrusterUnit unit(std::string name, UnitType type, double x, double y, double ahead, double astern,
+                  std::vector<AngleSector> forbidden = {}) {
+  ThrusterUnit u;
+  u.name = std::move(name);
+  u.type = type;
+  u.x_m = x;
+  u.y_m = y;
+  u.max_thrust_N = ahead;
+  u.max_reverse_thrust_N = astern;
+  u.forbidden_deg = std::move(forbidden);
+  return u;
+}
+
+TEST(ThrusterUnit, AllowedArcsAreConvexPiecesOfTheComplement) {
+  // Forbidden 300°…60° (across ahead): allowed 60°…300°, 240° cut into two arcs of 120°.
+  const std::vector<AllowedArc> arcs = allowed_arcs({{300.0, 60.0}});
+  ASSERT_EQ(arcs.size(), 2u);
+  EXPECT_NEAR(arcs[0].from_rad, 60.0 * kDeg, 1e-12);
+  EXPECT_NEAR(arcs[0].span_rad, 120.0 * kDeg, 1e-12);
+  EXPECT_NEAR(arcs[1].from_rad, 180.0 * kDeg, 1e-12);
+  // Two sectors, overlapping ones merged: allowed 10…80 and 100…170 and 200…350.
+  const std::vector<AllowedArc> three =
+      allowed_arcs({{350.0, 10.0}, {80.0, 100.0}, {170.0, 200.0}, {185.0, 195.0}});
+  ASSERT_EQ(three.size(), 3u);
+  EXPECT_NEAR(three[2].span_rad, 150.0 * kDeg, 1e-12);
+  EXPECT_EQ(allowed_arcs({}).size(), 1u);
+  EXPECT_NEAR(allowed_arcs({}).front().span_rad, 2.0 * kPi, 0.0);
+  EXPECT_TRUE(in_forbidden_sector(0.0, {{300.0, 60.0}}));
+  EXPECT_TRUE(in_forbidden_sector(-10.0 * kDeg, {{300.0, 60.0}}));
+  EXPECT_FALSE(in_forbidden_sector(60.0 * kDeg, {{300.0, 60.0}}));  // an edge is allowed
+  EXPECT_FALSE(in_forbidden_sector(kPi, {{300.0, 60.0}}));
+}
+
+TEST(ThrusterUnit, BadUnitsNameTheirField) {
+  ThrusterUnit u = unit("bow", UnitType::kTunnel, 10.0, 0.0, 1e4, 1e4, {{10.0, 20.0}});
+  try {
+    u.validate();
+    FAIL();
+  } catch (const core::InputError& e) {
+    EXPECT_EQ(e.option(), "thruster.bow.forbidden_deg");
+  }
+  u = unit("az", UnitType::kAzimuth, 0.0, 0.0, -1.0, 0.0);
+  EXPECT_THROW(u.validate(), core::InputError);
+  u = unit("az", UnitType::kAzimuth, 0.0, 0.0, 1.0, 0.0, {{0.0, 180.0}, {180.0, 0.0}});
+  EXPECT_THROW(u.validate(), core::InputError);
+  EXPECT_THROW(LayoutAllocator({unit("a", UnitType::kTunnel, 0, 0, 1, 1),
+                                unit("a", UnitType::kTunnel, 1, 0, 1, 1)}),
+               core::InputError);
+}
+
+// A random layout of 2–8 units of every type, azimuths with 0–2 forbidden sectors.
+std::vector<ThrusterUnit> random_layout(std::mt19937& rng) {
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  const int n = 2 + static_cast<int>(u01(rng) * 7.0);
+  std::vector<ThrusterUnit> out;
+  for (int k = 0; k < n; ++k) {
+    const auto type = static_cast<UnitType>(static_cast<int>(u01(rng) * 4.0) % 4);
+    const double ahead = 2e4 + 2e5 * u01(rng);
+    ThrusterUnit t = unit(fmt::format("u{}", k), type, -40.0 + 80.0 * u01(rng),
+                          -8.0 + 16.0 * u01(rng), ahead, ahead * (0.4 + 0.6 * u01(rng)));
+    if (type == UnitType::kAzimuth) {
+      const int sectors = static_cast<int>(u01(rng) * 3.0);
+      for (int j = 0; j < sectors; ++j) {
+        const double from = std::floor(360.0 * u01(rng));
+        t.forbidden_deg.push_back({from, std::fmod(from + 20.0 + 60.0 * u01(rng), 360.0)});
+      }
+    }
+    if (type == UnitType::kPropellerRudder) {
+      t.rudder_lift_per_thrust = 0.5 + 0.4 * u01(rng);
+      t.rudder_lift_at_zero_N = u01(rng) < 0.5 ? 0.0 : 2e3;
+    }
+    out.push_back(t);
+  }
+  return out;
+}
+
+// A random command of each unit inside its region (azimuths inside the inscribed polygon).
+std::vector<UnitCommand> random_commands(const std::vector<ThrusterUnit>& layout, int sides,
+                                         std::mt19937& rng) {
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  std::vector<UnitCommand> out;
+  for (const ThrusterUnit& t : layout) {
+    UnitCommand c;
+    switch (t.type) {
+      case UnitType::kAzimuth: {
+        const std::vector<AllowedArc> arcs = allowed_arcs(t.forbidden_deg);
+        const AllowedArc& arc =
+            arcs[static_cast<std::size_t>(u01(rng) * arcs.size()) % arcs.size()];
+        const double a = arc.from_rad + arc.span_rad * u01(rng);
+        const double r = t.max_thrust_N * std::cos(kPi / sides) * u01(rng);
+        c.force_b = {r * std::cos(a), r * std::sin(a)};
+        break;
+      }
+      case UnitType::kTunnel:
+        c.force_b = {
+            0.0, -t.max_reverse_thrust_N + (t.max_thrust_N + t.max_reverse_thrust_N) * u01(rng)};
+        break;
+      case UnitType::kPropeller:
+        c.force_b = {-t.max_reverse_thrust_N + (t.max_thrust_N + t.max_reverse_thrust_N) * u01(rng),
+                     0.0};
+        break;
+      case UnitType::kPropellerRudder: {
+        const double thrust =
+            -t.max_reverse_thrust_N + (t.max_thrust_N + t.max_reverse_thrust_N) * u01(rng);
+        const double lift =
+            (thrust > 0.0 ? t.rudder_lift_per_thrust * thrust : 0.0) + t.rudder_lift_at_zero_N;
+        c.force_b = {thrust, lift * (2.0 * u01(rng) - 1.0)};
+        break;
+      }
+    }
+    out.push_back(c);
+  }
+  return out;
+}
+
+Eigen::Vector3d tau_of(const std::vector<ThrusterUnit>& layout,
+                       const std::vector<UnitCommand>& commands) {
+  Eigen::Vector3d tau = Eigen::Vector3d::Zero();
+  for (std::size_t k = 0; k < layout.size(); ++k) {
+    const Eigen::Vector2d& f = commands[k].force_b;
+    tau += Eigen::Vector3d{f.x(), f.y(), layout[k].x_m * f.y() - layout[k].y_m * f.x()};
+  }
+  return tau;
+}
+
+// Every command inside its unit's true region (to 10⁻⁹ of its rating).
+void expect_in_regions(const std::vector<ThrusterUnit>& layout, const LayoutAllocation& a) {
+  for (std::size_t k = 0; k < layout.size(); ++k) {
+    const ThrusterUnit& t = layout[k];
+    const UnitCommand& c = a.units[k];
+    const double tol = 1e-9 * t.max_thrust_N;
+    SCOPED_TRACE(t.name + " " + std::string(unit_type_name(t.type)));
+    switch (t.type) {
+      case UnitType::kAzimuth:
+        EXPECT_LE(c.force_b.norm(), t.max_thrust_N + tol);
+        EXPECT_FALSE(in_forbidden_sector(c.angle_rad, t.forbidden_deg, 1e-7))
+            << c.angle_rad / kDeg << "° at " << c.thrust_N << " N";
+        break;
+      case UnitType::kTunnel:
+        EXPECT_EQ(c.force_b.x(), 0.0);
+        EXPECT_LE(c.force_b.y(), t.max_thrust_N + tol);
+        EXPECT_GE(c.force_b.y(), -t.max_reverse_thrust_N - tol);
+        break;
+      case UnitType::kPropeller:
+      case UnitType::kPropellerRudder: {
+        EXPECT_LE(c.force_b.x(), t.max_thrust_N + tol);
+        EXPECT_GE(c.force_b.x(), -t.max_reverse_thrust_N - tol);
+        const double lift = (c.thrust_N > 0.0 ? t.rudder_lift_per_thrust * c.thrust_N : 0.0) +
+                            t.rudder_lift_at_zero_N;
+        EXPECT_LE(std::abs(c.force_b.y()), lift + tol);
+        break;
+      }
+    }
+  }
+}
+
+// Random layouts and demands made of commands inside the regions: every demand is met to
+// 10⁻⁶ of the scales, and no command leaves its region or points into a forbidden sector.
+TEST(LayoutAllocator, MeetsEveryAttainableDemandOfRandomLayouts) {
+  std::mt19937 rng(7);
+  const LayoutAllocationOptions options;
+  int programmes = 0, demands = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const std::vector<ThrusterUnit> layout = random_layout(rng);
+    const LayoutAllocator allocator(layout, options);
+    for (int d = 0; d < 10; ++d) {
+      SCOPED_TRACE(::testing::Message() << "layout " << trial << ", demand " << d);
+      const Eigen::Vector3d tau =
+          tau_of(layout, random_commands(layout, options.polygon_sides, rng));
+      const LayoutAllocation a = allocator.allocate(tau);
+      EXPECT_TRUE(a.met) << a.programmes << " programmes, " << a.iterations << " iterations";
+      EXPECT_LE(std::abs(a.tau_unmet_b(0)), 1e-6 * options.force_scale);
+      EXPECT_LE(std::abs(a.tau_unmet_b(1)), 1e-6 * options.force_scale);
+      EXPECT_LE(std::abs(a.tau_unmet_b(2)), 1e-6 * options.moment_scale);
+      EXPECT_NEAR((tau_of(layout, a.units) - a.tau_achieved_b).norm(), 0.0,
+                  1e-6 * tau.norm() + 1e-6);
+      expect_in_regions(layout, a);
+      programmes += a.programmes;
+      ++demands;
+    }
+  }
+  RecordProperty("programmes_per_demand", std::to_string(double(programmes) / demands));
+}
+
+// A demand beyond the layout's reach leaves the least priority-weighted unmet part: no random
+// command inside the regions leaves less.
+TEST(LayoutAllocator, AnUnattainableDemandLeavesTheLeastWeightedUnmetPart) {
+  std::mt19937 rng(3);
+  const LayoutAllocationOptions options;
+  const auto weighted = [&](const Eigen::Vector3d& unmet) {
+    const Eigen::Vector3d d{unmet(0) / options.force_scale, unmet(1) / options.force_scale,
+                            unmet(2) / options.moment_scale};
+    return d.cwiseProduct(d).dot(options.priority);
+  };
+  for (int trial = 0; trial < 40; ++trial) {
+    const std::vector<ThrusterUnit> layout = random_layout(rng);
+    const LayoutAllocator allocator(layout, options);
+    const Eigen::Vector3d tau =
+        3.0 * tau_of(layout, random_commands(layout, options.polygon_sides, rng)) +
+        Eigen::Vector3d{2e6, -1e6, 3e7};
+    const LayoutAllocation a = allocator.allocate(tau);
+    EXPECT_FALSE(a.met);
+    expect_in_regions(layout, a);
+    const double least = weighted(a.tau_unmet_b);
+    for (int s = 0; s < 2000; ++s) {
+      const Eigen::Vector3d other =
+          tau - tau_of(layout, random_commands(layout, options.polygon_sides, rng));
+      ASSERT_GE(weighted(other), least * (1.0 - 1e-6)) << "layout " << trial;
+    }
+  }
+}
+
+// A layout symmetric about the centre line gives mirrored commands for a mirrored demand.
+TEST(LayoutAllocator, ASymmetricLayoutAllocatesSymmetrically) {
+  const std::vector<ThrusterUnit> layout = {
+      unit("bow1", UnitType::kTunnel, 30.0, 0.0, 1e5, 1e5),
+      unit("az_port", UnitType::kAzimuth, -30.0, -5.0, 4e5, 0.0, {{60.0, 120.0}}),
+      unit("az_stb", UnitType::kAzimuth, -30.0, 5.0, 4e5, 0.0, {{240.0, 300.0}}),
+  };
+  const LayoutAllocator allocator(layout);
+  for (const Eigen::Vector3d& tau :
+       {Eigen::Vector3d{1e5, 5e4, 2e6}, Eigen::Vector3d{-2e5, 1e5, -1e6},
+        Eigen::Vector3d{9e5, 4e5, 3e7}}) {
+    const LayoutAllocation a = allocator.allocate(tau);
+    const LayoutAllocation b = allocator.allocate({tau(0), -tau(1), -tau(2)});
+    // Mirror: (F_x, F_y) of port ↔ (F_x, −F_y) of starboard; the tunnel's side force flips.
+    EXPECT_NEAR(a.units[0].force_b.y(), -b.units[0].force_b.y(), 1e-6 * 1e5);
+    EXPECT_NEAR(a.units[1].force_b.x(), b.units[2].force_b.x(), 1e-6 * 4e5);
+    EXPECT_NEAR(a.units[1].force_b.y(), -b.units[2].force_b.y(), 1e-6 * 4e5);
+    EXPECT_EQ(a.met, b.met);
+  }
+}
+
+// A failed unit (capacity 0) gives nothing; the others take over.
+TEST(LayoutAllocator, AFailedUnitIsHeldAtZero) {
+  const std::vector<ThrusterUnit> layout = {
+      unit("bow1", UnitType::kTunnel, 30.0, 0.0, 1e5, 1e5),
+      unit("bow2", UnitType::kTunnel, 28.0, 0.0, 1e5, 1e5),
+      unit("az", UnitType::kAzimuth, -30.0, 0.0, 4e5, 0.0),
+  };
+  const LayoutAllocator allocator(layout);
+  const LayoutAllocation a = allocator.allocate({0.0, 5e4, 1e6}, {0.0, 1.0, 1.0});
+  EXPECT_TRUE(a.met);
+  EXPECT_EQ(a.units[0].force_b.norm(), 0.0);
+  EXPECT_FALSE(allocator.allocate({NAN, 0.0, 0.0}).met);
+  EXPECT_FALSE(allocator.allocate({0.0, 0.0, 0.0}, {1.0}).met);  // a capacity per unit
+}
+
+}  // namespace
+}  // namespace dynpos::model
