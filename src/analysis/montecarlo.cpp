@@ -19,6 +19,7 @@
 #include "dynpos/analysis/step.hpp"
 #include "dynpos/core/error.hpp"
 #include "dynpos/core/parallel_for.hpp"
+#include "dynpos/io/temporary_files.hpp"
 #include "dynpos/report/table.hpp"
 #include "dynpos/scenario/campaign.hpp"
 #include "dynpos/scenario/runner.hpp"
@@ -174,12 +175,14 @@ MonteCarloSample run_seed(const scenario::ScenarioSpec& spec, const scenario::Ve
   } else {
     measure_lever_arms(log, truth, out);
   }
+  const io::temporary_files::Hold hold;  // not beside a signal's removal of the work folder
   std::error_code ignored;
   std::filesystem::remove_all(dir, ignored);
   return out;
 }
 
-// A fresh folder for the seeds' files, removed with them on every exit.
+// A fresh folder for the seeds' files, removed with them on every exit, a signal's too: it is
+// listed with the temporary files (io/temporary_files.hpp), not only the run being written.
 struct WorkDir {
   std::filesystem::path path;
   explicit WorkDir(const std::filesystem::path& parent) {
@@ -187,11 +190,15 @@ struct WorkDir {
         parent.empty() ? std::filesystem::temp_directory_path() : parent;
     std::random_device entropy;
     path = base / fmt::format("dynpos-montecarlo-{}-{:08x}", ::getpid(), entropy());
+    const io::temporary_files::Hold hold;  // made and listed as one step
     std::filesystem::create_directories(path);
+    io::temporary_files::add(path);
   }
   ~WorkDir() {
+    const io::temporary_files::Hold hold;
     std::error_code ignored;
     std::filesystem::remove_all(path, ignored);
+    io::temporary_files::drop(path);
   }
   WorkDir(const WorkDir&) = delete;
   WorkDir& operator=(const WorkDir&) = delete;

@@ -109,7 +109,9 @@ void AtomicFile::create_temp() {
     const std::string name =
         fmt::format(".{}.tmp-{}-{:08x}", file_.filename().string(), ::getpid(), entropy());
     temp_ = dir.empty() ? std::filesystem::path(name) : dir / name;
-    // 0666 minus the umask: the same permissions a plain new file would get.
+    // 0666 minus the umask: the same permissions a plain new file would get. Made and listed
+    // as one step, which a signal's removal waits for.
+    const temporary_files::Hold hold;
     const int fd = ::open(temp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd >= 0) {
       temporary_files::add(temp_);
@@ -145,6 +147,7 @@ AtomicFile::~AtomicFile() {
 }
 
 void AtomicFile::discard_temp() {
+  const temporary_files::Hold hold;  // removed and taken off the list as one step
   std::error_code ignored;
   std::filesystem::remove(temp_, ignored);
   temporary_files::drop(temp_);
@@ -169,13 +172,18 @@ void AtomicFile::commit() {
     committed_ = true;
     return;
   }
-  if (std::rename(temp_.c_str(), file_.c_str()) != 0) {
-    error = errno;
+  {
+    // Renamed and taken off the list as one step: a signal's removal of the folder the file is
+    // in (a run's hidden folder) does not meet a file that vanishes under it.
+    const temporary_files::Hold hold;
+    if (std::rename(temp_.c_str(), file_.c_str()) != 0) error = errno;
+    if (error == 0) temporary_files::drop(temp_);
+  }
+  if (error != 0) {
     discard_temp();
     throw std::runtime_error(fmt::format("cannot rename '{}' to '{}': {}", temp_.string(),
                                          target_.string(), reason(error)));
   }
-  temporary_files::drop(temp_);
   const std::filesystem::path dir = file_.parent_path();
   (void)sync_path(dir.empty() ? std::filesystem::path(".") : dir, O_RDONLY | O_DIRECTORY);
   committed_ = true;

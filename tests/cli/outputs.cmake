@@ -1,0 +1,11 @@
+# Outputs, signals and runs together (docs/reliability.md, "Outputs"): an output that is an
+# input, outputs checked before anything is written, write failures, a run's files placed
+# together under signals, montecarlo's work folder and shards, the demo's disk and summary.
+set(CLI_DIR ${CMAKE_CURRENT_SOURCE_DIR})
+dynpos_cli_test(run_signal_loop
+  COMMAND bash ${CLI_DIR}/run_signal_loop.sh ${DYNPOS_EXE} ${CLI_OUT}/run_signal_loop ${CLI_DIR}
+  PASS "^ok")
+dynpos_cli_test(montecarlo_signal
+  COMMAND bash ${CLI_DIR}/montecarlo_signal.sh ${DYNPOS_EXE} ${CLI_OUT}/montecarlo_signal
+          ${CLI_DIR}
+  PASS "^ok")
