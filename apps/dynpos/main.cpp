@@ -46,6 +46,9 @@ void take_signals_on_a_thread() {
 
 int main(int argc, char** argv) {
   take_signals_on_a_thread();
+  // A file over the size limit (ulimit -f) fails its write with EFBIG, which the writer reports
+  // with the path and the reason (exit 2), instead of the signal ending the process unreported.
+  std::signal(SIGXFSZ, SIG_IGN);
   using namespace dynpos::cli;
   CLI::App app{
       "dynpos " DYNPOS_VERSION

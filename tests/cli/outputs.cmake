@@ -2,6 +2,9 @@
 # input, outputs checked before anything is written, write failures, a run's files placed
 # together under signals, montecarlo's work folder and shards, the demo's disk and summary.
 set(CLI_DIR ${CMAKE_CURRENT_SOURCE_DIR})
+dynpos_cli_test(write_failures
+  COMMAND bash ${CLI_DIR}/write_failures.sh ${DYNPOS_EXE} ${CLI_OUT}/write_failures ${CLI_DIR}
+  PASS "^ok")
 dynpos_cli_test(run_signal_loop
   COMMAND bash ${CLI_DIR}/run_signal_loop.sh ${DYNPOS_EXE} ${CLI_OUT}/run_signal_loop ${CLI_DIR}
   PASS "^ok")
