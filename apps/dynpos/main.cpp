@@ -71,6 +71,8 @@ int main(int argc, char** argv) {
   register_capability(app);
   register_montecarlo(app);
   register_demo(app);
+  // Every output of the subcommand given is checked before any subcommand runs.
+  app.parse_complete_callback([&app] { check_outputs(app); });
 
   try {
     app.parse(argc, argv);

@@ -2,6 +2,12 @@
 # input, outputs checked before anything is written, write failures, a run's files placed
 # together under signals, montecarlo's work folder and shards, the demo's disk and summary.
 set(CLI_DIR ${CMAKE_CURRENT_SOURCE_DIR})
+dynpos_cli_test(output_is_input
+  COMMAND bash ${CLI_DIR}/output_is_input.sh ${DYNPOS_EXE} ${CLI_OUT}/output_is_input ${CLI_DIR}
+  PASS "^ok")
+dynpos_cli_test(outputs_checked_before_run
+  COMMAND bash ${CLI_DIR}/outputs_before_run.sh ${DYNPOS_EXE} ${CLI_OUT}/outputs_before_run
+  PASS "^ok")
 dynpos_cli_test(write_failures
   COMMAND bash ${CLI_DIR}/write_failures.sh ${DYNPOS_EXE} ${CLI_OUT}/write_failures ${CLI_DIR}
   PASS "^ok")
