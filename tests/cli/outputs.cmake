@@ -18,3 +18,7 @@ dynpos_cli_test(montecarlo_signal
   COMMAND bash ${CLI_DIR}/montecarlo_signal.sh ${DYNPOS_EXE} ${CLI_OUT}/montecarlo_signal
           ${CLI_DIR}
   PASS "^ok")
+dynpos_cli_test(montecarlo_merge_other_runs
+  COMMAND bash ${CLI_DIR}/montecarlo_merge_runs.sh ${DYNPOS_EXE} ${CLI_OUT}/montecarlo_merge_runs
+          ${CLI_DIR}
+  PASS "^ok")
