@@ -22,3 +22,11 @@ dynpos_cli_test(montecarlo_merge_other_runs
   COMMAND bash ${CLI_DIR}/montecarlo_merge_runs.sh ${DYNPOS_EXE} ${CLI_OUT}/montecarlo_merge_runs
           ${CLI_DIR}
   PASS "^ok")
+dynpos_cli_test(demo_small_disk
+  COMMAND bash ${CLI_DIR}/demo_small_disk.sh ${DYNPOS_EXE} ${CLI_OUT}/demo_small_disk
+  PASS "^ok")
+set_tests_properties(cli_demo_small_disk PROPERTIES SKIP_RETURN_CODE 77)
+dynpos_cli_test(demo_interrupted
+  COMMAND bash ${CLI_DIR}/demo_interrupted.sh ${DYNPOS_EXE} ${CLI_OUT}/demo_interrupted ${CLI_DIR}
+          ${PROJECT_SOURCE_DIR}
+  PASS "^ok")
