@@ -79,7 +79,7 @@ void register_capability(CLI::App& app) {
       ->capture_default_str();
   add_seed_option(*sub, r.seed, "Level 3: master seed of the runs");
   sub->add_option("--jobs", r.jobs, "Level 3: parallel runs (default: every core)");
-  sub->add_option("--out", o->out, "Folder for the capability rose (rose.svg)");
+  output_folder(sub->add_option("--out", o->out, "Folder for the capability rose (rose.svg)"));
   add_json_option(*sub, o->json, "Write the results as JSON to FILE, or '-' for stdout");
   sub->footer(
       "Wind, waves and current come from the same direction, relative to the bow (0 = head-on, "

@@ -15,7 +15,7 @@ void register_demo(CLI::App& app) {
   auto request = std::make_shared<analysis::DemoRequest>();
   CLI::App* sub = app.add_subcommand(
       "demo", "Run the whole virtual Gunnerus campaign and write a report folder");
-  sub->add_option("--out", request->out_dir, "Report folder (created if needed)")
+  output_folder(sub->add_option("--out", request->out_dir, "Report folder (created if needed)"))
       ->capture_default_str();
   add_seed_option(*sub, request->seed, "Master seed; the same seed gives byte-identical files");
   sub->footer(

@@ -49,7 +49,8 @@ void add_case(CLI::App& parent, const std::string& name, const std::string& desc
                 "Hybrid run with the practical jump set: the integral error estimated from a "
                 "sampled, noisy state derivative (default: the ideal jump set of the theorem)");
   add_seed_option(*sub, r.seed, "Seed of the derivative noise (--sampled)");
-  sub->add_option("--out", opt->out_dir, "Folder for the SVG plots (created if needed)");
+  output_folder(
+      sub->add_option("--out", opt->out_dir, "Folder for the SVG plots (created if needed)"));
   add_json_option(*sub, opt->json, "Write the results as JSON to FILE, or '-' for stdout");
   sub->add_option("--lambda", r.lambda,
                   first_order ? "Jump gain lambda (default 3, (5.76))"

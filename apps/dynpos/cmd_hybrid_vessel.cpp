@@ -46,7 +46,8 @@ void add_hybrid_vessel(CLI::App& hybrid) {
                   "ice: a 20 kN ice load sets in; mooring: a mooring line holding 20 kN snaps")
       ->required();
   add_seed_option(*sub, opt->request.seed, "Master seed (the same for both designs)");
-  sub->add_option("--out", opt->out_dir, "Folder for the SVG plots (created if needed)");
+  output_folder(
+      sub->add_option("--out", opt->out_dir, "Folder for the SVG plots (created if needed)"));
   add_json_option(*sub, opt->json, "Write the results as JSON to FILE, or '-' for stdout");
   // The library checks the value (HybridVesselRequest::validate); the type name says the range.
   sub->add_option("--within", opt->request.within_m, "Distance for 'back within' [m]")

@@ -54,7 +54,7 @@ void add_identify_agility(CLI::App& identify) {
                        "time, command.surge, command.sway, command.yaw [%], thrust.NAME or "
                        "rpm.NAME per thruster, u, v (speed), wind_speed, wind_dir, heading");
   add_json_option(*sub, o->json, "Write the response times as JSON to FILE, or '-'");
-  sub->add_option("--plot", o->plot, "Write the polar plot (SVG), one polar per case");
+  output_file(sub->add_option("--plot", o->plot, "Write the polar plot (SVG), one polar per case"));
   sub->add_option("--window", o->windows,
                   "A step given explicitly (repeatable): T_STEP,T_END,DIR_DEG[,THRUST_PCT"
                   "[,YAW_PCT]]; replaces the joystick demands");

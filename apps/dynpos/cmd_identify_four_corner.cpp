@@ -68,7 +68,7 @@ void add_identify_four_corner(CLI::App& identify) {
   sub->add_option("--from", o->request.t_from_s, "Analyse from this time [s]");
   sub->add_option("--to", o->request.t_to_s, "Analyse up to this time [s]");
   add_json_option(*sub, o->json, "Write the results as JSON to FILE, or '-' for stdout");
-  sub->add_option("--plot", o->plot, "Write the NE plot of the track to FILE.svg");
+  output_file(sub->add_option("--plot", o->plot, "Write the NE plot of the track to FILE.svg"));
   sub->footer(
       "Legs start at each setpoint change and end when the position is within --radius and "
       "the heading within --heading-tol of the setpoint (auto, when setpoints are logged), or "

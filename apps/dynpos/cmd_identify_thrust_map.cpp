@@ -64,7 +64,8 @@ void add_identify_thrust_map(CLI::App& identify) {
                 "With --apply: the log has |n| only, so use the mean coefficient (3.18)");
   sub->add_option("--vessel", r.vessel, "With --apply: vessel file (default: built-in Gunnerus)")
       ->check(CLI::ExistingFile);
-  sub->add_option("--out", o->out, "With --apply: CSV to write (time, rpm.NAME, thrust.NAME)");
+  output_file(
+      sub->add_option("--out", o->out, "With --apply: CSV to write (time, rpm.NAME, thrust.NAME)"));
   sub->footer(
       "Back-calculation: for each sign of n, c = Σ T n² / Σ n⁴ (least squares through the "
       "origin), with 1σ from the residuals. Values in N/rps² in JSON (c_pos, c_neg, c_mean), "

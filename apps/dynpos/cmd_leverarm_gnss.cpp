@@ -104,7 +104,8 @@ void add_leverarm_gnss(CLI::App& leverarm) {
                   "starting value (vertical twice it; both then found from the data)")
       ->capture_default_str();
   add_json_option(*sub, o->json, "Write the results as JSON to FILE, or '-' for stdout");
-  sub->add_option("--plots", o->plots, "Write SVG plots (arms over time, P0 NE, excitation)");
+  output_folder(
+      sub->add_option("--plots", o->plots, "Write SVG plots (arms over time, P0 NE, excitation)"));
   sub->footer(
       "Arms in BODY (x fwd, y stb, z down). ins (the default with an MRU in the log) needs no "
       "velocity: from the GNSS fixes, one MRU and the heading it estimates every antenna's and "

@@ -59,7 +59,8 @@ void add_leverarm_mru(CLI::App& leverarm) {
                   "(Luenberger observer (4.80))")
       ->capture_default_str();
   add_json_option(*sub, o->json, "Write the arms as JSON to FILE, or '-'");
-  sub->add_option("--plots", o->plots, "Write SVG plots of the estimates over time into DIR");
+  output_folder(
+      sub->add_option("--plots", o->plots, "Write SVG plots of the estimates over time into DIR"));
   sub->add_option("--window-s", o->request.window_s,
                   "Savitzky–Golay smoothing window for ω̇, ν̇ and every term [s]")
       ->capture_default_str();

@@ -59,9 +59,10 @@ void register_montecarlo(CLI::App& app) {
                   "What to identify: auto (steps for a step test, stationkeeping for a DP run, "
                   "else the GNSS lever arms), steps, station-keeping or lever-arms")
       ->capture_default_str();
-  sub->add_option("--work-dir", r.work_dir,
-                  "Folder for each seed's files while it is analysed (default: the temporary "
-                  "folder); removed afterwards");
+  output_folder(
+      sub->add_option("--work-dir", r.work_dir,
+                      "Folder for each seed's files while it is analysed (default: the temporary "
+                      "folder); removed afterwards"));
   add_json_option(*sub, opt->json, "Write the samples and the summary as JSON to FILE, or '-'");
   sub->footer(
       "Quantities: step tests give K, T and delay per step (Smith's method, the one that defines "

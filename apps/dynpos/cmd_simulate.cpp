@@ -19,7 +19,7 @@ void register_simulate(CLI::App& app) {
   sub->add_option("scenario", request->scenario,
                   "Scenario name in data/scenarios (e.g. surge-steps-forward), a .toml file, or "
                   "'campaign' for all of them (one folder each)");
-  sub->add_option("--out", request->out_dir, "Output folder (created if needed)");
+  output_folder(sub->add_option("--out", request->out_dir, "Output folder (created if needed)"));
   add_seed_option(*sub, request->seed,
                   "Master seed (unsigned 64-bit); the same seed gives byte-identical output");
   sub->add_option("--vessel", request->vessel_file,

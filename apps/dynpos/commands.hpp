@@ -31,6 +31,20 @@ CLI::Option* add_seed_option(CLI::App& sub, std::uint64_t& seed, const std::stri
 /// with exit 2 instead of silently writing nothing (output_options.cpp).
 CLI::Option* add_json_option(CLI::App& sub, std::string& json, const std::string& help);
 
+/// Marks `option` as naming an output file (or "-", standard output) / an output folder, for
+/// check_outputs(); returns it (output_options.cpp). --json is marked by add_json_option.
+CLI::Option* output_file(CLI::Option* option);
+CLI::Option* output_folder(CLI::Option* option);
+
+/// Checks every output of the subcommand given, before any subcommand runs (main.cpp calls it
+/// once the command line is parsed), so that a refused output costs no run and nothing is
+/// written: an output file's folder exists and the file can be written (analysis::
+/// check_output_file), an output folder is not a file (check_output_dir), and no output file
+/// is an input of the command (the same device and inode: LOG, A and B, --map, --segments,
+/// --vessel, a FILE of --col ROLE=COLUMN@FILE or --clock-offset FILE=SECONDS, …): exit 2
+/// naming both.
+void check_outputs(const CLI::App& app);
+
 /// Adds `vessel` to the `hybrid` subcommand.
 void add_hybrid_vessel(CLI::App& hybrid);
 

@@ -25,7 +25,8 @@ namespace {
 // Ctrl-C, SIGTERM and SIGHUP are blocked in every thread (the mask is inherited) and taken by
 // one thread, which removes this run's temporary files (io/temporary_files.hpp) and ends the
 // process with 128 + the signal's number, as a shell reports it. Outputs already renamed into
-// place stay; none is left half-written.
+// place stay; none is left half-written. A run whose files are being renamed into place is
+// let finish placing them first (temporary_files::Hold), so its files are all new or all old.
 void take_signals_on_a_thread() {
   sigset_t signals;
   sigemptyset(&signals);
@@ -34,7 +35,7 @@ void take_signals_on_a_thread() {
   std::thread([signals] {
     int signal = 0;
     if (sigwait(&signals, &signal) != 0) return;
-    const std::size_t removed = dynpos::io::temporary_files::remove_all();
+    const std::size_t removed = dynpos::io::temporary_files::remove_all_for_exit();
     std::fprintf(stderr, "dynpos: stopped by signal %d; %zu temporary file(s) removed\n", signal,
                  removed);
     std::_Exit(128 + signal);
@@ -45,6 +46,9 @@ void take_signals_on_a_thread() {
 
 int main(int argc, char** argv) {
   take_signals_on_a_thread();
+  // A file over the size limit (ulimit -f) fails its write with EFBIG, which the writer reports
+  // with the path and the reason (exit 2), instead of the signal ending the process unreported.
+  std::signal(SIGXFSZ, SIG_IGN);
   using namespace dynpos::cli;
   CLI::App app{
       "dynpos " DYNPOS_VERSION
@@ -67,6 +71,8 @@ int main(int argc, char** argv) {
   register_capability(app);
   register_montecarlo(app);
   register_demo(app);
+  // Every output of the subcommand given is checked before any subcommand runs.
+  app.parse_complete_callback([&app] { check_outputs(app); });
 
   try {
     app.parse(argc, argv);

@@ -4,6 +4,8 @@
 #include "dynpos/analysis/data_dir.hpp"
 #include "dynpos/analysis/demo_sections.hpp"
 #include "dynpos/analysis/options.hpp"
+#include "dynpos/analysis/simulate.hpp"
+#include "dynpos/core/parallel_for.hpp"
 #include "dynpos/scenario/vessel_config.hpp"
 
 namespace dynpos::analysis {
@@ -20,7 +22,16 @@ DemoReport run_demo(const DemoRequest& request) {
   const scenario::VesselConfig vessel =
       scenario::load_vessel_config(data / "vessels" / "gunnerus.toml");
   const std::filesystem::path& dir = request.out_dir;
+  // The disk and memory of the campaign's runs, refused before anything is written (the
+  // analyses' files are small beside the logs).
+  check_simulation_resources(specs, core::job_count(0, specs.size()), dir);
   std::filesystem::create_directories(dir);
+  // A report of another seed loses its summary first: a demo stopped half-way leaves no
+  // index.html, summary.md or summary.json that names runs of two seeds; the new ones are
+  // written once the campaign's runs are all in place.
+  for (const char* summary : {"index.html", "summary.md", "summary.json"}) {
+    std::filesystem::remove(dir / summary);
+  }
   DemoReport report{
       dir, request.seed, scenario::run_campaign(specs, vessel, request.seed, dir), {}};
   // The campaign's report first, so that the logs have one even if an analysis fails.

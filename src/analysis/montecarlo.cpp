@@ -10,6 +10,7 @@
 #include <memory>
 #include <numbers>
 #include <random>
+#include <vector>
 
 #include "dynpos/analysis/data_dir.hpp"
 #include "dynpos/analysis/leverarm_gnss.hpp"
@@ -19,6 +20,7 @@
 #include "dynpos/analysis/step.hpp"
 #include "dynpos/core/error.hpp"
 #include "dynpos/core/parallel_for.hpp"
+#include "dynpos/io/temporary_files.hpp"
 #include "dynpos/report/table.hpp"
 #include "dynpos/scenario/campaign.hpp"
 #include "dynpos/scenario/runner.hpp"
@@ -174,12 +176,14 @@ MonteCarloSample run_seed(const scenario::ScenarioSpec& spec, const scenario::Ve
   } else {
     measure_lever_arms(log, truth, out);
   }
+  const io::temporary_files::Hold hold;  // not beside a signal's removal of the work folder
   std::error_code ignored;
   std::filesystem::remove_all(dir, ignored);
   return out;
 }
 
-// A fresh folder for the seeds' files, removed with them on every exit.
+// A fresh folder for the seeds' files, removed with them on every exit, a signal's too: it is
+// listed with the temporary files (io/temporary_files.hpp), not only the run being written.
 struct WorkDir {
   std::filesystem::path path;
   explicit WorkDir(const std::filesystem::path& parent) {
@@ -187,15 +191,38 @@ struct WorkDir {
         parent.empty() ? std::filesystem::temp_directory_path() : parent;
     std::random_device entropy;
     path = base / fmt::format("dynpos-montecarlo-{}-{:08x}", ::getpid(), entropy());
+    const io::temporary_files::Hold hold;  // made and listed as one step
     std::filesystem::create_directories(path);
+    io::temporary_files::add(path);
   }
   ~WorkDir() {
+    const io::temporary_files::Hold hold;
     std::error_code ignored;
     std::filesystem::remove_all(path, ignored);
+    io::temporary_files::drop(path);
   }
   WorkDir(const WorkDir&) = delete;
   WorkDir& operator=(const WorkDir&) = delete;
 };
+
+// FNV-1a 64 of a file's bytes as 16 hex digits; core::InputError naming it if unreadable.
+std::string fnv1a64_of_file(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::uint64_t hash = 0xCBF29CE484222325ULL;
+  std::vector<char> buffer(std::size_t{1} << 16);
+  while (in) {
+    in.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+    for (std::streamsize i = 0; i < in.gcount(); ++i) {
+      hash ^= static_cast<unsigned char>(buffer[static_cast<std::size_t>(i)]);
+      hash *= 0x100000001B3ULL;
+    }
+  }
+  if (in.bad() || !in.eof()) {
+    throw core::InputError({file.string(), {}, {}, {}}, "cannot read the file",
+                           "check the path and its permissions");
+  }
+  return fmt::format("{:016x}", hash);
+}
 
 }  // namespace
 
@@ -298,14 +325,17 @@ std::map<std::string, MonteCarloStats> summarise(const std::vector<MonteCarloSam
 MonteCarloReport run_montecarlo(const MonteCarloRequest& request) {
   request.validate();
   const std::filesystem::path data = find_data_dir();
-  scenario::ScenarioSpec spec =
-      scenario::load_scenario(scenario::resolve_scenario(request.scenario, data / "scenarios"));
+  const std::filesystem::path scenario_file =
+      scenario::resolve_scenario(request.scenario, data / "scenarios");
+  scenario::ScenarioSpec spec = scenario::load_scenario(scenario_file);
   if (request.duration_s) spec.duration_s = *request.duration_s;
   spec.validate();
-  const scenario::VesselConfig vessel =
-      scenario::load_vessel_config(vessel_file_or_default(request.vessel_file));
+  const std::filesystem::path vessel_file = vessel_file_or_default(request.vessel_file);
+  const scenario::VesselConfig vessel = scenario::load_vessel_config(vessel_file);
   MonteCarloReport report;
   report.scenario = spec.name;
+  report.run = {fnv1a64_of_file(scenario_file), fnv1a64_of_file(vessel_file), spec.duration_s,
+                request.measure, DYNPOS_VERSION};
   report.seed_first = request.seed_first;
   report.seed_last = request.seed_last;
   report.shard_index = request.shard_index;

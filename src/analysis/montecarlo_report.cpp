@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <set>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "dynpos/analysis/montecarlo.hpp"
 #include "dynpos/core/error.hpp"
@@ -38,12 +41,80 @@ MonteCarloSample sample_from_json(const json& j, const std::filesystem::path& fi
   return s;
 }
 
+json run_to_json(const MonteCarloRunId& run) {
+  return {{"scenario_fnv1a64", run.scenario_fnv1a64},
+          {"vessel_fnv1a64", run.vessel_fnv1a64},
+          {"duration_s", run.duration_s},
+          {"measure", run.measure},
+          {"dynpos_version", run.dynpos_version}};
+}
+
+// The shard's i/N, checked as --shard is: 1 ≤ i ≤ N.
+std::pair<std::size_t, std::size_t> shard_of(const json& doc, const std::filesystem::path& file) {
+  std::size_t index = 0, count = 0;
+  try {
+    index = doc.at("shard").at("index").get<std::size_t>();
+    count = doc.at("shard").at("count").get<std::size_t>();
+  } catch (const json::exception& e) {
+    bad_shard(file, fmt::format("not a Monte Carlo result: {}", e.what()));
+  }
+  if (count < 1 || index < 1 || index > count) {
+    bad_shard(file, fmt::format("shard {}/{} does not exist", index, count),
+              "a shard is i/N with 1 ≤ i ≤ N (--shard); merge the documents `dynpos "
+              "montecarlo --shard i/N --json` wrote");
+  }
+  return {index, count};
+}
+
+// The items of the run's identity, by name, for naming the one that differs.
+std::vector<std::pair<std::string, std::string>> run_items(const MonteCarloRunId& run) {
+  return {{"scenario file (FNV-1a 64 of its bytes)", run.scenario_fnv1a64},
+          {"vessel file (FNV-1a 64 of its bytes)", run.vessel_fnv1a64},
+          {"run length (--duration)", fmt::format("{} s", run.duration_s)},
+          {"measurement (--measure)", run.measure},
+          {"dynpos version", run.dynpos_version}};
+}
+
+MonteCarloRunId run_from_json(const json& doc, const std::filesystem::path& file) {
+  if (!doc.contains("run")) {
+    bad_shard(file, "the document does not say what run it is of (no \"run\")",
+              "it was written by an older dynpos: run the shard again");
+  }
+  MonteCarloRunId run;
+  try {
+    const json& j = doc.at("run");
+    run.scenario_fnv1a64 = j.at("scenario_fnv1a64").get<std::string>();
+    run.vessel_fnv1a64 = j.at("vessel_fnv1a64").get<std::string>();
+    run.duration_s = j.at("duration_s").get<double>();
+    run.measure = j.at("measure").get<std::string>();
+    run.dynpos_version = j.at("dynpos_version").get<std::string>();
+  } catch (const json::exception& e) {
+    bad_shard(file, fmt::format("not a Monte Carlo result: {}", e.what()));
+  }
+  return run;
+}
+
+// Refuses a shard of another run than the first shard's, naming both files and the item.
+void check_same_run(const MonteCarloRunId& first, const std::filesystem::path& first_file,
+                    const MonteCarloRunId& part, const std::filesystem::path& file) {
+  const auto a = run_items(first), b = run_items(part);
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    if (a[k].second == b[k].second) continue;
+    bad_shard(file,
+              fmt::format("a shard of another run than '{}': the {} is {} here, {} there",
+                          first_file.string(), a[k].first, b[k].second, a[k].second),
+              "merge the shards of one run only: the same scenario and vessel files, "
+              "--duration, --measure and dynpos version");
+  }
+}
+
 }  // namespace
 
 json to_json(const MonteCarloReport& report) {
   json doc;
   doc["analysis"] = "montecarlo";
   doc["scenario"] = report.scenario;
+  doc["run"] = run_to_json(report.run);
   doc["seeds"] = {{"first", report.seed_first}, {"last", report.seed_last}};
   doc["shard"] = {{"index", report.shard_index}, {"count", report.shard_count}};
   json samples = json::array();
@@ -99,6 +170,7 @@ MonteCarloReport merge_montecarlo(const std::vector<std::filesystem::path>& shar
                                        "give the JSON files the shards wrote");
   }
   MonteCarloReport report;
+  std::size_t shard_counts = 0;
   std::set<std::uint64_t> seen;
   for (std::size_t f = 0; f < shard_files.size(); ++f) {
     const std::filesystem::path& file = shard_files[f];
@@ -107,7 +179,10 @@ MonteCarloReport merge_montecarlo(const std::vector<std::filesystem::path>& shar
       bad_shard(file, "not a Monte Carlo result (no \"analysis\": \"montecarlo\")",
                 "merge the documents `dynpos montecarlo --json` wrote");
     }
+    const auto [shard_index, shard_count] = shard_of(doc, file);
     MonteCarloReport part;
+    part.run = run_from_json(doc, file);
+    part.shard_count = shard_count;
     try {
       part.scenario = doc.at("scenario").get<std::string>();
       part.seed_first = doc.at("seeds").at("first").get<std::uint64_t>();
@@ -117,8 +192,10 @@ MonteCarloReport merge_montecarlo(const std::vector<std::filesystem::path>& shar
     }
     if (f == 0) {
       report.scenario = part.scenario;
+      report.run = part.run;
       report.seed_first = part.seed_first;
       report.seed_last = part.seed_last;
+      shard_counts = shard_count;
     } else if (part.scenario != report.scenario || part.seed_first != report.seed_first ||
                part.seed_last != report.seed_last) {
       bad_shard(file,
@@ -126,7 +203,13 @@ MonteCarloReport merge_montecarlo(const std::vector<std::filesystem::path>& shar
                             part.seed_first, part.seed_last, report.scenario, report.seed_first,
                             report.seed_last),
                 "merge the shards of one run only");
+    } else if (shard_count != shard_counts) {
+      bad_shard(file,
+                fmt::format("shard {}/{} of a run in {} shards, not {} as '{}'", shard_index,
+                            shard_count, shard_count, shard_counts, shard_files[0].string()),
+                "merge the shards of one run only");
     }
+    check_same_run(report.run, shard_files[0], part.run, file);
     for (const json& j : doc.at("samples")) {
       MonteCarloSample s = sample_from_json(j, file);
       if (s.seed < report.seed_first || s.seed > report.seed_last) {

@@ -12,6 +12,7 @@
 #include "dynpos/io/atomic_file.hpp"
 #include "dynpos/io/nmea.hpp"
 #include "dynpos/io/nmea_writer.hpp"
+#include "dynpos/io/temporary_files.hpp"
 #include "dynpos/sim/random.hpp"
 
 namespace dynpos::scenario {
@@ -382,7 +383,10 @@ struct DeviceFileWriter::Files {
 DeviceFileWriter::DeviceFileWriter(const core::Log& layout, const RunFileContext& context,
                                    const std::filesystem::path& dir) {
   if (!context.device_files) throw std::invalid_argument("DeviceFileWriter: no device files");
-  std::filesystem::create_directories(dir);
+  {
+    const io::temporary_files::Hold hold;  // in a run's stage: not after a signal's removal
+    std::filesystem::create_directories(dir);
+  }
   files_.reset(new Files{UtcClock(context.start_utc), {}, {}, {}, {}});  // cannot move: in place
   for (const std::string& antenna : gnss_antennas(layout)) {
     files_->captures.push_back(

@@ -5,6 +5,7 @@
 
 #include <condition_variable>
 #include <exception>
+#include <functional>
 #include <mutex>
 #include <optional>
 #include <random>
@@ -67,7 +68,10 @@ RunFileWriter::~RunFileWriter() = default;
 
 void RunFileWriter::add(const core::Log& log, const core::Log& truth_log) {
   if (!files_) {
-    std::filesystem::create_directories(dir_);
+    {
+      const io::temporary_files::Hold hold;  // not after a signal's removal of the stage
+      std::filesystem::create_directories(dir_);
+    }
     // Files holds files that cannot move: made in place.
     files_.reset(new Files{io::CsvRowWriter(dir_ / "log.csv", csv_columns(log)),
                            io::CsvRowWriter(dir_ / "truth.csv", csv_columns(truth_log)),
@@ -110,6 +114,17 @@ RunFileContext run_file_context(const ScenarioRun& run) {
 
 namespace {
 
+std::function<void()>& before_rename() {
+  static std::function<void()> hook;
+  return hook;
+}
+
+}  // namespace
+
+void testing::set_before_rename(std::function<void()> hook) { before_rename() = std::move(hook); }
+
+namespace {
+
 // Renames every file under `from` to the same place under `to`, folders made as needed. Every
 // place is checked first (a folder where a file goes, a file where a folder goes: an error
 // naming it), so that the renames, each atomic, do not stop half-way for that.
@@ -136,6 +151,7 @@ void move_files_into(const std::filesystem::path& from, const std::filesystem::p
     }
   }
   for (const auto& [file, target] : moves) {
+    if (before_rename()) before_rename()();
     std::filesystem::create_directories(target.parent_path());
     std::filesystem::rename(file, target);
   }
@@ -207,27 +223,40 @@ class WritingThread {
   std::thread thread_;  // last: starts once the rest is made
 };
 
-// Calls write(stage) with a hidden folder in `dir`, then renames what it wrote into `dir`
-// (finding M4 of the reliability review: a failed run left a new log.csv beside the
-// truth.json of another seed). A failure, or a signal, removes the folder.
-template <typename Write>
-void write_staged(const std::filesystem::path& dir, const Write& write) {
-  std::filesystem::create_directories(dir);
-  const std::filesystem::path stage =
-      dir / fmt::format(".run.tmp-{}-{:08x}", ::getpid(), std::random_device{}());
+// Removes the stage and takes it off the list, as one step.
+void remove_stage(const std::filesystem::path& stage) {
+  const io::temporary_files::Hold hold;
   std::error_code ignored;
   std::filesystem::remove_all(stage, ignored);
-  io::temporary_files::add(stage);
+  io::temporary_files::drop(stage);
+}
+
+// Calls write(stage) with a hidden folder in `dir`, then renames what it wrote into `dir`
+// (finding M4 of the reliability review: a failed run left a new log.csv beside the
+// truth.json of another seed). A failure, or a signal while it writes, removes the folder. The
+// renames are one step that a signal waits for (io::temporary_files::Hold): a run's files are
+// placed together or not at all.
+template <typename Write>
+void write_staged(const std::filesystem::path& dir, const Write& write) {
+  const std::filesystem::path stage =
+      dir / fmt::format(".run.tmp-{}-{:08x}", ::getpid(), std::random_device{}());
+  {
+    const io::temporary_files::Hold hold;  // made and listed as one step
+    std::filesystem::create_directories(dir);
+    std::error_code ignored;
+    std::filesystem::remove_all(stage, ignored);
+    std::filesystem::create_directory(stage);
+    io::temporary_files::add(stage);
+  }
   try {
     write(stage);
+    const io::temporary_files::Hold hold;
     move_files_into(stage, dir);
   } catch (...) {
-    std::filesystem::remove_all(stage, ignored);
-    io::temporary_files::drop(stage);
+    remove_stage(stage);
     throw;
   }
-  std::filesystem::remove_all(stage, ignored);
-  io::temporary_files::drop(stage);
+  remove_stage(stage);
 }
 
 }  // namespace

@@ -3,12 +3,17 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
+#include <csignal>
 #include <fstream>
 #include <sstream>
 #include <thread>
 
+#include "dynpos/core/error.hpp"
 #include "dynpos/io/temporary_files.hpp"
 #include "io_test_util.hpp"
 
@@ -212,6 +217,64 @@ TEST(AtomicFile, AFifoIsWrittenThroughToItsReader) {
   EXPECT_EQ(received, "through the pipe");
   EXPECT_TRUE(std::filesystem::is_fifo(fifo));
   EXPECT_EQ(entries(dir.path()), (std::vector<std::string>{"pipe"}));
+}
+
+// A full disk: /dev/full fails every write with ENOSPC. The failure names the path and the
+// reason with what to do, as bad input the user can fix (core::InputError, exit 2), not
+// "unknown error": the write's errno is kept when it happens, not looked up at commit.
+TEST(AtomicFile, AFullDiskNamesThePathAndTheReason) {
+  AtomicFile file("/dev/full");
+  const std::string block(1 << 20, 'x');  // more than any stream buffer
+  file.stream() << block << block;
+  try {
+    file.commit();
+    FAIL() << "writing /dev/full succeeded";
+  } catch (const core::InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("/dev/full"));
+    EXPECT_THAT(e.what(), HasSubstr("No space left on device"));
+    EXPECT_THAT(e.what(), HasSubstr("free some space or write elsewhere"));
+  }
+}
+
+// A file larger than the process may write (ulimit -f): with SIGXFSZ ignored, as the command
+// line does, the write fails with EFBIG, named as such. In a child process, whose limit does
+// not reach the other tests; the child reports the message through a pipe.
+TEST(AtomicFile, AFileSizeLimitNamesThePathAndTheReason) {
+  TempDir dir;
+  int fds[2];
+  ASSERT_EQ(::pipe(fds), 0);
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    ::close(fds[0]);
+    std::signal(SIGXFSZ, SIG_IGN);
+    const rlimit limit{64 * 1024, 64 * 1024};
+    std::string message = "no error";
+    if (::setrlimit(RLIMIT_FSIZE, &limit) == 0) {
+      try {
+        AtomicFile file(dir / "big.csv");
+        file.stream() << std::string(1 << 20, 'x');
+        file.commit();
+      } catch (const core::InputError& e) {
+        message = std::string("InputError: ") + e.what();
+      } catch (const std::exception& e) {
+        message = std::string("other: ") + e.what();
+      }
+    }
+    (void)!::write(fds[1], message.data(), message.size());
+    ::_exit(0);
+  }
+  ::close(fds[1]);
+  std::string message;
+  char buffer[4096];
+  for (ssize_t got; (got = ::read(fds[0], buffer, sizeof buffer)) > 0;) message.append(buffer, got);
+  ::close(fds[0]);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  EXPECT_THAT(message, HasSubstr("InputError: "));
+  EXPECT_THAT(message, HasSubstr("big.csv"));
+  EXPECT_THAT(message, HasSubstr("File too large"));
+  EXPECT_EQ(entries(dir.path()), std::vector<std::string>{});  // no temporary file left
 }
 
 }  // namespace

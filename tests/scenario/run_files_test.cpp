@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -11,9 +12,11 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 #include "../io/io_test_util.hpp"
 #include "../source_dir.hpp"
+#include "dynpos/io/temporary_files.hpp"
 #include "dynpos/scenario/runner.hpp"
 
 namespace dynpos::scenario {
@@ -143,6 +146,47 @@ TEST(RunScenarioInto, AFailedRunLeavesTheFolderAsItWas) {
   ASSERT_EQ(left.size(), 1u);
   EXPECT_EQ(left.at("log.csv"), "an older run\n");
   EXPECT_EQ(std::distance(fs::directory_iterator(out.path()), fs::directory_iterator()), 1);
+}
+
+// A signal's removal of the temporary files (what the command line's signal thread does, on
+// a thread of its own) before each rename of a run over another: the folder holds the files of
+// one run, all old or all new, and no hidden stage. Before the fix a removal between two
+// renames left the new log.csv beside the old truth.json.
+TEST(RunScenarioInto, ASignalWhileTheFilesArePlacedLeavesOneRun) {
+  const ScenarioSpec spec = short_trial();
+  const VesselConfig vessel = gunnerus();
+  const ScenarioRun first = run_scenario(spec, vessel, 1), second = run_scenario(spec, vessel, 2);
+  TempDir old_run, new_run;
+  write_scenario_run(first, old_run.path());
+  write_scenario_run(second, new_run.path());
+  const auto old_files = files_under(old_run.path());
+  const auto new_files = files_under(new_run.path());
+  ASSERT_NE(old_files.at("log.csv"), new_files.at("log.csv"));
+  for (std::size_t at = 0; at < new_files.size(); ++at) {
+    TempDir out;
+    write_scenario_run(first, out.path());
+    std::size_t renames = 0;
+    std::thread signal;
+    testing::set_before_rename([&] {
+      if (renames++ != at) return;
+      signal = std::thread([] { io::temporary_files::remove_all(); });
+      // Time for the removal to run now, if nothing holds it off (it takes well under 1 ms).
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    });
+    try {
+      write_scenario_run(second, out.path());
+    } catch (const std::exception&) {  // the files removed under it: a failed run
+    }
+    testing::set_before_rename({});
+    if (signal.joinable()) signal.join();
+    const auto left = files_under(out.path());
+    EXPECT_TRUE(left == old_files || left == new_files)
+        << "removal before rename " << at << ": the files of two runs";
+    for (const auto& entry : fs::directory_iterator(out.path())) {
+      EXPECT_NE(entry.path().filename().string().rfind(".run.tmp-", 0), 0u)
+          << "removal before rename " << at << " left " << entry.path();
+    }
+  }
 }
 
 }  // namespace

@@ -70,8 +70,20 @@ struct MonteCarloStats {
   std::optional<double> rms_error;                     ///< √mean((value − truth)²)
 };
 
+/// What defines a run besides its seeds, the same in every shard of it: merge() refuses shards
+/// that differ in any item (a shard of an edited scenario is not a part of the run).
+struct MonteCarloRunId {
+  std::string scenario_fnv1a64;  ///< FNV-1a 64 of the scenario file's bytes, 16 hex digits
+  std::string vessel_fnv1a64;    ///< FNV-1a 64 of the vessel file's bytes, 16 hex digits
+  double duration_s = 0.0;       ///< the run length, after --duration [s]
+  std::string measure;           ///< as requested: auto, steps, station-keeping, lever-arms
+  std::string dynpos_version;    ///< of the program that ran the seeds
+  bool operator==(const MonteCarloRunId&) const = default;
+};
+
 struct MonteCarloReport {
   std::string scenario;
+  MonteCarloRunId run;
   std::uint64_t seed_first = 1, seed_last = 1;
   std::size_t shard_index = 1, shard_count = 1;
   std::vector<MonteCarloSample> samples;  ///< in seed order
@@ -87,8 +99,10 @@ std::map<std::string, MonteCarloStats> summarise(const std::vector<MonteCarloSam
 
 /// Joins shard documents (to_json of each shard) of one scenario and seed range into the
 /// report of the whole range: the same document one unsharded run gives. core::InputError
-/// naming the file for a document that is not a Monte Carlo result, a different scenario or
-/// range, a seed given twice, or a seed of the range missing.
+/// naming the file for a document that is not a Monte Carlo result, a shard that is not i/N
+/// with 1 ≤ i ≤ N or not of the others' N, a different scenario or range, a different run
+/// (MonteCarloRunId: the item and both files named), a seed given twice, or a seed of the
+/// range missing.
 MonteCarloReport merge_montecarlo(const std::vector<std::filesystem::path>& shard_files);
 
 nlohmann::json to_json(const MonteCarloReport& report);

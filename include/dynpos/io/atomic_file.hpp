@@ -16,10 +16,12 @@
 ///   never replaced; such an output is not atomic;
 /// - a directory, a block device or a socket: refused.
 /// Refusals and failures throw std::runtime_error naming the path, the reason (the system's
-/// errno text) and what to do.
+/// errno text, kept from the write that failed) and what to do; a write the user can make
+/// succeed (no space: ENOSPC, EDQUOT; a file over the size limit: EFBIG) throws
+/// core::InputError (the CLI's exit 2).
 
 #include <filesystem>
-#include <fstream>
+#include <memory>
 #include <ostream>
 
 namespace dynpos::io {
@@ -41,8 +43,9 @@ class AtomicFile {
   std::ostream& stream() noexcept { return out_; }
 
   /// Flushes and closes the temporary file and renames it onto the target. Throws
-  /// std::runtime_error with the path and the reason if writing or renaming failed (the
-  /// temporary file is then removed). Calling it twice is an error (std::logic_error).
+  /// std::runtime_error (core::InputError for no space or a file too large) with the path and
+  /// the reason if writing or renaming failed (the temporary file is then removed). Calling it
+  /// twice is an error (std::logic_error).
   void commit();
 
   bool committed() const noexcept { return committed_; }
@@ -51,6 +54,8 @@ class AtomicFile {
   const std::filesystem::path& temp_path() const noexcept { return temp_; }
 
  private:
+  class Buffer;  // a stream buffer on a file descriptor that keeps the errno of a failed write
+
   void create_temp();
   /// Removes the temporary file and takes it off temporary_files' list.
   void discard_temp();
@@ -58,7 +63,8 @@ class AtomicFile {
   std::filesystem::path target_;  // as given, for messages
   std::filesystem::path file_;    // what is written: the target, or what its link points to
   std::filesystem::path temp_;
-  std::ofstream out_;
+  std::unique_ptr<Buffer> buffer_;
+  std::ostream out_;
   int keep_mode_ = -1;  // mode of a replaced file
   int keep_uid_ = -1, keep_gid_ = -1;
   bool committed_ = false;

@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 
 #include "dynpos/core/log.hpp"
@@ -59,5 +60,11 @@ void write_scenario_run(const ScenarioRun& run, const std::filesystem::path& dir
 ScenarioRun run_scenario_into(const ScenarioSpec& spec, const VesselConfig& vessel,
                               std::uint64_t seed, const std::filesystem::path& dir,
                               const RunBlockSink& also = {});
+
+namespace testing {
+/// Calls `hook` before each rename of a run's files into place (empty: none); for tests of a
+/// signal between two renames.
+void set_before_rename(std::function<void()> hook);
+}  // namespace testing
 
 }  // namespace dynpos::scenario

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# demo_interrupted.sh DYNPOS OUT_DIR CLI_DIR SOURCE_DIR: Ctrl-C during a demo over the report of
+# another seed leaves no summary (index.html, summary.md, summary.json) naming the runs of two
+# seeds: the old summary goes before the first run is replaced. A data folder of one short
+# scenario keeps the test quick; the signal comes while its run is written.
+set -u
+dynpos="$1" out="$2" here="$3" source="$4"
+rm -rf "$out" && mkdir -p "$out/data/scenarios" "$out/data/vessels" "$out/report" || exit 1
+cp "$here/short.toml" "$out/data/scenarios/"
+cp "$source/data/vessels/gunnerus.toml" "$out/data/vessels/"
+for f in index.html summary.md summary.json; do echo "the report of seed 1" > "$out/report/$f"; done
+DYNPOS_DATA_DIR="$out/data" "$dynpos" demo --out "$out/report" --seed 2 >/dev/null 2>&1 &
+pid=$!
+for _ in $(seq 200); do  # the run's hidden folder appears as soon as it starts
+  compgen -G "$out/report/short-steps/.run.tmp-*" >/dev/null && break
+  sleep 0.05
+done
+kill -INT "$pid"
+wait "$pid"
+left=$(grep -l "seed 1" "$out/report/index.html" "$out/report/summary.md" \
+  "$out/report/summary.json" 2>/dev/null)
+if [ -n "$left" ]; then echo "FAIL: the old summary is left beside the new runs: $left"; exit 1; fi
+echo "ok: no summary of the other seed left"
