@@ -18,6 +18,13 @@ constexpr double kDemandWeight = 1e8;   // ρ: the demand over the effort
 constexpr double kMetTolerance = 1e-6;  // of the force and moment scales
 constexpr int kRelaxed = -1;            // region code: the unit's convex hull
 
+// The rudder's largest side force [N] at capacity `cap` of its propeller: the cone's at full
+// ahead thrust, within the rudder's own largest force.
+double rudder_lift_max(const ThrusterUnit& u, double cap) {
+  const double cone = u.rudder_lift_per_thrust * cap * u.max_thrust_N + u.rudder_lift_at_zero_N;
+  return u.rudder_max_force_N > 0.0 ? std::min(cone, u.rudder_max_force_N) : cone;
+}
+
 int variable_count(UnitType type) {
   return type == UnitType::kAzimuth || type == UnitType::kPropellerRudder ? 2 : 1;
 }
@@ -155,26 +162,27 @@ LayoutAllocator::Setup LayoutAllocator::setup(const Eigen::Vector3d& tau_d_b,
       }
       case UnitType::kPropellerRudder: {
         s.scale(o) = cap * rated;
-        const double lift_max =
-            u.rudder_lift_per_thrust * cap * u.max_thrust_N + u.rudder_lift_at_zero_N;
+        const double lift_max = rudder_lift_max(u, cap);
         s.scale(o + 1) = lift_max > 0.0 ? lift_max : 0.0;
         s.A.col(o) = surge * s.scale(o);
-        s.A.col(o + 1) = sway * s.scale(o + 1);
+        s.A.col(o + 1) = Eigen::Vector3d{0.0, 1.0, u.rudder_x_m.value_or(u.x_m)} * s.scale(o + 1);
         weight(o) = u.weight;
         weight(o + 1) = u.weight * options_.rudder_weight;
         // In x: |Y|·lift_max ≤ κ·T·cap·rated + c, i.e. |y| ≤ a·t + b (y = 0 without lift).
         const double a = lift_max > 0.0 ? u.rudder_lift_per_thrust * cap * rated / lift_max : 0.0;
         const double b = lift_max > 0.0 ? u.rudder_lift_at_zero_N / lift_max : 0.0;
-        if (region == 0) {  // ahead: the cone
+        if (region == 0) {  // ahead: the cone, within the rudder's largest force
           rows.add(o, 2, {1.0, 0.0}, ahead);
           rows.add(o, 2, {-1.0, 0.0}, 0.0);
           rows.add(o, 2, {-a, 1.0}, b);
           rows.add(o, 2, {-a, -1.0}, b);
+          rows.add(o, 2, {0.0, 1.0}, lift_max > 0.0 ? 1.0 : 0.0);
+          rows.add(o, 2, {0.0, -1.0}, lift_max > 0.0 ? 1.0 : 0.0);
         } else if (region == 1) {  // astern: no slipstream over the rudder
           rows.add(o, 2, {1.0, 0.0}, 0.0);
           rows.add(o, 2, {-1.0, 0.0}, astern);
-          rows.add(o, 2, {0.0, 1.0}, b);
-          rows.add(o, 2, {0.0, -1.0}, b);
+          rows.add(o, 2, {0.0, 1.0}, std::min(b, 1.0));
+          rows.add(o, 2, {0.0, -1.0}, std::min(b, 1.0));
         } else {  // the hull of both
           rows.add(o, 2, {1.0, 0.0}, ahead);
           rows.add(o, 2, {-1.0, 0.0}, astern);
@@ -227,7 +235,8 @@ void LayoutAllocator::project(const Setup& s, Eigen::VectorXd& x) const {
       const double lo = region == 0 ? 0.0 : -astern;
       x(o) = std::clamp(x(o), lo, region == 1 ? 0.0 : ahead);
       const double y_max =
-          region == kRelaxed ? (lift_max > 0.0 ? 1.0 : 0.0) : (region == 0 ? a * x(o) + b : b);
+          std::min(region == kRelaxed ? 1.0 : (region == 0 ? a * x(o) + b : b),
+                   lift_max > 0.0 ? 1.0 : 0.0);
       x(o + 1) = std::clamp(x(o + 1), -y_max, y_max);
     } else {
       Eigen::Vector2d v = x.segment(o, 2);
@@ -371,9 +380,10 @@ bool in_region(const ThrusterUnit& u, const UnitCommand& c) {
     return c.thrust_N <= tol || !in_forbidden_sector(c.angle_rad, u.forbidden_deg);
   }
   if (u.type == UnitType::kPropellerRudder) {
-    const double lift = c.thrust_N >= 0.0
-                            ? u.rudder_lift_per_thrust * c.thrust_N + u.rudder_lift_at_zero_N
-                            : u.rudder_lift_at_zero_N;
+    double lift = c.thrust_N >= 0.0
+                      ? u.rudder_lift_per_thrust * c.thrust_N + u.rudder_lift_at_zero_N
+                      : u.rudder_lift_at_zero_N;
+    if (u.rudder_max_force_N > 0.0) lift = std::min(lift, u.rudder_max_force_N);
     return std::abs(c.rudder_force_N) <= lift + tol;
   }
   return true;

@@ -97,6 +97,12 @@ void ThrusterUnit::validate() const {
       !finite(rudder_lift_at_zero_N) || rudder_lift_at_zero_N < 0.0) {
     bad_field(*this, "rudder_lift_per_thrust", "the rudder's lift must be finite and ≥ 0");
   }
+  if (!finite(rudder_max_force_N) || rudder_max_force_N < 0.0) {
+    bad_field(*this, "rudder_max_force_N", "the rudder's largest force must be finite and ≥ 0");
+  }
+  if (rudder_x_m && !finite(*rudder_x_m)) {
+    bad_field(*this, "rudder_x_m", "the rudder's position must be finite");
+  }
 }
 
 std::vector<AllowedArc> allowed_arcs(const std::vector<AngleSector>& forbidden_deg) {

@@ -9,6 +9,7 @@
 /// starboard, clockwise seen from above), so the force is F_b = T·(cos α, sin α). A force F at
 /// (x, y) gives τ = (F_x, F_y, x·F_y − y·F_x) (2.2).
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,11 @@ struct ThrusterUnit {
   /// at zero thrust c [N] (from the ship's speed; 0 at rest), both ≥ 0.
   double rudder_lift_per_thrust = 0.0;
   double rudder_lift_at_zero_N = 0.0;
+  /// Propeller with rudder only: the largest side force of the rudder [N] (its stall), > 0, or
+  /// 0 for the cone alone; and where the side force acts, forward of the control origin [m]
+  /// (the rudder's centre of pressure; unset: x_m).
+  double rudder_max_force_N = 0.0;
+  std::optional<double> rudder_x_m;
   /// Cost of a fraction of the unit's capacity, relative to the others [-], > 0.
   double weight = 1.0;
   /// Redundancy group (switchboard, engine room); empty: none.
