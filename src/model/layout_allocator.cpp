@@ -37,10 +37,12 @@ double angle_after(double a, double from) { return wrap_2pi(a - from); }
 // One row a·x ≤ b on the variables at `offset`.
 struct Rows {
   std::vector<Eigen::Index> column;
+  std::vector<bool> limit;  // a limit of the unit, not the split between a rudder's two signs
   std::vector<std::pair<Eigen::Vector2d, double>> rows;  // (coefficients of 1 or 2 vars, bound)
   std::vector<int> width;
-  void add(Eigen::Index offset, int w, Eigen::Vector2d a, double b) {
+  void add(Eigen::Index offset, int w, Eigen::Vector2d a, double b, bool is_limit = true) {
     column.push_back(offset);
+    limit.push_back(is_limit);
     width.push_back(w);
     rows.emplace_back(a, b);
   }
@@ -78,7 +80,9 @@ struct LayoutAllocator::Setup {
   Eigen::MatrixXd A;      // τ = A·x [N, N, N·m]
   Eigen::VectorXd scale;  // s per variable [N]
   std::vector<Eigen::Index> offset;
-  std::vector<int> regions;  // per unit
+  std::vector<int> regions;           // per unit
+  std::vector<std::size_t> row_unit;  // the unit of each row of G
+  std::vector<bool> row_limit;        // whether the row is one of the unit's limits
 };
 
 LayoutAllocator::LayoutAllocator(std::vector<ThrusterUnit> units, LayoutAllocationOptions options)
@@ -173,13 +177,13 @@ LayoutAllocator::Setup LayoutAllocator::setup(const Eigen::Vector3d& tau_d_b,
         const double b = lift_max > 0.0 ? u.rudder_lift_at_zero_N / lift_max : 0.0;
         if (region == 0) {  // ahead: the cone, within the rudder's largest force
           rows.add(o, 2, {1.0, 0.0}, ahead);
-          rows.add(o, 2, {-1.0, 0.0}, 0.0);
+          rows.add(o, 2, {-1.0, 0.0}, 0.0, false);
           rows.add(o, 2, {-a, 1.0}, b);
           rows.add(o, 2, {-a, -1.0}, b);
           rows.add(o, 2, {0.0, 1.0}, lift_max > 0.0 ? 1.0 : 0.0);
           rows.add(o, 2, {0.0, -1.0}, lift_max > 0.0 ? 1.0 : 0.0);
         } else if (region == 1) {  // astern: no slipstream over the rudder
-          rows.add(o, 2, {1.0, 0.0}, 0.0);
+          rows.add(o, 2, {1.0, 0.0}, 0.0, false);
           rows.add(o, 2, {-1.0, 0.0}, astern);
           rows.add(o, 2, {0.0, 1.0}, std::min(b, 1.0));
           rows.add(o, 2, {0.0, -1.0}, std::min(b, 1.0));
@@ -207,6 +211,9 @@ LayoutAllocator::Setup LayoutAllocator::setup(const Eigen::Vector3d& tau_d_b,
   for (Eigen::Index i = 0; i < m; ++i) {
     const auto& [a, b] = rows.rows[static_cast<std::size_t>(i)];
     const Eigen::Index o = rows.column[static_cast<std::size_t>(i)];
+    s.row_unit.push_back(static_cast<std::size_t>(
+        std::upper_bound(s.offset.begin(), s.offset.end(), o) - s.offset.begin() - 1));
+    s.row_limit.push_back(rows.limit[static_cast<std::size_t>(i)]);
     s.qp.G(i, o) = a(0);
     if (rows.width[static_cast<std::size_t>(i)] == 2) s.qp.G(i, o + 1) = a(1);
     // Moved out by 10⁻⁹ of the rating, each by its own amount: the cone and wedge sides all
@@ -234,9 +241,8 @@ void LayoutAllocator::project(const Setup& s, Eigen::VectorXd& x) const {
       const double b = lift_max > 0.0 ? u.rudder_lift_at_zero_N / lift_max : 0.0;
       const double lo = region == 0 ? 0.0 : -astern;
       x(o) = std::clamp(x(o), lo, region == 1 ? 0.0 : ahead);
-      const double y_max =
-          std::min(region == kRelaxed ? 1.0 : (region == 0 ? a * x(o) + b : b),
-                   lift_max > 0.0 ? 1.0 : 0.0);
+      const double y_max = std::min(region == kRelaxed ? 1.0 : (region == 0 ? a * x(o) + b : b),
+                                    lift_max > 0.0 ? 1.0 : 0.0);
       x(o + 1) = std::clamp(x(o + 1), -y_max, y_max);
     } else {
       Eigen::Vector2d v = x.segment(o, 2);
@@ -337,6 +343,15 @@ LayoutAllocation LayoutAllocator::solve(const Setup& s, const Eigen::Vector3d& t
         break;
     }
     out.units.push_back(c);
+  }
+  for (Eigen::Index i = 0; i < s.qp.G.rows(); ++i) {
+    const std::size_t k = s.row_unit[static_cast<std::size_t>(i)];
+    UnitCommand& c = out.units[k];
+    const bool moving = c.force_b.norm() > 1e-9 * std::max(units_[k].max_thrust_N, 1.0);
+    if (moving && s.row_limit[static_cast<std::size_t>(i)] &&
+        s.qp.G.row(i).dot(q.x) >= s.qp.h(i) - 2e-3) {
+      c.at_limit = true;
+    }
   }
   out.tau_achieved_b = s.A * q.x;
   out.tau_unmet_b = tau_d_b - out.tau_achieved_b;

@@ -20,8 +20,8 @@ namespace {
 model::ThrustAllocator gunnerus_allocator() {
   const scenario::VesselConfig v;
   return model::ThrustAllocator(model::Thruster(v.propeller), model::Rudder(v.rudder),
-                                model::TunnelThruster(v.tunnel), model::ThrustConfiguration(v.layout),
-                                v.allocation);
+                                model::TunnelThruster(v.tunnel),
+                                model::ThrustConfiguration(v.layout), v.allocation);
 }
 
 // The largest λ ≤ 10 with held(λ) (monotone), by bisection to 10⁻⁹ of 10.

@@ -69,6 +69,9 @@ struct UnitCommand {
   double angle_rad = 0.0;
   /// Propeller with rudder: the rudder's side force [N]; else 0.
   double rudder_force_N = 0.0;
+  /// At a limit of its region (rated thrust, the edge of an allowed arc, the rudder's cone or
+  /// largest force) within 0.2 % of its rating, with a force that is not zero.
+  bool at_limit = false;
 };
 
 /// Outcome of one allocation.
