@@ -10,6 +10,7 @@
 
 #include "commands.hpp"
 #include "dynpos/analysis/capability.hpp"
+#include "dynpos/analysis/feasibility.hpp"
 #include "dynpos/analysis/options.hpp"
 #include "dynpos/io/json_writer.hpp"
 
@@ -18,9 +19,31 @@ namespace {
 
 struct CapabilityCliOptions {
   analysis::CapabilityRequest request;
+  std::filesystem::path loads;  ///< a load table: the feasibility mode
   std::string json;
   std::filesystem::path out;  ///< folder for rose.svg
 };
+
+// --loads: the factor of each load of the table (analysis/feasibility.hpp).
+void run_loads(const CapabilityCliOptions& o, const CLI::App& sub) {
+  for (const char* option :
+       {"--level", "--site", "--hs", "--tp", "--current", "--direction-step", "--wind-tolerance",
+        "--duration", "--settle", "--footprint", "--footprint-deg", "--seed", "--jobs", "--out"}) {
+    if (sub.count(option) > 0) {
+      throw analysis::option_error(
+          "loads", fmt::format("{} is not an option of the load table's factors", option),
+          "with --loads give --vessel, --failure and --json only");
+    }
+  }
+  const analysis::FeasibilityRequest request{o.request.vessel, o.loads, o.request.failure};
+  request.validate();
+  analysis::check_output_file("json", o.json);
+  const analysis::FeasibilityReport report = analysis::run_feasibility(request);
+  if (!o.json.empty()) io::write_json(o.json, analysis::to_json(report));
+  std::FILE* out = o.json == "-" ? stderr : stdout;
+  fmt::print(out, "{}", analysis::to_text(report));
+  if (!o.json.empty() && o.json != "-") fmt::print(out, "wrote {}\n", o.json);
+}
 
 void run(const CapabilityCliOptions& o) {
   o.request.validate();
@@ -57,8 +80,13 @@ void register_capability(CLI::App& app) {
   sub->add_option("--vessel", r.vessel, "Vessel file (default: data/vessels/gunnerus.toml)");
   sub->add_option("--failure", r.failure,
                   "none, worst (every single failure, the worst per direction) or an actuator "
-                  "lost: port, stb, rudder.port, rudder.stb, tunnel")
+                  "lost: port, stb, rudder.port, rudder.stb, tunnel; with --loads a unit of "
+                  "the layout or group:NAME")
       ->capture_default_str();
+  sub->add_option("--loads", o->loads,
+                  "Load table (CSV: direction_deg,X_N,Y_N,N_Nm, the environment's load in "
+                  "BODY): for each row the largest factor held by the vessel's [[thruster]] "
+                  "layout (or its model's units), and the limiting units");
   sub->add_option("--site", r.site,
                   "Level 2: site table, TOML [[environment]] rows with wind_mps, hs_m, tp_s, "
                   "current_mps (default: the DNV table)");
@@ -86,7 +114,7 @@ void register_capability(CLI::App& app) {
       "90 = from starboard). Levels 1 and 2 balance the mean load × 1.25 (DNV's reserve for "
       "dynamics) against the thrusters' limits exactly; level 3 bisects the environment until "
       "the vessel leaves its footprint. Example: dynpos capability --failure worst --out cap");
-  sub->callback([o] { run(*o); });
+  sub->callback([o, sub] { o->loads.empty() ? run(*o) : run_loads(*o, *sub); });
 }
 
 }  // namespace dynpos::cli

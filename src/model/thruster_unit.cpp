@@ -73,6 +73,9 @@ void ThrusterUnit::validate() const {
     bad_field(*this, "max_reverse_thrust_N",
               fmt::format("{} N is not a thrust ≥ 0", max_reverse_thrust_N));
   }
+  if (!finite(rate_deg_per_s) || rate_deg_per_s <= 0.0) {
+    bad_field(*this, "rate_deg_per_s", fmt::format("{}°/s is not a positive rate", rate_deg_per_s));
+  }
   if (!finite(weight) || weight <= 0.0) {
     bad_field(*this, "weight", fmt::format("{} is not a positive weight", weight));
   }

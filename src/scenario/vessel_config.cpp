@@ -8,6 +8,7 @@
 #include "dynpos/core/error.hpp"
 #include "param_fields.hpp"
 #include "toml_fields.hpp"
+#include "vessel_thrusters.hpp"
 
 namespace dynpos::scenario {
 namespace {
@@ -98,10 +99,11 @@ VesselConfig load_vessel_config(const std::filesystem::path& path) {
   VesselConfig config;
   config.source = file;
   std::vector<core::ParamSection> all = vessel_param_sections(config);
-  std::set<std::string, std::less<>> known{"name"};
+  std::set<std::string, std::less<>> known{"name", "thruster"};
   for (const core::ParamSection& s : all) known.insert(s.name);
   root.reject_unknown(known);
   config.name = root.string_or("name", config.name);
+  config.thrusters = detail::read_thruster_units(doc, root);
   for (const core::ParamSection& s : all) {
     auto table = root.optional_table(s.name);
     if (!table) continue;

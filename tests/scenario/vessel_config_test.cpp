@@ -47,6 +47,60 @@ TEST(VesselConfig, UnknownKeyIsRejected) {
                   testing::ContainsRegex("typo_vessel.toml:2:.*propeller.diamter_m.*unknown key")));
 }
 
+// [[thruster]] units: each type with its keys, defaults scaled from the rated thrust, and the
+// errors naming the file, line and key.
+TEST(VesselConfig, ThrusterLayoutUnits) {
+  const auto path =
+      write_temp("dynpos_layout_vessel.toml",
+                 "name = \"OSV\"\n"
+                 "[[thruster]]\nname = \"bow1\"\ntype = \"tunnel\"\n"
+                 "x_m = 35.0\ny_m = 0.0\nmax_thrust_N = 1.1e5\ngroup = \"bus A\"\n"
+                 "[[thruster]]\nname = \"main_port\"\ntype = \"azimuth\"\n"
+                 "x_m = -36.0\ny_m = -6.0\nmax_thrust_N = 3.5e5\n"
+                 "forbidden_deg = [[60.0, 120.0]]\nrate_deg_per_s = 12\n"
+                 "[[thruster]]\nname = \"main_stb\"\ntype = \"propeller_rudder\"\n"
+                 "x_m = -36.0\ny_m = 6.0\nmax_thrust_N = 3.0e5\nrudder_x_m = -38.0\n");
+  const VesselConfig v = load_vessel_config(path);
+  ASSERT_EQ(v.thrusters.size(), 3u);
+  EXPECT_EQ(v.thrusters[0].type, model::UnitType::kTunnel);
+  EXPECT_DOUBLE_EQ(v.thrusters[0].max_reverse_thrust_N, 0.9 * 1.1e5);  // the stated default
+  EXPECT_EQ(v.thrusters[0].group, "bus A");
+  EXPECT_EQ(v.thrusters[1].forbidden_deg.size(), 1u);
+  EXPECT_EQ(v.thrusters[1].rate_deg_per_s, 12.0);
+  EXPECT_EQ(v.thrusters[1].max_reverse_thrust_N, 0.0);
+  EXPECT_DOUBLE_EQ(v.thrusters[2].max_reverse_thrust_N, 3.0e5 * 5.8 / 8.13);
+  EXPECT_EQ(v.thrusters[2].rudder_lift_per_thrust, 0.65);
+  EXPECT_EQ(v.thrusters[2].rudder_x_m, -38.0);
+  EXPECT_TRUE(VesselConfig{}.thrusters.empty());
+
+  const auto error_of = [](const std::string& name, const std::string& text) {
+    try {
+      load_vessel_config(write_temp(name, text));
+    } catch (const core::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::string unit = "[[thruster]]\nname = \"a\"\ntype = \"azimuth\"\nx_m = 0\ny_m = 0\n";
+  EXPECT_THAT(error_of("dynpos_t1.toml", unit + "max_thrust_N = 0\n"),
+              testing::ContainsRegex("t1.toml:6:.*thruster\\[1\\].max_thrust_N.*out of range"));
+  EXPECT_THAT(
+      error_of("dynpos_t2.toml", unit + "max_thrust_N = 1e5\nforbidden_deg = [[10, 370]]\n"),
+      testing::ContainsRegex("t2.toml:7:.*forbidden_deg.*leaves \\[0, 360\\)"));
+  EXPECT_THAT(error_of("dynpos_t3.toml", unit + "max_thrust_N = 1e5\nrudder_x_m = 1\n"),
+              testing::ContainsRegex("t3.toml:7:.*the azimuth unit has no rudder_x_m"));
+  EXPECT_THAT(
+      error_of("dynpos_t4.toml", unit + "max_thrust_N = 1e5\n" + unit + "max_thrust_N = 1e5\n"),
+      testing::ContainsRegex("t4.toml:8:.*a second unit named 'a'"));
+  EXPECT_THAT(error_of("dynpos_t5.toml", "[[thruster]]\nname = \"a\"\ntype = \"pod\"\n"),
+              testing::ContainsRegex("t5.toml:3:.*unknown thruster type 'pod'"));
+  EXPECT_THAT(error_of("dynpos_t6.toml",
+                       unit + "max_thrust_N = 1e5\nforbidden_deg = [[0, 180], [180, 0]]\n"),
+              testing::ContainsRegex("t6.toml:7:.*forbid every direction"));
+  EXPECT_THAT(error_of("dynpos_t7.toml", unit + "max_thrust_N = 1e5\nloss = [[0, 1]]\n"),
+              testing::ContainsRegex("t7.toml:7:.*not modelled"));
+}
+
 TEST(VesselConfig, AFolderOrAMissingFileIsNotTheBuiltInVessel) {
   const auto dir = std::filesystem::temp_directory_path();
   EXPECT_THAT([&] { load_vessel_config(dir); },

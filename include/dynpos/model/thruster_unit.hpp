@@ -54,6 +54,9 @@ struct ThrusterUnit {
   /// (the rudder's centre of pressure; unset: x_m).
   double rudder_max_force_N = 0.0;
   std::optional<double> rudder_x_m;
+  /// Azimuth only: the slew rate limit [deg/s], > 0, for a simulator's azimuth model. Source:
+  /// reasoned — 10°/s, a half turn in 18 s, typical of DP azimuth thrusters.
+  double rate_deg_per_s = 10.0;
   /// Cost of a fraction of the unit's capacity, relative to the others [-], > 0.
   double weight = 1.0;
   /// Redundancy group (switchboard, engine room); empty: none.

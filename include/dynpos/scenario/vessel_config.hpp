@@ -15,6 +15,7 @@
 #include "dynpos/model/hull.hpp"
 #include "dynpos/model/sea_state.hpp"
 #include "dynpos/model/thrust_allocation.hpp"
+#include "dynpos/model/thruster_unit.hpp"
 #include "dynpos/sensors/sensor_suite.hpp"
 
 namespace dynpos::scenario {
@@ -61,6 +62,10 @@ struct VesselConfig {
   /// GNSS antennas, MRUs, gyro, speed log, wind sensor and feedback (vessel-file sections
   /// [sensors], [gnss1]–[gnss3], [mru1]–[mru2], [gyro], [speed_log], [wind_sensor], [feedback]).
   sensors::SensorSuiteParams sensors;
+  /// The thruster layout of [[thruster]] tables (docs/vessel-file.md), for the allocation of
+  /// any layout and `capability --loads`; empty: the model's own units (the two propellers with
+  /// rudders and the tunnel above). The simulator runs the model's units.
+  std::vector<model::ThrusterUnit> thrusters;
 
   /// Throws core::InputError naming the first value outside its range or the rule between
   /// values that does not hold (e.g. a mass matrix that is not positive definite).

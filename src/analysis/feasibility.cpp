@@ -1,0 +1,91 @@
+#include "dynpos/analysis/feasibility.hpp"
+
+#include <fmt/format.h>
+
+#include "dynpos/analysis/data_dir.hpp"
+#include "dynpos/analysis/options.hpp"
+#include "dynpos/capability/load_table.hpp"
+#include "dynpos/capability/vessel_units.hpp"
+#include "dynpos/scenario/vessel_config.hpp"
+
+namespace dynpos::analysis {
+
+void FeasibilityRequest::validate() const {
+  if (loads.empty()) throw option_error("loads", "no load table", "give --loads FILE.csv");
+  if (failure.empty()) {
+    throw option_error("failure", "an empty failure case",
+                       "none, worst, a unit's name or group:NAME");
+  }
+  if (!vessel.empty() && !std::filesystem::is_regular_file(vessel)) {
+    throw option_error("vessel", "'" + vessel.string() + "' is not a file",
+                       "give a vessel TOML file (docs/vessel-file.md)");
+  }
+}
+
+FeasibilityReport run_feasibility(const FeasibilityRequest& q) {
+  q.validate();
+  const scenario::VesselConfig vessel =
+      scenario::load_vessel_config(vessel_file_or_default(q.vessel));
+  FeasibilityReport r;
+  r.vessel = vessel.name;
+  r.vessel_source = q.vessel.empty() ? "" : q.vessel.string();
+  r.failure = q.failure;
+  std::vector<model::ThrusterUnit> units = vessel.thrusters;
+  r.layout = "[[thruster]]";
+  if (units.empty()) {
+    r.layout = "model";
+    units = capability::gunnerus_units(
+        model::ThrustAllocator(model::Thruster(vessel.propeller), model::Rudder(vessel.rudder),
+                               model::TunnelThruster(vessel.tunnel),
+                               model::ThrustConfiguration(vessel.layout), vessel.allocation));
+  }
+  for (const model::ThrusterUnit& u : units) r.units.push_back(u.name);
+  const model::LayoutAllocator allocator(units);
+  if (q.failure != "worst") capability::failure_case(units, q.failure);  // the name is known
+  const std::vector<capability::LoadCase> loads = capability::read_load_table(q.loads.string());
+  if (q.failure == "worst") {
+    r.points = capability::worst_feasibility(allocator, loads);
+  } else {
+    const capability::FailureCase c = capability::failure_case(units, q.failure);
+    for (const capability::LoadCase& load : loads) {
+      r.points.push_back(capability::feasibility(allocator, load, c));
+    }
+  }
+  return r;
+}
+
+nlohmann::json to_json(const FeasibilityReport& r) {
+  nlohmann::json points = nlohmann::json::array();
+  for (const capability::FeasibilityPoint& p : r.points) {
+    points.push_back({{"direction_deg", p.direction_deg},
+                      {"load_factor", p.load_factor},
+                      {"capped", p.capped},
+                      {"limiting", p.limiting},
+                      {"failure", p.failure}});
+  }
+  nlohmann::json out{{"analysis", "capability-loads"},
+                     {"vessel", r.vessel},
+                     {"layout", r.layout},
+                     {"units", r.units},
+                     {"failure", r.failure},
+                     {"points", points}};
+  if (!r.vessel_source.empty()) out["vessel_file"] = r.vessel_source;
+  return out;
+}
+
+std::string to_text(const FeasibilityReport& r) {
+  std::string out = fmt::format(
+      "{}: load factors ({} units from {}: {}), failure {}\n"
+      "direction [deg]  load factor  case          limiting\n",
+      r.vessel, r.units.size(), r.layout == "model" ? "the vessel model" : "[[thruster]]",
+      fmt::join(r.units, ", "), r.failure);
+  for (const capability::FeasibilityPoint& p : r.points) {
+    out += fmt::format(
+        "{:>15.1f}  {:>11}  {:<12}  {}\n", p.direction_deg,
+        p.capped ? fmt::format("≥ {:.0f}", p.load_factor) : fmt::format("{:.4f}", p.load_factor),
+        p.failure, p.limiting.empty() ? "none" : fmt::format("{}", fmt::join(p.limiting, "+")));
+  }
+  return out;
+}
+
+}  // namespace dynpos::analysis

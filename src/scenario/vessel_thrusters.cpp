@@ -1,0 +1,142 @@
+#include "vessel_thrusters.hpp"
+
+#include <set>
+
+#include <fmt/format.h>
+
+#include "dynpos/core/error.hpp"
+
+namespace dynpos::scenario::detail {
+namespace {
+
+// Defaults scaled from the rated thrust, each with its source.
+// Astern over ahead thrust of a fixed-pitch propeller: the Gunnerus propellers' bollard
+// coefficients, 5.8 / 8.13 kN/rps² (table 3.2).
+constexpr double kPropellerAsternRatio = 5.8 / 8.13;
+// Port over starboard thrust of a tunnel thruster: the Gunnerus tunnel model's, 0.9.
+constexpr double kTunnelPortRatio = 0.9;
+// A rudder's side force per newton of thrust in its slipstream: the Gunnerus rudder model at
+// its 30° allocation limit, 0.653.
+constexpr double kRudderLiftPerThrust = 0.65;
+
+std::optional<model::UnitType> unit_type(std::string_view name) {
+  for (const model::UnitType t : {model::UnitType::kAzimuth, model::UnitType::kTunnel,
+                                  model::UnitType::kPropeller, model::UnitType::kPropellerRudder}) {
+    if (model::unit_type_name(t) == name) return t;
+  }
+  return std::nullopt;
+}
+
+// forbidden_deg = [[from, to], …], each in [0, 360).
+std::vector<model::AngleSector> read_sectors(const TomlTable& t) {
+  std::vector<model::AngleSector> out;
+  const toml::node* node = t.raw().get("forbidden_deg");
+  if (node == nullptr) return out;
+  const toml::array* sectors = node->as_array();
+  const auto bad = [&](std::string what) {
+    throw core::InputError(t.where("forbidden_deg"), std::move(what),
+                           "write forbidden_deg = [[from, to], …], degrees in [0, 360) clockwise "
+                           "from ahead, e.g. [[250.0, 290.0]]");
+  };
+  if (sectors == nullptr) bad("expected an array of [from, to] pairs");
+  for (const toml::node& sector : *sectors) {
+    const toml::array* pair = sector.as_array();
+    if (pair == nullptr || pair->size() != 2) bad("each sector is a pair [from, to]");
+    const std::optional<double> from = (*pair)[0].value<double>();
+    const std::optional<double> to = (*pair)[1].value<double>();
+    if (!from || !to) bad("a sector's ends are numbers");
+    if (*from < 0.0 || *from >= 360.0 || *to < 0.0 || *to >= 360.0) {
+      bad(fmt::format("the sector [{}, {}] leaves [0, 360)", *from, *to));
+    }
+    if (*from == *to) bad(fmt::format("the sector [{}, {}] is empty", *from, *to));
+    out.push_back({*from, *to});
+  }
+  return out;
+}
+
+model::ThrusterUnit read_unit(const TomlTable& t) {
+  t.reject_unknown({"name", "type", "x_m", "y_m", "max_thrust_N", "max_reverse_thrust_N",
+                    "forbidden_deg", "rate_deg_per_s", "loss", "group", "weight",
+                    "rudder_lift_per_thrust", "rudder_lift_at_zero_N", "rudder_max_force_N",
+                    "rudder_x_m"});
+  model::ThrusterUnit u;
+  u.name = t.string("name");
+  if (u.name.empty()) throw core::InputError(t.where("name"), "a unit's name is empty");
+  const std::string type = t.string("type");
+  const std::optional<model::UnitType> parsed = unit_type(type);
+  if (!parsed) {
+    throw core::InputError(t.where("type"), fmt::format("unknown thruster type '{}'", type),
+                           "use azimuth, tunnel, propeller or propeller_rudder");
+  }
+  u.type = *parsed;
+  if (t.has("loss")) {
+    throw core::InputError(t.where("loss"),
+                           "direction-dependent thrust loss is not modelled in this version",
+                           "remove the key; give the rating the unit keeps in its worst direction");
+  }
+  const auto only_for = [&](std::string_view key, model::UnitType allowed) {
+    if (t.has(key) && u.type != allowed) {
+      throw core::InputError(t.where(key), fmt::format("the {} unit has no {}", type, key),
+                             fmt::format("only a {} takes it", model::unit_type_name(allowed)));
+    }
+  };
+  for (const char* key : {"forbidden_deg", "rate_deg_per_s"}) {
+    only_for(key, model::UnitType::kAzimuth);
+  }
+  for (const char* key :
+       {"rudder_lift_per_thrust", "rudder_lift_at_zero_N", "rudder_max_force_N", "rudder_x_m"}) {
+    only_for(key, model::UnitType::kPropellerRudder);
+  }
+  u.x_m = t.number({"x_m", "m", -500.0, 500.0});
+  u.y_m = t.number({"y_m", "m", -100.0, 100.0});
+  u.max_thrust_N = t.number({"max_thrust_N", "N", 0.0, 1e8, true});
+  const double reverse = u.type == model::UnitType::kTunnel    ? kTunnelPortRatio
+                         : u.type == model::UnitType::kAzimuth ? 0.0
+                                                               : kPropellerAsternRatio;
+  u.max_reverse_thrust_N =
+      t.number_or(reverse * u.max_thrust_N, {"max_reverse_thrust_N", "N", 0.0, 1e8});
+  u.forbidden_deg = read_sectors(t);
+  u.rate_deg_per_s = t.number_or(u.rate_deg_per_s, {"rate_deg_per_s", "deg/s", 0.0, 360.0, true});
+  u.group = t.string_or("group", "");
+  u.weight = t.number_or(u.weight, {"weight", "1", 0.0, 100.0, true});
+  if (u.type == model::UnitType::kPropellerRudder) {
+    u.rudder_lift_per_thrust =
+        t.number_or(kRudderLiftPerThrust, {"rudder_lift_per_thrust", "1", 0.0, 2.0});
+    u.rudder_lift_at_zero_N = t.number_or(0.0, {"rudder_lift_at_zero_N", "N", 0.0, 1e8});
+    u.rudder_max_force_N = t.number_or(0.0, {"rudder_max_force_N", "N", 0.0, 1e8});
+    if (t.has("rudder_x_m")) u.rudder_x_m = t.number({"rudder_x_m", "m", -500.0, 500.0});
+  }
+  try {
+    u.validate();
+  } catch (const core::InputError& e) {  // e.g. sectors that forbid every direction
+    throw core::InputError(t.where("forbidden_deg"), e.problem(), e.hint());
+  }
+  return u;
+}
+
+}  // namespace
+
+std::vector<model::ThrusterUnit> read_thruster_units(const toml::table& doc,
+                                                     const TomlTable& root) {
+  std::vector<model::ThrusterUnit> out;
+  const toml::node* node = doc.get("thruster");
+  if (node == nullptr) return out;
+  const toml::array* rows = node->as_array();
+  if (rows == nullptr || !rows->is_array_of_tables()) {
+    throw core::InputError(root.where("thruster"), "expected an array of tables",
+                           "write each unit as a [[thruster]] table");
+  }
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < rows->size(); ++i) {
+    const TomlTable t(*(*rows)[i].as_table(), root.file(), fmt::format("thruster[{}]", i + 1));
+    model::ThrusterUnit u = read_unit(t);
+    if (!names.insert(u.name).second) {
+      throw core::InputError(t.where("name"), fmt::format("a second unit named '{}'", u.name),
+                             "give every unit its own name");
+    }
+    out.push_back(std::move(u));
+  }
+  return out;
+}
+
+}  // namespace dynpos::scenario::detail
