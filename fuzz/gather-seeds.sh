@@ -6,7 +6,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 dir="${1:?usage: fuzz/gather-seeds.sh DIR}"
 rm -rf "$dir"
-for t in csv_reader nmea_reader column_map time_stamp scenario vessel compare_json; do
+for t in csv_reader nmea_reader column_map time_stamp scenario vessel compare_json load_table; do
   mkdir -p "$dir/$t"
   [ -d "fuzz/corpus/$t" ] && cp fuzz/corpus/"$t"/* "$dir/$t/"
 done
@@ -20,7 +20,8 @@ done
   cat tests/data/multifile/main.csv; } >"$dir/csv_reader/mapped_main.txt"
 cp tests/data/nmea/*.nmea "$dir/nmea_reader/"
 cp data/scenarios/*.toml tests/cli/short.toml tests/cli/bad_sensor_rate.toml "$dir/scenario/"
-cp data/vessels/*.toml tests/cli/bad_vessel.toml "$dir/vessel/"
+cp data/vessels/*.toml tests/cli/bad_vessel.toml tests/cli/data/osv_layout.toml "$dir/vessel/"
+cp tests/cli/bad_loads.csv "$dir/load_table/"
 cp tests/cli/data/compare/*.json "$dir/compare_json/"
 for pair in steps_aug:steps_nov legs_before:legs_after generic_a:generic_b; do
   a="${pair%%:*}" b="${pair##*:}"

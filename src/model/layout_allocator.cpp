@@ -17,6 +17,7 @@ constexpr double kTwoPi = 2.0 * std::numbers::pi;
 constexpr double kDemandWeight = 1e8;   // ρ: the demand over the effort
 constexpr double kMetTolerance = 1e-6;  // of the force and moment scales
 constexpr int kRelaxed = -1;            // region code: the unit's convex hull
+constexpr double kLargestDemand = 1e6;  // of the scales (allocate())
 
 // The rudder's largest side force [N] at capacity `cap` of its propeller: the cone's at full
 // ahead thrust, within the rudder's own largest force.
@@ -408,6 +409,17 @@ bool in_region(const ThrusterUnit& u, const UnitCommand& c) {
 
 LayoutAllocation LayoutAllocator::allocate(const Eigen::Vector3d& tau_d_b,
                                            const std::vector<double>& capacity) const {
+  // A demand beyond 10⁶ times the scales (10¹¹ N by default) is no physical one, and its square
+  // in the programme would overflow: it is allocated at that size, in its direction.
+  const double size = std::max({std::abs(tau_d_b(0)) / options_.force_scale,
+                                std::abs(tau_d_b(1)) / options_.force_scale,
+                                std::abs(tau_d_b(2)) / options_.moment_scale});
+  if (std::isfinite(size) && size > kLargestDemand) {
+    LayoutAllocation a = allocate(tau_d_b * (kLargestDemand / size), capacity);
+    a.tau_unmet_b = tau_d_b - a.tau_achieved_b;
+    a.met = false;
+    return a;
+  }
   const bool capacity_ok =
       (capacity.empty() || capacity.size() == units_.size()) &&
       std::all_of(capacity.begin(), capacity.end(), [](double c) { return c >= 0.0 && c <= 1.0; });

@@ -263,6 +263,11 @@ TEST(LayoutAllocator, AFailedUnitIsHeldAtZero) {
   EXPECT_TRUE(a.met);
   EXPECT_EQ(a.units[0].force_b.norm(), 0.0);
   EXPECT_FALSE(allocator.allocate({NAN, 0.0, 0.0}).met);
+  // A demand of 10³⁰⁰ N is allocated in its direction, every command finite.
+  const LayoutAllocation huge = allocator.allocate({1e300, -1e300, 1e300});
+  EXPECT_FALSE(huge.met);
+  for (const UnitCommand& c : huge.units) EXPECT_TRUE(c.force_b.allFinite());
+  EXPECT_TRUE(huge.tau_achieved_b.allFinite());
   EXPECT_FALSE(allocator.allocate({0.0, 0.0, 0.0}, {1.0}).met);  // a capacity per unit
 }
 

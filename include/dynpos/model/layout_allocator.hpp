@@ -91,7 +91,8 @@ class LayoutAllocator {
   explicit LayoutAllocator(std::vector<ThrusterUnit> units, LayoutAllocationOptions options = {});
 
   /// Allocates τ_d (see the file comment); `capacity` per unit in [0, 1] scales its rated thrust
-  /// (0: failed), empty for all 1. A τ_d that is not finite gives zero commands, not met.
+  /// (0: failed), empty for all 1. A τ_d that is not finite gives zero commands, not met; one
+  /// beyond 10⁶ times the force or moment scale is allocated at that size in its direction.
   LayoutAllocation allocate(const Eigen::Vector3d& tau_d_b,
                             const std::vector<double>& capacity = {}) const;
 
