@@ -498,8 +498,8 @@ bool looks_like_nmea(const std::filesystem::path& file) {
     const detail::LineStatus status = capture.next(line, kMaxNmeaLineBytes);
     if (status == detail::LineStatus::kEnd || capture.bad()) break;
     if (status == detail::LineStatus::kTooLong) {
-      ++lines;  // not a sentence
-      if (!capture.skip_rest(kMaxNmeaJunkBytes)) break;  // no line end: not a text capture
+      ++lines;  // not a sentence; without a line end not a text capture
+      if (!capture.skip_rest(kMaxNmeaJunkBytes)) break;
       continue;
     }
     const std::string_view text = detail::trim(line);

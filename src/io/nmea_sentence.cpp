@@ -351,8 +351,7 @@ void decode(NmeaSentence& out, const Fields& f, bool lenient) {
     out.data = NmeaThs{f.heading(0), f.letter(1, "mode", "AEMSV")};
   } else if (out.type == "HDG") {
     check_count(f, fs, "HDG", {5}, 1, lenient);
-    out.data = NmeaHdg{f.heading(0), east_west(f, 1, "deviation"),
-                       east_west(f, 3, "variation")};
+    out.data = NmeaHdg{f.heading(0), east_west(f, 1, "deviation"), east_west(f, 3, "variation")};
   } else if (out.type == "ROT") {
     check_count(f, fs, "ROT", {2}, 2, lenient);
     NmeaRot r;

@@ -158,7 +158,8 @@ std::size_t line_of(const std::filesystem::path& file, std::uint64_t offset) {
   std::size_t line = 1;
   char previous = '\0';
   while (offset > 0 && in) {
-    in.read(buffer.data(), static_cast<std::streamsize>(std::min<std::uint64_t>(offset, buffer.size())));
+    in.read(buffer.data(),
+            static_cast<std::streamsize>(std::min<std::uint64_t>(offset, buffer.size())));
     const auto got = static_cast<std::size_t>(in.gcount());
     for (std::size_t i = 0; i < got; ++i) {
       const char c = buffer[i];

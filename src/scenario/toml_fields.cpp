@@ -36,8 +36,8 @@ toml::table TomlTable::parse_file(const std::string& file) {
   }
   std::ifstream in(file, std::ios::binary);
   if (!in) throw core::InputError({file, {}, {}, {}}, "cannot open the file", "give a TOML file");
-  const std::string text =
-      io::read_capped(in, file, io::kMaxTomlBytes, "vessel and scenario files are a few kB of TOML");
+  const std::string text = io::read_capped(in, file, io::kMaxTomlBytes,
+                                           "vessel and scenario files are a few kB of TOML");
   try {
     return toml::parse(text, file);
   } catch (const toml::parse_error& e) {

@@ -247,17 +247,18 @@ TEST(NmeaLog, UntimedRepeatsAndSentencesBeforeTheFirstTime) {
 TEST(NmeaLog, AClockSteppingBackIsDroppedAndCountedNotSorted) {
   TempDir dir;
   const auto gga = [](const std::string& hhmmss_ss, const std::string& lat_min) {
-    return framed("GPGGA," + hhmmss_ss + ",6000." + lat_min + ",N,01000.000,E,4,12,0.7,1.0,M,"
+    return framed("GPGGA," + hhmmss_ss + ",6000." + lat_min +
+                  ",N,01000.000,E,4,12,0.7,1.0,M,"
                   "39.5,M,,");
   };
-  const auto file = dir.write(
-      "two_clocks.nmea",
-      lines({framed("GPZDA,100000.00,01,05,2024,,"), gga("100000.00", "000"),
-             framed("HEHDT,10.0,T"), gga("100001.00", "001"), framed("HEHDT,11.0,T"),
-             gga("095959.50", "900"), framed("HEHDT,200.0,T"),  // back by 1.5 s
-             gga("100002.00", "002"), framed("HEHDT,12.0,T"),
-             gga("090002.50", "800"), framed("HEHDT,300.0,T"),  // back by 1 h
-             gga("100003.00", "003"), framed("HEHDT,13.0,T")}));
+  const auto file =
+      dir.write("two_clocks.nmea",
+                lines({framed("GPZDA,100000.00,01,05,2024,,"), gga("100000.00", "000"),
+                       framed("HEHDT,10.0,T"), gga("100001.00", "001"), framed("HEHDT,11.0,T"),
+                       gga("095959.50", "900"), framed("HEHDT,200.0,T"),  // back by 1.5 s
+                       gga("100002.00", "002"), framed("HEHDT,12.0,T"), gga("090002.50", "800"),
+                       framed("HEHDT,300.0,T"),  // back by 1 h
+                       gga("100003.00", "003"), framed("HEHDT,13.0,T")}));
   const NmeaLog read = read_nmea_log(file);
   EXPECT_EQ(read.report.skipped.count("time back"), 4u);  // two GGA and their HDT
   ASSERT_EQ(read.log.size(), 4u);
@@ -277,9 +278,8 @@ TEST(NmeaLog, AClockSteppingBackIsDroppedAndCountedNotSorted) {
 // capture is detected as NMEA and its first line read, also strictly.
 TEST(NmeaLog, AByteOrderMarkIsNotPartOfTheFirstLine) {
   TempDir dir;
-  const std::string text =
-      lines({framed("GPZDA,100000,01,05,2024,,"), framed("HEHDT,10.0,T"),
-             framed("GPZDA,100001,01,05,2024,,"), framed("HEHDT,11.0,T")});
+  const std::string text = lines({framed("GPZDA,100000,01,05,2024,,"), framed("HEHDT,10.0,T"),
+                                  framed("GPZDA,100001,01,05,2024,,"), framed("HEHDT,11.0,T")});
   const auto file = dir.write("bom.nmea", "\xEF\xBB\xBF" + text);
   EXPECT_TRUE(looks_like_nmea(file));
   NmeaLogOptions strict;
@@ -308,8 +308,8 @@ TEST(NmeaLog, ALoneCarriageReturnEndsALine) {
   }
   NmeaLogOptions strict;
   strict.strict = true;
-  for (const auto& [name, text] : {std::pair{"cr.nmea", cr}, std::pair{"lf.nmea", lf},
-                                    std::pair{"crlf.nmea", crlf}}) {
+  for (const auto& [name, text] :
+       {std::pair{"cr.nmea", cr}, std::pair{"lf.nmea", lf}, std::pair{"crlf.nmea", crlf}}) {
     const auto file = dir.write(name, text);
     EXPECT_TRUE(looks_like_nmea(file)) << name;
     const NmeaLog read = read_nmea_log(file);

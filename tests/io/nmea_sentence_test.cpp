@@ -232,7 +232,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{framed("HEHDT,274.1"), "gps.nmea:7:1 (HDT.field_count)", "HDT has 1 fields"},
         BadCase{framed("HEHDT,274.1,M"), "gps.nmea:7:2 (HDT.heading_reference)", "letters T"},
         // A heading is in [0, 360) degrees.
-        BadCase{framed("HEHDT,400.0,T"), "gps.nmea:7:1 (HDT.heading)", "'400.0' is not in [0, 360)"},
+        BadCase{framed("HEHDT,400.0,T"), "gps.nmea:7:1 (HDT.heading)",
+                "'400.0' is not in [0, 360)"},
         BadCase{framed("HEHDT,360.0,T"), "gps.nmea:7:1 (HDT.heading)", "not in [0, 360)"},
         BadCase{framed("HEHDT,-0.5,T"), "gps.nmea:7:1 (HDT.heading)", "not in [0, 360)"},
         BadCase{framed("INTHS,512.3,A"), "gps.nmea:7:1 (THS.heading)", "not in [0, 360)"},

@@ -1,8 +1,8 @@
 #include "dynpos/io/spooled_input.hpp"
 
+#include <fcntl.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -102,7 +102,8 @@ TEST(SpooledInput, ACopyStopsAtALineWithoutEnd) {
   for (const char* end : {"\n", "\r", "\r\n"}) {
     std::string block;
     while (block.size() < (1 << 20)) block += "1234.5678,9" + std::string(end);
-    const FifoWriter writer(fifo, "x,y" + std::string(end), block, 40);  // 40 MiB, more than the line limit
+    // 40 MiB, more than the line limit.
+    const FifoWriter writer(fifo, "x,y" + std::string(end), block, 40);
     const SpooledInput spooled(fifo, dir.path());
     EXPECT_EQ(spooled.bytes(), 40 * block.size() + 3 + std::strlen(end));
   }
