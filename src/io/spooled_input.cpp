@@ -46,14 +46,18 @@ bool write_all(int fd, const char* data, std::size_t size) {
 }
 
 // True for a line that holds an NMEA sentence with its checksum ("…$GPGGA,…*hh", spaces
-// after it aside): random bytes almost never do.
+// after it aside): an address of at least four capitals or digits, a comma, and the checksum,
+// which random bytes give about once in 10⁹ lines.
 bool checksummed_sentence(std::string_view line) {
   while (!line.empty() && (line.back() == ' ' || line.back() == '\t')) line.remove_suffix(1);
   const std::size_t start = line.rfind('$');
   if (start == std::string_view::npos || line.size() < start + 10) return false;
   const std::string_view sentence = line.substr(start + 1);
   const std::size_t star = sentence.size() - 3;
-  if (sentence[star] != '*' || sentence.find(',') == std::string_view::npos) return false;
+  const std::size_t comma = sentence.find(',');
+  if (sentence[star] != '*' || comma < 4 || comma > star) return false;
+  const auto address = [](char c) { return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'); };
+  if (!std::all_of(sentence.begin(), sentence.begin() + comma, address)) return false;
   unsigned sum = 0;
   for (std::size_t i = 0; i < star; ++i) sum ^= static_cast<unsigned char>(sentence[i]);
   const char* hex = "0123456789ABCDEF";
