@@ -5,8 +5,10 @@
 #include <toml++/toml.h>
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 
 #include "dynpos/core/error.hpp"
+#include "dynpos/io/text_file.hpp"
 
 namespace dynpos::capability {
 
@@ -75,9 +77,16 @@ int dp_number_for_wind(double wind_mps) {
 }
 
 EnvironmentTable read_site_table(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw core::InputError({path, {}, {}, {}}, "cannot open the site table",
+                           "check the path and its permissions");
+  }
+  const std::string text =
+      io::read_capped(in, path, io::kMaxTomlBytes, "a site table is a few kB of TOML");
   toml::table doc;
   try {
-    doc = toml::parse_file(path);
+    doc = toml::parse(text, path);
   } catch (const toml::parse_error& e) {
     const auto& where = e.source().begin;
     throw core::InputError({path, where.line, where.column, {}}, std::string(e.description()),

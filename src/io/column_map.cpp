@@ -10,6 +10,7 @@
 
 #include <toml++/toml.h>
 
+#include "dynpos/io/text_file.hpp"
 #include "text_util.hpp"
 
 namespace dynpos::io {
@@ -492,9 +493,10 @@ ColumnMap load_column_map(const std::filesystem::path& path) {
     where.file = path.string();
     throw InputError(where, "cannot open the column map file", "check the path");
   }
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_column_map(text.str(), path.string());
+  const std::string text = read_capped(
+      in, path, kMaxTomlBytes,
+      "a column map is a few lines of TOML (docs/log-format.md); is this the right file?");
+  return parse_column_map(text, path.string());
 }
 
 void apply_column_override(ColumnMap& map, std::string_view argument) {

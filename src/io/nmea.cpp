@@ -4,7 +4,7 @@
 
 #include <fstream>
 
-#include "bounded_line.hpp"
+#include "capture_lines.hpp"
 #include "dynpos/core/error.hpp"
 #include "dynpos/io/nmea_epoch_assembler.hpp"
 #include "dynpos/io/nmea_log.hpp"
@@ -107,17 +107,19 @@ NmeaGnssLog read_nmea_gnss(const std::filesystem::path& file, const std::string&
   }
   NmeaGnssLog out;
   NmeaEpochAssembler epochs(name);
+  detail::CaptureLines lines(in);
   std::string line;
   std::size_t line_no = 0;
-  bool ended = false;
   for (;;) {
-    const detail::LineStatus status = detail::read_bounded_line(in, line, kMaxNmeaLineBytes, ended);
-    if (status == detail::LineStatus::kEnd || in.bad()) break;
+    const detail::LineStatus status = lines.next(line, kMaxNmeaLineBytes);
+    if (status == detail::LineStatus::kEnd || lines.bad()) break;
     ++line_no;
     if (status == detail::LineStatus::kTooLong) {
       ++out.sentences;
       ++out.skipped;
-      detail::skip_overlong_line(in, ended, kMaxNmeaJunkBytes, name, line_no);
+      if (!lines.skip_rest(kMaxNmeaJunkBytes)) {
+        detail::throw_no_line_end(name, line_no, kMaxNmeaJunkBytes);
+      }
       continue;
     }
     const std::string_view text = detail::trim(line);

@@ -11,7 +11,7 @@
 #include <variant>
 #include <vector>
 
-#include "bounded_line.hpp"
+#include "capture_lines.hpp"
 #include "dynpos/core/error.hpp"
 #include "dynpos/io/nmea_sentence.hpp"
 #include "logger_stamp.hpp"
@@ -113,6 +113,8 @@ class CaptureReader {
     skip("too long", line, fmt::format("more than {} bytes", kMaxNmeaLineBytes));
   }
   NmeaLog finish();
+  /// Lines read as a valid sentence (checksum, address and fields), of any type.
+  std::size_t sentences() const noexcept { return sentences_; }
 
  private:
   enum class Clock { kUnknown, kLogger, kUtc };
@@ -143,6 +145,8 @@ class CaptureReader {
   std::optional<UtcDate> day0_;
   NmeaPsxnQuality seapath_quality_;  // the last PSXN,20
   bool hdg_without_variation_ = false;
+  bool epoch_back_ = false;  // the last timed sentence stepped back: its epoch is dropped
+  std::size_t sentences_ = 0;
 };
 
 void CaptureReader::skip(std::string_view kind, std::size_t line, const std::string& detail) {
@@ -166,6 +170,7 @@ void CaptureReader::add_line(std::string_view text, std::size_t line, bool cut) 
     if (options_.strict) throw;
     return skip(parse_failure_kind(e, scan.sentence), line);
   }
+  ++sentences_;
   if (std::holds_alternative<NmeaOther>(s.data)) {
     return skip("unknown sentence", line, s.talker + s.type);
   }
@@ -173,8 +178,17 @@ void CaptureReader::add_line(std::string_view text, std::size_t line, bool cut) 
   use(s, scan.stamp, line);
 }
 
+// "HH:MM:SS.sss" of a time on the UTC clock.
+std::string clock_text(std::int64_t t_ns) {
+  const std::int64_t ms = t_ns % kDay_ns / 1'000'000;
+  return fmt::format("{:02d}:{:02d}:{:02d}.{:03d}", ms / 3'600'000, ms / 60'000 % 60,
+                     ms / 1000 % 60, ms % 1000);
+}
+
 // The time of a GGA, RMC, GLL or ZDA on the UTC clock [ns since 00:00 of day 0], nullopt for
-// other types; a time more than 12 h before the latest is the next day.
+// other types; a time more than 12 h before the latest is the next day. A time less far back
+// (a second receiver's clock, a clock reset) is not sorted in among the others: the sentence
+// is skipped and counted as "time back", with the untimed sentences of its epoch.
 std::optional<std::int64_t> CaptureReader::utc_time(const NmeaSentence& s, std::size_t line) {
   double utc_s = core::kMissing;
   bool timed = true;
@@ -199,7 +213,13 @@ std::optional<std::int64_t> CaptureReader::utc_time(const NmeaSentence& s, std::
     ++day_;  // 23:59:59 → 00:00:00
     t += kDay_ns;
   }
-  latest_ns_ = std::max(latest_ns_.value_or(t), t);
+  epoch_back_ = latest_ns_ && t < *latest_ns_;
+  if (epoch_back_) {
+    skip("time back", line,
+         fmt::format("{} at {} after {}", s.type, clock_text(t), clock_text(*latest_ns_)));
+    return std::nullopt;
+  }
+  latest_ns_ = t;
   return t;
 }
 
@@ -234,6 +254,8 @@ void CaptureReader::use(const NmeaSentence& s, std::optional<detail::LoggerStamp
       epoch_ns_ = t;
     } else if (!epoch_ns_) {
       return skip("no time", line, s.type + " before the first sentence with a UTC time");
+    } else if (epoch_back_) {
+      return skip("time back", line, s.type + " after a time that stepped back");
     }
     // Untimed sentences take the epoch's time: one of each type per epoch.
     if (!epoch_types_.insert(s.type).second) return skip("repeat in epoch", line, s.type);
@@ -418,6 +440,20 @@ bool sentence_like(std::string_view text) {
   return k - start - 1 >= 4 && k < text.size() && text[k] == ',';
 }
 
+// A capture without a valid sentence in its first kMaxNmeaLinesWithoutSentence lines or
+// kMaxNmeaBytesWithoutSentence bytes is not one: refused, not read to an end that may not come.
+void give_up_without_sentence(const std::string& file, std::size_t line, std::uint64_t bytes) {
+  const bool by_lines = line >= kMaxNmeaLinesWithoutSentence;
+  if (!by_lines && bytes < kMaxNmeaBytesWithoutSentence) return;
+  throw core::InputError(
+      {file, line, {}, {}},
+      fmt::format("not an NMEA capture: no valid NMEA sentence in the first {}",
+                  by_lines ? fmt::format("{} lines", line)
+                           : fmt::format("{} MiB", kMaxNmeaBytesWithoutSentence >> 20)),
+      "give a capture of NMEA 0183 sentences ($GPGGA,…*hh), one a line; is this the right "
+      "file?");
+}
+
 }  // namespace
 
 NmeaLog read_nmea_log(const std::filesystem::path& file, const NmeaLogOptions& options) {
@@ -428,22 +464,23 @@ NmeaLog read_nmea_log(const std::filesystem::path& file, const NmeaLogOptions& o
                            "check the path and the file's permissions");
   }
   CaptureReader reader(name, options);
+  detail::CaptureLines lines(in);
   std::string line;
   std::size_t line_no = 0;
-  bool ended = false;
   for (;;) {
-    const detail::LineStatus status = detail::read_bounded_line(in, line, kMaxNmeaLineBytes, ended);
-    if (status == detail::LineStatus::kEnd || in.bad()) break;
+    const detail::LineStatus status = lines.next(line, kMaxNmeaLineBytes);
+    if (status == detail::LineStatus::kEnd || lines.bad()) break;
     ++line_no;
     if (status == detail::LineStatus::kTooLong) {
       reader.too_long(line_no);
-      detail::skip_overlong_line(in, ended, kMaxNmeaJunkBytes, name, line_no);
-      continue;
+      if (!lines.skip_rest(kMaxNmeaJunkBytes)) {
+        detail::throw_no_line_end(name, line_no, kMaxNmeaJunkBytes);
+      }
+    } else if (const std::string_view text = detail::trim(line); !text.empty()) {
+      // Not ended: the file ends inside this line, with no line end after it.
+      reader.add_line(text, line_no, !lines.ended());
     }
-    const std::string_view text = detail::trim(line);
-    if (text.empty()) continue;
-    // Not ended: the file ends inside this line, with no line end after it.
-    reader.add_line(text, line_no, !ended);
+    if (reader.sentences() == 0) give_up_without_sentence(name, line_no, lines.bytes());
   }
   if (in.bad()) {
     throw core::InputError({name, line_no, {}, {}}, "reading the file failed",
@@ -454,15 +491,15 @@ NmeaLog read_nmea_log(const std::filesystem::path& file, const NmeaLogOptions& o
 
 bool looks_like_nmea(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
+  detail::CaptureLines capture(in);
   std::string line;
   std::size_t lines = 0, sentences = 0;
-  bool ended = false;
   while (lines < 200) {
-    const detail::LineStatus status = detail::read_bounded_line(in, line, kMaxNmeaLineBytes, ended);
-    if (status == detail::LineStatus::kEnd || in.bad()) break;
+    const detail::LineStatus status = capture.next(line, kMaxNmeaLineBytes);
+    if (status == detail::LineStatus::kEnd || capture.bad()) break;
     if (status == detail::LineStatus::kTooLong) {
-      ++lines;  // not a sentence
-      if (!ended && !detail::skip_rest_of_line(in, kMaxNmeaJunkBytes)) break;
+      ++lines;  // not a sentence; without a line end not a text capture
+      if (!capture.skip_rest(kMaxNmeaJunkBytes)) break;
       continue;
     }
     const std::string_view text = detail::trim(line);

@@ -57,6 +57,16 @@ class Fields {
     return value;
   }
 
+  // A heading [deg] in [0, 360) → rad; empty → NaN.
+  double heading(std::size_t i) const {
+    const double deg = number(i, "heading");
+    if (deg < 0.0 || deg >= 360.0) {
+      fail(i, "heading", fmt::format("'{}' is not in [0, 360) degrees", fields_[i]),
+           "a heading is 0 (north) to 359.99… degrees, clockwise");
+    }
+    return deg * kDegToRad;
+  }
+
   // One of the letters in `allowed`, or '\0' if the field is empty.
   char letter(std::size_t i, const std::string& name, std::string_view allowed) const {
     const std::string& s = fields_[i];
@@ -308,7 +318,7 @@ void parse_psxn(NmeaSentence& out, bool lenient, const core::InputLocation& wher
   } else if (id == "23") {
     check_count(f, rest, "PSXN,23", {4}, 4, lenient);
     out.data = NmeaPsxnAttitude{f.number(0, "roll") * kDegToRad, f.number(1, "pitch") * kDegToRad,
-                                f.number(2, "heading") * kDegToRad, f.number(3, "heave")};
+                                f.heading(2), f.number(3, "heave")};
   }
 }
 
@@ -333,16 +343,15 @@ void decode(NmeaSentence& out, const Fields& f, bool lenient) {
   } else if (out.type == "HDT") {
     check_count(f, fs, "HDT", {2}, 1, lenient);
     NmeaHdt h;
-    h.heading_rad = f.number(0, "heading") * kDegToRad;
+    h.heading_rad = f.heading(0);
     if (!f.empty(0)) f.letter(1, "heading_reference", "T");
     out.data = h;
   } else if (out.type == "THS") {
     check_count(f, fs, "THS", {2}, 2, lenient);
-    out.data = NmeaThs{f.number(0, "heading") * kDegToRad, f.letter(1, "mode", "AEMSV")};
+    out.data = NmeaThs{f.heading(0), f.letter(1, "mode", "AEMSV")};
   } else if (out.type == "HDG") {
     check_count(f, fs, "HDG", {5}, 1, lenient);
-    out.data = NmeaHdg{f.number(0, "heading") * kDegToRad, east_west(f, 1, "deviation"),
-                       east_west(f, 3, "variation")};
+    out.data = NmeaHdg{f.heading(0), east_west(f, 1, "deviation"), east_west(f, 3, "variation")};
   } else if (out.type == "ROT") {
     check_count(f, fs, "ROT", {2}, 2, lenient);
     NmeaRot r;

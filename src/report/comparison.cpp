@@ -13,6 +13,7 @@
 #include <tuple>
 
 #include "dynpos/core/error.hpp"
+#include "dynpos/io/text_file.hpp"
 
 namespace dynpos::report {
 namespace {
@@ -344,9 +345,9 @@ json load_json_file(const std::filesystem::path& path) {
     throw core::InputError({path.string(), {}, {}, {}}, "cannot open the file",
                            "check the path; give two JSON results written with --json");
   }
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  const std::string text = ss.str();
+  const std::string text =
+      io::read_capped(in, path, io::kMaxJsonBytes,
+                      "give a result written by a dynpos analysis with --json (a few MB at most)");
   check_json_depth(text, path);
   try {
     return json::parse(text);

@@ -3,7 +3,10 @@
 #include <fmt/core.h>
 
 #include <filesystem>
+#include <fstream>
 #include <limits>
+
+#include "dynpos/io/text_file.hpp"
 
 namespace dynpos::scenario::detail {
 namespace {
@@ -31,8 +34,12 @@ toml::table TomlTable::parse_file(const std::string& file) {
         std::filesystem::exists(file, ec) ? "not a regular file" : "cannot open the file",
         "give a TOML file");
   }
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw core::InputError({file, {}, {}, {}}, "cannot open the file", "give a TOML file");
+  const std::string text = io::read_capped(in, file, io::kMaxTomlBytes,
+                                           "vessel and scenario files are a few kB of TOML");
   try {
-    return toml::parse_file(file);
+    return toml::parse(text, file);
   } catch (const toml::parse_error& e) {
     const std::string description(e.description());
     if (e.source().begin.line == 0) {

@@ -7,6 +7,7 @@
 
 #include "dynpos/core/error.hpp"
 #include "dynpos/io/json_writer.hpp"
+#include "dynpos/io/text_file.hpp"
 
 namespace dynpos::scenario {
 namespace {
@@ -391,9 +392,9 @@ void write_trial_truth(const TrialTruth& truth, const std::filesystem::path& pat
 
 TrialTruth read_trial_truth(const std::filesystem::path& path) {
   const std::string file = path.string();
-  std::ifstream in(path);
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw core::InputError({file, {}, {}, {}}, "cannot open the truth file", kHint);
-  const json doc = json::parse(in, nullptr, false);
+  const json doc = json::parse(io::read_capped(in, path, io::kMaxJsonBytes, kHint), nullptr, false);
   if (doc.is_discarded()) throw core::InputError({file, {}, {}, {}}, "not valid JSON", kHint);
   return from_json(doc, file);
 }

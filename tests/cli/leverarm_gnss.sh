@@ -63,6 +63,15 @@ set -e
 [ "$rc" = 2 ] && grep -q -- "--utc-at-zero" "$out/nmea.err" \
   || { echo "nmea without --utc-at-zero: exit $rc"; cat "$out/nmea.err"; exit 1; }
 [ ! -e "$out/x.json" ] || { echo "half-written output"; exit 1; }
+# An antenna file without a single NMEA sentence, and without end (random bytes), is refused
+# after its first 100,000 lines (or 16 MiB), not read for ever.
+set +e
+timeout 120 "$exe" leverarm gnss "$run/truth.csv" --nmea gnss1=/dev/urandom \
+  --utc-at-zero "$utc0" --json "$out/x.json" > /dev/null 2> "$out/urandom.err"
+rc=$?
+set -e
+[ "$rc" = 2 ] && grep -q "/dev/urandom:[0-9]*: not an NMEA capture" "$out/urandom.err" \
+  || { echo "random bytes as NMEA: exit $rc"; head -c 2000 "$out/urandom.err"; exit 1; }
 
 # 3. Logged motion: MRU 1 attitude and rates (100 Hz), gyro heading (10 Hz), speed log u, v
 #    (1 Hz), no heave speed. The baselines lₖ − l₁ come from the antenna differences

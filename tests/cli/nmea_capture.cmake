@@ -20,3 +20,13 @@ dynpos_cli_test(nmea_capture_bad_format
 dynpos_cli_test(nmea_capture_col_refused
   COMMAND bash ${EXPECT_EXIT} 2 "\\(--col\\): role 'heading' is mapped to a column of .*station.nmea, an NMEA capture"
           ${DYNPOS_EXE} identify station-keeping ${NMEA_DATA}/station.nmea --col heading=HDT)
+# Two clocks in one capture (tests/data/nmea/two_clocks.nmea): the sentences of the clock that
+# steps back are dropped and counted, not sorted in among the others; --strict stops at the first.
+dynpos_cli_test(nmea_capture_clock_back
+  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/nmea_clock_back.sh ${DYNPOS_EXE}
+          ${NMEA_DATA}/two_clocks.nmea ${CLI_OUT}/nmea_clock_back
+  PASS "^ok")
+dynpos_cli_test(nmea_capture_clock_back_strict
+  COMMAND bash ${EXPECT_EXIT} 2
+          "two_clocks\\.nmea:4: line not usable \\(time back\\): GGA at 09:59:58\\.500 after 10:00:00\\.000"
+          ${DYNPOS_EXE} identify station-keeping ${NMEA_DATA}/two_clocks.nmea --strict)

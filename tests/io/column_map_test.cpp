@@ -129,6 +129,15 @@ TEST(ColumnMap, MissingFileIsAnInputError) {
               ContainsRegex("absent\\.toml: cannot open the column map file"));
 }
 
+// A column map is a few lines: a file of more than 16 MiB is refused by its size, unread.
+TEST(ColumnMap, AFileOfMoreThan16MiBIsRefused) {
+  TempDir dir;
+  const auto big = dir.write("big.toml", "[roles]\ntime = \"t\"\n");
+  std::filesystem::resize_file(big, (std::uintmax_t{16} << 20) + 1);
+  EXPECT_THAT(input_error_message([&] { load_column_map(big); }),
+              ContainsRegex("big\\.toml: more than 16 MiB \\(16777217 bytes\\)"));
+}
+
 TEST(ColumnMap, ErrorsOnTheCommandLineNameTheOption) {
   ColumnMap map;
   EXPECT_THAT(input_error_message([&] { apply_column_override(map, "heading"); }),

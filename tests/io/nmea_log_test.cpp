@@ -240,6 +240,106 @@ TEST(NmeaLog, UntimedRepeatsAndSentencesBeforeTheFirstTime) {
   EXPECT_TRUE(std::isnan(read.log.values("lat")[1]));  // RMC status V: no position
 }
 
+// Two clocks in one capture: GGA times that step back (by 1.5 s, by 1 h) are not sorted in
+// among the others. Each sentence at a time before the latest is dropped and counted as "time
+// back", with the untimed sentences of its epoch; strict reading stops at the first one. A
+// step back of more than 12 h stays a midnight rollover.
+TEST(NmeaLog, AClockSteppingBackIsDroppedAndCountedNotSorted) {
+  TempDir dir;
+  const auto gga = [](const std::string& hhmmss_ss, const std::string& lat_min) {
+    return framed("GPGGA," + hhmmss_ss + ",6000." + lat_min +
+                  ",N,01000.000,E,4,12,0.7,1.0,M,"
+                  "39.5,M,,");
+  };
+  const auto file =
+      dir.write("two_clocks.nmea",
+                lines({framed("GPZDA,100000.00,01,05,2024,,"), gga("100000.00", "000"),
+                       framed("HEHDT,10.0,T"), gga("100001.00", "001"), framed("HEHDT,11.0,T"),
+                       gga("095959.50", "900"), framed("HEHDT,200.0,T"),  // back by 1.5 s
+                       gga("100002.00", "002"), framed("HEHDT,12.0,T"), gga("090002.50", "800"),
+                       framed("HEHDT,300.0,T"),  // back by 1 h
+                       gga("100003.00", "003"), framed("HEHDT,13.0,T")}));
+  const NmeaLog read = read_nmea_log(file);
+  EXPECT_EQ(read.report.skipped.count("time back"), 4u);  // two GGA and their HDT
+  ASSERT_EQ(read.log.size(), 4u);
+  for (std::size_t i = 0; i < 4; ++i) {
+    EXPECT_NEAR(read.log.time()[i], double(i), kTime);
+    EXPECT_NEAR(read.log.values("heading")[i], (10.0 + double(i)) * kDeg, kExact);
+    EXPECT_NEAR(read.log.values("lat")[i], (60.0 + 0.001 * double(i) / 60.0) * kDeg, kExact);
+  }
+  NmeaLogOptions strict;
+  strict.strict = true;
+  EXPECT_THAT(input_error_message([&] { read_nmea_log(file, strict); }),
+              HasSubstr("two_clocks.nmea:6: line not usable (time back): GGA at 09:59:59.500 "
+                        "after 10:00:01.000"));
+}
+
+// A UTF-8 byte order mark before the first sentence (an editor's save) is not part of it: the
+// capture is detected as NMEA and its first line read, also strictly.
+TEST(NmeaLog, AByteOrderMarkIsNotPartOfTheFirstLine) {
+  TempDir dir;
+  const std::string text = lines({framed("GPZDA,100000,01,05,2024,,"), framed("HEHDT,10.0,T"),
+                                  framed("GPZDA,100001,01,05,2024,,"), framed("HEHDT,11.0,T")});
+  const auto file = dir.write("bom.nmea", "\xEF\xBB\xBF" + text);
+  EXPECT_TRUE(looks_like_nmea(file));
+  NmeaLogOptions strict;
+  strict.strict = true;
+  const NmeaLog read = read_nmea_log(file, strict);
+  EXPECT_EQ(read.report.records, 4u);
+  EXPECT_EQ(read.report.skipped.total(), 0u);
+  EXPECT_THAT(read.log.values("heading"), ElementsAre(10.0 * kDeg, 11.0 * kDeg));
+  // Elsewhere than at the start of the file the same bytes are binary data.
+  const auto inside = dir.write("inside.nmea", text + "\xEF\xBB\xBF" + text);
+  EXPECT_EQ(read_nmea_log(inside).report.skipped.count("binary"), 1u);
+}
+
+// Line ends: LF, CR LF, or a lone CR (as some loggers and old terminals write them) read alike,
+// line numbers too.
+TEST(NmeaLog, ALoneCarriageReturnEndsALine) {
+  TempDir dir;
+  const std::vector<std::string> sentences = {
+      framed("GPZDA,100000,01,05,2024,,"), framed("HEHDT,10.0,T"),
+      framed("GPZDA,100001,01,05,2024,,"), "$HEHDT,2.0,T*00", framed("HEHDT,11.0,T")};
+  std::string cr, lf, crlf;
+  for (const std::string& s : sentences) {
+    cr += s + "\r";
+    lf += s + "\n";
+    crlf += s + "\r\n";
+  }
+  NmeaLogOptions strict;
+  strict.strict = true;
+  for (const auto& [name, text] :
+       {std::pair{"cr.nmea", cr}, std::pair{"lf.nmea", lf}, std::pair{"crlf.nmea", crlf}}) {
+    const auto file = dir.write(name, text);
+    EXPECT_TRUE(looks_like_nmea(file)) << name;
+    const NmeaLog read = read_nmea_log(file);
+    EXPECT_EQ(read.report.records, 4u) << name;
+    EXPECT_EQ(read.report.skipped.count("bad checksum"), 1u) << name;
+    EXPECT_THAT(read.log.values("heading"), ElementsAre(10.0 * kDeg, 11.0 * kDeg)) << name;
+    EXPECT_THAT(input_error_message([&] { read_nmea_log(file, strict); }),
+                HasSubstr(std::string(name) + ":4 (checksum)"));
+  }
+}
+
+// A file that holds no NMEA sentence at all (random bytes, /dev/urandom, a CSV log given as
+// NMEA) is refused after a stated amount, not read to its end, which may never come.
+TEST(NmeaLog, NoValidSentenceInTheFirstLinesIsNotACapture) {
+  const std::string urandom = input_error_message([] { read_nmea_log("/dev/urandom"); });
+  EXPECT_THAT(urandom, HasSubstr("/dev/urandom:"));
+  EXPECT_THAT(urandom, HasSubstr("not an NMEA capture: no valid NMEA sentence in the first"));
+  TempDir dir;
+  std::string csv = "time,heading\n";
+  for (int i = 0; i < 150000; ++i) csv += std::to_string(i) + ",1.5\n";
+  EXPECT_THAT(input_error_message([&] { read_nmea_log(dir.write("log.csv", csv)); }),
+              HasSubstr("log.csv:100000: not an NMEA capture: no valid NMEA sentence in the "
+                        "first 100000 lines"));
+  // One valid sentence early enough, even of a type not read, and the rest is read.
+  const auto late = dir.write(
+      "late.nmea", framed("GPGSV,3,1,11,03,03,111,00,04,15,270,00") + "\n" + csv +
+                       lines({framed("GPZDA,100000,01,05,2024,,"), framed("HEHDT,10.0,T")}));
+  EXPECT_EQ(read_nmea_log(late).report.skipped.count("comment"), 150001u);
+}
+
 TEST(NmeaLog, SniffsCapturesNotCsv) {
   TempDir dir;
   EXPECT_TRUE(looks_like_nmea(capture("station.nmea")));

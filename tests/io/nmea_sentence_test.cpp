@@ -231,6 +231,14 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{framed("HEHDT,27x.1,T"), "gps.nmea:7:1 (HDT.heading)", "'27x.1' is not a number"},
         BadCase{framed("HEHDT,274.1"), "gps.nmea:7:1 (HDT.field_count)", "HDT has 1 fields"},
         BadCase{framed("HEHDT,274.1,M"), "gps.nmea:7:2 (HDT.heading_reference)", "letters T"},
+        // A heading is in [0, 360) degrees.
+        BadCase{framed("HEHDT,400.0,T"), "gps.nmea:7:1 (HDT.heading)",
+                "'400.0' is not in [0, 360)"},
+        BadCase{framed("HEHDT,360.0,T"), "gps.nmea:7:1 (HDT.heading)", "not in [0, 360)"},
+        BadCase{framed("HEHDT,-0.5,T"), "gps.nmea:7:1 (HDT.heading)", "not in [0, 360)"},
+        BadCase{framed("INTHS,512.3,A"), "gps.nmea:7:1 (THS.heading)", "not in [0, 360)"},
+        BadCase{framed("HCHDG,361.0,,,,"), "gps.nmea:7:1 (HDG.heading)", "not in [0, 360)"},
+        BadCase{framed("PSXN,23,0.1,0.2,370.0,0.3"), "(PSXN,23.heading)", "not in [0, 360)"},
         BadCase{framed("HEROT,1.-5,A"), "gps.nmea:7:1 (ROT.rate)", "not a number"},
         BadCase{framed("HEROT,1.5,Q"), "gps.nmea:7:2 (ROT.status)", "letters AV"}),
     [](const ::testing::TestParamInfo<BadCase>& info) {

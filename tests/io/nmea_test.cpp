@@ -201,6 +201,23 @@ TEST(ReadNmeaGnss, RoundTripThroughTheWriter) {
   }
 }
 
+// Line ends as the capture reader takes them: a lone CR ends a line, and a UTF-8 byte order
+// mark at the start is not part of the first sentence.
+TEST(ReadNmeaGnss, LoneCarriageReturnsAndAByteOrderMark) {
+  TempDir dir;
+  const std::vector<std::string> sentences = {gga("GN", "100000", "0000000"),
+                                              gga("GN", "100001", "0000000"), "$GNGGA,1*00"};
+  std::string cr = "\xEF\xBB\xBF";
+  for (const std::string& s : sentences) cr += s + "\r";
+  const auto file = dir.write("cr.nmea", cr.substr(0, cr.rfind('$')));
+  const NmeaGnssLog read = read_nmea_gnss(file, "g");
+  EXPECT_EQ(read.sentences, 2u);
+  ASSERT_EQ(read.log.size(), 2u);
+  EXPECT_EQ(read.log.time()[1] - read.log.time()[0], 1.0);
+  EXPECT_THAT(input_error_message([&] { read_nmea_gnss(dir.write("bad.nmea", cr), "g"); }),
+              HasSubstr("bad.nmea:3 (checksum)"));
+}
+
 // Every rejected file names the file, the line and the field, with a hint.
 TEST(ReadNmeaGnss, Errors) {
   TempDir dir;

@@ -1,9 +1,13 @@
 #include "dynpos/io/spooled_input.hpp"
 
+#include <fcntl.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
+#include <csignal>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <thread>
@@ -55,6 +59,78 @@ TEST(SpooledInput, AFifoIsCopiedWholeAndTheCopyRemoved) {
     EXPECT_TRUE(std::filesystem::is_regular_file(copy));
   }
   EXPECT_FALSE(std::filesystem::exists(copy));
+}
+
+// Writes `head`, then `text` `times` times, to a FIFO on a thread; stops when the reader
+// closes it.
+class FifoWriter {
+ public:
+  FifoWriter(const std::filesystem::path& fifo, std::string head, std::string text, int times)
+      : thread_([fifo, head = std::move(head), text = std::move(text), times] {
+          const int fd = ::open(fifo.c_str(), O_WRONLY | O_CLOEXEC);
+          if (fd < 0) return;
+          bool ok = ::write(fd, head.data(), head.size()) == static_cast<ssize_t>(head.size());
+          for (int i = 0; ok && i < times; ++i) {
+            if (::write(fd, text.data(), text.size()) != static_cast<ssize_t>(text.size())) break;
+          }
+          ::close(fd);
+        }) {}
+  ~FifoWriter() { thread_.join(); }
+  FifoWriter(const FifoWriter&) = delete;
+  FifoWriter& operator=(const FifoWriter&) = delete;
+
+ private:
+  std::thread thread_;
+};
+
+// The copy stops at 16 MiB without a line end ('\n' or a lone '\r'): /dev/zero or a binary
+// stream as LOG is an error naming the input and the line, not a disk filled to the last
+// byte; the copy is removed. A log of any length with line ends is copied whole, CR-only too.
+TEST(SpooledInput, ACopyStopsAtALineWithoutEnd) {
+  std::signal(SIGPIPE, SIG_IGN);  // the writer's end of the FIFO is closed under it
+  TempDir dir;
+  const auto fifo = dir / "fifo";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  {
+    const FifoWriter writer(fifo, "time,x\n0,1\n", std::string(1 << 20, '\0'), 40);
+    EXPECT_THAT(input_error_message([&] { SpooledInput(fifo, dir.path()); }),
+                HasSubstr("fifo:3: no line end within 16 MiB: not a text log"));
+  }
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()),
+                          std::filesystem::directory_iterator()),
+            1);  // the FIFO alone: no copy left
+  for (const char* end : {"\n", "\r", "\r\n"}) {
+    std::string block;
+    while (block.size() < (1 << 20)) block += "1234.5678,9" + std::string(end);
+    // 40 MiB, more than the line limit.
+    const FifoWriter writer(fifo, "x,y" + std::string(end), block, 40);
+    const SpooledInput spooled(fifo, dir.path());
+    EXPECT_EQ(spooled.bytes(), 40 * block.size() + 3 + std::strlen(end));
+  }
+}
+
+// Endless binary data with line ends (/dev/urandom) is not a log either: the first 16 MiB of a
+// copy must hold 100 text lines in a row or an NMEA sentence with its checksum. A capture of
+// binary lines (another protocol on the port) between checksummed sentences is copied whole.
+TEST(SpooledInput, ACopyOfBinaryDataStopsAfter16MiB) {
+  std::signal(SIGPIPE, SIG_IGN);
+  TempDir dir;
+  EXPECT_THAT(input_error_message([&] { SpooledInput("/dev/urandom", dir.path()); }),
+              HasSubstr("/dev/urandom: not a text log: its first 16 MiB hold neither 100 text "
+                        "lines in a row nor an NMEA sentence"));
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()),
+                          std::filesystem::directory_iterator()),
+            0);
+  const auto fifo = dir / "fifo";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  std::string block;
+  while (block.size() < (1 << 20)) {
+    block += std::string("\xB5\x62\x01\x07\x5C\x00\x00\x01", 8) + "\r\n";
+    block += "$HEHDT,91.000,T*17\r\n";
+  }
+  const FifoWriter writer(fifo, "", block, 20);
+  const SpooledInput spooled(fifo, dir.path());
+  EXPECT_EQ(spooled.bytes(), 20 * block.size());
 }
 
 TEST(SpooledInput, ErrorsNameTheInputOrTheCopy) {

@@ -220,5 +220,21 @@ TEST(Comparison, DeepNestingAndHugeNumbersAreLocatedErrors) {
   std::filesystem::remove(path);
 }
 
+// A file of more than 64 MiB is not a result: refused by its size, not read into memory.
+TEST(Comparison, AJsonFileOfMoreThan64MiBIsRefused) {
+  const auto path = std::filesystem::temp_directory_path() / "dynpos_comparison_big.json";
+  std::ofstream(path) << "{}";
+  std::filesystem::resize_file(path, (std::uintmax_t{64} << 20) + 1);
+  try {
+    load_json_file(path);
+    FAIL() << "no exception";
+  } catch (const core::InputError& e) {
+    EXPECT_EQ(e.where().file, path.string());
+    EXPECT_NE(e.problem().find("more than 64 MiB (67108865 bytes)"), std::string::npos)
+        << e.problem();
+  }
+  std::filesystem::remove(path);
+}
+
 }  // namespace
 }  // namespace dynpos::report

@@ -132,6 +132,17 @@ TEST(TrialTruth, FileRoundTripsThroughWriteAndRead) {
   std::filesystem::remove(path);
 }
 
+// A truth file of more than 64 MiB (a JSON document of a few kB) is refused by its size.
+TEST(TrialTruth, AFileOfMoreThan64MiBIsRefused) {
+  const std::filesystem::path path = temp_file("big_truth.json");
+  std::ofstream(path) << "{}";
+  std::filesystem::resize_file(path, (std::uintmax_t{64} << 20) + 1);
+  EXPECT_THAT([&] { read_trial_truth(path); },
+              testing::ThrowsMessage<core::InputError>(
+                  testing::HasSubstr("big_truth.json: more than 64 MiB")));
+  std::filesystem::remove(path);
+}
+
 TEST(TrialTruth, MissingNumberIsNullAndReadsAsNaN) {
   TrialTruth t = full_truth();
   t.rudder_steps[0].servo.time_constant = std::numeric_limits<double>::quiet_NaN();

@@ -110,6 +110,19 @@ TEST(VesselConfig, AFolderOrAMissingFileIsNotTheBuiltInVessel) {
                   testing::ContainsRegex("no_such_vessel.toml: cannot open the file")));
 }
 
+// Vessel and scenario files are TOML of a few kB: more than 16 MiB is refused by its size.
+TEST(VesselConfig, AFileOfMoreThan16MiBIsRefused) {
+  const auto path = write_temp("dynpos_big_vessel.toml", "name = \"x\"\n");
+  std::filesystem::resize_file(path, (std::uintmax_t{16} << 20) + 1);
+  EXPECT_THAT([&] { load_vessel_config(path); },
+              testing::ThrowsMessage<core::InputError>(
+                  testing::ContainsRegex("big_vessel.toml: more than 16 MiB")));
+  EXPECT_THAT([&] { load_scenario(path); },
+              testing::ThrowsMessage<core::InputError>(
+                  testing::ContainsRegex("big_vessel.toml: more than 16 MiB")));
+  std::filesystem::remove(path);
+}
+
 TEST(VesselConfig, AngleKeysAreDegreesInTheFile) {
   const auto path = write_temp("dynpos_rudder_vessel.toml", "[rudder]\nmax_angle_deg = 40\n");
   const VesselConfig v = load_vessel_config(path);

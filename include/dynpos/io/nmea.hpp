@@ -39,7 +39,8 @@ struct NmeaGnssLog {
   std::size_t skipped = 0;    ///< sentences not used: other types, other talkers, duplicates
 };
 
-/// Reads an NMEA 0183 file (one sentence a line, CR LF or LF). Throws core::InputError naming
+/// Reads an NMEA 0183 file (one sentence a line; LF, CR LF or a lone CR; a UTF-8 byte order
+/// mark at the start dropped). Throws core::InputError naming
 /// file, line and field (with a hint) for a malformed sentence, a bad checksum, a time going
 /// backwards, an RMC date that contradicts the times, an empty file or a file without GGA.
 NmeaGnssLog read_nmea_gnss(const std::filesystem::path& file, const std::string& prefix);

@@ -10,6 +10,10 @@
 /// - time: a logger time stamp before the '$' when the first used sentence has one, else the
 ///   sentence UTC (GGA, RMC, GLL, ZDA) with untimed sentences at the last sentence time and the
 ///   date from ZDA or RMC; t = 0 s at the first sample, its instant in `origin`;
+/// - a sentence UTC before the latest one (a second receiver's clock, a reset), unless more
+///   than 12 h before (midnight), is skipped as "time back" with the untimed sentences of its
+///   epoch: two clocks are never sorted into one;
+/// - lines end at '\n', "\r\n" or a lone '\r'; a UTF-8 byte order mark at the start is dropped;
 /// - a line that cannot be used is skipped and counted by kind in FileReport::skipped; a
 ///   benign defect is counted in FileReport::accepted; strict reading makes any skipped line an
 ///   error.
@@ -32,6 +36,11 @@ namespace dynpos::io {
 inline constexpr std::size_t kMaxNmeaLineBytes = std::size_t{64} << 10;
 /// The most bytes without a line end before a capture is not text: an error naming the line.
 inline constexpr std::size_t kMaxNmeaJunkBytes = std::size_t{16} << 20;
+/// A file whose first 100,000 lines, or first 16 MiB, hold no valid NMEA sentence (checksum,
+/// address and fields right, of any type) is not an NMEA capture: an error naming the line,
+/// not a read to the end of a file that may never end (/dev/urandom).
+inline constexpr std::size_t kMaxNmeaLinesWithoutSentence = 100'000;
+inline constexpr std::uint64_t kMaxNmeaBytesWithoutSentence = std::uint64_t{16} << 20;
 
 /// Options of read_nmea_log().
 struct NmeaLogOptions {
@@ -57,9 +66,10 @@ struct NmeaLog {
   std::optional<std::int64_t> origin_ns;  ///< the same instant [ns since 1970-01-01 UTC]
 };
 
-/// Reads an NMEA capture. Throws core::InputError if the file cannot be read, holds no
-/// sentence giving any role (the message counts what it found by kind), or, when strict, at
-/// the first skipped line.
+/// Reads an NMEA capture. Throws core::InputError if the file cannot be read, has no valid
+/// sentence in its first kMaxNmeaLinesWithoutSentence lines or kMaxNmeaBytesWithoutSentence
+/// bytes ("not an NMEA capture"), holds no sentence giving any role (the message counts what it
+/// found by kind), or, when strict, at the first skipped line.
 NmeaLog read_nmea_log(const std::filesystem::path& file, const NmeaLogOptions& options = {});
 
 /// True when more than half of the first 200 non-blank lines hold an NMEA sentence ('$' or
