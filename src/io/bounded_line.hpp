@@ -22,14 +22,4 @@ enum class LineStatus {
 LineStatus read_bounded_line(std::istream& in, std::string& out, std::size_t max_bytes,
                              bool& ended);
 
-/// Reads on to the end of the current line (after a kTooLong that did not end it); false if
-/// more than about max_bytes come before it.
-bool skip_rest_of_line(std::istream& in, std::size_t max_bytes);
-
-/// After a kTooLong line of a capture: reads on to its end (unless `ended`, when it was read).
-/// Throws core::InputError at file:line when more than about max_bytes come without a line end
-/// ("not a text capture").
-void skip_overlong_line(std::istream& in, bool ended, std::size_t max_bytes,
-                        const std::string& file, std::size_t line);
-
 }  // namespace dynpos::io::detail
