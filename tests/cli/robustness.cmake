@@ -1,5 +1,17 @@
 # Inputs that used to end in a wrong result, a hang, an abort or a raw control sequence: each
 # refused with exit 2 naming the file or the option, or run within bounds.
+# --wind-tolerance 1e-300 never ended (the bisection cannot narrow below one ulp).
+dynpos_cli_test(capability_wind_tolerance_out_of_range
+  COMMAND bash ${EXPECT_EXIT} 2
+          "\\(--wind-tolerance\\): the wind tolerance must be from 1e-06 to 10 m/s, got 1e-300"
+          timeout 60 ${DYNPOS_EXE} capability --wind-tolerance 1e-300)
+# --direction-step inf printed "L1(99,99,99,99)" with exit 0: no direction at all.
+dynpos_cli_test(capability_direction_step_infinite
+  COMMAND bash ${EXPECT_EXIT} 2 "\\(--direction-step\\): inf deg does not divide 360"
+          ${DYNPOS_EXE} capability --direction-step inf)
+dynpos_cli_test(capability_direction_step_above_360
+  COMMAND bash ${EXPECT_EXIT} 2 "\\(--direction-step\\): 720 deg does not divide 360"
+          ${DYNPOS_EXE} capability --direction-step 720)
 # Where no thread could start (`ulimit -v`) every subcommand aborted (exit 134). Not with the
 # sanitizers, whose shadow memory needs far more address space.
 if(NOT DYNPOS_SANITIZE)
