@@ -1,11 +1,12 @@
 // Options several subcommands share, with the checks CLI11 alone does not make: --seed, a
 // decimal number 0 … 2⁶⁴−1 (CLI11 reads "-1" into an unsigned seed as 2⁶⁴−1), and --json, a
-// file name or "-", never empty.
+// file name or "-", never empty. And the one printer of normal output.
 
 #include <cstdint>
 #include <string>
 
 #include "commands.hpp"
+#include "dynpos/core/printable_text.hpp"
 
 namespace dynpos::cli {
 
@@ -35,6 +36,10 @@ CLI::Option* add_json_option(CLI::App& sub, std::string& json, const std::string
       },
       "FILE|-");
   return sub.add_option("--json", json, help)->check(named);
+}
+
+void print_text(std::FILE* out, const std::string& text) {
+  fmt::print(out, "{}", core::printable_text(text));
 }
 
 }  // namespace dynpos::cli

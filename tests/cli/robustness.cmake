@@ -12,6 +12,10 @@ dynpos_cli_test(capability_direction_step_infinite
 dynpos_cli_test(capability_direction_step_above_360
   COMMAND bash ${EXPECT_EXIT} 2 "\\(--direction-step\\): 720 deg does not divide 360"
           ${DYNPOS_EXE} capability --direction-step 720)
+# Names, labels, keys and file names reach the terminal as text.
+dynpos_cli_test(terminal_text
+  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/terminal_text.sh ${DYNPOS_EXE} ${CLI_OUT}/terminal_text
+  PASS "^ok")
 # Where no thread could start (`ulimit -v`) every subcommand aborted (exit 134). Not with the
 # sanitizers, whose shadow memory needs far more address space.
 if(NOT DYNPOS_SANITIZE)
