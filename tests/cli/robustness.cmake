@@ -12,6 +12,15 @@ dynpos_cli_test(capability_direction_step_infinite
 dynpos_cli_test(capability_direction_step_above_360
   COMMAND bash ${EXPECT_EXIT} 2 "\\(--direction-step\\): 720 deg does not divide 360"
           ${DYNPOS_EXE} capability --direction-step 720)
+# An output in a missing folder, or in a folder that takes no file, is refused before the run
+# (they exited 1 after it).
+dynpos_cli_test(thrust_map_apply_out_missing_folder
+  COMMAND bash ${EXPECT_EXIT} 2 "\\(--out\\): folder '.*/no/such' does not exist"
+          ${DYNPOS_EXE} identify thrust-map ${CMAKE_CURRENT_SOURCE_DIR}/short_steps.csv --apply
+          --col rpm.port=cmd --unit rpm.port=rpm --out ${CLI_OUT}/no/such/x.csv)
+dynpos_cli_test(json_in_proc_refused
+  COMMAND bash ${EXPECT_EXIT} 2 "\\(--json\\): cannot write in folder '/proc': it takes no new files"
+          ${DYNPOS_EXE} hybrid first-order --json /proc/x.json)
 # Names, labels, keys and file names reach the terminal as text.
 dynpos_cli_test(terminal_text
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/terminal_text.sh ${DYNPOS_EXE} ${CLI_OUT}/terminal_text
@@ -24,3 +33,8 @@ if(NOT DYNPOS_SANITIZE)
             ${CLI_OUT}/threads_limited
     PASS "^ok")
 endif()
+# Outputs on a read-only file system (a read-only tmpfs in a mount namespace; skipped where
+# none can be made).
+dynpos_cli_test(readonly_fs
+  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/readonly_fs.sh ${DYNPOS_EXE} PASS "^ok")
+set_tests_properties(cli_readonly_fs PROPERTIES SKIP_RETURN_CODE 77)
