@@ -1,5 +1,6 @@
 # Inputs that used to end in a wrong result, a hang, an abort or a raw control sequence: each
 # refused with exit 2 naming the file or the option, or run within bounds.
+
 # --wind-tolerance 1e-300 never ended (the bisection cannot narrow below one ulp).
 dynpos_cli_test(capability_wind_tolerance_out_of_range
   COMMAND bash ${EXPECT_EXIT} 2
@@ -21,6 +22,15 @@ dynpos_cli_test(thrust_map_apply_out_missing_folder
 dynpos_cli_test(json_in_proc_refused
   COMMAND bash ${EXPECT_EXIT} 2 "\\(--json\\): cannot write in folder '/proc': it takes no new files"
           ${DYNPOS_EXE} hybrid first-order --json /proc/x.json)
+# leverarm mru --w1 -1 named the observer's field w1_per_s (exit 1).
+dynpos_cli_test(leverarm_mru_bad_w1
+  COMMAND bash ${EXPECT_EXIT} 2 "\\(--w1\\): -1 is not a gain"
+          ${DYNPOS_EXE} leverarm mru ${CMAKE_CURRENT_SOURCE_DIR}/short_steps.csv --w1 -1)
+# An empty vessel file was the built-in vessel, unsaid.
+dynpos_cli_test(simulate_empty_vessel
+  COMMAND bash ${EXPECT_EXIT} 2 "empty_vessel.toml: the vessel file has no key"
+          ${DYNPOS_EXE} simulate surge-steps-forward --duration 5 --out ${CLI_OUT}/empty_vessel
+          --vessel ${CMAKE_CURRENT_SOURCE_DIR}/empty_vessel.toml)
 # Names, labels, keys and file names reach the terminal as text.
 dynpos_cli_test(terminal_text
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/terminal_text.sh ${DYNPOS_EXE} ${CLI_OUT}/terminal_text
@@ -38,3 +48,9 @@ endif()
 dynpos_cli_test(readonly_fs
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/readonly_fs.sh ${DYNPOS_EXE} PASS "^ok")
 set_tests_properties(cli_readonly_fs PROPERTIES SKIP_RETURN_CODE 77)
+# A control rate off the simulator's grid exited 1 naming neither the file nor the key.
+dynpos_cli_test(simulate_bad_control_rate
+  COMMAND bash ${EXPECT_EXIT} 2
+          "bad_control_rate.toml \\(joystick.control_rate_hz\\): 3 Hz: the control period 1/3 s is not a whole number"
+          ${DYNPOS_EXE} simulate surge-steps-forward --duration 5 --out ${CLI_OUT}/control_rate
+          --vessel ${CMAKE_CURRENT_SOURCE_DIR}/bad_control_rate.toml)
