@@ -54,3 +54,8 @@ dynpos_cli_test(simulate_bad_control_rate
           "bad_control_rate.toml \\(joystick.control_rate_hz\\): 3 Hz: the control period 1/3 s is not a whole number"
           ${DYNPOS_EXE} simulate surge-steps-forward --duration 5 --out ${CLI_OUT}/control_rate
           --vessel ${CMAKE_CURRENT_SOURCE_DIR}/bad_control_rate.toml)
+# A statistic that overflowed was printed "—", the mark for a figure not logged.
+dynpos_cli_test(station_keeping_overflow_is_not_missing
+  COMMAND ${DYNPOS_EXE} identify station-keeping ${CMAKE_CURRENT_SOURCE_DIR}/huge_positions.csv
+          --col north=north --col east=east
+  PASS "position std north \\[m\\] +inf\n" FAIL "position std north \\[m\\] +—")
