@@ -41,8 +41,8 @@ void run_loads(const CapabilityCliOptions& o, const CLI::App& sub) {
   const analysis::FeasibilityReport report = analysis::run_feasibility(request);
   if (!o.json.empty()) io::write_json(o.json, analysis::to_json(report));
   std::FILE* out = o.json == "-" ? stderr : stdout;
-  fmt::print(out, "{}", analysis::to_text(report));
-  if (!o.json.empty() && o.json != "-") fmt::print(out, "wrote {}\n", o.json);
+  print_text(out, "{}", analysis::to_text(report));
+  if (!o.json.empty() && o.json != "-") print_text(out, "wrote {}\n", o.json);
 }
 
 void run(const CapabilityCliOptions& o) {
@@ -58,9 +58,9 @@ void run(const CapabilityCliOptions& o) {
   }
   if (!o.json.empty()) io::write_json(o.json, analysis::to_json(report));
   std::FILE* out = o.json == "-" ? stderr : stdout;
-  fmt::print(out, "{}", analysis::to_text(report));
-  if (!rose.empty()) fmt::print(out, "wrote {}\n", rose.string());
-  if (!o.json.empty() && o.json != "-") fmt::print(out, "wrote {}\n", o.json);
+  print_text(out, "{}", analysis::to_text(report));
+  if (!rose.empty()) print_text(out, "wrote {}\n", rose.string());
+  if (!o.json.empty() && o.json != "-") print_text(out, "wrote {}\n", o.json);
 }
 
 }  // namespace

@@ -26,8 +26,8 @@ void run(const CompareOptions& opt) {
   const analysis::CompareReport report = analysis::run_compare(opt.request);
   if (!opt.json.empty()) io::write_json(opt.json, analysis::to_json(report));
   std::FILE* out = opt.json == "-" ? stderr : stdout;
-  fmt::print(out, "{}", analysis::to_text(report));
-  if (!opt.json.empty() && opt.json != "-") fmt::print(out, "wrote {}\n", opt.json);
+  print_text(out, "{}", analysis::to_text(report));
+  if (!opt.json.empty() && opt.json != "-") print_text(out, "wrote {}\n", opt.json);
 }
 
 }  // namespace

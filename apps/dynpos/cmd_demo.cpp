@@ -25,7 +25,7 @@ void register_demo(CLI::App& app) {
       "The other analyses of the logs join the report as they become available.");
   sub->callback([request] {
     request->validate();
-    fmt::print("{}", analysis::to_text(analysis::run_demo(*request)));
+    print_text(stdout, "{}", analysis::to_text(analysis::run_demo(*request)));
   });
 }
 

@@ -33,9 +33,9 @@ void run_hybrid(const HybridOptions& opt) {
   if (!opt.json.empty()) io::write_json(opt.json, analysis::to_json(report, plots));
   // With the JSON on stdout, the human-readable part goes to stderr.
   std::FILE* out = opt.json == "-" ? stderr : stdout;
-  fmt::print(out, "{}", analysis::to_text(report));
-  for (const auto& p : plots) fmt::print(out, "wrote {}\n", p.string());
-  if (!opt.json.empty() && opt.json != "-") fmt::print(out, "wrote {}\n", opt.json);
+  print_text(out, "{}", analysis::to_text(report));
+  for (const auto& p : plots) print_text(out, "wrote {}\n", p.string());
+  if (!opt.json.empty() && opt.json != "-") print_text(out, "wrote {}\n", opt.json);
 }
 
 void add_case(CLI::App& parent, const std::string& name, const std::string& description,

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "dynpos/analysis/hybrid_case.hpp"
 #include "dynpos/analysis/hybrid_vessel.hpp"
 #include "dynpos/io/json_writer.hpp"
 
@@ -25,14 +26,15 @@ struct VesselOptions {
 
 void run_vessel(const VesselOptions& opt) {
   opt.request.validate();
+  analysis::check_hybrid_case_outputs(opt.out_dir, opt.json);
   const analysis::HybridVesselReport r = analysis::run_hybrid_vessel(opt.request);
   std::vector<std::filesystem::path> plots;
   if (!opt.out_dir.empty()) plots = analysis::write_figures(r, opt.out_dir);
   if (!opt.json.empty()) io::write_json(opt.json, analysis::to_json(r, plots));
   std::FILE* out = opt.json == "-" ? stderr : stdout;
-  fmt::print(out, "{}", analysis::to_text(r));
-  for (const auto& p : plots) fmt::print(out, "wrote {}\n", p.string());
-  if (!opt.json.empty() && opt.json != "-") fmt::print(out, "wrote {}\n", opt.json);
+  print_text(out, "{}", analysis::to_text(r));
+  for (const auto& p : plots) print_text(out, "wrote {}\n", p.string());
+  if (!opt.json.empty() && opt.json != "-") print_text(out, "wrote {}\n", opt.json);
 }
 
 }  // namespace

@@ -27,8 +27,8 @@ void run_step(const StepOptions& opt) {
   const analysis::StepReport report = analysis::run_step(opt.request);
   if (!opt.json.empty()) io::write_json(opt.json, analysis::to_json(report));
   std::FILE* out = opt.json == "-" ? stderr : stdout;
-  fmt::print(out, "{}", analysis::to_text(report));
-  if (!opt.json.empty() && opt.json != "-") fmt::print(out, "wrote {}\n", opt.json);
+  print_text(out, "{}", analysis::to_text(report));
+  if (!opt.json.empty() && opt.json != "-") print_text(out, "wrote {}\n", opt.json);
 }
 
 void add_identify_step(CLI::App& identify) {

@@ -39,9 +39,9 @@ void run_cli(const AgilityCliOptions& o) {
   if (!o.plot.empty()) analysis::write_plot(report, o.plot);
   if (!o.json.empty()) io::write_json(o.json, analysis::to_json(report));
   std::FILE* out = o.json == "-" ? stderr : stdout;
-  fmt::print(out, "{}", analysis::to_text(report));
-  if (!o.plot.empty()) fmt::print(out, "wrote {}\n", o.plot);
-  if (!o.json.empty() && o.json != "-") fmt::print(out, "wrote {}\n", o.json);
+  print_text(out, "{}", analysis::to_text(report));
+  if (!o.plot.empty()) print_text(out, "wrote {}\n", o.plot);
+  if (!o.json.empty() && o.json != "-") print_text(out, "wrote {}\n", o.json);
 }
 
 }  // namespace

@@ -29,8 +29,8 @@ void run(StationKeepingOptions& o) {
   const analysis::StationKeepingReport report = analysis::run_station_keeping(o.request);
   if (!o.json.empty()) io::write_json(o.json, analysis::to_json(report));
   std::FILE* out = o.json == "-" ? stderr : stdout;
-  fmt::print(out, "{}", analysis::to_text(report));
-  if (!o.json.empty() && o.json != "-") fmt::print(out, "wrote {}\n", o.json);
+  print_text(out, "{}", analysis::to_text(report));
+  if (!o.json.empty() && o.json != "-") print_text(out, "wrote {}\n", o.json);
 }
 
 }  // namespace

@@ -32,17 +32,18 @@ void run_thrust_map(ThrustMapOptions& o) {
     throw analysis::option_error("out", "--apply needs --out FILE.csv",
                                  "name the CSV to write the computed thrust into");
   }
+  if (o.request.apply) analysis::check_output_file("out", o.out.string());
   if (!o.request.apply) analysis::check_output_file("json", o.json);
   const analysis::ThrustMapReport report = analysis::run_thrust_map(o.request);
   if (report.applied) {
     io::write_csv(o.out, report.applied->log);
-    fmt::print("{}", analysis::to_text(report, o.out));
+    print_text(stdout, "{}", analysis::to_text(report, o.out));
     return;
   }
   if (!o.json.empty()) io::write_json(o.json, analysis::to_json(report));
   std::FILE* out = o.json == "-" ? stderr : stdout;
-  fmt::print(out, "{}", analysis::to_text(report));
-  if (!o.json.empty() && o.json != "-") fmt::print(out, "wrote {}\n", o.json);
+  print_text(out, "{}", analysis::to_text(report));
+  if (!o.json.empty() && o.json != "-") print_text(out, "wrote {}\n", o.json);
 }
 
 }  // namespace

@@ -33,9 +33,9 @@ void run_cli(MruCliOptions& o) {
   if (!o.plots.empty()) plots = analysis::write_figures(report, o.plots);
   if (!o.json.empty()) io::write_json(o.json, analysis::to_json(report));
   std::FILE* out = o.json == "-" ? stderr : stdout;
-  fmt::print(out, "{}", analysis::to_text(report));
-  for (const auto& p : plots) fmt::print(out, "wrote {}\n", p.string());
-  if (!o.json.empty() && o.json != "-") fmt::print(out, "wrote {}\n", o.json);
+  print_text(out, "{}", analysis::to_text(report));
+  for (const auto& p : plots) print_text(out, "wrote {}\n", p.string());
+  if (!o.json.empty() && o.json != "-") print_text(out, "wrote {}\n", o.json);
 }
 
 }  // namespace

@@ -29,8 +29,8 @@ struct MonteCarloOptions {
 void print(const analysis::MonteCarloReport& report, const std::string& json) {
   if (!json.empty()) io::write_json(json, analysis::to_json(report));
   std::FILE* out = json == "-" ? stderr : stdout;
-  fmt::print(out, "{}", analysis::to_text(report));
-  if (!json.empty() && json != "-") fmt::print(out, "wrote {}\n", json);
+  print_text(out, "{}", analysis::to_text(report));
+  if (!json.empty() && json != "-") print_text(out, "wrote {}\n", json);
 }
 
 }  // namespace

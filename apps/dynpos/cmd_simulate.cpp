@@ -40,7 +40,7 @@ void register_simulate(CLI::App& app) {
       "lever arms, command times, true time constants). Columns: docs/log-format.md.");
   sub->callback([request] {
     request->validate();
-    fmt::print("{}", analysis::to_text(analysis::run_simulate(*request)));
+    print_text(stdout, "{}", analysis::to_text(analysis::run_simulate(*request)));
   });
 }
 

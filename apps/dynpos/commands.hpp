@@ -2,8 +2,11 @@
 // The dynpos subcommands: each file registers one on the top-level app.
 // A registered callback throws on failure; main() maps exceptions to exit codes.
 
+#include <fmt/core.h>
+
 #include <CLI/CLI.hpp>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 
@@ -44,6 +47,15 @@ CLI::Option* output_folder(CLI::Option* option);
 /// --vessel, a FILE of --col ROLE=COLUMN@FILE or --clock-offset FILE=SECONDS, …): exit 2
 /// naming both.
 void check_outputs(const CLI::App& app);
+
+/// Prints the normal output of a subcommand to `out`: the one place reports leave the program.
+/// What they echo of the user's input (scenario names, labels, keys, paths) reaches the
+/// terminal as text (core::printable_text), never as a control sequence.
+void print_text(std::FILE* out, const std::string& text);
+template <typename... Args>
+void print_text(std::FILE* out, fmt::format_string<Args...> format, Args&&... args) {
+  print_text(out, fmt::format(format, std::forward<Args>(args)...));
+}
 
 /// Adds `vessel` to the `hybrid` subcommand.
 void add_hybrid_vessel(CLI::App& hybrid);

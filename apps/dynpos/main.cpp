@@ -4,6 +4,8 @@
 #include <fmt/core.h>
 #include <fmt/ranges.h>
 
+#include <pthread.h>
+
 #include <CLI/CLI.hpp>
 #include <csignal>
 #include <cstdio>
@@ -12,7 +14,7 @@
 #include <filesystem>
 #include <new>
 #include <string>
-#include <thread>
+#include <system_error>
 #include <vector>
 
 #include "commands.hpp"
@@ -27,19 +29,34 @@ namespace {
 // process with 128 + the signal's number, as a shell reports it. Outputs already renamed into
 // place stay; none is left half-written. A run whose files are being renamed into place is
 // let finish placing them first (temporary_files::Hold), so its files are all new or all old.
+// The thread gets a small stack (it only waits and removes files), so it starts even under a
+// tight memory limit (`ulimit -v`); if the system cannot start it at all, the signals are
+// unblocked again and end the process as they would any program (temporary files then stay).
+void* take_signals(void* signals) {
+  int signal = 0;
+  if (sigwait(static_cast<const sigset_t*>(signals), &signal) != 0) return nullptr;
+  const std::size_t removed = dynpos::io::temporary_files::remove_all_for_exit();
+  std::fprintf(stderr, "dynpos: stopped by signal %d; %zu temporary file(s) removed\n", signal,
+               removed);
+  std::_Exit(128 + signal);
+}
+
 void take_signals_on_a_thread() {
-  sigset_t signals;
+  static sigset_t signals;  // read by the thread for the life of the process
   sigemptyset(&signals);
   for (const int s : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&signals, s);
   if (pthread_sigmask(SIG_BLOCK, &signals, nullptr) != 0) return;
-  std::thread([signals] {
-    int signal = 0;
-    if (sigwait(&signals, &signal) != 0) return;
-    const std::size_t removed = dynpos::io::temporary_files::remove_all_for_exit();
-    std::fprintf(stderr, "dynpos: stopped by signal %d; %zu temporary file(s) removed\n", signal,
-                 removed);
-    std::_Exit(128 + signal);
-  }).detach();
+  pthread_attr_t attributes;
+  pthread_t thread;
+  bool started = false;
+  if (pthread_attr_init(&attributes) == 0) {
+    constexpr std::size_t kStack_B = 256 * 1024;
+    started = pthread_attr_setstacksize(&attributes, kStack_B) == 0 &&
+              pthread_attr_setdetachstate(&attributes, PTHREAD_CREATE_DETACHED) == 0 &&
+              pthread_create(&thread, &attributes, take_signals, &signals) == 0;
+    pthread_attr_destroy(&attributes);
+  }
+  if (!started) pthread_sigmask(SIG_UNBLOCK, &signals, nullptr);
 }
 
 }  // namespace
@@ -89,8 +106,22 @@ int main(int argc, char** argv) {
   } catch (const std::filesystem::filesystem_error& e) {
     // A folder or file of the outputs that cannot be made or written (or an input that cannot
     // be read): the path and the system's reason, not the library's wording.
-    const std::string path = e.path1().empty() ? std::string() : "'" + e.path1().string() + "': ";
+    const std::string path = e.path1().empty()
+                                 ? std::string()
+                                 : "'" + dynpos::core::printable(e.path1().string()) + "': ";
     fmt::print(stderr, "dynpos: error: {}{}; check the path and its permissions\n", path,
+               e.code().message());
+    return kExitInputError;
+  } catch (const std::system_error& e) {
+    if (e.code() != std::errc::resource_unavailable_try_again) {
+      fmt::print(stderr, "dynpos: error: {}\n", dynpos::core::printable(e.what()));
+      return kExitFailure;
+    }
+    // A thread the system would not start (a limit of memory or processes) where no fewer
+    // threads would do.
+    fmt::print(stderr,
+               "dynpos: error: the system cannot start another thread ({}); use --jobs 1, or "
+               "raise the limit of memory (ulimit -v) or of processes\n",
                e.code().message());
     return kExitInputError;
   } catch (const std::bad_alloc&) {
@@ -100,10 +131,11 @@ int main(int argc, char** argv) {
     fmt::print(stderr,
                "dynpos: error: out of memory running '{}'; give a shorter log or run, a window "
                "(--from/--to), fewer --jobs, or a machine with more memory\n",
-               fmt::join(std::vector<std::string>(argv + 1, argv + argc), " "));
+               dynpos::core::printable(fmt::format(
+                   "{}", fmt::join(std::vector<std::string>(argv + 1, argv + argc), " "))));
     return kExitInputError;
   } catch (const std::exception& e) {
-    fmt::print(stderr, "dynpos: error: {}\n", e.what());
+    fmt::print(stderr, "dynpos: error: {}\n", dynpos::core::printable(e.what()));
     return kExitFailure;
   }
   return kExitOk;

@@ -1,7 +1,7 @@
 // Options several subcommands share, with the checks CLI11 alone does not make: --seed, a
 // decimal number 0 … 2⁶⁴−1 (CLI11 reads "-1" into an unsigned seed as 2⁶⁴−1), and --json, a
-// file name or "-", never empty; and the outputs of every subcommand, checked together before
-// any runs.
+// file name or "-", never empty; the outputs of every subcommand, checked together before
+// any runs; and the one printer of normal output.
 
 #include <fmt/core.h>
 #include <sys/stat.h>
@@ -14,6 +14,7 @@
 
 #include "commands.hpp"
 #include "dynpos/analysis/options.hpp"
+#include "dynpos/core/printable_text.hpp"
 
 namespace dynpos::cli {
 
@@ -143,6 +144,10 @@ void check_outputs(const CLI::App& app) {
           "write the output to another file");
     }
   }
+}
+
+void print_text(std::FILE* out, const std::string& text) {
+  fmt::print(out, "{}", core::printable_text(text));
 }
 
 }  // namespace dynpos::cli

@@ -113,7 +113,7 @@ def _log_from_frame(frame, time: str | None = "time", units: Mapping[str, str] |
 Log.from_frame = staticmethod(_log_from_frame)
 
 
-def _pairs(mapping: Mapping[str, Any] | Sequence[str] | None) -> list[str]:
+def _pairs(mapping: Mapping[str, Any] | Sequence[str] | None, key: str = "col") -> list[str]:
     """{"role": "column"} or ["role=column"] as the CLI's ROLE=VALUE strings."""
     if mapping is None:
         return []
@@ -121,7 +121,44 @@ def _pairs(mapping: Mapping[str, Any] | Sequence[str] | None) -> list[str]:
         return [f"{k}={v}" for k, v in mapping.items()]
     if isinstance(mapping, str):
         return [mapping]
-    return list(mapping)
+    if isinstance(mapping, (list, tuple)) and all(isinstance(v, str) for v in mapping):
+        return list(mapping)
+    raise _input_error(f"({_option_name(key)}): {_type_name(mapping)} is not a dict or a list of "
+                       "NAME=VALUE strings; give e.g. {\"input\": \"cmd\"}", key)
+
+
+def _type_name(value) -> str:
+    """"a float", "an int": what a value is, for a message."""
+    name = type(value).__name__
+    return ("an " if name[:1] in "aeiou" else "a ") + name
+
+
+# What a request's field takes, from the C++ type pybind11 names in its TypeError.
+_TAKES = {"float": "a number", "int": "a whole number", "str": "text", "bool": "True or False",
+          "os.PathLike": "a path", "List[str]": "a list of text", "list[str]": "a list of text",
+          "List[float]": "a list of numbers", "list[float]": "a list of numbers"}
+
+
+def _takes(error: TypeError) -> str:
+    import re
+    m = re.search(r"arg0: ([^)]+)\) -> None", str(error))
+    if not m:
+        return "another type"
+    kind = m.group(1).strip()
+    optional = re.fullmatch(r"(?:Optional\[(.*)\]|(.*) \| None)", kind)
+    if optional:
+        kind = optional.group(1) or optional.group(2)
+        return _TAKES.get(kind, kind) + " or None"
+    return _TAKES.get(kind, kind)
+
+
+def _fspath(value, key: str) -> str:
+    """A path given as text or an os.PathLike, else an InputError naming the keyword."""
+    try:
+        return os.fspath(value)
+    except TypeError:
+        raise _input_error(f"({_option_name(key)}): {_type_name(value)} is not a path; give a "
+                           "file name", key) from None
 
 
 def _is_frame(value) -> bool:
@@ -149,7 +186,7 @@ def _set(request, key: str, value) -> None:
     if key.startswith("_") or not hasattr(request, key):
         raise _input_error(f"({_option_name(key)}): unknown option '{key}'", key)
     if key in _PAIR_OPTIONS:
-        value = _pairs(value)
+        value = _pairs(value, key)
     elif isinstance(value, os.PathLike):
         value = os.fspath(value)
     elif isinstance(value, (list, tuple)) and value and isinstance(value[0], os.PathLike):
@@ -157,7 +194,8 @@ def _set(request, key: str, value) -> None:
     try:
         setattr(request, key, value)
     except TypeError as e:
-        raise _input_error(f"({_option_name(key)}): {e}", key) from None
+        raise _input_error(f"({_option_name(key)}): {_type_name(value)} is not what it takes: "
+                           f"give {_takes(e)}", key) from None
 
 
 def _source(log, col=None, unit=None, map=None, **log_options) -> _dynpos.LogSource:
@@ -167,11 +205,15 @@ def _source(log, col=None, unit=None, map=None, **log_options) -> _dynpos.LogSou
     if isinstance(log, Log):
         s.memory = log
     else:
-        s.log = os.fspath(log)
-    s.col = _pairs(col)
-    s.unit = _pairs(unit)
+        try:
+            s.log = os.fspath(log)
+        except TypeError:
+            raise _input_error(f"(log): {_type_name(log)} is not a log; give a path, a Log or a "
+                               "pandas DataFrame", "log") from None
+    s.col = _pairs(col, "col")
+    s.unit = _pairs(unit, "unit")
     if map is not None:
-        s.map = os.fspath(map)
+        s.map = _fspath(map, "map")
     for key, value in log_options.items():
         _set(s, key, value)
     return s
@@ -194,8 +236,8 @@ def _options(cls, options: Mapping[str, Any]):
     return q
 
 
-def _path(value) -> str:
-    return "" if value is None else os.fspath(value)
+def _path(value, key: str = "json") -> str:
+    return "" if value is None else _fspath(value, key)
 
 
 def read_log(path, col=None, unit=None, map=None, roles: Sequence[str] | None = None,
@@ -227,7 +269,8 @@ def identify_thrust_map(log, col=None, unit=None, map=None, *, json=None, out=No
     to ``out`` (CSV). Options as ``dynpos identify thrust-map``: ``min_speed`` [rpm],
     ``apply``, ``abs_speed``, ``vessel``. Table: ``thrusters``."""
     q = _request(_dynpos.ThrustMapRequest, log, col, unit, map, options)
-    return Result(_json.loads(_dynpos.run_thrust_map(q, _path(json), _path(out))), "thrusters")
+    doc = _dynpos.run_thrust_map(q, _path(json), _path(out, "out"))
+    return Result(_json.loads(doc), "thrusters")
 
 
 def identify_agility(log, col=None, unit=None, map=None, *, json=None, plot=None,
@@ -238,7 +281,8 @@ def identify_agility(log, col=None, unit=None, map=None, *, json=None, plot=None
     ("SPEED_MPS,TO_DEG"), ``rpm``, ``min_response`` [%], ``min_demand`` [%]; ``plot`` (SVG).
     Table: ``directions``."""
     q = _request(_dynpos.AgilityRequest, log, col, unit, map, options)
-    return Result(_json.loads(_dynpos.run_agility(q, _path(json), _path(plot))), "directions")
+    doc = _dynpos.run_agility(q, _path(json), _path(plot, "plot"))
+    return Result(_json.loads(doc), "directions")
 
 
 def identify_four_corner(log, col=None, unit=None, map=None, *, json=None, plot=None,
@@ -250,7 +294,7 @@ def identify_four_corner(log, col=None, unit=None, map=None, *, json=None, plot=
     if "arm" in options and isinstance(options["arm"], str):
         options["arm"] = [float(v) for v in options["arm"].split(",")]
     q = _request(_dynpos.FourCornerRequest, log, col, unit, map, options)
-    return Result(_json.loads(_dynpos.run_four_corner(q, _path(json), _path(plot))), "legs")
+    return Result(_json.loads(_dynpos.run_four_corner(q, _path(json), _path(plot, "plot"))), "legs")
 
 
 def identify_station_keeping(log, col=None, unit=None, map=None, *, json=None,
@@ -272,7 +316,8 @@ def leverarm_gnss(log, col=None, unit=None, map=None, *, json=None, plots=None,
     ({"gnssK": FILE}), ``time_offset`` [s], ``max_time_offset`` [s], ``gnss_std`` [m], ...;
     ``plots`` (folder). Table: ``arms``."""
     q = _request(_dynpos.LeverarmGnssRequest, log, col, unit, map, options)
-    return Result(_json.loads(_dynpos.run_leverarm_gnss(q, _path(json), _path(plots))), "arms")
+    doc = _dynpos.run_leverarm_gnss(q, _path(json), _path(plots, "plots"))
+    return Result(_json.loads(doc), "arms")
 
 
 def leverarm_mru(log, col=None, unit=None, map=None, *, json=None, plots=None,
@@ -282,7 +327,8 @@ def leverarm_mru(log, col=None, unit=None, map=None, *, json=None, plots=None,
     ``method`` ("lsq", "observer"), ``window_s``, ``tau_s`` [s], ``w1`` [1/s]; ``plots``
     (folder). Table: ``arms``."""
     q = _request(_dynpos.LeverarmMruRequest, log, col, unit, map, options)
-    return Result(_json.loads(_dynpos.run_leverarm_mru(q, _path(json), _path(plots))), "arms")
+    doc = _dynpos.run_leverarm_mru(q, _path(json), _path(plots, "plots"))
+    return Result(_json.loads(doc), "arms")
 
 
 def hybrid_case(case: str = "first-order", *, json=None, out=None, **options) -> Result:
@@ -292,7 +338,7 @@ def hybrid_case(case: str = "first-order", *, json=None, out=None, **options) ->
     [s], ``noise_power``, ``end_time`` [s], ``heading`` [deg] (dp), ``ki`` [1/s²] and
     ``solve_p`` (first-order); ``out`` (folder for the plots)."""
     q = _options(_dynpos.HybridCaseRequest, {"case": case, **options})
-    return Result(_json.loads(_dynpos.run_hybrid_case(q, _path(json), _path(out))))
+    return Result(_json.loads(_dynpos.run_hybrid_case(q, _path(json), _path(out, "out"))))
 
 
 def hybrid_vessel(scenario: str, *, json=None, out=None, **options) -> Result:
@@ -301,7 +347,7 @@ def hybrid_vessel(scenario: str, *, json=None, out=None, **options) -> Result:
     energy and jumps. Options as ``dynpos hybrid vessel``: ``seed``, ``within`` [m]; ``out``
     (folder for the plots)."""
     q = _options(_dynpos.HybridVesselRequest, {"scenario": scenario, **options})
-    return Result(_json.loads(_dynpos.run_hybrid_vessel(q, _path(json), _path(out))))
+    return Result(_json.loads(_dynpos.run_hybrid_vessel(q, _path(json), _path(out, "out"))))
 
 
 def compare(a, b, *, json=None, **options) -> Result:
@@ -319,7 +365,7 @@ def compare(a, b, *, json=None, **options) -> Result:
                 with open(path, "w", encoding="utf-8") as f:
                     _json.dump(data, f)
                 value = path
-            paths.append(os.fspath(value))
+            paths.append(_fspath(value, name.lower()))
         q = _options(_dynpos.CompareRequest, {"a": paths[0], "b": paths[1], **options})
         return Result(_json.loads(_dynpos.run_compare(q, _path(json))), "rows")
 
@@ -334,7 +380,7 @@ def capability(*, json=None, out=None, **options) -> Result:
     ``settle`` [s], ``footprint`` [m], ``footprint_deg`` [deg], ``seed``, ``jobs``; ``out``
     (folder for rose.svg). Table: ``points``."""
     q = _options(_dynpos.CapabilityRequest, options)
-    return Result(_json.loads(_dynpos.run_capability(q, _path(json), _path(out))), "points")
+    return Result(_json.loads(_dynpos.run_capability(q, _path(json), _path(out, "out"))), "points")
 
 
 def montecarlo(scenario: str, seeds: str | tuple[int, int] = (1, 10), *, json=None,
@@ -348,7 +394,7 @@ def montecarlo(scenario: str, seeds: str | tuple[int, int] = (1, 10), *, json=No
     merge``), ``work_dir`` (where each seed's files go; default temporary). Table: ``summary``
     (quantity: n, mean, std, min, max, truth, bias, rms_error); ``samples`` per seed."""
     q = _dynpos.MonteCarloRequest()
-    q.scenario = os.fspath(scenario)
+    q.scenario = _fspath(scenario, "scenario")
     q.set_seeds(seeds if isinstance(seeds, str) else f"{seeds[0]}..{seeds[1]}")
     shard = options.pop("shard", None)
     if shard is not None:
@@ -383,13 +429,12 @@ def simulate(scenario: str, seed: int = 1, out=None, duration: float | None = No
     writes them (a temporary folder, removed after reading, when not given). Returns a
     :class:`Simulation`; for ``"campaign"`` a dict of them by scenario name."""
     q = _dynpos.SimulateRequest()
-    q.scenario = os.fspath(scenario)
-    q.seed = seed
-    q.duration = duration
-    q.log_rate = log_rate
-    q.jobs = jobs
+    q.scenario = _fspath(scenario, "scenario")
+    for key, value in (("seed", seed), ("duration", duration), ("log_rate", log_rate),
+                       ("jobs", jobs)):
+        _set(q, key, value)
     if vessel is not None:
-        q.vessel = os.fspath(vessel)
+        q.vessel = _fspath(vessel, "vessel")
 
     def run(folder: str, keep: bool):
         q.out = folder
@@ -398,7 +443,7 @@ def simulate(scenario: str, seed: int = 1, out=None, duration: float | None = No
         return runs if q.scenario == "campaign" else next(iter(runs.values()))
 
     if out is not None:
-        return run(os.fspath(out), True)
+        return run(_fspath(out, "out"), True)
     with tempfile.TemporaryDirectory(prefix="dynpos-") as tmp:
         return run(tmp, False)
 

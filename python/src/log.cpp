@@ -5,7 +5,10 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <fmt/core.h>
+
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -29,6 +32,8 @@ py::array view(const std::vector<double>& v, py::handle owner) {
   return a;
 }
 
+// A column's values: NaN is a missing value; ±inf is refused (an overflow upstream, or a
+// sentinel), naming the column and the row.
 std::vector<double> numbers(const py::handle& values, std::size_t n, const std::string& name) {
   const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(values);
   if (!a || a.ndim() != 1 || static_cast<std::size_t>(a.size()) != n) {
@@ -37,20 +42,76 @@ std::vector<double> numbers(const py::handle& values, std::size_t n, const std::
         "column '" + name + "' is not a 1-D array of " + std::to_string(n) + " numbers",
         "give one value per time stamp (NaN where missing)");
   }
-  return {a.data(), a.data() + a.size()};
+  std::vector<double> out(a.data(), a.data() + a.size());
+  const auto inf = std::find_if(out.begin(), out.end(), [](double v) { return std::isinf(v); });
+  if (inf != out.end()) {
+    throw core::InputError(
+        {{}, {}, {}, name},
+        fmt::format("row {} of column '{}' is {}", inf - out.begin(), name, *inf),
+        "give finite numbers (NaN where missing)");
+  }
+  return out;
 }
 
-std::shared_ptr<Log> log_from_arrays(const py::handle& time, const py::dict& columns,
-                                     const py::dict& units) {
+// The time axis: finite and strictly increasing, else an InputError naming the first bad row.
+std::vector<double> time_axis(const py::handle& time) {
   const auto t = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(time);
   if (!t || t.ndim() != 1) {
     throw core::InputError({{}, {}, {}, "time"}, "time is not a 1-D array of numbers",
                            "give the time stamps in seconds");
   }
-  auto log = std::make_shared<Log>(numbers(t, static_cast<std::size_t>(t.size()), "time"));
+  std::vector<double> out(t.data(), t.data() + t.size());
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    if (!std::isfinite(out[i])) {
+      throw core::InputError({{}, {}, {}, "time"}, fmt::format("row {} is {}", i, out[i]),
+                             "give finite time stamps in seconds");
+    }
+    if (i > 0 && !(out[i] > out[i - 1])) {
+      throw core::InputError(
+          {{}, {}, {}, "time"},
+          fmt::format("row {} ({} s) is {} row {} ({} s)", i, out[i],
+                      out[i] == out[i - 1] ? "the same time as" : "earlier than", i - 1,
+                      out[i - 1]),
+          "give strictly increasing time stamps (sort the rows, drop repeated ones)");
+    }
+  }
+  return out;
+}
+
+// `value` as a dict, or an InputError naming the keyword.
+py::dict dict_argument(const py::handle& value, const char* keyword) {
+  if (!py::isinstance<py::dict>(value)) {
+    throw core::InputError({{}, {}, {}, keyword},
+                           std::string("a ") +
+                               py::str(value.get_type().attr("__name__")).cast<std::string>() +
+                               " is not a dict",
+                           "give {name: values}");
+  }
+  return py::reinterpret_borrow<py::dict>(value);
+}
+
+std::string text_argument(const py::handle& value, const std::string& keyword) {
+  if (!py::isinstance<py::str>(value)) {
+    throw core::InputError({{}, {}, {}, keyword}, "a name or unit that is not text",
+                           "give text, e.g. \"m/s\"");
+  }
+  return value.cast<std::string>();
+}
+
+std::shared_ptr<Log> log_from_arrays(const py::handle& time, const py::handle& columns_arg,
+                                     const py::handle& units_arg) {
+  const py::dict columns = dict_argument(columns_arg, "columns");
+  const py::dict units = dict_argument(units_arg, "units");
+  auto log = std::make_shared<Log>(time_axis(time));
   for (const auto& [key, value] : columns) {
-    const auto name = key.cast<std::string>();
-    const std::string unit = units.contains(key) ? units[key].cast<std::string>() : "";
+    const std::string name = text_argument(key, "columns");
+    if (name.empty() || log->has(name)) {
+      throw core::InputError(
+          {{}, {}, {}, "columns"},
+          name.empty() ? "a column without a name" : "column '" + name + "' twice",
+          "give each column a name of its own");
+    }
+    const std::string unit = units.contains(key) ? text_argument(units[key], "units") : "";
     log->add_channel(name, unit, numbers(value, log->size(), name));
   }
   return log;

@@ -171,3 +171,66 @@ def test_errors_raised_in_python_have_the_same_attributes(tmp_path):
     not_a_folder.write_text("")
     with pytest.raises(dynpos.InputError, match=r"\(--out\): '.*rose' exists and is not a folder"):
         dynpos.capability(direction_step=90, out=not_a_folder)
+
+
+STEP_COL = {"input": "cmd", "output": "response"}
+
+
+@pytest.mark.parametrize("time", [[0.0, 1.0, 1.0], [0.0, 2.0, 1.0], [0.0, float("nan"), 2.0],
+                                  [0.0, float("inf"), 2.0]],
+                         ids=["repeated", "backwards", "nan", "inf"])
+def test_a_log_from_arrays_needs_finite_increasing_time(time):
+    import numpy as np
+    with pytest.raises(dynpos.InputError, match=r"^\(time\): row [12] ") as e:
+        dynpos.Log.from_arrays(np.array(time), {"x": np.zeros(3)})
+    assert e.value.line is None and e.value.file is None
+
+
+def test_a_log_from_a_frame_needs_finite_increasing_time():
+    pandas = pytest.importorskip("pandas")
+    frame = pandas.DataFrame({"time": [0.0, 1.0, 1.0], "x": [1.0, 2.0, 3.0]})
+    with pytest.raises(dynpos.InputError, match=r"^\(time\): row 2 \(1 s\) is the same time"):
+        dynpos.Log.from_frame(frame)
+
+
+def test_an_infinite_value_is_refused_and_nan_is_missing():
+    import numpy as np
+    with pytest.raises(dynpos.InputError, match=r"^\(x\): row 2 of column 'x' is -inf"):
+        dynpos.Log.from_arrays(np.arange(3.0), {"x": np.array([0.0, 1.0, -np.inf])})
+    log = dynpos.Log.from_arrays(np.arange(3.0), {"x": np.array([0.0, np.nan, 1.0])})
+    assert np.isnan(log["x"][1])
+
+
+@pytest.mark.parametrize("call, keyword", [
+    (lambda: dynpos.Log.from_arrays([0.0, 1.0], 5), "columns"),
+    (lambda: dynpos.Log.from_arrays([0.0, 1.0], {"x": [1.0, 2.0]}, units=["m"]), "units"),
+    (lambda: dynpos.Log.from_arrays([0.0, 1.0], {3: [1.0, 2.0]}), "columns"),
+    (lambda: dynpos.Log.from_arrays("abc", {}), "time"),
+    (lambda: dynpos.identify_step(5, col=STEP_COL), "log"),
+    (lambda: dynpos.identify_step(STEPS, col=5), "col"),
+    (lambda: dynpos.identify_step(STEPS, col=STEP_COL, json=5), "json"),
+    (lambda: dynpos.identify_step(STEPS, col=STEP_COL, min_step="big"), "min_step"),
+    (lambda: dynpos.capability(direction_step="ten"), "direction_step"),
+    (lambda: dynpos.capability(out=3.5), "out"),
+    (lambda: dynpos.simulate("surge-steps-forward", seed="one"), "seed"),
+], ids=["columns", "units", "column-name", "time", "log", "col", "json", "min_step",
+        "direction_step", "out", "seed"])
+def test_a_wrong_type_is_an_input_error_naming_the_keyword(call, keyword):
+    with pytest.raises(dynpos.InputError) as e:
+        call()
+    assert e.value.option == keyword or f"({keyword})" in str(e.value), str(e.value)
+    assert "incompatible" not in str(e.value) and "arg0" not in str(e.value), str(e.value)
+
+
+def test_an_output_in_a_folder_that_takes_no_file_is_an_input_error():
+    with pytest.raises(dynpos.InputError, match=r"\(--json\): cannot write in folder '/proc'") as e:
+        dynpos.identify_step(STEPS, col=STEP_COL, json="/proc/x.json")
+    assert e.value.option == "json"
+
+
+@pytest.mark.parametrize("tolerance", [1e-300, 0.0, 11.0, float("inf")])
+def test_the_wind_tolerance_has_a_range(tolerance):
+    with pytest.raises(dynpos.InputError, match=r"\(--wind-tolerance\): the wind tolerance must "
+                       r"be from 1e-06 to 10 m/s") as e:
+        dynpos.capability(direction_step=90, wind_tolerance=tolerance)
+    assert e.value.option == "wind_tolerance"

@@ -101,8 +101,7 @@ void CapabilityRequest::validate() const {
   if (tp) check_finite_at_least(*tp, 0.0, true, "tp", "Tp [s]");
   if (current) check_finite_at_least(*current, 0.0, false, "current", "the current [m/s]");
   capability::check_direction_step(direction_step);
-  if (wind_tolerance)
-    check_finite_at_least(*wind_tolerance, 0.0, true, "wind_tolerance", "the wind tolerance [m/s]");
+  if (wind_tolerance) capability::check_wind_tolerance(*wind_tolerance);
   if (!vessel.empty() && !std::filesystem::is_regular_file(vessel)) {
     throw option_error("vessel", "'" + vessel.string() + "' is not a file",
                        "give a vessel TOML file (docs/vessel-file.md)");

@@ -171,10 +171,7 @@ void check_hybrid_case_outputs(const std::filesystem::path& out_dir, const std::
   const std::filesystem::path parent = std::filesystem::path(json).parent_path();
   const bool in_out_dir =
       !out_dir.empty() && parent.lexically_normal() == out_dir.lexically_normal();
-  if (!parent.empty() && !in_out_dir && !std::filesystem::is_directory(parent)) {
-    throw option_error("json", "folder '" + parent.string() + "' does not exist",
-                       "create it first, or use --json - for stdout");
-  }
+  if (!in_out_dir) check_output_file("json", json);  // a folder that --out makes is fine
 }
 
 }  // namespace dynpos::analysis

@@ -24,7 +24,10 @@ nlohmann::json warnings_json(const std::vector<ident::FitWarning>& warnings) {
 }
 
 std::string number_cell(const std::optional<double>& v, const char* spec) {
-  return v && std::isfinite(*v) ? fmt::format(fmt::runtime(spec), *v) : std::string("—");
+  if (!v || std::isnan(*v)) return "—";  // NaN is the library's missing value
+  // A figure that overflowed is shown as what it is, never as the missing mark.
+  if (std::isinf(*v)) return *v > 0 ? "inf" : "-inf";
+  return fmt::format(fmt::runtime(spec), *v);
 }
 
 std::optional<double> value_of(const std::optional<ident::Estimate>& e) {

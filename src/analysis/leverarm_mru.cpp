@@ -2,6 +2,8 @@
 
 #include <fmt/core.h>
 
+#include <cmath>
+
 #include "dynpos/analysis/demo_sections.hpp"
 #include "dynpos/analysis/json_fields.hpp"
 #include "dynpos/analysis/options.hpp"
@@ -83,6 +85,10 @@ void LeverarmMruRequest::validate() const {
   if (!(tau_s > 0.0 && tau_s <= 3600.0)) {
     throw option_error("tau_s", fmt::format("{} s is not a time constant in (0, 3600] s", tau_s),
                        "the default is 5 s");
+  }
+  if (!(w1 > 0.0) || !std::isfinite(w1)) {
+    throw option_error("w1", fmt::format("{} is not a gain W₁ > 0 [1/s]", w1),
+                       "the default is 0.01");
   }
   for (const std::string& spec : mru_log) {
     const auto eq = spec.find('=');

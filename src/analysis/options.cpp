@@ -1,10 +1,15 @@
 #include "dynpos/analysis/options.hpp"
 
-#include "dynpos/io/atomic_file.hpp"
+#include <fcntl.h>
+#include <fmt/core.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
+#include <random>
 #include <sstream>
 #include <vector>
 
@@ -51,6 +56,31 @@ Eigen::Vector3d parse_vec3(const std::string& text, const std::string& key,
   return {v[0], v[1], v[2]};
 }
 
+namespace {
+
+// Throws option_error(key) unless a new file can be made in the folder `dir`: it tries (a file
+// of a unique name, made and removed at once), since only the file system knows (a read-only
+// mount, /proc, a folder without write permission even for root on some mounts).
+void check_writable_folder(const std::string& key, const std::filesystem::path& dir) {
+  const std::filesystem::path folder = dir.empty() ? std::filesystem::path(".") : dir;
+  const std::filesystem::path probe =
+      folder / fmt::format(".dynpos-probe-{}-{:08x}", ::getpid(), std::random_device{}());
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+  if (fd < 0) {
+    const int error = errno;
+    // /proc and the like answer "No such file or directory" for a folder that is there.
+    const std::string reason = error == ENOENT && std::filesystem::is_directory(folder)
+                                   ? "it takes no new files"
+                                   : std::strerror(error);
+    throw option_error(key, fmt::format("cannot write in folder '{}': {}", folder.string(), reason),
+                       "choose a writable folder");
+  }
+  ::close(fd);
+  ::unlink(probe.c_str());
+}
+
+}  // namespace
+
 void check_output_dir(const std::string& key, const std::filesystem::path& dir) {
   if (dir == "-") {
     throw option_error(key, "'-' (standard output) cannot hold a folder of files",
@@ -60,6 +90,7 @@ void check_output_dir(const std::string& key, const std::filesystem::path& dir) 
     throw option_error(key, "'" + dir.string() + "' exists and is not a folder",
                        "name a folder (it is created if needed)");
   }
+  if (!dir.empty() && std::filesystem::is_directory(dir)) check_writable_folder(key, dir);
 }
 
 void check_output_file(const std::string& key, const std::string& path) {
@@ -74,6 +105,16 @@ void check_output_file(const std::string& key, const std::string& path) {
   } catch (const std::runtime_error& e) {
     throw option_error(key, e.what(), "see \"Outputs\" in docs/reliability.md");
   }
+  // A device or a FIFO is written through (never a new file beside it); anything else is a new
+  // file in the folder of the target (of the file a symbolic link points to).
+  std::error_code error;
+  const std::filesystem::path file = std::filesystem::weakly_canonical(path, error);
+  const std::filesystem::file_status status = std::filesystem::status(file, error);
+  if (status.type() == std::filesystem::file_type::character ||
+      status.type() == std::filesystem::file_type::fifo) {
+    return;
+  }
+  check_writable_folder(key, (error ? std::filesystem::path(path) : file).parent_path());
 }
 
 }  // namespace dynpos::analysis

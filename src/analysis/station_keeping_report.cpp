@@ -30,9 +30,10 @@ nlohmann::json direction_json(const std::optional<double>& rad) {
   return d ? nlohmann::json(*d) : nlohmann::json(nullptr);
 }
 
-// The value times `scale` with the fmt spec, or "—" when absent or not finite.
+// The value times `scale` with the fmt spec, or "—" when absent (number_cell: an overflow shows
+// as "inf", never as missing).
 std::string scaled_cell(const std::optional<double>& v, double scale, const char* spec) {
-  return v && std::isfinite(*v) ? fmt::format(fmt::runtime(spec), *v * scale) : std::string("—");
+  return number_cell(v ? std::optional<double>(*v * scale) : std::nullopt, spec);
 }
 
 // A direction to whole degrees: 359.7 reads 0, not 360.

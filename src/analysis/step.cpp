@@ -419,6 +419,23 @@ nlohmann::json to_json(const StepReport& report) {
   return doc;
 }
 
+namespace {
+
+// Why the table is empty, and what to try: no step is a result (exit 0), said in words.
+std::string no_step_text(const StepReport& report) {
+  const std::string reason =
+      report.notes.size() == 1 ? report.notes.front()
+      : !report.notes.empty()  ? "see the notes above"
+      : report.step_threshold
+          ? fmt::format("none of the input's changes reaches the step threshold {:.4g}",
+                        *report.step_threshold)
+          : "no change of the input is a step";
+  return fmt::format(
+      "no step found: {}; lower --min-step, or give the step with --from/--to/--step-at\n", reason);
+}
+
+}  // namespace
+
 std::string to_text(const StepReport& report) {
   std::string text = fmt::format(
       "{}: {} step(s), method {}, output in {} (SI), input in {}\n", report.log.string(),
@@ -433,6 +450,10 @@ std::string to_text(const StepReport& report) {
   if (!report.segments_file.empty())
     text += "segments from " + report.segments_file.string() + "\n";
   for (const std::string& note : report.notes) text += "note: " + note + "\n";
+  if (report.steps.empty()) {
+    text += no_step_text(report);
+    return text + io::to_text(report.input);
+  }
   const bool segments = !report.segments_file.empty();
   text += fmt::format("{}{:>9} {:>21} {:>11} {:>11} {:>9} {:>9} {:>9} {:>7}  {}\n",
                       segments ? fmt::format("{:<16} ", "segment") : "", "t_step", "input",

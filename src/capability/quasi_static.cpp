@@ -118,7 +118,7 @@ CapabilityPoint quasi_static_point(const scenario::VesselConfig& vessel,
   }
   double lo = rows[held].wind_mps;
   double hi = rows[held + 1].wind_mps;
-  while (hi - lo > options.wind_tolerance_mps) {
+  for (int k = 0; bisect_further(lo, hi, options.wind_tolerance_mps, k); ++k) {
     const double mid = 0.5 * (lo + hi);
     const Check c = evaluate.at(mid);
     (c.holds ? lo : hi) = mid;
@@ -131,12 +131,28 @@ CapabilityPoint quasi_static_point(const scenario::VesselConfig& vessel,
 
 void check_direction_step(double step_deg) {
   const double n = 360.0 / step_deg;
-  if (!(step_deg > 0.0) || !std::isfinite(n) || std::abs(n - std::round(n)) > 1e-9 || n > 3600) {
+  if (!std::isfinite(step_deg) || !(step_deg > 0.0) || step_deg > 360.0 || !std::isfinite(n) ||
+      std::abs(n - std::round(n)) > 1e-9 || n > 3600) {
     throw core::InputError::for_option(
         "direction_step",
-        fmt::format("{} deg does not divide 360 (at most 3600 directions)", step_deg),
+        fmt::format("{} deg does not divide 360 (a step of 0.1 to 360 deg)", step_deg),
         "e.g. 5, 10, 15 or 30");
   }
+}
+
+void check_wind_tolerance(double tolerance_mps) {
+  if (!(tolerance_mps >= kMinWindTolerance_mps && tolerance_mps <= kMaxWindTolerance_mps)) {
+    throw core::InputError::for_option(
+        "wind_tolerance",
+        fmt::format("the wind tolerance must be from {:g} to {:g} m/s, got {}",
+                    kMinWindTolerance_mps, kMaxWindTolerance_mps, tolerance_mps),
+        "e.g. 0.01 (levels 1, 2) or 0.25 (level 3)");
+  }
+}
+
+bool bisect_further(double lo, double hi, double tolerance, int halvings) {
+  const double mid = 0.5 * (lo + hi);
+  return hi - lo > tolerance && halvings < kMaxBisections && lo < mid && mid < hi;
 }
 
 void QuasiStaticOptions::validate() const {
@@ -149,9 +165,7 @@ void QuasiStaticOptions::validate() const {
         fmt::format("the reserve factor must be ≥ 1, got {}", dynamic_allowance));
   }
   check_direction_step(direction_step_deg);
-  if (!(wind_tolerance_mps > 0.0) || !std::isfinite(wind_tolerance_mps)) {
-    throw core::InputError::for_option("wind_tolerance", "the wind tolerance must be > 0 m/s");
-  }
+  check_wind_tolerance(wind_tolerance_mps);
   environment.validate();
 }
 

@@ -103,7 +103,7 @@ CapabilityPoint search_direction(const scenario::VesselConfig& vessel,
   double lo = rows[held].wind_mps;
   double hi = rows[held + 1].wind_mps;
   std::string axis = fail_above->axis;
-  while (hi - lo > o.wind_tolerance_mps) {
+  for (int k = 0; bisect_further(lo, hi, o.wind_tolerance_mps, k); ++k) {
     const double mid = 0.5 * (lo + hi);
     const RunVerdict m = run(mid);
     if (m.holds) {
@@ -130,7 +130,7 @@ void TimeDomainOptions::validate() const {
   positive(duration_s, "duration", "the judged run length [s]");
   positive(footprint_m, "footprint", "the position footprint [m]");
   positive(footprint_deg, "footprint_deg", "the heading footprint [deg]");
-  positive(wind_tolerance_mps, "wind_tolerance", "the wind tolerance [m/s]");
+  check_wind_tolerance(wind_tolerance_mps);
   check_direction_step(direction_step_deg);
   if (!std::isfinite(settle_s) || settle_s < 0.0) {
     throw core::InputError::for_option("settle", fmt::format("must be ≥ 0 s, got {}", settle_s));

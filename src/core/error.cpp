@@ -3,20 +3,63 @@
 #include <cstdio>
 #include <string_view>
 
+#include "dynpos/core/printable_text.hpp"
+
 namespace dynpos::core {
 
-std::string printable(std::string_view text, std::size_t max_bytes) {
-  std::size_t keep = text.size();
-  if (keep > max_bytes) {
-    keep = max_bytes;
-    // Never cut a UTF-8 character: back off over its continuation bytes (top bits 10).
-    while (keep > 0 && (static_cast<unsigned char>(text[keep]) & 0xC0) == 0x80) --keep;
+namespace {
+
+// The length of the well-formed UTF-8 character at text[i] (2 to 4 bytes; RFC 3629: no
+// overlong form, no surrogate, nothing above U+10FFFF), or 0 when the bytes there are not one.
+std::size_t utf8_length(std::string_view text, std::size_t i) {
+  const auto byte = [&](std::size_t k) {
+    return i + k < text.size() ? static_cast<unsigned char>(text[i + k]) : 0u;
+  };
+  const unsigned c = byte(0);
+  const auto cont = [&](std::size_t k, unsigned lo = 0x80, unsigned hi = 0xBF) {
+    return byte(k) >= lo && byte(k) <= hi;
+  };
+  if (c >= 0xC2 && c <= 0xDF) return cont(1) ? 2 : 0;
+  if (c >= 0xE0 && c <= 0xEF) {
+    const unsigned lo = c == 0xE0 ? 0xA0 : 0x80, hi = c == 0xED ? 0x9F : 0xBF;
+    return cont(1, lo, hi) && cont(2) ? 3 : 0;
   }
+  if (c >= 0xF0 && c <= 0xF4) {
+    const unsigned lo = c == 0xF0 ? 0x90 : 0x80, hi = c == 0xF4 ? 0x8F : 0xBF;
+    return cont(1, lo, hi) && cont(2) && cont(3) ? 4 : 0;
+  }
+  return 0;
+}
+
+// The first `keep` bytes of `text` with every control character (C0, DEL, C1) and every byte
+// that is not part of well-formed UTF-8 escaped; line ends and tabs too unless `keep_lines`.
+std::string escape(std::string_view text, std::size_t keep, bool keep_lines) {
   std::string out;
   out.reserve(keep + 16);
-  for (std::size_t i = 0; i < keep; ++i) {
+  char code[12];
+  for (std::size_t i = 0; i < keep;) {
     const auto c = static_cast<unsigned char>(text[i]);
+    if (c >= 0x80) {
+      const std::size_t n = utf8_length(text.substr(0, keep), i);
+      const auto next = n == 2 ? static_cast<unsigned char>(text[i + 1]) : 0u;
+      if (n == 0) {
+        std::snprintf(code, sizeof code, "\\x%02x", c);
+        out += code;
+        ++i;
+        continue;
+      }
+      if (n == 2 && c == 0xC2 && next <= 0x9F) {  // U+0080 … U+009F: C1 controls
+        std::snprintf(code, sizeof code, "\\u%04x", next);
+        out += code;
+      } else {
+        out.append(text, i, n);
+      }
+      i += n;
+      continue;
+    }
     if (c >= 0x20 && c != 0x7F) {
+      out += static_cast<char>(c);
+    } else if (keep_lines && (c == '\t' || c == '\n')) {
       out += static_cast<char>(c);
     } else if (c == '\t') {
       out += "\\t";
@@ -25,14 +68,29 @@ std::string printable(std::string_view text, std::size_t max_bytes) {
     } else if (c == '\r') {
       out += "\\r";
     } else {
-      char code[8];
       std::snprintf(code, sizeof code, "\\x%02x", c);
       out += code;
     }
+    ++i;
   }
+  return out;
+}
+
+}  // namespace
+
+std::string printable(std::string_view text, std::size_t max_bytes) {
+  std::size_t keep = text.size();
+  if (keep > max_bytes) {
+    keep = max_bytes;
+    // Never cut a UTF-8 character: back off over its continuation bytes (top bits 10).
+    while (keep > 0 && (static_cast<unsigned char>(text[keep]) & 0xC0) == 0x80) --keep;
+  }
+  std::string out = escape(text, keep, false);
   if (keep < text.size()) out += "… (" + std::to_string(text.size() - keep) + " more bytes)";
   return out;
 }
+
+std::string printable_text(std::string_view text) { return escape(text, text.size(), true); }
 
 std::string format_input_error(const InputLocation& where, const std::string& problem_text,
                                const std::string& hint_text) {

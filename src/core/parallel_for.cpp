@@ -4,6 +4,8 @@
 #include <atomic>
 #include <exception>
 #include <mutex>
+#include <new>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -20,6 +22,16 @@ std::size_t piece_count(std::size_t n, unsigned threads, std::size_t shortest) {
 
 std::pair<std::size_t, std::size_t> piece_of(std::size_t n, std::size_t pieces, std::size_t k) {
   return {n * k / pieces, n * (k + 1) / pieces};
+}
+
+std::jthread try_start_thread(const std::function<void()>& body) {
+  try {
+    return std::jthread(body);
+  } catch (const std::system_error&) {  // EAGAIN: a limit of memory (a stack) or of processes
+    return {};
+  } catch (const std::bad_alloc&) {
+    return {};
+  }
 }
 
 void parallel_for(std::size_t n, unsigned jobs, const std::function<void(std::size_t)>& body) {
@@ -46,7 +58,11 @@ void parallel_for(std::size_t n, unsigned jobs, const std::function<void(std::si
   {
     std::vector<std::jthread> pool;  // joined on every exit
     pool.reserve(threads - 1);
-    for (unsigned j = 1; j < threads; ++j) pool.emplace_back(worker);
+    for (unsigned j = 1; j < threads; ++j) {
+      std::jthread thread = try_start_thread(worker);
+      if (!thread.joinable()) break;  // the pieces are shared by the threads there are
+      pool.push_back(std::move(thread));
+    }
     worker();
   }
   if (error) std::rethrow_exception(error);

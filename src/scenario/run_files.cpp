@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "dynpos/core/error.hpp"
+#include "dynpos/core/parallel_for.hpp"
 #include "dynpos/io/atomic_file.hpp"
 #include "dynpos/io/csv_writer.hpp"
 #include "dynpos/io/temporary_files.hpp"
@@ -160,17 +161,23 @@ void move_files_into(const std::filesystem::path& from, const std::filesystem::p
 // Writes the blocks of a run on a thread of its own, so that one core simulates while another
 // writes: the run fills its next block while this thread writes the last one, which it holds
 // in a copy (the copy's memory reused from block to block). Blocks are written in order; an
-// error of the writing is thrown to the run at its next block, or by finish().
+// error of the writing is thrown to the run at its next block, or by finish(). When the system
+// cannot start the thread (a memory or process limit), the run writes each block itself: the
+// same files, one core.
 class WritingThread {
  public:
   explicit WritingThread(RunBlockSink write)
-      : write_(std::move(write)), thread_([this] { loop(); }) {}
+      : write_(std::move(write)), thread_(core::try_start_thread([this] { loop(); })) {}
   ~WritingThread() { stop(); }
   WritingThread(const WritingThread&) = delete;
   WritingThread& operator=(const WritingThread&) = delete;
 
   // Waits until the last block is written, then hands this one over.
   void push(const core::Log& log, const core::Log& truth_log) {
+    if (!thread_.joinable()) {
+      write_(log, truth_log);
+      return;
+    }
     std::unique_lock lock(mutex_);
     changed_.wait(lock, [&] { return !full_ || error_; });
     if (error_) std::rethrow_exception(error_);
@@ -220,7 +227,7 @@ class WritingThread {
   std::condition_variable changed_;
   bool full_ = false, done_ = false;
   std::exception_ptr error_;
-  std::thread thread_;  // last: starts once the rest is made
+  std::jthread thread_;  // last: starts once the rest is made
 };
 
 // Removes the stage and takes it off the list, as one step.

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "dynpos/core/angle.hpp"
+#include "dynpos/core/error.hpp"
 #include "dynpos/model/rudder.hpp"
 #include "dynpos/scenario/actuator_commands.hpp"
 #include "dynpos/scenario/control_task.hpp"
@@ -16,10 +17,27 @@
 #include "dynpos/scenario/truth_recorder.hpp"
 #include "dynpos/scenario/vessel_plant.hpp"
 #include "dynpos/scenario/vessel_sample.hpp"
+#include "dynpos/sim/sim_time.hpp"
 #include "dynpos/sim/simulator.hpp"
 
 namespace dynpos::scenario {
 namespace {
+
+// The control task ticks on the scenario's grid: its period (vessel file) must be a whole
+// number of dt_s (scenario), by the simulator's own rule (sim::TimeGrid).
+void check_control_rate(const ScenarioSpec& spec, const VesselConfig& vessel) {
+  const double rate_hz = vessel.joystick.control_rate_hz;
+  try {
+    (void)sim::TimeGrid(spec.dt_s).ticks_for_rate(rate_hz, "control");
+  } catch (const std::invalid_argument&) {
+    throw core::InputError(
+        {vessel.source.empty() ? spec.source : vessel.source, {}, {}, "joystick.control_rate_hz"},
+        fmt::format("{} Hz: the control period 1/{} s is not a whole number of the scenario's "
+                    "time step dt_s = {} s",
+                    rate_hz, rate_hz, spec.dt_s),
+        "give a rate whose period is a whole number of steps, e.g. 1, 2, 4, 5 or 10 Hz");
+  }
+}
 
 // True time constants the model defines (thesis tables 3.23–3.36 are what they compare to).
 TimeConstantsTruth time_constants(const VesselConfig& vessel, const VesselPlant& plant,
@@ -62,6 +80,7 @@ ScenarioRun simulate(const ScenarioSpec& spec, const VesselConfig& vessel, std::
   TrialEnvironment environment(spec, vessel, seed, clock);
   const InitialTrim trim = initial_trim(spec, vessel, plant);
   ActuatorDelays delays(vessel, spec.dt_s, trim.commands);
+  check_control_rate(spec, vessel);
   ControlTask control(spec, vessel, plant, trim);
 
   ScenarioRun run;

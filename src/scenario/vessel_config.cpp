@@ -95,6 +95,11 @@ nlohmann::json VesselConfig::to_json() const {
 VesselConfig load_vessel_config(const std::filesystem::path& path) {
   const std::string file = path.string();
   const toml::table doc = detail::TomlTable::parse_file(file);
+  if (doc.empty()) {  // a file cut to nothing would otherwise be the built-in vessel, unsaid
+    throw core::InputError({file, {}, {}, {}}, "the vessel file has no key",
+                           "give the vessel's values (docs/vessel-file.md), or leave --vessel "
+                           "out for the built-in Gunnerus");
+  }
   const detail::TomlTable root(doc, file, "");
   VesselConfig config;
   config.source = file;

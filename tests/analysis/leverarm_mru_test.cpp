@@ -119,6 +119,11 @@ TEST_F(LeverarmMru, ValidateNamesTheBadOption) {
   q = good;
   q.mru_log = {"mru1="};
   EXPECT_EQ(error_key(q), "mru_log");
+  for (const double w1 : {-1.0, 0.0, std::nan(""), HUGE_VAL}) {
+    q = good;
+    q.w1 = w1;  // was a std::invalid_argument of the observer naming "w1_per_s"
+    EXPECT_EQ(error_key(q), "w1") << w1;
+  }
 }
 
 TEST_F(LeverarmMru, SmoothingWindowLongerThanTheLogAllowsIsAnInputError) {

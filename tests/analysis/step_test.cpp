@@ -471,6 +471,21 @@ TEST(RunStep, ErrorsFromInsideTheAnalysisNameTheLog) {
               HasSubstr(r.segments_file.string() + ":3:3"));
 }
 
+// A log without a step is a result, not an error (exit 0): the text says so in words, with
+// what to try, instead of a table without rows.
+TEST(StepReport, TextSaysWhenNoStepWasFound) {
+  const TempDir dir;
+  StepRequest r = request_for(dir.write("s.csv", fopdt_csv()));
+  r.min_step = 10.0;  // both steps (1 and 0.5) are below it
+  const StepReport report = run_step(r);
+  ASSERT_TRUE(report.steps.empty());
+  const std::string text = to_text(report);
+  EXPECT_THAT(text, HasSubstr("no step found: constant input: it varies by 1, less than the "
+                              "step threshold 10; lower --min-step, or give the step with "
+                              "--from/--to/--step-at\n"));
+  EXPECT_THAT(text, ::testing::Not(HasSubstr("t_step")));
+}
+
 TEST(StepReport, TextHasAHeaderAndARowPerStep) {
   const TempDir dir;
   StepRequest r = request_for(dir.write("s.csv", fopdt_csv()));

@@ -7,7 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <numbers>
+#include <string>
 
 #include "dynpos/capability/thrust_region.hpp"
 #include "dynpos/model/thrust_allocation.hpp"
@@ -102,6 +104,51 @@ TEST(QuasiStatic, AtTheLimitTheThrustersSaturateAndAboveItTheyFail) {
         << deg;
     EXPECT_EQ(p.dp_number, dp_number_for_wind(p.max_wind_mps)) << deg;
   }
+}
+
+// The option a rejected value is named by.
+std::string refused_option(const std::function<void()>& check) {
+  try {
+    check();
+  } catch (const core::InputError& e) {
+    return e.option();
+  }
+  return "(accepted)";
+}
+
+TEST(QuasiStatic, TheWindToleranceHasARange) {
+  for (const double tolerance : {1e-300, 0.0, -1.0, 9e-7, 10.5, HUGE_VAL, std::nan("")}) {
+    QuasiStaticOptions o = fast_options();
+    o.wind_tolerance_mps = tolerance;
+    EXPECT_EQ(refused_option([&] { o.validate(); }), "wind_tolerance") << tolerance;
+  }
+  for (const double tolerance : {kMinWindTolerance_mps, 0.01, kMaxWindTolerance_mps}) {
+    QuasiStaticOptions o = fast_options();
+    o.wind_tolerance_mps = tolerance;
+    EXPECT_EQ(refused_option([&] { o.validate(); }), "(accepted)") << tolerance;
+  }
+}
+
+TEST(QuasiStatic, TheDirectionStepIsAFiniteDivisorOf360) {
+  for (const double step : {HUGE_VAL, -HUGE_VAL, std::nan(""), 720.0, 0.0, -10.0, 7.0, 0.01}) {
+    EXPECT_EQ(refused_option([&] { check_direction_step(step); }), "direction_step") << step;
+  }
+  for (const double step : {0.1, 10.0, 360.0}) {
+    EXPECT_EQ(refused_option([&] { check_direction_step(step); }), "(accepted)") << step;
+  }
+}
+
+// A tolerance below one ulp of the wind (the options' check is bypassed here) cannot narrow the
+// bracket further: the bisection still ends, at most kMaxBisections halvings from the rows.
+TEST(QuasiStatic, TheBisectionEndsBelowAnUlp) {
+  QuasiStaticOptions o = fast_options();
+  o.wind_tolerance_mps = 1e-300;
+  const scenario::VesselConfig v;
+  const CapabilityPoint tiny = quasi_static_point(v, {}, 90 * kDeg, o);
+  o.wind_tolerance_mps = kMinWindTolerance_mps;
+  const CapabilityPoint fine = quasi_static_point(v, {}, 90 * kDeg, o);
+  EXPECT_EQ(tiny.dp_number, fine.dp_number);
+  EXPECT_NEAR(tiny.max_wind_mps, fine.max_wind_mps, kMinWindTolerance_mps);
 }
 
 TEST(QuasiStatic, TheMeanLoadOpposesTheWeather) {

@@ -7,6 +7,8 @@
 #include <string>
 #include <string_view>
 
+#include "dynpos/core/printable_text.hpp"
+
 namespace dynpos::core {
 namespace {
 
@@ -79,6 +81,28 @@ TEST(InputErrorText, ControlCharactersAreShownNotSent) {
                      "tab\there");
   EXPECT_STREQ(e.what(), "log.csv:3:2 (speed): '\\x1b[31mred\\x1b[0m' is not a number; tab\\there");
   EXPECT_EQ(e.problem(), "'\x1b[31mred\x1b[0m' is not a number");  // the text itself is kept
+}
+
+TEST(InputErrorText, C1ControlsAndInvalidUtf8AreShownNotSent) {
+  // U+009B (CSI, "\xc2\x9b") starts an escape sequence on many terminals, as ESC [ does.
+  EXPECT_EQ(printable("a\xc2\x9b"
+                      "31mb"),
+            "a\\u009b31mb");
+  EXPECT_EQ(printable("\xc2\x80\xc2\x9f\xc2\xa0"), "\\u0080\\u009f\xc2\xa0");  // NBSP stays
+  // A lone 0x9b byte (CSI in 8-bit terminals), a stray continuation byte, a truncated and an
+  // overlong sequence, a surrogate: each invalid byte as \xNN, the valid text around it kept.
+  EXPECT_EQ(printable("x\x9by"), "x\\x9by");
+  EXPECT_EQ(printable("\xe2\x82"), "\\xe2\\x82");
+  EXPECT_EQ(printable("\xc0\xaf"), "\\xc0\\xaf");
+  EXPECT_EQ(printable("\xed\xa0\x80"), "\\xed\\xa0\\x80");
+  EXPECT_EQ(printable("\xff"), "\\xff");
+  EXPECT_EQ(printable("é€😀—"), "é€😀—");  // 2-, 3- and 4-byte characters pass
+  const InputError e({"log\x9b.csv", 1, {}, {}}, "cell '\xc2\x9b'");
+  EXPECT_STREQ(e.what(), "log\\x9b.csv:1: cell '\\u009b'");
+}
+
+TEST(InputErrorText, TextKeepsLineEndsAndTabs) {
+  EXPECT_EQ(printable_text("a\tb\nc\x1b[0m\xc2\x9b\xff"), "a\tb\nc\\x1b[0m\\u009b\\xff");
 }
 
 TEST(InputErrorText, ALongEchoIsCutAtACharacter) {

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "dynpos/core/error.hpp"
 #include "dynpos/io/csv_reader.hpp"
 #include "dynpos/io/csv_writer.hpp"
 #include "dynpos/scenario/campaign.hpp"
@@ -54,6 +55,24 @@ bool bit_identical(const core::Log& a, const core::Log& b) {
     }
   }
   return true;
+}
+
+// A control rate whose period is not a whole number of the scenario's steps (3 Hz on a 0.01 s
+// grid) was a std::invalid_argument of the simulator naming neither the file nor the key.
+TEST(RunScenario, AControlRateOffTheTimeGridNamesTheVesselFileAndKey) {
+  VesselConfig v = calm_vessel();
+  v.source = "my_vessel.toml";
+  v.joystick.control_rate_hz = 3.0;
+  try {
+    run_scenario(surge_step(10.0, 12.0), v, 1);
+    ADD_FAILURE() << "expected a core::InputError";
+  } catch (const core::InputError& e) {
+    EXPECT_EQ(e.where().file, "my_vessel.toml");
+    EXPECT_EQ(e.where().column_name, "joystick.control_rate_hz");
+    EXPECT_NE(std::string(e.what()).find("3 Hz"), std::string::npos) << e.what();
+  }
+  v.joystick.control_rate_hz = 4.0;  // 0.25 s: 25 steps
+  EXPECT_NO_THROW(run_scenario(surge_step(10.0, 12.0), v, 1));
 }
 
 TEST(RunScenario, SameSeedBitIdenticalOtherSeedDifferent) {

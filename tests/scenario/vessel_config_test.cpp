@@ -123,6 +123,15 @@ TEST(VesselConfig, AFileOfMoreThan16MiBIsRefused) {
   std::filesystem::remove(path);
 }
 
+TEST(VesselConfig, AnEmptyFileIsNotTheBuiltInVessel) {
+  for (const char* text : {"", "\n# only a comment\n\n"}) {
+    const auto path = write_temp("dynpos_empty_vessel.toml", text);
+    EXPECT_THAT([&] { load_vessel_config(path); },
+                testing::ThrowsMessage<core::InputError>(testing::ContainsRegex(
+                    "dynpos_empty_vessel.toml: the vessel file has no key")));
+  }
+}
+
 TEST(VesselConfig, AngleKeysAreDegreesInTheFile) {
   const auto path = write_temp("dynpos_rudder_vessel.toml", "[rudder]\nmax_angle_deg = 40\n");
   const VesselConfig v = load_vessel_config(path);

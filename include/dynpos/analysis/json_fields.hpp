@@ -23,7 +23,7 @@ nlohmann::json sigma_json(const std::optional<ident::Estimate>& e);
 /// [{"code": ..., "message": ...}, ...]
 nlohmann::json warnings_json(const std::vector<ident::FitWarning>& warnings);
 
-/// The value formatted with the fmt spec (e.g. "{:.2f}"), or "—" when absent or not finite.
+/// The value formatted with the fmt spec (e.g. "{:.2f}"), "—" when absent or NaN, "inf" if ±∞.
 std::string number_cell(const std::optional<double>& v, const char* spec);
 
 /// The value of an optional estimate.

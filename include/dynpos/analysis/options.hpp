@@ -34,12 +34,12 @@ core::InputError with_file(const core::InputError& e, const std::string& file);
 Eigen::Vector3d parse_vec3(const std::string& text, const std::string& key,
                            const std::string& example);
 
-/// Throws option_error(key) if the output folder `dir` exists and is not a folder (it is
-/// created when needed); "" is always fine.
+/// Throws option_error(key) if the output folder `dir` exists and is not a folder (it is created
+/// when needed) or takes no new file (read-only, /proc: a file is made there and removed); "" ok.
 void check_output_dir(const std::string& key, const std::filesystem::path& dir);
 
-/// Throws option_error(key) if the folder of the output file `path` does not exist. "" and "-"
-/// (standard output) are always fine.
+/// Throws option_error(key) if the folder of the output file `path` is missing or takes no new
+/// file, or the target is refused (io::check_output_target). "" and "-" (stdout) are fine.
 void check_output_file(const std::string& key, const std::string& path);
 
 }  // namespace dynpos::analysis

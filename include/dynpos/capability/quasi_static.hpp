@@ -32,21 +32,37 @@ Eigen::Vector3d mean_environment_load_b(const scenario::VesselConfig& vessel,
 /// The surge inflow speed of the current at the thrusters [m/s] (positive from ahead).
 double current_inflow_mps(double current_mps, double from_rel_rad);
 
+/// The range of a bisection's tolerance on the wind [m/s]: finer than 1e-6 m/s means nothing
+/// to a vessel, and a tolerance below one ulp of the wind could never be reached.
+inline constexpr double kMinWindTolerance_mps = 1e-6;
+inline constexpr double kMaxWindTolerance_mps = 10.0;
+/// The most halvings of a bisection between two rows: a bracket of 10⁹ m/s narrowed to 1e-6 m/s
+/// takes 50; the bisection also ends when the midpoint cannot be told from either end.
+inline constexpr int kMaxBisections = 64;
+
 /// Options of a quasi-static rose.
 struct QuasiStaticOptions {
   int level = 1;                                      ///< 1 or 2
   EnvironmentTable environment = dnv_level1_table();  ///< wind → waves and current
   double dynamic_allowance = kDynamicAllowance;       ///< factor on the load, ≥ 1
   double direction_step_deg = 10.0;                   ///< 0, step, …, < 360 [deg]
-  double wind_tolerance_mps = 0.01;                   ///< bisection ends within this [m/s]
+  double wind_tolerance_mps = 0.01;  ///< bisection ends within this [m/s], 1e-6 … 10
   /// Throws core::InputError naming the first bad option (request keys: level,
   /// dynamic_allowance, direction_step, wind_tolerance) or a bad environment table.
   void validate() const;
 };
 
-/// Throws core::InputError (option "direction_step") unless step_deg > 0 divides 360 into at
-/// most 3600 directions.
+/// Throws core::InputError (option "direction_step") unless step_deg is finite, > 0, at most
+/// 360 and divides 360 into at most 3600 directions.
 void check_direction_step(double step_deg);
+
+/// Throws core::InputError (option "wind_tolerance") unless tolerance_mps is within
+/// [kMinWindTolerance_mps, kMaxWindTolerance_mps].
+void check_wind_tolerance(double tolerance_mps);
+
+/// True while a bisection of [lo, hi] should go on: wider than `tolerance`, fewer than
+/// kMaxBisections halvings done, and a midpoint strictly between the ends.
+bool bisect_further(double lo, double hi, double tolerance, int halvings);
 
 /// One direction of a rose.
 struct CapabilityPoint {

@@ -30,9 +30,9 @@ struct TimeDomainOptions {
   double settle_s = 300.0;                            ///< unjudged start of each run [s], ≥ 0
   double footprint_m = 5.0;                           ///< largest position excursion held [m], > 0
   double footprint_deg = 3.0;                         ///< largest heading excursion held [deg], > 0
-  double wind_tolerance_mps = 0.25;                   ///< bisection ends within this [m/s], > 0
-  std::uint64_t seed = 1;                             ///< master seed of every run
-  unsigned jobs = 0;                                  ///< parallel runs; 0 = every core
+  double wind_tolerance_mps = 0.25;  ///< bisection ends within this [m/s], 1e-6 … 10
+  std::uint64_t seed = 1;            ///< master seed of every run
+  unsigned jobs = 0;                 ///< parallel runs; 0 = every core
   /// Throws core::InputError naming the first bad option (request keys: duration, settle,
   /// footprint, footprint_deg, wind_tolerance, direction_step).
   void validate() const;

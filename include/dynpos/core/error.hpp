@@ -59,9 +59,9 @@ class InputError : public std::runtime_error {
 /// offending cell or header of megabytes is not echoed whole.
 inline constexpr std::size_t kMaxMessagePartBytes = 1000;
 
-/// `text` safe for a terminal: control characters (terminal escape sequences included) shown as
-/// \t, \n, \r or \xNN, and cut after max_bytes (at a UTF-8 character boundary) with
-/// "… (N more bytes)".
+/// `text` safe for a terminal: controls (C0, DEL: \t, \n, \r, \xNN; C1: \u0080…\u009f) and bytes
+/// not of well-formed UTF-8 (\xNN) shown, not sent; cut after max_bytes (at a UTF-8 character
+/// boundary) with "… (N more bytes)". core/printable_text.hpp: the same for a whole report.
 std::string printable(std::string_view text, std::size_t max_bytes = kMaxMessagePartBytes);
 
 /// "file:line:column (name): problem; hint" — the text InputError::what() returns, each part

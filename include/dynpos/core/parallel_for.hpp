@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <thread>
 #include <utility>
 
 namespace dynpos::core {
@@ -20,8 +21,14 @@ std::size_t piece_count(std::size_t n, unsigned threads, std::size_t shortest);
 /// Piece k of [0, n) cut into `pieces` nearly equal pieces: [first, last).
 std::pair<std::size_t, std::size_t> piece_of(std::size_t n, std::size_t pieces, std::size_t k);
 
-/// Calls body(i) for every i in [0, n), on job_count(jobs, n) threads (the calling thread is one
-/// of them); pieces are handed out in order of i. body must only write what belongs to piece i;
+/// `body` started on a new thread; or, when the system cannot make one (std::system_error with
+/// EAGAIN under a memory limit such as `ulimit -v`, or a limit of processes; std::bad_alloc), a
+/// thread that is not joinable and never ran `body`: the caller does the work itself.
+std::jthread try_start_thread(const std::function<void()>& body);
+
+/// Calls body(i) for every i in [0, n), on up to job_count(jobs, n) threads (the calling thread
+/// is one of them; when the system cannot start more, on those it could, the results being the
+/// same); pieces are handed out in order of i. body must only write what belongs to piece i;
 /// what it updates over and over is best kept in a local and stored once at the end, since
 /// neighbouring slots share cache lines and threads writing one line slow each other down.
 /// After an exception no new piece starts; the first exception (in time) is rethrown once every
