@@ -22,26 +22,15 @@ using dynpos::model::LayoutAllocator;
 using dynpos::model::ThrusterUnit;
 using dynpos::model::UnitType;
 
-ThrusterUnit unit(const char* name, UnitType type, double x, double y, double ahead, double astern,
-                  std::vector<dynpos::model::AngleSector> forbidden = {}) {
-  ThrusterUnit u;
-  u.name = name;
-  u.type = type;
-  u.x_m = x;
-  u.y_m = y;
-  u.max_thrust_N = ahead;
-  u.max_reverse_thrust_N = astern;
-  u.forbidden_deg = std::move(forbidden);
-  return u;
-}
+using dynpos::model::thruster_unit;
 
 std::vector<ThrusterUnit> supply_vessel() {
-  return {unit("bow1", UnitType::kTunnel, 32.0, 0.0, 1.1e5, 1.1e5),
-          unit("bow2", UnitType::kTunnel, 29.0, 0.0, 1.1e5, 1.1e5),
-          unit("retract", UnitType::kAzimuth, 22.0, 0.0, 1.0e5, 0.0),
-          unit("main_port", UnitType::kAzimuth, -36.0, -6.0, 3.5e5, 0.0, {{60.0, 120.0}}),
-          unit("main_stb", UnitType::kAzimuth, -36.0, 6.0, 3.5e5, 0.0, {{240.0, 300.0}}),
-          unit("stern", UnitType::kTunnel, -30.0, 0.0, 8.0e4, 8.0e4)};
+  return {thruster_unit("bow1", UnitType::kTunnel, 32.0, 0.0, 1.1e5, 1.1e5),
+          thruster_unit("bow2", UnitType::kTunnel, 29.0, 0.0, 1.1e5, 1.1e5),
+          thruster_unit("retract", UnitType::kAzimuth, 22.0, 0.0, 1.0e5, 0.0),
+          thruster_unit("main_port", UnitType::kAzimuth, -36.0, -6.0, 3.5e5, 0.0, {{60.0, 120.0}}),
+          thruster_unit("main_stb", UnitType::kAzimuth, -36.0, 6.0, 3.5e5, 0.0, {{240.0, 300.0}}),
+          thruster_unit("stern", UnitType::kTunnel, -30.0, 0.0, 8.0e4, 8.0e4)};
 }
 
 // A controller's demand: a random walk of 1 % of the envelope a step, reflected at 1.2 × it.

@@ -61,6 +61,20 @@ std::string_view unit_type_name(UnitType type) noexcept {
   }
 }
 
+ThrusterUnit thruster_unit(std::string name, UnitType type, double x_m, double y_m,
+                           double max_thrust_N, double max_reverse_thrust_N,
+                           std::vector<AngleSector> forbidden_deg) {
+  ThrusterUnit u;
+  u.name = std::move(name);
+  u.type = type;
+  u.x_m = x_m;
+  u.y_m = y_m;
+  u.max_thrust_N = max_thrust_N;
+  u.max_reverse_thrust_N = max_reverse_thrust_N;
+  u.forbidden_deg = std::move(forbidden_deg);
+  return u;
+}
+
 void ThrusterUnit::validate() const {
   if (name.empty()) throw core::InputError::for_option("thruster.name", "a unit has no name");
   const auto finite = [](double v) { return std::isfinite(v); };

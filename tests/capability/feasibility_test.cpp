@@ -14,16 +14,12 @@
 #include "dynpos/capability/vessel_units.hpp"
 #include "dynpos/core/error.hpp"
 #include "dynpos/scenario/vessel_config.hpp"
+#include "gunnerus_allocator.hpp"
 
 namespace dynpos::capability {
 namespace {
 
-model::ThrustAllocator gunnerus_allocator(const std::vector<std::string>& failed = {}) {
-  const scenario::VesselConfig v;
-  return model::ThrustAllocator(
-      model::Thruster(v.propeller), model::Rudder(v.rudder), model::TunnelThruster(v.tunnel),
-      model::ThrustConfiguration(v.layout), with_failures(v.allocation, failed));
-}
+using testing::gunnerus_allocator;
 
 // The largest λ with −λ·load attained in the exact region, by bisection to 10⁻⁹ of 100.
 double exact_factor(const ThrustLimits& limits, const Eigen::Vector3d& load) {
@@ -105,18 +101,7 @@ TEST(Feasibility, FailureCasesAreUnitsAndGroups) {
 
 // A layout symmetric about the centre line holds a mirrored load as many times.
 TEST(Feasibility, ASymmetricLayoutHoldsMirroredLoadsAlike) {
-  const auto unit = [](const char* name, model::UnitType type, double x, double y, double ahead,
-                       double astern, std::vector<model::AngleSector> forbidden) {
-    model::ThrusterUnit u;
-    u.name = name;
-    u.type = type;
-    u.x_m = x;
-    u.y_m = y;
-    u.max_thrust_N = ahead;
-    u.max_reverse_thrust_N = astern;
-    u.forbidden_deg = std::move(forbidden);
-    return u;
-  };
+  const auto unit = model::thruster_unit;
   const std::vector<model::ThrusterUnit> units = {
       unit("bow", model::UnitType::kTunnel, 30.0, 0.0, 1e5, 1e5, {}),
       unit("az_port", model::UnitType::kAzimuth, -30.0, -5.0, 3e5, 0.0, {{60.0, 120.0}}),

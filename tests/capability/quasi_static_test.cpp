@@ -13,18 +13,14 @@
 
 #include "dynpos/capability/thrust_region.hpp"
 #include "dynpos/model/thrust_allocation.hpp"
+#include "gunnerus_allocator.hpp"
 
 namespace dynpos::capability {
 namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
-model::ThrustAllocator gunnerus_allocator(const std::vector<std::string>& failed = {}) {
-  const scenario::VesselConfig v;
-  return model::ThrustAllocator(
-      model::Thruster(v.propeller), model::Rudder(v.rudder), model::TunnelThruster(v.tunnel),
-      model::ThrustConfiguration(v.layout), with_failures(v.allocation, failed));
-}
+using testing::gunnerus_allocator;
 
 // The virtual Gunnerus made port/starboard symmetric: the tunnel as strong to port as to
 // starboard (its only asymmetry).

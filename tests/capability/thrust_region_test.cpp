@@ -10,16 +10,12 @@
 
 #include "dynpos/core/error.hpp"
 #include "dynpos/scenario/vessel_config.hpp"
+#include "gunnerus_allocator.hpp"
 
 namespace dynpos::capability {
 namespace {
 
-model::ThrustAllocator gunnerus_allocator(const std::vector<std::string>& failed = {}) {
-  const scenario::VesselConfig v;
-  return model::ThrustAllocator(
-      model::Thruster(v.propeller), model::Rudder(v.rudder), model::TunnelThruster(v.tunnel),
-      model::ThrustConfiguration(v.layout), with_failures(v.allocation, failed));
-}
+using testing::gunnerus_allocator;
 
 TEST(ThrustRegion, PureSurgeIsHeldUpToBothPropellersFullAhead) {
   const ThrustLimits limits = thrust_limits(gunnerus_allocator(), 0.0);

@@ -13,16 +13,12 @@
 #include "dynpos/capability/thrust_region.hpp"
 #include "dynpos/model/layout_allocator.hpp"
 #include "dynpos/scenario/vessel_config.hpp"
+#include "gunnerus_allocator.hpp"
 
 namespace dynpos::capability {
 namespace {
 
-model::ThrustAllocator gunnerus_allocator() {
-  const scenario::VesselConfig v;
-  return model::ThrustAllocator(model::Thruster(v.propeller), model::Rudder(v.rudder),
-                                model::TunnelThruster(v.tunnel),
-                                model::ThrustConfiguration(v.layout), v.allocation);
-}
+using testing::gunnerus_allocator;
 
 // The largest λ ≤ 10 with held(λ) (monotone), by bisection to 10⁻⁹ of 10.
 double largest_factor(const std::function<bool(double)>& held) {

@@ -20,15 +20,7 @@ constexpr double kDeg = kPi / 180.0;
 
 ThrusterUnit unit(std::string name, UnitType type, double x, double y, double ahead, double astern,
                   std::vector<AngleSector> forbidden = {}) {
-  ThrusterUnit u;
-  u.name = std::move(name);
-  u.type = type;
-  u.x_m = x;
-  u.y_m = y;
-  u.max_thrust_N = ahead;
-  u.max_reverse_thrust_N = astern;
-  u.forbidden_deg = std::move(forbidden);
-  return u;
+  return thruster_unit(std::move(name), type, x, y, ahead, astern, std::move(forbidden));
 }
 
 TEST(ThrusterUnit, AllowedArcsAreConvexPiecesOfTheComplement) {

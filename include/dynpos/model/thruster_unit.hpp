@@ -66,6 +66,12 @@ struct ThrusterUnit {
   void validate() const;
 };
 
+/// A unit of `type` at (x_m, y_m) with its ratings and forbidden sectors, every other field at its
+/// default (a short way to write a layout in code).
+ThrusterUnit thruster_unit(std::string name, UnitType type, double x_m, double y_m,
+                           double max_thrust_N, double max_reverse_thrust_N = 0.0,
+                           std::vector<AngleSector> forbidden_deg = {});
+
 /// An arc of allowed thrust directions, from `from_rad` increasing by `span_rad` ≤ π (a convex
 /// wedge), angles in radians as α above.
 struct AllowedArc {
