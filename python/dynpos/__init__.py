@@ -25,7 +25,7 @@ __all__ = [
     "InputError", "Log", "Result", "Simulation", "read_log", "identify_step",
     "identify_thrust_map", "identify_agility", "identify_four_corner",
     "identify_station_keeping", "leverarm_gnss", "leverarm_mru", "hybrid_case", "hybrid_vessel",
-    "compare", "capability", "montecarlo", "simulate", "scenarios",
+    "compare", "capability", "capability_loads", "montecarlo", "simulate", "scenarios",
 ]
 
 
@@ -381,6 +381,15 @@ def capability(*, json=None, out=None, **options) -> Result:
     (folder for rose.svg). Table: ``points``."""
     q = _options(_dynpos.CapabilityRequest, options)
     return Result(_json.loads(_dynpos.run_capability(q, _path(json), _path(out, "out"))), "points")
+
+
+def capability_loads(loads, *, json=None, **options) -> Result:
+    """For each environmental load of a table (CSV: direction_deg, X_N, Y_N, N_Nm in BODY), the
+    largest factor held by the vessel's thruster layout and the limiting units, as ``dynpos
+    capability --loads``. Options: ``vessel`` (file; its [[thruster]] units, else the model's),
+    ``failure`` ("worst", "none", a unit's name or "group:NAME"). Table: ``points``."""
+    q = _options(_dynpos.FeasibilityRequest, {"loads": _fspath(loads, "loads"), **options})
+    return Result(_json.loads(_dynpos.run_feasibility(q, _path(json))), "points")
 
 
 def montecarlo(scenario: str, seeds: str | tuple[int, int] = (1, 10), *, json=None,

@@ -144,6 +144,8 @@ def capability(*, json: _Path | None = None, out: _Path | None = None,
                direction_step: float = ..., wind_tolerance: float | None = ...,
                duration: float = ..., settle: float = ..., footprint: float = ...,
                footprint_deg: float = ..., seed: int = ..., jobs: int = ...) -> Result: ...
+def capability_loads(loads: _Path, *, json: _Path | None = None, vessel: _Path = ...,
+                     failure: str = ...) -> Result: ...
 def montecarlo(scenario: str, seeds: str | tuple[int, int] = ..., *, json: _Path | None = None,
                jobs: int = ..., measure: Literal["auto", "steps", "station-keeping",
                                                  "lever-arms"] = ...,

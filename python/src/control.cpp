@@ -13,6 +13,7 @@
 #include "bind.hpp"
 #include "dynpos/analysis/capability.hpp"
 #include "dynpos/analysis/compare.hpp"
+#include "dynpos/analysis/feasibility.hpp"
 #include "dynpos/analysis/hybrid_case.hpp"
 #include "dynpos/analysis/hybrid_vessel.hpp"
 #include "dynpos/analysis/montecarlo.hpp"
@@ -130,6 +131,24 @@ void bind_capability(py::module_& m) {
       py::arg("request"), py::arg("json") = "", py::arg("out") = std::filesystem::path());
 }
 
+void bind_capability_loads(py::module_& m) {
+  using Q = FeasibilityRequest;
+  py::class_<Q>(m, "FeasibilityRequest")
+      .def(py::init<>())
+      .def_readwrite("vessel", &Q::vessel)
+      .def_readwrite("loads", &Q::loads)
+      .def_readwrite("failure", &Q::failure);
+  m.def(
+      "run_feasibility",
+      [](const Q& q, const std::string& json) {
+        q.validate();
+        check_output_file("json", json);
+        return run_to_json(q, json, run_feasibility,
+                           [](const FeasibilityReport& r) { return to_json(r); });
+      },
+      py::arg("request"), py::arg("json") = "");
+}
+
 // The folders written: one for a run, one per scenario for the campaign; [(name, folder)].
 std::vector<std::pair<std::string, std::filesystem::path>> simulate(const SimulateRequest& q) {
   py::gil_scoped_release release;
@@ -199,6 +218,7 @@ void bind_control(py::module_& m) {
   bind_hybrid_vessel(m);
   bind_compare(m);
   bind_capability(m);
+  bind_capability_loads(m);
   bind_simulate(m);
   bind_montecarlo(m);
 }

@@ -174,6 +174,18 @@ def test_capability(tmp_path):
     assert all(w <= i.max_wind_mps for w, i in zip(frame["max_wind_mps"], r.intact))
 
 
+def test_capability_loads(tmp_path):
+    data = os.path.join(os.path.dirname(__file__), "..", "..", "tests", "cli", "data")
+    loads, vessel = os.path.join(data, "loads_osv.csv"), os.path.join(data, "osv_layout.toml")
+    r = dynpos.capability_loads(loads, vessel=vessel, json=tmp_path / "py.json")
+    same_as_cli(tmp_path, r, tmp_path / "py.json", "capability", "--loads", loads, "--vessel",
+                vessel)
+    assert r.layout == "[[thruster]]" and len(r.points) == 5
+    assert all(0.0 < p.load_factor < 100.0 and p.failure != "none" for p in r.points[:2])
+    with pytest.raises(dynpos.InputError, match="group:bus B"):
+        dynpos.capability_loads(loads, vessel=vessel, failure="stern")
+
+
 def test_montecarlo(tmp_path):
     r = dynpos.montecarlo("turning-circle", (1, 2), jobs=2, json=tmp_path / "py.json")
     same_as_cli(tmp_path, r, tmp_path / "py.json", "montecarlo", "turning-circle", "--seeds",
