@@ -1,5 +1,7 @@
 #include "dynpos/analysis/feasibility.hpp"
 
+#include <optional>
+
 #include <fmt/format.h>
 
 #include "dynpos/analysis/data_dir.hpp"
@@ -41,14 +43,16 @@ FeasibilityReport run_feasibility(const FeasibilityRequest& q) {
   }
   for (const model::ThrusterUnit& u : units) r.units.push_back(u.name);
   const model::LayoutAllocator allocator(units);
-  if (q.failure != "worst") capability::failure_case(units, q.failure);  // the name is known
+  // The case is checked before the table is read: a misspelt unit costs no reading.
+  const std::optional<capability::FailureCase> c =
+      q.failure == "worst" ? std::nullopt
+                           : std::optional(capability::failure_case(units, q.failure));
   const std::vector<capability::LoadCase> loads = capability::read_load_table(q.loads.string());
-  if (q.failure == "worst") {
+  if (!c) {
     r.points = capability::worst_feasibility(allocator, loads);
   } else {
-    const capability::FailureCase c = capability::failure_case(units, q.failure);
     for (const capability::LoadCase& load : loads) {
-      r.points.push_back(capability::feasibility(allocator, load, c));
+      r.points.push_back(capability::feasibility(allocator, load, *c));
     }
   }
   return r;

@@ -89,6 +89,11 @@ struct LayoutAllocator::Setup {
 LayoutAllocator::LayoutAllocator(std::vector<ThrusterUnit> units, LayoutAllocationOptions options)
     : units_(std::move(units)), options_(std::move(options)) {
   options_.validate();
+  side_distance_ = std::cos(std::numbers::pi / options_.polygon_sides);
+  for (int j = 0; j < options_.polygon_sides; ++j) {
+    const double theta = (j + 0.5) * kTwoPi / options_.polygon_sides;
+    side_normals_.emplace_back(std::cos(theta), std::sin(theta));
+  }
   if (units_.empty()) throw core::InputError::for_option("thruster", "the layout has no unit");
   std::set<std::string> names;
   for (const ThrusterUnit& u : units_) {
@@ -127,7 +132,6 @@ LayoutAllocator::Setup LayoutAllocator::setup(const Eigen::Vector3d& tau_d_b,
   s.scale = Eigen::VectorXd::Zero(n);
   Eigen::VectorXd weight = Eigen::VectorXd::Zero(n);
   Rows rows;
-  const double cos_half = std::cos(std::numbers::pi / options_.polygon_sides);
   for (std::size_t k = 0; k < units_.size(); ++k) {
     const ThrusterUnit& u = units_[k];
     const Eigen::Index o = s.offset[k];
@@ -144,10 +148,7 @@ LayoutAllocator::Setup LayoutAllocator::setup(const Eigen::Vector3d& tau_d_b,
         s.A.col(o) = surge * s.scale(o);
         s.A.col(o + 1) = sway * s.scale(o + 1);
         weight.segment(o, 2).setConstant(u.weight);
-        for (int j = 0; j < options_.polygon_sides; ++j) {
-          const double theta = (j + 0.5) * kTwoPi / options_.polygon_sides;
-          rows.add(o, 2, {std::cos(theta), std::sin(theta)}, cos_half);
-        }
+        for (const Eigen::Vector2d& normal : side_normals_) rows.add(o, 2, normal, side_distance_);
         if (region != kRelaxed && arcs_[k][region].span_rad < kTwoPi) {
           const double a = arcs_[k][region].from_rad;
           const double b = a + arcs_[k][region].span_rad;
@@ -226,7 +227,6 @@ LayoutAllocator::Setup LayoutAllocator::setup(const Eigen::Vector3d& tau_d_b,
 }
 
 void LayoutAllocator::project(const Setup& s, Eigen::VectorXd& x) const {
-  const double cos_half = std::cos(std::numbers::pi / options_.polygon_sides);
   for (std::size_t k = 0; k < units_.size(); ++k) {
     const ThrusterUnit& u = units_[k];
     const Eigen::Index o = s.offset[k];
@@ -259,9 +259,8 @@ void LayoutAllocator::project(const Setup& s, Eigen::VectorXd& x) const {
         }
       }
       double largest = 0.0;  // the polygon's most violated side, as n·v over its distance
-      for (int j = 0; j < options_.polygon_sides; ++j) {
-        const double theta = (j + 0.5) * kTwoPi / options_.polygon_sides;
-        largest = std::max(largest, (std::cos(theta) * v.x() + std::sin(theta) * v.y()) / cos_half);
+      for (const Eigen::Vector2d& normal : side_normals_) {
+        largest = std::max(largest, normal.dot(v) / side_distance_);
       }
       if (largest > 1.0) v /= largest;
       x.segment(o, 2) = v;

@@ -113,6 +113,10 @@ class LayoutAllocator {
   std::vector<ThrusterUnit> units_;
   LayoutAllocationOptions options_;
   std::vector<std::vector<AllowedArc>> arcs_;  // per unit (azimuths), else empty
+  // The inscribed polygon of an azimuth's disc over its radius: each side's outward normal and
+  // its distance from the centre, cos(π/sides).
+  std::vector<Eigen::Vector2d> side_normals_;
+  double side_distance_ = 1.0;
 };
 
 }  // namespace dynpos::model
