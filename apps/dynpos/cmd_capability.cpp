@@ -24,7 +24,18 @@ struct CapabilityCliOptions {
   std::filesystem::path out;  ///< folder for rose.svg
 };
 
-// --loads: the factor of each load of the table (analysis/feasibility.hpp).
+// The JSON (if asked), the text, and the files written, in that order for either mode.
+void write_outputs(const std::string& json, const nlohmann::json& doc, const std::string& text,
+                   const std::filesystem::path& rose = {}) {
+  if (!json.empty()) io::write_json(json, doc);
+  std::FILE* out = json == "-" ? stderr : stdout;
+  print_text(out, "{}", text);
+  if (!rose.empty()) print_text(out, "wrote {}\n", rose.string());
+  if (!json.empty() && json != "-") print_text(out, "wrote {}\n", json);
+}
+
+// --loads: the factor of each load of the table (analysis/feasibility.hpp). The outputs were
+// checked with every other before the run (check_outputs).
 void run_loads(const CapabilityCliOptions& o, const CLI::App& sub) {
   for (const char* option :
        {"--level", "--site", "--hs", "--tp", "--current", "--direction-step", "--wind-tolerance",
@@ -36,13 +47,8 @@ void run_loads(const CapabilityCliOptions& o, const CLI::App& sub) {
     }
   }
   const analysis::FeasibilityRequest request{o.request.vessel, o.loads, o.request.failure};
-  request.validate();
-  analysis::check_output_file("json", o.json);
   const analysis::FeasibilityReport report = analysis::run_feasibility(request);
-  if (!o.json.empty()) io::write_json(o.json, analysis::to_json(report));
-  std::FILE* out = o.json == "-" ? stderr : stdout;
-  print_text(out, "{}", analysis::to_text(report));
-  if (!o.json.empty() && o.json != "-") print_text(out, "wrote {}\n", o.json);
+  write_outputs(o.json, analysis::to_json(report), analysis::to_text(report));
 }
 
 void run(const CapabilityCliOptions& o) {
@@ -56,11 +62,7 @@ void run(const CapabilityCliOptions& o) {
     rose = o.out / "rose.svg";
     analysis::write_rose(report, rose);
   }
-  if (!o.json.empty()) io::write_json(o.json, analysis::to_json(report));
-  std::FILE* out = o.json == "-" ? stderr : stdout;
-  print_text(out, "{}", analysis::to_text(report));
-  if (!rose.empty()) print_text(out, "wrote {}\n", rose.string());
-  if (!o.json.empty() && o.json != "-") print_text(out, "wrote {}\n", o.json);
+  write_outputs(o.json, analysis::to_json(report), analysis::to_text(report), rose);
 }
 
 }  // namespace
