@@ -10,6 +10,8 @@
 #include <filesystem>
 #include <string>
 
+#include "dynpos/analysis/outputs.hpp"
+
 namespace dynpos::cli {
 
 /// Exit codes of the dynpos executable.
@@ -17,13 +19,6 @@ enum ExitCode : int {
   kExitOk = 0,
   kExitFailure = 1,      ///< an unexpected error while running
   kExitInputError = 2,   ///< bad input or options: the message says where and how to fix it
-  kExitUnavailable = 3,  ///< the subcommand is part of the contract but not in this version
-};
-
-/// Thrown by a subcommand that is part of the CLI contract but not shipped in this version.
-struct Unavailable {
-  std::string command;
-  std::string planned;  ///< what the subcommand will do
 };
 
 /// Adds --seed bound to `seed`: a decimal number from 0 to 2⁶⁴−1, anything else (a sign, "-1",
@@ -57,13 +52,19 @@ void print_text(std::FILE* out, fmt::format_string<Args...> format, Args&&... ar
   print_text(out, fmt::format(format, std::forward<Args>(args)...));
 }
 
+/// The end of every analysis subcommand: write_outputs(report, outputs) (the analysis' files and
+/// JSON), then to_text(report) and a "wrote FILE" line per file written, on standard output, or
+/// on standard error when the JSON goes to standard output.
+template <class Report>
+void write_and_print(const Report& report, const analysis::Outputs& outputs) {
+  const analysis::Written written = write_outputs(report, outputs);
+  std::FILE* out = outputs.json == "-" ? stderr : stdout;
+  print_text(out, to_text(report));
+  for (const std::filesystem::path& file : written) print_text(out, "wrote {}\n", file.string());
+}
+
 /// Adds `vessel` to the `hybrid` subcommand.
 void add_hybrid_vessel(CLI::App& hybrid);
-
-/// Adds a subcommand of the contract that a later version fills in: it says what it will do
-/// and exits with kExitUnavailable.
-void add_planned(CLI::App& parent, const std::string& name, const std::string& description,
-                 const std::string& planned);
 
 // Subcommands under `identify` and `leverarm`, one file each.
 void add_identify_agility(CLI::App& identify);          // cmd_identify_agility.cpp

@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1, 1);
   app.footer(
       "Run 'dynpos SUBCOMMAND --help' for the options of each subcommand.\n"
-      "Exit codes: 0 success, 1 failure, 2 bad input or options, 3 not in this version,\n"
+      "Exit codes: 0 success, 1 failure, 2 bad input or options,\n"
       "128 + N stopped by signal N (130: Ctrl-C).");
 
   register_simulate(app);
@@ -99,10 +99,6 @@ int main(int argc, char** argv) {
   } catch (const dynpos::core::InputError& e) {
     fmt::print(stderr, "dynpos: error: {}\n", dynpos::analysis::cli_message(e));
     return kExitInputError;
-  } catch (const Unavailable& u) {
-    fmt::print(stderr, "dynpos {}: not available in this version; planned: {}\n", u.command,
-               u.planned);
-    return kExitUnavailable;
   } catch (const std::filesystem::filesystem_error& e) {
     // A folder or file of the outputs that cannot be made or written (or an input that cannot
     // be read): the path and the system's reason, not the library's wording.

@@ -21,6 +21,8 @@ from typing import Any, Mapping, Sequence
 from . import _dynpos
 from ._dynpos import InputError, Log
 
+__version__: str = _dynpos.__version__
+
 __all__ = [
     "InputError", "Log", "Result", "Simulation", "read_log", "identify_step",
     "identify_thrust_map", "identify_agility", "identify_four_corner",
@@ -172,7 +174,8 @@ _PAIR_OPTIONS = ("clock_offset", "gnss_log", "nmea", "init", "mru_log")
 
 
 def _option_name(key: str) -> str:
-    return "--" + key.rstrip("_").replace("_", "-")
+    """A keyword argument as messages spell it: "min_step=", "from_="."""
+    return key + "="
 
 
 def _input_error(message: str, option: str | None = None) -> InputError:

@@ -18,7 +18,7 @@ namespace {
 // The InputError instance: the CLI's message, and where (file, line, column, option) as
 // attributes; None where not known.
 void raise_input_error(const py::object& type, const dynpos::core::InputError& e) {
-  py::object error = type(dynpos::analysis::cli_message(e));
+  py::object error = type(dynpos::analysis::python_message(e));
   const auto& where = e.where();
   error.attr("file") = where.file.empty() ? py::object(py::none()) : py::str(where.file);
   error.attr("line") = where.line ? py::object(py::int_(*where.line)) : py::none();
@@ -31,6 +31,7 @@ void raise_input_error(const py::object& type, const dynpos::core::InputError& e
 
 PYBIND11_MODULE(_dynpos, m) {
   m.doc() = "dynpos: dynamic positioning of ships (compiled part; use the package dynpos)";
+  m.attr("__version__") = DYNPOS_VERSION;  // the CLI's --version
   static py::exception<dynpos::core::InputError> input_error(m, "InputError", PyExc_ValueError);
   py::register_exception_translator([](std::exception_ptr p) {
     try {

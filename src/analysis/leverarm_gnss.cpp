@@ -214,7 +214,7 @@ core::Log read_antenna_capture(const LeverarmGnssRequest& q, const std::string& 
 
     placed = nmea_on_log_clock(io::read_nmea_gnss(file, prefix).log, in.log, utc0, file);
   }
-  in.input.append(describe_input(placed, file, std::move(nl.report)));
+  in.input.append(describe_input(placed, file, std::move(nl.report), q.source.jobs));
   return placed;
 }
 

@@ -147,7 +147,7 @@ LoadedLog load_memory(const LogSource& source) {
   io::FileReport file;
   file.format = "memory";
   file.time_format = "seconds";
-  out.input = describe_input(out.log, name, std::move(file));
+  out.input = describe_input(out.log, name, std::move(file), source.jobs);
   if (!in.time().empty()) {
     out.log_start_s = in.time().front();
     out.log_end_s = in.time().back();
@@ -168,9 +168,68 @@ LoadedLog load_file(const LogSource& source, const RoleFilter& wanted) {
 
 }  // namespace
 
+namespace {
+
+// The error of a window [from, to] that holds no row of a log whose rows span first … last s.
+core::InputError window_without_rows(const LogSource& source, double first_s, double last_s) {
+  const double from = source.window_from_s.value_or(first_s);
+  const double to = source.window_to_s.value_or(last_s);
+  return option_error_in_file(
+      source.log, "from/to",
+      fmt::format("the window {:g} … {:g} s holds no row of the log ({:g} … {:g} s)", from, to,
+                  first_s, last_s),
+      "choose a window inside the logged time");
+}
+
+// `loaded` cut to the source's window: for a log read whole (an NMEA capture, a log in
+// memory); a CSV log read within the window is left as it is.
+void cut_to_window(const LogSource& source, LoadedLog& loaded) {
+  const std::vector<double>& t = loaded.log.time();
+  if (t.empty()) return;
+  const double first = t.front(), last = t.back();
+  const double from = source.window_from_s.value_or(first);
+  const double to = source.window_to_s.value_or(last);
+  if (from <= first && to >= last) return;
+  core::Log cut = loaded.log.window(from, to);
+  if (cut.empty()) throw window_without_rows(source, first, last);
+  loaded.log = std::move(cut);
+}
+
+}  // namespace
+
+core::InputError LogSource::in_log(const core::InputError& e) const {
+  core::InputLocation where = e.where();
+  if (where.file.empty() || (!read_from.empty() && where.file == read_from.string())) {
+    where.file = log.empty() ? "<memory>" : log.string();
+  }
+  if (!e.option().empty()) return core::InputError::for_option(e.option(), e.problem(), e.hint(), where.file);
+  return core::InputError(where, e.problem(), e.hint());
+}
+
+core::InputError LogSource::error(const std::string& column, const std::string& problem,
+                                  const std::string& hint) const {
+  return core::InputError({log.empty() ? "<memory>" : log.string(), {}, {}, column}, problem,
+                          hint);
+}
+
 LoadedLog LogSource::load(const RoleFilter& wanted) const {
-  if (memory) return load_memory(*this);
-  LoadedLog out = naming_the_log(*this, [&] { return load_file(*this, wanted); });
+  if (window_from_s && window_to_s && !(*window_to_s > *window_from_s)) {
+    throw option_error_in_file(
+        log, "from/to", fmt::format("the window {:g} … {:g} s is empty", *window_from_s, *window_to_s),
+        "give a start before the end");
+  }
+  if (memory) {
+    LoadedLog out = load_memory(*this);
+    if (has_window()) cut_to_window(*this, out);
+    return out;
+  }
+  LoadedLog out;
+  try {
+    out = naming_the_log(*this, [&] { return load_file(*this, wanted); });
+  } catch (const io::EmptyWindowError& e) {
+    throw window_without_rows(*this, e.first_row_s, e.last_row_read_s);
+  }
+  if (has_window()) cut_to_window(*this, out);
   if (!read_from.empty()) {  // the report names the log as the user gave it
     for (io::FileReport& f : out.input.files) {
       if (f.path == read_from.string()) f.path = log.string();

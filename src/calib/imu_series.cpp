@@ -52,7 +52,7 @@ ImuSeries imu_from_log(const core::Log& log, const std::string& name, MruAccel a
   std::vector<double> heading_t;
   for (std::size_t i = 0; i < t.size(); ++i)
     if (std::isfinite(heading[i])) heading_t.push_back(t[i]);
-  if (heading_t.size() >= 2) imu.heading_spacing_s = core::median_spacing_s(heading_t);
+  if (heading_t.size() >= 2) imu.heading_spacing_s = core::median_spacing_s(heading_t, 1);
   imu.accel = accel;
   for (std::size_t k = 0; k < grid.size(); ++k) {
     if (!std::isfinite(psi[k])) continue;

@@ -47,7 +47,7 @@ FixPlan plan_fixes(const detail::InsPreintegration& ins, const std::vector<GnssS
   plan.knots.h_s = 1e9;  // the shortest fix spacing, but at least knot_spacing_s
   double first = 1e300, last = -1e300;
   for (const GnssSeries& g : gnss) {
-    plan.knots.h_s = std::min(plan.knots.h_s, core::median_spacing_s(g.t_s));
+    plan.knots.h_s = std::min(plan.knots.h_s, core::median_spacing_s(g.t_s, 1));
     for (double t : g.t_s) {
       const double s = t - o.time_offset_s;
       if (s < lo || s > hi) continue;
@@ -284,7 +284,7 @@ InsArmResult estimate_ins_arms(const ImuSeries& imu, const std::vector<GnssSerie
   out.knots = plan.knots.count;
   out.fixes = plan.fixes.size();
   out.noise.accel_std_mps2 = white_noise_std(imu.accel_b_mps2);
-  const double dt = core::median_spacing_s(imu.t_s);
+  const double dt = core::median_spacing_s(imu.t_s, 1);
   const double sigma_a = std::max(out.noise.accel_std_mps2.norm() / std::sqrt(3.0), 1e-5);
   InsProblem p(ins, plan.knots, std::move(plan.fixes), gnss.size(), o.time_offset_s,
                o.estimate_time_offset, o.max_time_offset_s, o.arm_prior_std_m,

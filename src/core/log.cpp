@@ -41,7 +41,7 @@ std::string single_quoted(std::string_view name) { return "'" + std::string(name
 
 // Throws std::invalid_argument unless every time is finite and strictly increasing.
 void check_time_axis(const std::vector<double>& time_s, std::string_view context,
-                     unsigned jobs = 1) {
+                     unsigned jobs) {
   const std::size_t i = first_unordered_time(time_s, jobs);
   if (i == time_s.size()) return;
   if (!std::isfinite(time_s[i])) {
@@ -99,7 +99,7 @@ std::vector<double> resample_channel(const std::vector<double>& time_s, const Ch
   if (n == 0) return out;
   // The spacing rule applies to this channel's own valid samples, so a 1 Hz channel blank on
   // the rows of a 100 Hz log sees 1 s spacing and bridges its blank rows.
-  const double max_gap = (max_gap_s == 0.0 && n >= 2) ? 2.5 * median_spacing_s(valid_t) : max_gap_s;
+  const double max_gap = (max_gap_s == 0.0 && n >= 2) ? 2.5 * median_spacing_s(valid_t, 1) : max_gap_s;
   const std::optional<double> angle_start =
       channel.interp == Interp::kAngle ? angle_range_start(valid_v) : std::nullopt;
 
@@ -138,7 +138,7 @@ std::vector<double> resample_channel(const std::vector<double>& time_s, const Ch
 }  // namespace
 
 Log::Log(std::vector<double> time_s) : time_s_(std::move(time_s)) {
-  check_time_axis(time_s_, "Log");
+  check_time_axis(time_s_, "Log", 1);
 }
 
 Log::Log(std::vector<double> time_s, unsigned jobs) : time_s_(std::move(time_s)) {
@@ -227,7 +227,7 @@ Log Log::resample(const std::vector<double>& time_s, const ResampleOptions& opti
     throw std::invalid_argument("resample: max_gap_s = " + num(options.max_gap_s) +
                                 "; it must be >= 0 (0 = automatic, infinity = never a gap)");
   }
-  check_time_axis(time_s, "resample target");
+  check_time_axis(time_s, "resample target", 1);
   Log out(time_s);
   out.channels_.reserve(channels_.size());
   for (const Channel& c : channels_) {

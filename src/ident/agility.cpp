@@ -153,7 +153,7 @@ AgilityResponse response_time_632(std::span<const double> t, std::span<const dou
                                   double t_step, double t_end, double min_change,
                                   const AgilityOptions& options, std::string name) {
   detail::check_same_length(t.size(), y.size(), name.empty() ? "output" : name);
-  detail::check_time_axis(t, "time");
+  detail::check_time_axis(t, "time", 1);
   AgilityResponse r;
   r.name = std::move(name);
 
@@ -268,7 +268,7 @@ std::vector<AgilityStep> find_agility_steps(std::span<const double> t,
   detail::check_same_length(t.size(), command.sway_pct.size(), "command.sway");
   const bool has_yaw = !command.yaw_pct.empty();
   if (has_yaw) detail::check_same_length(t.size(), command.yaw_pct.size(), "command.yaw");
-  detail::check_time_axis(t, "time");
+  detail::check_time_axis(t, "time", 1);
 
   struct Level {
     std::size_t first = 0;  // first sample of the level
@@ -360,7 +360,7 @@ AgilityResult analyse_agility(std::span<const double> t, std::span<const Agility
                               std::span<const double> speed_mps, const AgilityOptions& options) {
   options.validate();
   check_channels(t, thrusters, speed_mps);
-  detail::check_time_axis(t, "time");
+  detail::check_time_axis(t, "time", 1);
   if (windows.empty()) {
     throw core::InputError({"", {}, {}, "windows"}, "no joystick demand and no step window",
                            "log command.surge and command.sway, or give the steps as windows");

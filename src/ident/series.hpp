@@ -10,7 +10,7 @@ namespace dynpos::ident::detail {
 
 /// Throws core::InputError (naming `name`) unless t is finite and strictly increasing; checked
 /// in pieces on `jobs` threads (0 = every core).
-void check_time_axis(std::span<const double> t, const std::string& name, unsigned jobs = 1);
+void check_time_axis(std::span<const double> t, const std::string& name, unsigned jobs);
 
 /// How far a window bound computed from a log's times [s] may stray from them by rounding
 /// alone: 16 ulps of the largest |time| (at least of 1 s). Relative to the time's size, not to

@@ -412,7 +412,7 @@ Step step_from_window(std::span<const double> t, std::span<const double> u,
   const std::string& name = options.input_name;
   const core::InputLocation where{"", {}, {}, name};
   if (!u.empty()) detail::check_same_length(t.size(), u.size(), name);
-  detail::check_time_axis(t, name);
+  detail::check_time_axis(t, name, options.jobs);
   if (t.empty() && !(window.log_start_s && window.log_end_s)) {
     throw core::InputError(where, "the log is empty", "");
   }

@@ -85,7 +85,7 @@ StepResponse window_samples(std::span<const double> t, std::span<const double> y
   r.y.reserve(i1 - i0);
   for (std::size_t i = i0; i < i1; ++i) {
     if (!std::isfinite(t[i]) || (i > i0 && !(t[i] > t[i - 1]))) {
-      check_time_axis(t, name);  // throws, naming the first bad index of the whole axis
+      check_time_axis(t, name, 1);  // throws, naming the first bad index of the whole axis
     }
     if (t[i] < t_from - slack || std::isnan(y[i])) continue;
     r.tau.push_back(t[i] - step.t_step);

@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "dynpos/core/parallel_for.hpp"
 #include "dynpos/capability/environment_table.hpp"
 #include "dynpos/capability/quasi_static.hpp"
 #include "dynpos/capability/time_domain.hpp"
@@ -39,7 +40,7 @@ struct CapabilityRequest {
   double footprint_deg = 3.0;            ///< level 3: heading footprint [deg]
   std::optional<double> wind_tolerance;  ///< [m/s]; default 0.01 (levels 1, 2), 0.25 (level 3)
   std::uint64_t seed = 1;                ///< level 3: master seed of the runs
-  unsigned jobs = 0;                     ///< level 3: parallel runs, 0 = every core
+  unsigned jobs = core::kEveryCore;                     ///< level 3: parallel runs, 0 = every core
   /// Throws option_error naming the first bad option.
   void validate() const;
 };

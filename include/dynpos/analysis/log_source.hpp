@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "dynpos/core/parallel_for.hpp"
 #include "dynpos/core/log.hpp"
 #include "dynpos/ident/local_position.hpp"
 #include "dynpos/ident/station_keeping.hpp"
@@ -62,7 +63,7 @@ struct LogSource {
   std::optional<double> window_to_s;
   /// Threads for reading the log and for an analysis' independent pieces (one fit per step);
   /// 0 = every core. Results do not depend on it.
-  unsigned jobs = 0;
+  unsigned jobs = core::kEveryCore;
   /// A log already in memory (SI, channels named by role), used instead of the file `log`:
   /// what a program or the Python API built from arrays. Every channel is taken, by its name
   /// or as `columns` renames it (ROLE=CHANNEL); units, maps and time options do not apply.
@@ -80,8 +81,24 @@ struct LogSource {
 
   /// Reads the log with column_map(wanted) and read_log_files() (an NMEA capture: its default
   /// role mapping, io/nmea_log.hpp), and reports the files, formats, time stamps (form, notes,
-  /// origin), skipped lines and each role's origin and rate.
+  /// origin), skipped lines and each role's origin and rate. With a window, only its rows:
+  /// a CSV file is read within it, a capture or a log in memory is cut to it. The one place a
+  /// window is judged: an empty window (to ≤ from) or one without a row of the log is an
+  /// error of the request key "from/to" in the log, naming the log's time span.
   LoadedLog load(const RoleFilter& wanted) const;
+
+  /// Whether a window is set (either end).
+  bool has_window() const noexcept { return window_from_s || window_to_s; }
+
+  /// `e` as an error of this log: a location without a file is given `log` (as the user named
+  /// it), the copy read_from is renamed to it; line, column and option are kept. Every
+  /// analysis names its log in errors through this.
+  core::InputError in_log(const core::InputError& e) const;
+
+  /// An error about the log's role or column `column` (e.g. "north/east", "col:output" for a
+  /// mapping the user should give): the file is `log`.
+  core::InputError error(const std::string& column, const std::string& problem,
+                         const std::string& hint = {}) const;
 
   /// load(wanted).log.
   core::Log read(const RoleFilter& wanted) const;
@@ -116,7 +133,7 @@ LoadedLog read_log_files(const std::filesystem::path& main_log, const io::Column
 /// record count, and every channel as a role from that file with its median rate. The passes
 /// over a long log run on `jobs` threads (0 = every core); the report does not depend on it.
 io::InputReport describe_input(const core::Log& log, const std::string& file,
-                               io::FileReport file_report, unsigned jobs = 1);
+                               io::FileReport file_report, unsigned jobs);
 
 /// `input` with each file path below `base` made relative to it, e.g. for a report folder that
 /// moves with its logs; other paths stay as they are.

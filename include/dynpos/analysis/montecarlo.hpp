@@ -26,6 +26,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "dynpos/core/parallel_for.hpp"
+
 namespace dynpos::analysis {
 
 struct MonteCarloRequest {
@@ -34,7 +36,7 @@ struct MonteCarloRequest {
   std::uint64_t seed_last = 1;        ///< last seed (inclusive), ≥ seed_first
   std::size_t shard_index = 1;        ///< this shard, 1 … shard_count
   std::size_t shard_count = 1;        ///< shards the range is split into (contiguous)
-  unsigned jobs = 0;                  ///< seeds run at once, 0 = every core
+  unsigned jobs = core::kEveryCore;                  ///< seeds run at once, 0 = every core
   std::filesystem::path vessel_file;  ///< empty: the data folder's gunnerus.toml
   std::optional<double> duration_s;   ///< run length override [s]
   std::filesystem::path work_dir;     ///< where each seed's files go for the run; empty: temp

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// Request keys (analysis/options.hpp) as the command line spells them: one spelling for the
-/// CLI's messages and the Python API's, so both front ends show the same text.
+/// Request keys (analysis/options.hpp) as each front end spells them: the command line's options
+/// and the Python API's keyword arguments. The library names a bad option by its key only.
 
 #include <string>
 
@@ -13,8 +13,16 @@ namespace dynpos::analysis {
 /// "from/to" → "--from/--to".
 std::string option_spelling(const std::string& key);
 
+/// The same keys as the Python API's keyword arguments: "min_step" → "min_step=", "from/to" →
+/// "from_=/to=", "col:output" → "col={'output': COLUMN}".
+std::string keyword_spelling(const std::string& key);
+
 /// The error's message with its option key in the command line's spelling; what() for an error
 /// in a file.
 std::string cli_message(const core::InputError& e);
+
+/// The error's message with its option key as a Python keyword argument; what() for an error
+/// in a file.
+std::string python_message(const core::InputError& e);
 
 }  // namespace dynpos::analysis

@@ -15,6 +15,7 @@
 #include <variant>
 #include <vector>
 
+#include "dynpos/core/parallel_for.hpp"
 #include "dynpos/scenario/campaign.hpp"
 
 namespace dynpos::analysis {
@@ -33,7 +34,7 @@ struct SimulateRequest {
   std::optional<double> duration_s;   ///< run length override [s], > 0
   std::optional<double> log_rate_hz;  ///< log rate override [Hz], > 0
   bool list = false;                  ///< only list the built-in scenarios
-  unsigned jobs = 0;                  ///< campaign: scenarios run at once, 0 = every core
+  unsigned jobs = core::kEveryCore;                  ///< campaign: scenarios run at once, 0 = every core
 
   /// Throws option_error for a duration or log rate that is not > 0 ("duration", "log_rate"),
   /// and InputError when no scenario or (unless list) no output folder is given.

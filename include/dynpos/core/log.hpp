@@ -24,7 +24,7 @@ inline constexpr double kMissing = std::numeric_limits<double>::quiet_NaN();
 inline bool is_missing(double value) { return std::isnan(value); }
 
 /// The missing samples of a series, counted in pieces on `jobs` threads (0 = every core).
-std::size_t missing_count(std::span<const double> values, unsigned jobs = 1);
+std::size_t missing_count(std::span<const double> values, unsigned jobs);
 
 /// How a channel is interpolated onto another time axis.
 enum class Interp {

@@ -10,6 +10,11 @@
 
 namespace dynpos::core {
 
+/// The one default of every thread count a user sets (`jobs` of a request or of options, the
+/// CLI's --jobs, the Python API's jobs=): 0, every core. Results never depend on it. Functions
+/// that work inside a piece of a parallel loop take their count explicitly (usually 1).
+inline constexpr unsigned kEveryCore = 0;
+
 /// The number of threads `jobs` stands for: 0 = every core (at least 1), never more than `n`
 /// pieces of work (and at least 1).
 unsigned job_count(unsigned jobs, std::size_t n);

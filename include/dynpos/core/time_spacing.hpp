@@ -10,6 +10,6 @@ namespace dynpos::core {
 /// the two middle ones for an even count). Throws std::invalid_argument with fewer than two
 /// times. A long axis is counted in pieces on `jobs` threads (0 = every core); the result does
 /// not depend on how many.
-double median_spacing_s(const std::vector<double>& time_s, unsigned jobs = 1);
+double median_spacing_s(const std::vector<double>& time_s, unsigned jobs);
 
 }  // namespace dynpos::core

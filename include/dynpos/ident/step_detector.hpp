@@ -58,6 +58,7 @@
 #include <string>
 #include <vector>
 
+#include "dynpos/core/parallel_for.hpp"
 #include "dynpos/core/log.hpp"
 
 namespace dynpos::ident {
@@ -95,7 +96,7 @@ struct StepDetectorOptions {
   std::string input_name = "input";
   /// Threads for the passes over the whole input (the time check, the largest change and the
   /// plateaus in pieces, the noise beside them); 0 = every core. The result does not depend on it.
-  unsigned jobs = 1;
+  unsigned jobs = core::kEveryCore;
 
   /// Throws core::InputError naming the bad option.
   void validate() const;
