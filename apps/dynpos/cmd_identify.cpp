@@ -3,14 +3,10 @@
 
 #include <fmt/core.h>
 
-#include <cstdio>
 #include <memory>
-#include <string>
 
 #include "commands.hpp"
-#include "dynpos/analysis/options.hpp"
 #include "dynpos/analysis/step.hpp"
-#include "dynpos/io/json_writer.hpp"
 #include "log_input.hpp"
 
 namespace dynpos::cli {
@@ -18,18 +14,8 @@ namespace {
 
 struct StepOptions {
   analysis::StepRequest request;
-  std::string json;
+  analysis::Outputs outputs;
 };
-
-void run_step(const StepOptions& opt) {
-  opt.request.validate();
-  analysis::check_output_file("json", opt.json);
-  const analysis::StepReport report = analysis::run_step(opt.request);
-  if (!opt.json.empty()) io::write_json(opt.json, analysis::to_json(report));
-  std::FILE* out = opt.json == "-" ? stderr : stdout;
-  print_text(out, "{}", analysis::to_text(report));
-  if (!opt.json.empty() && opt.json != "-") print_text(out, "wrote {}\n", opt.json);
-}
 
 void add_identify_step(CLI::App& identify) {
   auto opt = std::make_shared<StepOptions>();
@@ -40,15 +26,19 @@ void add_identify_step(CLI::App& identify) {
                   "time, input (the command), output (the response), trigger (e.g. power "
                   "feedback, to time steps without a command)");
   step->add_option("--method", r.method,
-                   "lsq: least squares with the dead time (default); smith: Smith's two-point "
+                   "lsq: least squares with the dead time; smith: Smith's two-point "
                    "method (3.8)-(3.9); smith2: Smith's second-order 20/60 %; rk: "
                    "Rangaiah-Krishnaswamy 14/55/91 %")
-      ->capture_default_str();
+      ->transform(CLI::CheckedTransformer(analysis::step_method_names(), CLI::ignore_case))
+      ->default_str(analysis::to_string(r.method))
+      ->option_text("lsq|smith|smith2|rk (default: " + analysis::to_string(r.method) + ")");
   step->add_option("--from", r.from_s, "Window start [s] (one step in the window)");
   step->add_option("--to", r.to_s, "Window end [s]");
   step->add_option("--step-at", r.step_at_s, "Step time [s] (with or without a window)");
   step->add_option("--derive", r.derive,
-                   "total-speed: fit sqrt(u^2 + v^2) (3.19) from the roles u and v (sway tests)");
+                   "total-speed: fit sqrt(u^2 + v^2) (3.19) from the roles u and v (sway tests)")
+      ->transform(CLI::CheckedTransformer(analysis::step_derive_names(), CLI::ignore_case))
+      ->option_text("total-speed");
   step->add_option("--min-step", r.min_step,
                    "Smallest input change counted as a step, in the input's SI unit (default: "
                    "adapted to the log from its noise and largest changes, and printed)");
@@ -59,7 +49,7 @@ void add_identify_step(CLI::App& identify) {
   step->add_option("--min-plateau", r.min_plateau_s,
                    "Shortest time [s] the input holds a level to count as a step")
       ->capture_default_str();
-  add_json_option(*step, opt->json, "Write the results as JSON to FILE, or '-' for stdout");
+  add_json_option(*step, opt->outputs.json, "Write the results as JSON to FILE, or '-' for stdout");
   step->footer(
       "Finds every step of the input (or trigger) automatically, or takes the window given, and "
       "fits y = y0 + K*du*(1 - exp(-(t - t0 - delay)/T)) (3.7) to the output after each. Values "
@@ -68,7 +58,7 @@ void add_identify_step(CLI::App& identify) {
       "Warnings: steady_state_not_reached, poor_fit, short_window, few_samples, ... "
       "Example on a virtual trial log: dynpos identify step DIR/log.csv "
       "--col input=command.rpm.stb --col output=rpm.stb");
-  step->callback([opt] { run_step(*opt); });
+  step->callback([opt] { write_and_print(analysis::run_step(opt->request), opt->outputs); });
 }
 
 }  // namespace

@@ -3,16 +3,10 @@
 
 #include <fmt/core.h>
 
-#include <cstdio>
-#include <filesystem>
 #include <memory>
-#include <string>
 
 #include "commands.hpp"
-#include "dynpos/analysis/options.hpp"
 #include "dynpos/analysis/thrust_map.hpp"
-#include "dynpos/io/csv_writer.hpp"
-#include "dynpos/io/json_writer.hpp"
 #include "log_input.hpp"
 
 namespace dynpos::cli {
@@ -21,30 +15,8 @@ namespace {
 struct ThrustMapOptions {
   LogInput input;
   analysis::ThrustMapRequest request;
-  std::string json;
-  std::filesystem::path out;
+  analysis::Outputs outputs;
 };
-
-void run_thrust_map(ThrustMapOptions& o) {
-  o.request.source = o.input;
-  o.request.validate();
-  if (o.request.apply && o.out.empty()) {
-    throw analysis::option_error("out", "--apply needs --out FILE.csv",
-                                 "name the CSV to write the computed thrust into");
-  }
-  if (o.request.apply) analysis::check_output_file("out", o.out.string());
-  if (!o.request.apply) analysis::check_output_file("json", o.json);
-  const analysis::ThrustMapReport report = analysis::run_thrust_map(o.request);
-  if (report.applied) {
-    io::write_csv(o.out, report.applied->log);
-    print_text(stdout, "{}", analysis::to_text(report, o.out));
-    return;
-  }
-  if (!o.json.empty()) io::write_json(o.json, analysis::to_json(report));
-  std::FILE* out = o.json == "-" ? stderr : stdout;
-  print_text(out, "{}", analysis::to_text(report));
-  if (!o.json.empty() && o.json != "-") print_text(out, "wrote {}\n", o.json);
-}
 
 }  // namespace
 
@@ -58,7 +30,8 @@ void add_identify_thrust_map(CLI::App& identify) {
                   "Leave out samples with |n| below this [rpm]: near zero the thrust is noise")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
-  add_json_option(*sub, o->json, "Write the coefficients as JSON to FILE, or '-' for stdout");
+  add_json_option(*sub, o->outputs.json,
+                  "Write the coefficients as JSON to FILE, or '-' for stdout");
   sub->add_flag("--apply", r.apply,
                 "Apply the vessel file's maps to a log with shaft speed only; writes --out");
   sub->add_flag("--abs-speed", r.abs_speed,
@@ -66,13 +39,16 @@ void add_identify_thrust_map(CLI::App& identify) {
   sub->add_option("--vessel", r.vessel, "With --apply: vessel file (default: built-in Gunnerus)")
       ->check(CLI::ExistingFile);
   output_file(
-      sub->add_option("--out", o->out, "With --apply: CSV to write (time, rpm.NAME, thrust.NAME)"));
+      sub->add_option("--out", r.out, "With --apply: CSV to write (time, rpm.NAME, thrust.NAME)"));
   sub->footer(
       "Back-calculation: for each sign of n, c = Σ T n² / Σ n⁴ (least squares through the "
       "origin), with 1σ from the residuals. Values in N/rps² in JSON (c_pos, c_neg, c_mean), "
       "kN/rps² in the table (thesis table 3.2: 8.13 / -5.8). Example: dynpos identify "
       "thrust-map DIR/log.csv --json map.json");
-  sub->callback([o] { run_thrust_map(*o); });
+  sub->callback([o] {
+    o->request.source = o->input;
+    write_and_print(analysis::run_thrust_map(o->request), o->outputs);
+  });
 }
 
 }  // namespace dynpos::cli

@@ -259,8 +259,9 @@ def identify_step(log, col=None, unit=None, map=None, *, json=None, **options) -
     """Step identification (thesis 3.2): every step of the input and a first-order-plus-dead-
     time fit (``method="lsq"``, ``"smith"``, ``"smith2"``, ``"rk"``) of the output's response;
     K in output unit per input unit, T and delay [s]. Options as ``dynpos identify step``:
-    ``from_``, ``to``, ``step_at`` [s], ``derive``, ``min_step`` (input's SI unit),
-    ``min_plateau`` [s], ``segments`` (file). Table: ``steps``."""
+    ``from_``, ``to``, ``step_at`` [s], ``derive`` (``"total-speed"``), ``min_step`` (input's
+    SI unit), ``min_plateau`` [s], ``segments`` (file). A method or derived output it does not
+    know raises InputError naming the keyword. Table: ``steps``."""
     q = _request(_dynpos.StepRequest, log, col, unit, map, options)
     return Result(_json.loads(_dynpos.run_step(q, _path(json))), "steps")
 
@@ -280,8 +281,8 @@ def identify_agility(log, col=None, unit=None, map=None, *, json=None, plot=None
                      **options) -> Result:
     """Thrust agility (thesis 3.5.1): the time to 63.2 % [s] of every thruster's (and the
     speed's) response after each joystick step. Options as ``dynpos identify agility``:
-    ``window`` (["T_STEP,T_END,DIR_DEG[,THRUST_PCT[,YAW_PCT]]"]), ``current``
-    ("SPEED_MPS,TO_DEG"), ``rpm``, ``min_response`` [%], ``min_demand`` [%]; ``plot`` (SVG).
+    ``window`` (a list of (T_STEP, T_END, DIR_DEG[, THRUST_PCT[, YAW_PCT]]) tuples), ``current``
+    ((SPEED_MPS, TO_DEG)), ``rpm``, ``min_response`` [%], ``min_demand`` [%]; ``plot`` (SVG).
     Table: ``directions``."""
     q = _request(_dynpos.AgilityRequest, log, col, unit, map, options)
     doc = _dynpos.run_agility(q, _path(json), _path(plot, "plot"))

@@ -66,7 +66,8 @@ def identify_step(log: _LogLike, col: _Pairs = None, unit: _Pairs = None,
                   map: _Path | None = None, *, json: _Path | None = None,
                   method: Literal["lsq", "smith", "smith2", "rk"] = ...,
                   from_: float | None = ..., to: float | None = ...,
-                  step_at: float | None = ..., derive: str = ..., min_step: float = ...,
+                  step_at: float | None = ..., derive: Literal["", "total-speed"] = ...,
+                  min_step: float = ...,
                   min_plateau: float = ..., segments: _Path = ..., clock_offset: _Pairs = ...,
                   max_gap: float = ..., format: str = ..., strict: bool = ...,
                   time_format: str = ..., date: str = ..., time_order: str = ..., jobs: int = ...) -> Result: ...
@@ -79,7 +80,11 @@ def identify_thrust_map(log: _LogLike, col: _Pairs = None, unit: _Pairs = None,
                         time_order: str = ..., jobs: int = ...) -> Result: ...
 def identify_agility(log: _LogLike, col: _Pairs = None, unit: _Pairs = None,
                      map: _Path | None = None, *, json: _Path | None = None,
-                     plot: _Path | None = None, window: Sequence[str] = ..., current: str = ...,
+                     plot: _Path | None = None,
+                     window: Sequence[tuple[float, float, float]
+                                      | tuple[float, float, float, float]
+                                      | tuple[float, float, float, float, float]] = ...,
+                     current: tuple[float, float] | None = ...,
                      rpm: bool = ..., min_response: float = ..., min_demand: float = ...,
                      clock_offset: _Pairs = ..., max_gap: float = ..., format: str = ...,
                      strict: bool = ..., time_format: str = ..., date: str = ...,

@@ -5,7 +5,9 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <array>
+#include <cctype>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bind.hpp"
@@ -43,21 +45,50 @@ std::string run_checked(const Request& q, const std::string& json, Report (*run)
       });
 }
 
+// The enum value named `text` (any case) in `names`, else option_error(key) listing the names:
+// the Python API takes the step analysis' methods by name, as the command line does.
+template <typename Enum>
+Enum enum_by_name(const std::vector<std::pair<std::string, Enum>>& names, const std::string& text,
+                  const std::string& key) {
+  const auto lower = [](std::string v) {
+    for (char& c : v) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return v;
+  };
+  std::string known;
+  for (const auto& [name, value] : names) {
+    if (lower(name) == lower(text)) return value;
+    if (!name.empty()) known += (known.empty() ? "" : ", ") + name;
+  }
+  throw option_error(key, "unknown " + key + " '" + text + "'", "choose one of " + known);
+}
+
 void bind_step(py::module_& m) {
   py::class_<StepRequest>(m, "StepRequest")
       .def(py::init<>())
       .def_readwrite("source", &StepRequest::source)
-      .def_readwrite("method", &StepRequest::method)
+      .def_property(
+          "method", [](const StepRequest& q) { return to_string(q.method); },
+          [](StepRequest& q, const std::string& name) {
+            q.method = enum_by_name(step_method_names(), name, "method");
+          })
       .def_readwrite("from_", &StepRequest::from_s)
       .def_readwrite("to", &StepRequest::to_s)
       .def_readwrite("step_at", &StepRequest::step_at_s)
-      .def_readwrite("derive", &StepRequest::derive)
+      .def_property(
+          "derive", [](const StepRequest& q) { return to_string(q.derive); },
+          [](StepRequest& q, const std::string& name) {
+            q.derive = enum_by_name(step_derive_names(), name, "derive");
+          })
       .def_readwrite("min_step", &StepRequest::min_step)
       .def_readwrite("min_plateau", &StepRequest::min_plateau_s)
       .def_readwrite("segments", &StepRequest::segments_file);
   m.def(
       "run_step",
-      [](const StepRequest& q, const std::string& json) { return run_checked(q, json, &run_step); },
+      [](const StepRequest& q, const std::string& json) {
+        const Outputs outputs{json, {}};
+        outputs.check("plot", false);
+        return run_and_write(q, outputs, run_step);
+      },
       py::arg("request"), py::arg("json") = "");
 }
 
@@ -68,42 +99,61 @@ void bind_thrust_map(py::module_& m) {
       .def_readwrite("min_speed", &ThrustMapRequest::min_speed_rpm)
       .def_readwrite("apply", &ThrustMapRequest::apply)
       .def_readwrite("abs_speed", &ThrustMapRequest::abs_speed)
-      .def_readwrite("vessel", &ThrustMapRequest::vessel);
+      .def_readwrite("vessel", &ThrustMapRequest::vessel)
+      .def_readwrite("out", &ThrustMapRequest::out);
   m.def(
       "run_thrust_map",
-      [](const ThrustMapRequest& q, const std::string& json, const std::string& out) {
+      [](ThrustMapRequest q, const std::string& json, const std::string& out) {
+        q.out = out;
         q.validate();
-        if (q.apply && out.empty()) {
-          throw option_error("out", "--apply needs --out FILE.csv",
-                             "name the CSV to write the computed thrust into");
-        }
-        check_output_file("json", json);
-        return run_to_json(q, json, run_thrust_map, [&out](const ThrustMapReport& r) {
-          if (r.applied) io::write_csv(out, r.applied->log);
-          return to_json(r);
-        });
+        const Outputs outputs{json, {}};
+        outputs.check("plot", false);
+        check_output_file("out", out);
+        return run_and_write(q, outputs, run_thrust_map);
       },
       py::arg("request"), py::arg("json") = "", py::arg("out") = "");
 }
 
 void bind_agility(py::module_& m) {
+  // window: a list of (T_STEP, T_END, DIR_DEG[, THRUST_PCT[, YAW_PCT]]) tuples; current:
+  // (SPEED_MPS, TO_DEG) or None.
   py::class_<AgilityRequest>(m, "AgilityRequest")
       .def(py::init<>())
       .def_readwrite("source", &AgilityRequest::source)
       .def_property(
-          "window", [](const AgilityRequest&) { return std::vector<std::string>{}; },
-          [](AgilityRequest& q, const std::vector<std::string>& specs) {
+          "window",
+          [](const AgilityRequest& q) {
+            py::list out;
+            for (const ident::AgilityWindow& w : q.windows) {
+              out.append(w.yaw_pct
+                             ? py::make_tuple(w.t_step, w.t_end, w.direction_deg, w.magnitude_pct,
+                                              *w.yaw_pct)
+                             : py::make_tuple(w.t_step, w.t_end, w.direction_deg, w.magnitude_pct));
+            }
+            return out;
+          },
+          [](AgilityRequest& q, const std::vector<std::vector<double>>& windows) {
             q.windows.clear();
-            for (const auto& s : specs) q.windows.push_back(parse_agility_window(s, q.source.log));
+            for (const std::vector<double>& v : windows) {
+              if (v.size() < 3 || v.size() > 5) {
+                throw option_error("window",
+                                   "a window needs 3 to 5 numbers, has " + std::to_string(v.size()),
+                                   "give (T_STEP, T_END, DIR_DEG[, THRUST_PCT[, YAW_PCT]])");
+              }
+              ident::AgilityWindow w{v[0], v[1], v[2], v.size() > 3 ? v[3] : 100.0, std::nullopt};
+              if (v.size() > 4) w.yaw_pct = v[4];
+              q.windows.push_back(w);
+            }
           })
       .def_property(
-          "current", [](const AgilityRequest&) { return std::string{}; },
-          [](AgilityRequest& q, const std::string& spec) {
-            if (spec.empty()) {
-              q.current.reset();
-            } else {
-              q.current = parse_observed_current(spec);
-            }
+          "current",
+          [](const AgilityRequest& q) -> std::optional<std::array<double, 2>> {
+            if (!q.current) return std::nullopt;
+            return std::array<double, 2>{q.current->speed_mps, q.current->to_deg};
+          },
+          [](AgilityRequest& q, const std::optional<std::array<double, 2>>& c) {
+            q.current.reset();
+            if (c) q.current = ObservedCurrent{(*c)[0], (*c)[1]};
           })
       .def_readwrite("rpm", &AgilityRequest::use_rpm)
       .def_readwrite("min_response", &AgilityRequest::min_response_pct)
@@ -111,7 +161,9 @@ void bind_agility(py::module_& m) {
   m.def(
       "run_agility",
       [](const AgilityRequest& q, const std::string& json, const std::string& plot) {
-        return run_checked(q, json, &run_agility, &plot);
+        const Outputs outputs{json, plot};
+        outputs.check("plot", false);
+        return run_and_write(q, outputs, run_agility);
       },
       py::arg("request"), py::arg("json") = "", py::arg("plot") = "");
 }

@@ -66,12 +66,12 @@ def test_identify_thrust_map_and_apply(runs, tmp_path):
 
 def test_identify_agility(runs, tmp_path):
     log = runs / "agility" / "log.csv"
-    r = dynpos.identify_agility(log, current="0.2,318", json=tmp_path / "py.json",
+    r = dynpos.identify_agility(log, current=(0.2, 318), json=tmp_path / "py.json",
                                 plot=tmp_path / "py.svg")
     same_as_cli(tmp_path, r, tmp_path / "py.json", "identify", "agility", log,
                 "--current", "0.2,318")
     assert len(r.directions) == 3 and (tmp_path / "py.svg").stat().st_size > 0
-    w = dynpos.identify_agility(log, window=["10,60,0"])
+    w = dynpos.identify_agility(log, window=[(10, 60, 0)])
     expected, _ = cli(tmp_path, "identify", "agility", log, "--window", "10,60,0")
     assert w.to_dict() == expected
 

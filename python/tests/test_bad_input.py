@@ -38,11 +38,9 @@ CASES = [
     ["identify", "step", STEPS, "--col", "input=cmd", "--col", "output=no_such_column"],
     ["identify", "step", os.path.join(CLI_DIR, "bad_steps.csv"), *STEP_COLS],
     ["identify", "step", STEPS, *STEP_COLS, "--segments", os.path.join(CLI_DIR, "bad_segments.csv")],
-    ["identify", "step", STEPS, *STEP_COLS, "--method", "fast"],
     ["identify", "step", STEPS, *STEP_COLS, "--min-plateau", "-1"],
     ["identify", "agility", STEPS],
     ["identify", "agility", STEPS, *THRUST],
-    ["identify", "agility", STEPS, *THRUST, "--window", "10,20"],
     ["identify", "agility", STEPS, *THRUST, "--window", "10,5000,90"],
     ["identify", "four-corner", STEPS, "--col", "north=response", "--col", "east=response"],
     ["identify", "four-corner", STEPS, "--col", "north=response", "--col", "east=response",
@@ -114,7 +112,9 @@ def options(argv):
             i += 1
             continue
         value = argv[i + 1]
-        if flag in REPEATED:
+        if flag == "--window":  # the API takes each window as a tuple of numbers
+            kwargs.setdefault(key, []).append(tuple(float(v) for v in value.split(",")))
+        elif flag in REPEATED:
             kwargs.setdefault(key, []).append(value)
         else:
             kwargs[key] = number(value) if key not in ("labels", "date", "imu_arm") else value

@@ -5,8 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <sstream>
-#include <stdexcept>
 
 #include "dynpos/analysis/options.hpp"
 #include "dynpos/core/circular_stats.hpp"
@@ -29,27 +27,6 @@ bool wanted_role(const std::string& role) {
 std::vector<double> to_pct(std::vector<double> v) {
   for (double& x : v) x *= 100.0;  // the log holds fractions (SI); the demands are in %
   return v;
-}
-
-// Comma-separated numbers of the option `key`; the error names `log` when it is given.
-std::vector<double> parse_numbers(const std::string& text, const std::string& key,
-                                  const std::filesystem::path& log) {
-  std::vector<double> out;
-  std::stringstream ss(text);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    try {
-      std::size_t used = 0;
-      out.push_back(std::stod(item, &used));
-      if (used != item.size() && item.find_first_not_of(' ', used) != std::string::npos) {
-        throw std::invalid_argument(item);
-      }
-    } catch (const std::exception&) {
-      throw option_error_in_file(log, key, "'" + item + "' in '" + text + "' is not a number",
-                                 "give comma-separated numbers");
-    }
-  }
-  return out;
 }
 
 double wrap360(double d) {
@@ -115,10 +92,10 @@ ident::AgilityResult analyse_steps(const AgilityRequest& request, const core::Lo
     return ident::analyse_agility(t, request.windows, channels, speed, options);
   }
   if (!log.has("command.surge") || !log.has("command.sway")) {
-    throw core::InputError({request.source.log.string(), {}, {}, "command.surge, command.sway"},
-                           "no joystick demand in the log and no --window",
-                           "map the demands (--col command.surge=COL --col command.sway=COL, "
-                           "in %) or give each step as --window T_STEP,T_END,DIR_DEG");
+    throw request.source.error("command.surge, command.sway",
+                               "no joystick demand in the log and no --window",
+                               "map the demands (--col command.surge=COL --col command.sway=COL, "
+                               "in %) or give each step as --window T_STEP,T_END,DIR_DEG");
   }
   const std::vector<double> surge = to_pct(log.values("command.surge"));
   const std::vector<double> sway = to_pct(log.values("command.sway"));
@@ -136,46 +113,21 @@ std::vector<double> vessel_speed(const core::Log& log) {
 }  // namespace
 
 void AgilityRequest::validate() const {
-  // The bounds of the command line's checks: NaN passes them and is refused by
-  // ident::AgilityOptions::validate() when the analysis runs.
-  if (min_response_pct < 0.0 || min_response_pct > 99.0) {
+  if (!(min_response_pct >= 0.0 && min_response_pct <= 99.0)) {
     throw option_error("min_response", fmt::format("{:g} % is not in [0, 99]", min_response_pct),
                        "give the share of the channel's range in %");
   }
-  if (min_demand_pct < 0.0) {
-    throw option_error("min_demand", fmt::format("{:g} % is negative", min_demand_pct),
+  if (!(min_demand_pct >= 0.0)) {
+    throw option_error("min_demand", fmt::format("{:g} % is not ≥ 0", min_demand_pct),
                        "give a demand ≥ 0 %");
   }
-  if (current && !(current->speed_mps >= 0.0)) {
-    throw option_error("current", fmt::format("the speed {:g} m/s is not ≥ 0", current->speed_mps),
+  if (current && !(current->speed_mps >= 0.0 && std::isfinite(current->speed_mps) &&
+                   std::isfinite(current->to_deg))) {
+    throw option_error("current",
+                       fmt::format("the speed {:g} m/s towards {:g}° is not a current",
+                                   current->speed_mps, current->to_deg),
                        "give the speed ≥ 0 and the direction it flows towards");
   }
-}
-
-ident::AgilityWindow parse_agility_window(const std::string& spec,
-                                          const std::filesystem::path& log) {
-  const std::vector<double> v = parse_numbers(spec, "window", log);
-  if (v.size() < 3 || v.size() > 5) {
-    throw option_error_in_file(
-        log, "window", "'" + spec + "' needs 3 to 5 numbers, has " + std::to_string(v.size()),
-        "--window T_STEP,T_END,DIR_DEG[,THRUST_PCT[,YAW_PCT]]");
-  }
-  ident::AgilityWindow w;
-  w.t_step = v[0];
-  w.t_end = v[1];
-  w.direction_deg = v[2];
-  w.magnitude_pct = v.size() > 3 ? v[3] : 100.0;
-  if (v.size() > 4) w.yaw_pct = v[4];
-  return w;
-}
-
-ObservedCurrent parse_observed_current(const std::string& spec) {
-  const std::vector<double> v = parse_numbers(spec, "current", {});
-  if (v.size() != 2 || !(v[0] >= 0.0)) {
-    throw option_error("current", "'" + spec + "' is not SPEED,TO_DEG",
-                       "e.g. --current 0.2,318 (0.2 m/s towards 318°, as observed)");
-  }
-  return ObservedCurrent{v[0], v[1]};
 }
 
 std::optional<double> thrust_envelope_s(const ident::AgilityStep& step) {
@@ -200,11 +152,11 @@ AgilityReport run_agility(const AgilityRequest& request) {
   report.channel = (!request.use_rpm && !thrust.empty()) ? "thrust" : "rpm";
   report.thrusters = report.channel == "thrust" ? thrust : rpm;
   if (report.thrusters.empty()) {
-    throw core::InputError({request.source.log.string(), {}, {}, "thrust.NAME"},
-                           request.use_rpm
-                               ? "no shaft speed channel (rpm.NAME) in the log"
-                               : "no thruster channel (thrust.NAME or rpm.NAME) in the log",
-                           "map one per thruster, e.g. --col thrust.port=THRUST_P");
+    throw request.source.error("thrust.NAME",
+                               request.use_rpm
+                                   ? "no shaft speed channel (rpm.NAME) in the log"
+                                   : "no thruster channel (thrust.NAME or rpm.NAME) in the log",
+                               "map one per thruster, e.g. --col thrust.port=THRUST_P");
   }
   std::vector<ident::AgilityChannel> channels;
   for (const std::string& n : report.thrusters) {
@@ -220,7 +172,8 @@ AgilityReport run_agility(const AgilityRequest& request) {
     report.result = analyse_steps(request, log, channels, speed, options);
   } catch (const core::InputError& e) {
     // Name the log, and the thruster channel by its role, in the library's message.
-    const core::InputError named = with_file(e, request.source.log.string());
+    const core::InputError named = request.source.in_log(e);
+    if (!named.option().empty()) throw named;
     core::InputLocation where = named.where();
     for (const std::string& n : report.thrusters) {
       if (where.column_name == n) where.column_name = report.channel + "." + n;

@@ -3,6 +3,7 @@
 
 #include <fmt/core.h>
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -10,19 +11,20 @@
 #include "dynpos/analysis/agility.hpp"
 #include "dynpos/analysis/data_dir.hpp"
 #include "dynpos/analysis/demo_sections.hpp"
-#include "dynpos/ident/thrust_map.hpp"
+#include "dynpos/analysis/thrust_map.hpp"
 #include "dynpos/io/json_writer.hpp"
 #include "dynpos/model/thruster.hpp"
 #include "dynpos/report/table.hpp"
+#include "dynpos/scenario/trial_truth.hpp"
 #include "dynpos/scenario/vessel_config.hpp"
 
 namespace dynpos::analysis {
 namespace {
 
-// Thrust map (3.17) back-calculated from logs with thrust and shaft speed, against the vessel
-// file's c± (c = ρK_T·D⁴) and the thesis' table 3.2: a row per log (name, log) and main
-// propeller.
-report::Table thrust_map_table(const std::vector<std::pair<std::string, core::Log>>& logs,
+// Thrust map (3.17) back-calculated by the thrust-map analysis from each log with thrust and
+// shaft speed, against the vessel file's c± (c = ρK_T·D⁴) and the thesis' table 3.2: a row per
+// log (name, report) and main propeller.
+report::Table thrust_map_table(const std::vector<std::pair<std::string, ThrustMapReport>>& maps,
                                const scenario::VesselConfig& vessel) {
   const model::Thruster propeller(vessel.propeller);
   const double true_pos = propeller.thrust_coefficient(1.0);
@@ -34,15 +36,11 @@ report::Table thrust_map_table(const std::vector<std::pair<std::string, core::Lo
   const auto kn = [](const std::optional<ident::Estimate>& e) {
     return e ? fmt::format("{:.3f}", e->value / 1000.0) : std::string("—");
   };
-  for (const auto& [log_name, log] : logs) {
-    for (const std::string& name : thruster_names(log, "rpm")) {
-      if (name == "tunnel" || !log.has("thrust." + name)) continue;
-      ident::ThrustMapFitOptions f;
-      f.shaft_speed_name = "rpm." + name;
-      f.thrust_name = "thrust." + name;
-      const auto r =
-          ident::fit_thrust_map(log.values("rpm." + name), log.values("thrust." + name), f);
-      t.rows.push_back({log_name, name, kn(r.c_forward), kn(r.c_reverse),
+  for (const auto& [log_name, map] : maps) {
+    for (const ThrusterMapFit& fit : map.thrusters) {
+      if (fit.name == "tunnel") continue;
+      const ident::ThrustMapFitResult& r = fit.fit;
+      t.rows.push_back({log_name, fit.name, kn(r.c_forward), kn(r.c_reverse),
                         std::to_string(r.samples_forward), std::to_string(r.samples_reverse),
                         r.r_squared ? fmt::format("{:.4f}", *r.r_squared) : "—",
                         fmt::format("{:.2f} / {:.2f}", true_pos / 1000.0, true_neg / 1000.0),
@@ -52,27 +50,36 @@ report::Table thrust_map_table(const std::vector<std::pair<std::string, core::Lo
   return t;
 }
 
-// The thrust map paragraph from the surge step logs of the campaign; empty without them.
+// The thrust map paragraph from the surge step logs of the campaign (the public request and
+// runner, with the analysis' default |n| ≥ 3 rpm); empty without them.
 std::pair<std::string, std::string> thrust_map_part(const std::filesystem::path& campaign_dir) {
-  std::vector<std::pair<std::string, core::Log>> logs;
+  std::vector<std::pair<std::string, ThrustMapReport>> maps;
   for (const char* name : {"surge-steps-forward", "surge-steps-backward"}) {
     const std::filesystem::path steps = campaign_dir / name / "log.csv";
     if (!std::filesystem::exists(steps)) continue;
-    LogSource source;
-    source.log = steps;
-    logs.emplace_back(name, source.read([](const std::string& role) {
-      return role.rfind("rpm.", 0) == 0 || role.rfind("thrust.", 0) == 0;
-    }));
+    ThrustMapRequest request;
+    request.source.log = steps;
+    maps.emplace_back(name, run_thrust_map(request));
   }
-  if (logs.empty()) return {};
+  if (maps.empty()) return {};
   const scenario::VesselConfig vessel = scenario::load_vessel_config(vessel_file_or_default());
-  const report::Table map = thrust_map_table(logs, vessel);
+  const report::Table map = thrust_map_table(maps, vessel);
   const std::string text =
       "Thrust map T = c·n|n| (3.17) back-calculated from the surge step logs (logged thrust "
       "and shaft speed, |n| ≥ 0.05 rps; c+ from the forward steps, c- from the backward ones), "
       "against the vessel file (c = ρK_T·D⁴) and the thesis' table 3.2 (kN/rps²).";
   return {"\n" + text + "\n\n" + report::render_markdown(map),
           "<p>" + text + "</p>\n" + report::render_html(map)};
+}
+
+// The current of the run as an operator reads it off the DP display: the scenario's, from the
+// run's truth.json; none without it or without a current.
+std::optional<ObservedCurrent> observed_current(const std::filesystem::path& run_dir) {
+  const std::filesystem::path file = run_dir / "truth.json";
+  if (!std::filesystem::exists(file)) return std::nullopt;
+  const scenario::EnvironmentSpec& env = scenario::read_trial_truth(file).scenario.environment;
+  if (!(env.current_speed_mps > 0.0)) return std::nullopt;
+  return ObservedCurrent{env.current_speed_mps, env.current_to_deg};
 }
 
 }  // namespace
@@ -82,7 +89,7 @@ ReportSection agility_demo_section(const std::filesystem::path& campaign_dir) {
   if (!std::filesystem::exists(log)) return {};
   AgilityRequest request;
   request.source.log = log;
-  request.current = ObservedCurrent{0.2, 318.0};  // the scenario's, as an operator reads it off
+  request.current = observed_current(campaign_dir / "agility");
   const AgilityReport report = run_agility(request);
   nlohmann::json doc = to_json(report);
   doc["log"] = "agility/log.csv";  // relative, so the report is relocatable

@@ -182,4 +182,14 @@ void write_plot(const AgilityReport& report, const std::filesystem::path& svg,
   report::write_polar_svg(svg, f);
 }
 
+Written write_outputs(const AgilityReport& report, const Outputs& outputs) {
+  Written written;
+  if (!outputs.figures.empty()) {
+    write_plot(report, outputs.figures);
+    written.push_back(outputs.figures);
+  }
+  write_json_output(outputs, to_json(report), written);
+  return written;
+}
+
 }  // namespace dynpos::analysis

@@ -190,6 +190,7 @@ void cut_to_window(const LogSource& source, LoadedLog& loaded) {
   const double from = source.window_from_s.value_or(first);
   const double to = source.window_to_s.value_or(last);
   if (from <= first && to >= last) return;
+  if (from > last || to < first) throw window_without_rows(source, first, last);
   core::Log cut = loaded.log.window(from, to);
   if (cut.empty()) throw window_without_rows(source, first, last);
   loaded.log = std::move(cut);

@@ -49,7 +49,7 @@ void measure_steps(const std::filesystem::path& log, const std::string& input,
   q.source.log = log;
   q.source.columns = {"input=" + input, "output=" + output};
   q.source.jobs = 1;
-  q.method = "smith";
+  q.method = StepMethod::kSmith;
   StepReport report;
   try {
     report = run_step(q);

@@ -15,14 +15,14 @@
 #include "dynpos/ident/derived_signals.hpp"
 #include "dynpos/ident/fopdt_fit.hpp"
 #include "dynpos/ident/second_order_fit.hpp"
-#include "dynpos/io/column_map.hpp"
-#include "dynpos/io/csv_reader.hpp"
 #include "dynpos/io/segments.hpp"
 
 namespace dynpos::analysis {
 namespace {
 
-bool is_second_order(const std::string& method) { return method == "smith2" || method == "rk"; }
+bool is_second_order(StepMethod method) {
+  return method == StepMethod::kSmithSecondOrder || method == StepMethod::kRangaiahKrishnaswamy;
+}
 
 // The log's channels the step analysis needs, in SI.
 // Views into the loaded log (no copy of a day-long log), or into `derived` for the total speed.
@@ -36,57 +36,13 @@ struct StepSignals {
   io::InputReport read;  // what was read
 };
 
-// A window with no row of the log, whose first row is at first_s and whose last row read is at
-// last_s (reading stops at the first row after the window): the error step_from_window() gives
-// for a window outside the log.
-core::InputError window_without_rows(const StepRequest& request, double first_s, double last_s) {
-  const double from = request.from_s.value_or(first_s), to = request.to_s.value_or(last_s);
-  const std::string window = fmt::format("window [{:g}, {:g}] s", from, to);
-  const core::InputLocation where{"", {}, {}, "input"};
-  if (to < first_s) {
-    return core::InputError(where,
-                            fmt::format("{} ends before the log starts ({:g} s)", window, first_s),
-                            "choose a window inside the logged time");
-  }
-  if (from > last_s) {
-    return core::InputError(
-        where, fmt::format("{} is outside the log [{:g}, {:g}] s", window, first_s, last_s),
-        "choose a window inside the logged time");
-  }
-  return core::InputError(where, window + " holds no sample of the log", "choose a wider window");
-}
-
-// The log, with --from/--to only the rows inside them (finding M2 of the reliability review:
-// a window bounds what is read; the step threshold is then the window's). A CSV log is read
-// within the window; a log read whole (an NMEA capture) is cut to it.
-LoadedLog load_window(const StepRequest& request, const RoleFilter& wanted) {
+StepSignals read_signals(const StepRequest& request) {
+  // The window is the source's: only its rows are read (the step threshold is then the
+  // window's), and LogSource::load judges it.
   LogSource src = request.source;
-  const bool reversed = request.from_s && request.to_s && !(*request.from_s < *request.to_s);
-  if (!(request.from_s || request.to_s) || reversed)
-    return src.load(wanted);  // reversed: step_from_window() says so
   src.window_from_s = request.from_s;
   src.window_to_s = request.to_s;
-  LoadedLog loaded;
-  try {
-    loaded = src.load(wanted);
-  } catch (const io::EmptyWindowError& e) {
-    throw window_without_rows(request, e.first_row_s, e.last_row_read_s);
-  }
-  const std::vector<double>& t = loaded.log.time();
-  if (!t.empty() && (request.from_s.value_or(t.front()) > t.front() ||
-                     request.to_s.value_or(t.back()) < t.back())) {
-    const double first = t.front(), last = t.back();
-    const double from = request.from_s.value_or(first), to = request.to_s.value_or(last);
-    if (from > last || to < first) throw window_without_rows(request, first, last);
-    loaded.log = loaded.log.window(from, to);
-    if (loaded.log.empty()) throw window_without_rows(request, first, last);
-  }
-  return loaded;
-}
-
-StepSignals read_signals(const StepRequest& request) {
-  const LogSource& src = request.source;
-  const bool total_speed = request.derive == "total-speed";
+  const bool total_speed = request.derive == StepDerive::kTotalSpeed;
   // Only the step roles are picked up by name: u and v for the total speed (3.19), else the
   // input, output and trigger the user mapped.
   const RoleFilter wanted = [total_speed](const std::string& role) {
@@ -97,15 +53,15 @@ StepSignals read_signals(const StepRequest& request) {
                        "map the measured response, e.g. --col output=rpm.stb, or use "
                        "--derive total-speed with u and v");
   }
-  LoadedLog loaded = load_window(request, wanted);
+  LoadedLog loaded = src.load(wanted);
   StepSignals s;
   s.log = std::move(loaded.log);
   s.log_start_s = loaded.log_start_s;
   s.log_end_s = loaded.log_end_s;
   const core::Log& log = s.log;
   if (total_speed && !(log.has("u") && log.has("v"))) {
-    throw core::InputError({src.log.string(), {}, {}, "u, v"}, "no surge and sway speed columns",
-                           "map them, e.g. --col u=SOG_surge --col v=SOG_sway");
+    throw src.error("u, v", "no surge and sway speed columns",
+                    "map them, e.g. --col u=SOG_surge --col v=SOG_sway");
   }
   s.read = std::move(loaded.input);
   s.t = log.time();
@@ -226,9 +182,10 @@ std::vector<FoundStep> find_steps(const StepRequest& request, const StepSignals&
 }
 
 // FOPDT (3.7) by least squares or Smith's two-point method (3.8)-(3.9).
-StepFit fit_first_order(const std::string& method, const StepSignals& s, const ident::Step& step) {
+StepFit fit_first_order(StepMethod method, const StepSignals& s, const ident::Step& step) {
   ident::FopdtFitOptions f;
-  f.method = method == "smith" ? ident::FopdtMethod::kSmith : ident::FopdtMethod::kLeastSquares;
+  f.method =
+      method == StepMethod::kSmith ? ident::FopdtMethod::kSmith : ident::FopdtMethod::kLeastSquares;
   const ident::FopdtFitResult r = ident::fit_fopdt(s.t, s.output, step, f);
   StepFit out;
   out.step = step;
@@ -250,10 +207,11 @@ StepFit fit_first_order(const std::string& method, const StepSignals& s, const i
 }
 
 // Second order plus dead time by Smith's 20/60 % or Rangaiah-Krishnaswamy's 14/55/91 % points.
-StepFit fit_second_order(const std::string& method, const StepSignals& s, const ident::Step& step) {
+StepFit fit_second_order(StepMethod method, const StepSignals& s, const ident::Step& step) {
   ident::SecondOrderFitOptions f;
-  f.method = method == "smith2" ? ident::SecondOrderMethod::kSmith
-                                : ident::SecondOrderMethod::kRangaiahKrishnaswamy;
+  f.method = method == StepMethod::kSmithSecondOrder
+                 ? ident::SecondOrderMethod::kSmith
+                 : ident::SecondOrderMethod::kRangaiahKrishnaswamy;
   const ident::SecondOrderFitResult r = ident::fit_second_order(s.t, s.output, step, f);
   StepFit out;
   out.step = step;
@@ -272,15 +230,33 @@ StepFit fit_second_order(const std::string& method, const StepSignals& s, const 
 
 }  // namespace
 
+const std::vector<std::pair<std::string, StepMethod>>& step_method_names() {
+  static const std::vector<std::pair<std::string, StepMethod>> names = {
+      {"lsq", StepMethod::kLeastSquares},
+      {"smith", StepMethod::kSmith},
+      {"smith2", StepMethod::kSmithSecondOrder},
+      {"rk", StepMethod::kRangaiahKrishnaswamy}};
+  return names;
+}
+
+const std::vector<std::pair<std::string, StepDerive>>& step_derive_names() {
+  static const std::vector<std::pair<std::string, StepDerive>> names = {
+      {"", StepDerive::kNone}, {"total-speed", StepDerive::kTotalSpeed}};
+  return names;
+}
+
+std::string to_string(StepMethod method) {
+  for (const auto& [name, m] : step_method_names()) {
+    if (m == method) return name;
+  }
+  return "lsq";
+}
+
+std::string to_string(StepDerive derive) {
+  return derive == StepDerive::kTotalSpeed ? "total-speed" : "";
+}
+
 void StepRequest::validate() const {
-  if (!is_second_order(method) && method != "lsq" && method != "smith") {
-    throw option_error("method", "unknown method '" + method + "'",
-                       "choose lsq (default), smith, smith2 or rk");
-  }
-  if (!derive.empty() && derive != "total-speed") {
-    throw option_error("derive", "unknown derived output '" + derive + "'",
-                       "the one derived output is total-speed, √(u² + v²) (3.19)");
-  }
   if (!std::isfinite(min_step) || min_step < 0.0) {
     throw option_error("min_step", fmt::format("the smallest step must be ≥ 0, got {}", min_step),
                        "give it in the input's SI unit, or 0 to adapt it to the log");
@@ -356,127 +332,11 @@ StepReport run_step_on_log(const StepRequest& request) {
 
 StepReport run_step(const StepRequest& request) {
   request.validate();
-  const std::string log = request.source.log.string();
   try {
     return run_step_on_log(request);
   } catch (const core::InputError& e) {
-    // Errors from inside the analysis name a channel or an option, not the file: add the log.
-    if (!e.where().file.empty()) throw;
-    if (!e.option().empty())
-      throw core::InputError::for_option(e.option(), e.problem(), e.hint(), log);
-    core::InputLocation where = e.where();
-    where.file = log;
-    throw core::InputError(where, e.problem(), e.hint());
+    throw request.source.in_log(e);  // errors from inside name a channel or an option
   }
-}
-
-nlohmann::json to_json(const StepReport& report) {
-  nlohmann::json doc;
-  doc["log"] = report.log.string();
-  doc["input"] = io::to_json(report.input);
-  doc["method"] = report.method;
-  doc["output_unit"] = report.output_unit;
-  doc["input_unit"] =
-      report.input_unit ? nlohmann::json(*report.input_unit) : nlohmann::json(nullptr);
-  doc["timing"] = std::string(timing_name(report.timing));
-  doc["step_threshold"] = number_json(report.step_threshold);
-  doc["step_threshold_source"] = report.threshold_from_min_step ? "min_step" : "auto";
-  doc["input_noise_sigma"] = number_json(report.input_noise_sigma);
-  if (!report.segments_file.empty()) doc["segments"] = report.segments_file.string();
-  doc["notes"] = report.notes;
-  doc["steps"] = nlohmann::json::array();
-  for (const StepFit& fit : report.steps) {
-    nlohmann::json j;
-    j["t_step"] = fit.step.t_step;
-    j["t_end"] = fit.step.t_end;
-    if (!report.segments_file.empty()) j["segment"] = fit.segment;
-    j["u_before"] = number_json(fit.step.u_before);
-    j["u_after"] = number_json(fit.step.u_after);
-    if (fit.fopdt) {
-      const FopdtFitDetails& d = *fit.fopdt;
-      j["sigma"] = {{"K", number_json(d.gain_sigma)},
-                    {"T", number_json(d.time_constant_sigma_s)},
-                    {"delay", number_json(d.dead_time_sigma_s)}};
-      j["K_levels"] = number_json(d.gain_from_levels);
-      j["rms_residual"] = number_json(d.rms_residual);
-    }
-    if (fit.second_order) {
-      j["T1"] = number_json(fit.second_order->time_constant_1_s);
-      j["T2"] = number_json(fit.second_order->time_constant_2_s);
-      j["damping_ratio"] = number_json(fit.second_order->damping_ratio);
-    }
-    j["y_before"] = number_json(fit.y_before);
-    j["y_after"] = number_json(fit.y_after);
-    j["K"] = number_json(fit.gain);
-    j["T"] = number_json(fit.time_constant_s);
-    j["delay"] = number_json(fit.dead_time_s);
-    j["r_squared"] = number_json(fit.r_squared);
-    j["status"] = std::string(ident::fit_status_name(fit.status));
-    if (!fit.message.empty()) j["message"] = fit.message;
-    j["warnings"] = warnings_json(fit.warnings);
-    doc["steps"].push_back(j);
-  }
-  return doc;
-}
-
-namespace {
-
-// Why the table is empty, and what to try: no step is a result (exit 0), said in words.
-std::string no_step_text(const StepReport& report) {
-  const std::string reason =
-      report.notes.size() == 1 ? report.notes.front()
-      : !report.notes.empty()  ? "see the notes above"
-      : report.step_threshold
-          ? fmt::format("none of the input's changes reaches the step threshold {:.4g}",
-                        *report.step_threshold)
-          : "no change of the input is a step";
-  return fmt::format(
-      "no step found: {}; lower --min-step, or give the step with --from/--to/--step-at\n", reason);
-}
-
-}  // namespace
-
-std::string to_text(const StepReport& report) {
-  std::string text = fmt::format(
-      "{}: {} step(s), method {}, output in {} (SI), input in {}\n", report.log.string(),
-      report.steps.size(), report.method, report.output_unit.empty() ? "1" : report.output_unit,
-      report.input_unit ? (report.input_unit->empty() ? std::string("1") : *report.input_unit)
-                        : std::string("—"));
-  if (report.step_threshold) {
-    text += fmt::format("step threshold {:.4g} ({}), input noise σ̂ {}\n", *report.step_threshold,
-                        report.threshold_from_min_step ? "--min-step" : "adapted to the log",
-                        number_cell(report.input_noise_sigma, "{:.3g}"));
-  }
-  if (!report.segments_file.empty())
-    text += "segments from " + report.segments_file.string() + "\n";
-  for (const std::string& note : report.notes) text += "note: " + note + "\n";
-  if (report.steps.empty()) {
-    text += no_step_text(report);
-    return text + io::to_text(report.input);
-  }
-  const bool segments = !report.segments_file.empty();
-  text += fmt::format("{}{:>9} {:>21} {:>11} {:>11} {:>9} {:>9} {:>9} {:>7}  {}\n",
-                      segments ? fmt::format("{:<16} ", "segment") : "", "t_step", "input",
-                      "y before", "y after", "K", "T [s]", "δ [s]", "R²", "notes");
-  for (const StepFit& fit : report.steps) {
-    const std::string status(ident::fit_status_name(fit.status));
-    std::string notes;
-    for (const ident::FitWarning& w : fit.warnings) {
-      notes += (notes.empty() ? "" : ", ") + std::string(ident::warning_code_name(w.code));
-    }
-    // A step that is not ok says why: its status, the reason, then the warnings.
-    if (status != "ok") {
-      notes = status + ": " + fit.message + (notes.empty() ? "" : " [" + notes + "]");
-    }
-    text += fmt::format(
-        "{}{:>9.2f} {:>21} {:>11} {:>11} {:>9} {:>9} {:>9} {:>7}  {}\n",
-        segments ? fmt::format("{:<16} ", fit.segment) : "", fit.step.t_step,
-        number_cell(fit.step.u_before, "{:.4g}") + " → " + number_cell(fit.step.u_after, "{:.4g}"),
-        number_cell(fit.y_before, "{:.4g}"), number_cell(fit.y_after, "{:.4g}"),
-        number_cell(fit.gain, "{:.4g}"), number_cell(fit.time_constant_s, "{:.2f}"),
-        number_cell(fit.dead_time_s, "{:.2f}"), number_cell(fit.r_squared, "{:.3f}"), notes);
-  }
-  return text + io::to_text(report.input);
 }
 
 }  // namespace dynpos::analysis

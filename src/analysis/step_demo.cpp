@@ -13,10 +13,10 @@
 
 #include "dynpos/analysis/demo_sections.hpp"
 #include "dynpos/analysis/json_fields.hpp"
+#include "dynpos/analysis/step.hpp"
 #include "dynpos/core/log.hpp"
 #include "dynpos/ident/derived_signals.hpp"
 #include "dynpos/ident/fopdt_fit.hpp"
-#include "dynpos/ident/step_detector.hpp"
 #include "dynpos/io/column_map.hpp"
 #include "dynpos/io/csv_reader.hpp"
 #include "dynpos/io/json_writer.hpp"
@@ -127,7 +127,7 @@ struct StepDemoOutcome {
   double worst_error_pct = 0.0;
 };
 
-// The logged response of a test: time, y and their units.
+// The logged response of a test, for the plot: time, y and their units.
 struct StepDemoSignals {
   std::vector<double> t, u, y;
   std::string u_unit, y_unit;
@@ -170,16 +170,38 @@ void write_step_demo_plot(const std::filesystem::path& file, const StepDemoTest&
   report::write_svg(file, fig);
 }
 
+// The public request of a test: the command and the response (or u and v) of the run's log,
+// fitted by Smith's two-point method (3.8)-(3.9), the method that defines truth.json's time
+// constants; the steps found with the analysis' defaults.
+StepRequest demo_request(const std::filesystem::path& run_dir, const StepDemoTest& test) {
+  StepRequest request;
+  request.source.log = run_dir / "log.csv";
+  request.source.columns = {std::string("input=") + test.input};
+  if (test.total_speed) {
+    request.derive = StepDerive::kTotalSpeed;
+  } else {
+    request.source.columns.push_back(std::string("output=") + test.output);
+  }
+  request.method = StepMethod::kSmith;
+  return request;
+}
+
+// The fitted FOPDT (3.7) of a step, when the fit gave every parameter.
+std::optional<ident::FopdtModel> fitted_model(const StepFit& fit) {
+  if (fit.status == core::Status::kFailed || !fit.y_before || !fit.y_after ||
+      !fit.time_constant_s || !fit.dead_time_s) {
+    return std::nullopt;
+  }
+  return ident::FopdtModel{fit.step.t_step, *fit.y_before, *fit.y_after - *fit.y_before,
+                           *fit.time_constant_s, *fit.dead_time_s};
+}
+
 StepDemoOutcome run_step_demo_test(const std::filesystem::path& campaign_dir,
                                    const StepDemoTest& test, const std::filesystem::path& out_dir) {
   const std::filesystem::path run_dir = campaign_dir / test.scenario;
+  const StepReport report = run_step(demo_request(run_dir, test));
   const StepDemoSignals s = read_demo_signals(run_dir, test);
   const std::vector<TruthStep> truth = read_truth_steps(run_dir, test.truth);
-
-  // Smith's two-point method (3.8)-(3.9): the method that defines truth.json's time constants.
-  ident::FopdtFitOptions f;
-  f.method = ident::FopdtMethod::kSmith;
-  const std::vector<ident::Step> steps = ident::detect_steps(s.t, s.u).steps;
 
   const auto in_logger_unit = [&test](const std::optional<double>& v) {
     return v ? std::optional<double>(*v * test.input_scale) : std::nullopt;
@@ -191,20 +213,11 @@ StepDemoOutcome run_step_demo_test(const std::filesystem::path& campaign_dir,
                       "δ truth [s]", "T error [%]",
                       "status"};
   out.table.first_numeric_column = 0;
-  nlohmann::json doc;
-  doc["analysis"] = "step";
-  doc["log"] = std::string(test.scenario) + "/log.csv";  // relative: the report is relocatable
-  doc["method"] = "smith";
-  doc["quantity"] = test.quantity;
-  doc["output_unit"] = s.y_unit;
-  doc["input_unit"] = s.u_unit;
-  doc["thesis"] = test.thesis;
-  doc["steps"] = nlohmann::json::array();
   std::vector<double> fit_t, fit_y, markers;
-  for (const ident::Step& step : steps) {
-    const ident::FopdtFitResult r = ident::fit_fopdt(s.t, s.y, step, f);
+  for (const StepFit& fit : report.steps) {
+    const ident::Step& step = fit.step;
     const TruthStep tv = truth_for(truth, test, step.t_step);
-    const std::optional<double> T = value_of(r.time_constant), delay = value_of(r.dead_time);
+    const std::optional<double> T = fit.time_constant_s, delay = fit.dead_time_s;
     std::optional<double> err;
     if (T && tv.T_s && *tv.T_s > 0.0) {
       err = 100.0 * (*T - *tv.T_s) / *tv.T_s;
@@ -212,33 +225,20 @@ StepDemoOutcome run_step_demo_test(const std::filesystem::path& campaign_dir,
       ++out.with_truth;
     }
     ++out.steps;
-    std::string notes(ident::fit_status_name(r.status));
-    for (const ident::FitWarning& w : r.warnings) {
+    std::string notes(ident::fit_status_name(fit.status));
+    for (const ident::FitWarning& w : fit.warnings) {
       notes += (notes.empty() ? "" : ", ") + std::string(ident::warning_code_name(w.code));
     }
-    nlohmann::json j;
-    j["t_step"] = step.t_step;
-    j["u_before"] = number_json(step.u_before);
-    j["u_after"] = number_json(step.u_after);
-    j["T"] = number_json(T);
-    j["delay"] = number_json(delay);
-    j["K"] = r.gain ? nlohmann::json(r.gain->value) : nlohmann::json(nullptr);
-    j["r_squared"] = number_json(r.r_squared);
-    j["status"] = std::string(ident::fit_status_name(r.status));
-    j["warnings"] = warnings_json(r.warnings);
-    j["truth"] = {{"T", number_json(tv.T_s)}, {"delay", number_json(tv.delay_s)}};
-    j["T_error_pct"] = number_json(err);
-    doc["steps"].push_back(j);
     out.table.rows.push_back({fmt::format("{:.1f}", step.t_step),
                               number_cell(in_logger_unit(step.u_before), "{:.4g}") + " → " +
                                   number_cell(in_logger_unit(step.u_after), "{:.4g}"),
                               number_cell(T, "{:.2f}"), number_cell(delay, "{:.2f}"),
-                              number_cell(r.r_squared, "{:.3f}"), number_cell(tv.T_s, "{:.2f}"),
+                              number_cell(fit.r_squared, "{:.3f}"), number_cell(tv.T_s, "{:.2f}"),
                               number_cell(tv.delay_s, "{:.2f}"), number_cell(err, "{:+.1f}"),
                               notes});
     // The fitted FOPDT (3.7) over the step's window, for the plot; gaps between steps.
     markers.push_back(step.t_step);
-    if (const auto model = r.model()) {
+    if (const auto model = fitted_model(fit)) {
       for (std::size_t i = 0; i < s.t.size(); ++i) {
         if (s.t[i] < step.t_begin || s.t[i] > step.t_end) continue;
         fit_t.push_back(s.t[i]);
@@ -248,6 +248,11 @@ StepDemoOutcome run_step_demo_test(const std::filesystem::path& campaign_dir,
       fit_y.push_back(std::nan(""));
     }
   }
+  // The analysis' own document, as `identify step --json` writes it; paths relative to the
+  // report, so that it is relocatable.
+  nlohmann::json doc = to_json(report);
+  doc["log"] = std::string(test.scenario) + "/log.csv";
+  doc["input"] = io::to_json(relative_to(report.input, campaign_dir));
   io::write_json((out_dir / (std::string(test.id) + ".json")).string(), doc);
   out.plot = std::string(test.id) + ".svg";
   write_step_demo_plot(out_dir / out.plot, test, s, fit_t, fit_y, markers);

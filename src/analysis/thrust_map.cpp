@@ -49,10 +49,10 @@ std::vector<ThrusterMapFit> fit_maps(const ThrustMapRequest& request, const core
     fits.push_back(std::move(fit));
   }
   if (fits.empty()) {
-    throw core::InputError({request.source.log.string(), {}, {}, "thrust.NAME"},
-                           "no thruster with both shaft speed and thrust in the log",
-                           "map them per thruster, e.g. --col rpm.port=RPM_P --col "
-                           "thrust.port=THRUST_P (a dynpos log names them so already)");
+    throw request.source.error("thrust.NAME",
+                               "no thruster with both shaft speed and thrust in the log",
+                               "map them per thruster, e.g. --col rpm.port=RPM_P --col "
+                               "thrust.port=THRUST_P (a dynpos log names them so already)");
   }
   return fits;
 }
@@ -61,13 +61,13 @@ AppliedThrust apply_maps(const ThrustMapRequest& request, const core::Log& log) 
   const scenario::VesselConfig vessel =
       scenario::load_vessel_config(vessel_file_or_default(request.vessel));
   const auto maps = vessel_maps(vessel);
-  AppliedThrust out{core::Log(log.time()), 0, vessel.source, request.abs_speed};
+  AppliedThrust out{core::Log(log.time()), 0, vessel.source, request.abs_speed, request.out};
   for (const std::string& name : thruster_names(log, "rpm")) {
     const auto it = maps.find(name);
     if (it == maps.end()) {
-      throw core::InputError({request.source.log.string(), {}, {}, "rpm." + name},
-                             "no thrust map for thruster '" + name + "' in the vessel file",
-                             "the vessel file has port, stb (main propellers) and tunnel");
+      throw request.source.error("rpm." + name,
+                                 "no thrust map for thruster '" + name + "' in the vessel file",
+                                 "the vessel file has port, stb (main propellers) and tunnel");
     }
     const std::vector<double>& n = log.values("rpm." + name);
     std::vector<double> thrust_kN =
@@ -81,18 +81,10 @@ AppliedThrust apply_maps(const ThrustMapRequest& request, const core::Log& log) 
     ++out.thrusters;
   }
   if (out.thrusters == 0) {
-    throw core::InputError({request.source.log.string(), {}, {}, "rpm.NAME"},
-                           "no shaft speed column in the log",
-                           "map one per thruster, e.g. --col rpm.port=RPM_P");
+    throw request.source.error("rpm.NAME", "no shaft speed column in the log",
+                               "map one per thruster, e.g. --col rpm.port=RPM_P");
   }
   return out;
-}
-
-// A coefficient in kN/rps² with its 1σ, as the table shows it.
-std::string kn_cell(const std::optional<ident::Estimate>& e) {
-  if (!e) return "—";
-  return e->sigma ? fmt::format("{:.3f} ± {:.3f}", e->value / 1000.0, *e->sigma / 1000.0)
-                  : fmt::format("{:.3f}", e->value / 1000.0);
 }
 
 }  // namespace
@@ -101,6 +93,10 @@ void ThrustMapRequest::validate() const {
   if (min_speed_rpm < 0.0) {
     throw option_error("min_speed", fmt::format("{} rpm is negative", min_speed_rpm),
                        "give the smallest |n| to fit, ≥ 0 rpm");
+  }
+  if (apply && out.empty()) {
+    throw option_error("out", "--apply needs --out FILE.csv",
+                       "name the CSV to write the computed thrust into");
   }
 }
 
@@ -117,53 +113,6 @@ ThrustMapReport run_thrust_map(const ThrustMapRequest& request) {
     report.thrusters = fit_maps(request, loaded.log);
   }
   return report;
-}
-
-nlohmann::json to_json(const ThrustMapReport& report) {
-  nlohmann::json doc;
-  doc["analysis"] = "thrust-map";
-  doc["log"] = report.log.string();
-  doc["input"] = io::to_json(report.input);
-  doc["unit"] = "N/rps^2";
-  doc["thrusters"] = nlohmann::json::array();
-  for (const ThrusterMapFit& t : report.thrusters) {
-    const ident::ThrustMapFitResult& r = t.fit;
-    doc["thrusters"].push_back(
-        {{"name", t.name},
-         {"c_pos", number_json(value_of(r.c_forward))},
-         {"c_neg", number_json(value_of(r.c_reverse))},
-         {"sigma", {{"c_pos", sigma_json(r.c_forward)}, {"c_neg", sigma_json(r.c_reverse)}}},
-         {"c_mean", number_json(t.c_mean)},
-         {"n_samples", {{"pos", r.samples_forward}, {"neg", r.samples_reverse}}},
-         {"r_squared", number_json(r.r_squared)},
-         {"status", std::string(ident::fit_status_name(r.status))},
-         {"message", r.message}});
-  }
-  return doc;
-}
-
-std::string to_text(const ThrustMapReport& report, const std::filesystem::path& csv_out) {
-  if (report.applied) {
-    const AppliedThrust& a = *report.applied;
-    return fmt::format(
-        "{}: thrust of {} thruster(s) from {} ({}) into {}\n", report.log.string(), a.thrusters,
-        a.vessel_source.empty() ? std::string("the built-in vessel") : a.vessel_source,
-        a.abs_speed ? "|n| only: mean coefficient (3.18)" : "signed n: c+ / c- (3.17)",
-        csv_out.string());
-  }
-  std::string text = fmt::format("{}: thrust map T = c·n|n| (3.17), |n| ≥ {} rpm, ±1σ\n",
-                                 report.log.string(), report.min_speed_rpm);
-  text += fmt::format("{:<10} {:>20} {:>20} {:>9} {:>8} {:>8} {:>7}\n", "thruster", "c+ [kN/rps²]",
-                      "c- [kN/rps²]", "c̄", "n+", "n-", "R²");
-  for (const ThrusterMapFit& t : report.thrusters) {
-    const ident::ThrustMapFitResult& r = t.fit;
-    text +=
-        fmt::format("{:<10} {:>20} {:>20} {:>9} {:>8} {:>8} {:>7}\n", t.name, kn_cell(r.c_forward),
-                    kn_cell(r.c_reverse),
-                    t.c_mean ? fmt::format("{:.3f}", *t.c_mean / 1000.0) : "—", r.samples_forward,
-                    r.samples_reverse, r.r_squared ? fmt::format("{:.4f}", *r.r_squared) : "—");
-  }
-  return text + io::to_text(report.input);
 }
 
 }  // namespace dynpos::analysis

@@ -368,22 +368,23 @@ AgilityResult analyse_agility(std::span<const double> t, std::span<const Agility
   if (t.empty()) throw core::InputError({"", {}, {}, "time"}, "the log is empty", "");
   std::vector<AgilityStep> steps;
   for (const AgilityWindow& w : windows) {
-    const std::string where = "window at t = " + fmt(w.t_step) + " s";
+    // The windows are the request's option "window": errors name it, and the window by its time.
+    const std::string where = "window at t = " + fmt(w.t_step) + " s: ";
     if (!(std::isfinite(w.t_step) && std::isfinite(w.t_end) && w.t_end > w.t_step)) {
-      throw core::InputError({"", {}, {}, where},
-                             "window end " + fmt(w.t_end) + " s is not after the step",
-                             "give t_step < t_end");
+      throw core::InputError::for_option(
+          "window", where + "window end " + fmt(w.t_end) + " s is not after the step",
+          "give t_step < t_end");
     }
     if (w.t_step <= t.front() || w.t_end > t.back()) {
-      throw core::InputError({"", {}, {}, where},
-                             "window [" + fmt(w.t_step) + ", " + fmt(w.t_end) +
-                                 "] s is not inside the log (" + fmt(t.front()) + " to " +
-                                 fmt(t.back()) + " s)",
-                             "the step needs samples before it; check the times");
+      throw core::InputError::for_option("window",
+                                         where + "window [" + fmt(w.t_step) + ", " + fmt(w.t_end) +
+                                             "] s is not inside the log (" + fmt(t.front()) +
+                                             " to " + fmt(t.back()) + " s)",
+                                         "the step needs samples before it; check the times");
     }
     if (!std::isfinite(w.direction_deg) || !std::isfinite(w.magnitude_pct)) {
-      throw core::InputError({"", {}, {}, where}, "direction or magnitude is not a number",
-                             "give the commanded direction [deg] and thrust [%]");
+      throw core::InputError::for_option("window", where + "direction or magnitude is not a number",
+                                         "give the commanded direction [deg] and thrust [%]");
     }
     AgilityStep s;
     s.direction_deg = wrap_deg(w.direction_deg);

@@ -424,15 +424,15 @@ Step step_from_window(std::span<const double> t, std::span<const double> u,
   window_text += fmt(window.t_to);
   window_text += "] s";
   if (!(window.t_from < window.t_to)) {
-    throw core::InputError(where, "window " + window_text + " is empty or reversed",
-                           "give from < to");
+    throw core::InputError::for_option("from/to", "window " + window_text + " is empty or reversed",
+                                       "give from < to");
   }
   const double slack = detail::time_rounding_slack_s(log_start, log_end);
   if (window.t_from < log_start - slack || window.t_to > log_end + slack) {
-    throw core::InputError(where,
-                           "window " + window_text + " is outside the log [" + fmt(log_start) +
-                               ", " + fmt(log_end) + "] s",
-                           "choose a window inside the logged time");
+    throw core::InputError::for_option("from/to",
+                                       "window " + window_text + " is outside the log [" +
+                                           fmt(log_start) + ", " + fmt(log_end) + "] s",
+                                       "choose a window inside the logged time");
   }
   if (t.empty()) {
     throw core::InputError(where, "window " + window_text + " holds no sample of the log",
@@ -446,9 +446,9 @@ Step step_from_window(std::span<const double> t, std::span<const double> u,
   if (window.t_step) {
     const double ts = *window.t_step;
     if (!(ts >= window.t_from && ts < window.t_to)) {
-      throw core::InputError(where,
-                             "step time " + fmt(ts) + " s is not inside the window " + window_text,
-                             "give a step time in [from, to)");
+      throw core::InputError::for_option(
+          "step_at", "step time " + fmt(ts) + " s is not inside the window " + window_text,
+          "give a step time in [from, to)");
     }
     Step step;
     step.t_step = ts;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -79,7 +80,7 @@ TEST(AgilityAnalysis, TimesEachThrusterOnEachStepOfTheDemands) {
 
 TEST(AgilityAnalysis, AnExplicitWindowGivesTheSameTimeAsTheDemands) {
   AgilityRequest request = request_for(write_log("window.csv"));
-  request.windows = {parse_agility_window("20,69.9,0,50,0")};
+  request.windows = {ident::AgilityWindow{20.0, 69.9, 0.0, 50.0, 0.0}};
   const AgilityReport report = run_agility(request);
   ASSERT_EQ(report.result.steps.size(), 1u);
   ASSERT_TRUE(report.result.steps[0].thrusters[0].response_s);
@@ -87,25 +88,8 @@ TEST(AgilityAnalysis, AnExplicitWindowGivesTheSameTimeAsTheDemands) {
   EXPECT_EQ(report.cases[0].label, "50 % thrust, no yaw");
 }
 
-TEST(AgilityAnalysis, ParsesWindowsAndCurrents) {
-  const ident::AgilityWindow w = parse_agility_window("10,40,90");
-  EXPECT_EQ(w.t_step, 10.0);
-  EXPECT_EQ(w.t_end, 40.0);
-  EXPECT_EQ(w.direction_deg, 90.0);
-  EXPECT_EQ(w.magnitude_pct, 100.0);  // full thrust when not given
-  EXPECT_FALSE(w.yaw_pct);
-  EXPECT_EQ(*parse_agility_window("10,40,90,50,20").yaw_pct, 20.0);
-  const ObservedCurrent c = parse_observed_current("0.2,318");
-  EXPECT_EQ(c.speed_mps, 0.2);
-  EXPECT_EQ(c.to_deg, 318.0);
-}
-
 TEST(AgilityAnalysis, BadOptionsNameTheirKey) {
   const auto key_of = [](const auto& f) { return testing::option_key_of(f); };
-  EXPECT_EQ(key_of([] { parse_agility_window("10,20"); }), "window");
-  EXPECT_EQ(key_of([] { parse_agility_window("10,x,90"); }), "window");
-  EXPECT_EQ(key_of([] { parse_observed_current("0.2"); }), "current");
-  EXPECT_EQ(key_of([] { parse_observed_current("-0.2,318"); }), "current");
   AgilityRequest r;
   r.min_response_pct = 120.0;
   EXPECT_EQ(key_of([&] { r.validate(); }), "min_response");
@@ -113,18 +97,41 @@ TEST(AgilityAnalysis, BadOptionsNameTheirKey) {
   r.min_demand_pct = -1.0;
   EXPECT_EQ(key_of([&] { r.validate(); }), "min_demand");
   r = {};
+  r.min_demand_pct = std::nan("");  // NaN is no demand either
+  EXPECT_EQ(key_of([&] { r.validate(); }), "min_demand");
+  r = {};
   r.current = ObservedCurrent{-1.0, 0.0};
   EXPECT_EQ(key_of([&] { r.validate(); }), "current");
   r = {};
   EXPECT_EQ(key_of([&] { r.validate(); }), "no error");
-  // A window that is not 3 to 5 numbers names the log it belongs to.
+}
+
+TEST(AgilityAnalysis, AWindowOutsideTheLogNamesTheKeyAndTheLog) {
+  const std::filesystem::path log = write_log("outside.csv");
+  AgilityRequest request = request_for(log);
+  request.windows = {ident::AgilityWindow{10.0, 5000.0, 90.0, 100.0, std::nullopt}};
   try {
-    parse_agility_window("10,20", "trial.csv");
+    run_agility(request);
     FAIL() << "no error";
   } catch (const core::InputError& e) {
-    EXPECT_EQ(e.where().file, "trial.csv");
-    EXPECT_NE(std::string(e.what()).find("needs 3 to 5 numbers, has 2"), std::string::npos);
+    EXPECT_EQ(e.option(), "window");
+    EXPECT_EQ(e.where().file, log.string());
+    EXPECT_NE(std::string(e.what()).find("is not inside the log"), std::string::npos);
   }
+}
+
+TEST(AgilityAnalysis, WriteOutputsWritesThePlotThenTheJson) {
+  const std::filesystem::path log = write_log("outputs.csv");
+  const AgilityReport report = run_agility(request_for(log));
+  Outputs outputs;
+  outputs.figures = log.parent_path() / "agility_outputs.svg";
+  outputs.json = (log.parent_path() / "agility_outputs.json").string();
+  const Written written = write_outputs(report, outputs);
+  ASSERT_EQ(written.size(), 2u);
+  EXPECT_EQ(written[0], outputs.figures);
+  EXPECT_EQ(written[1], std::filesystem::path(outputs.json));
+  EXPECT_TRUE(std::filesystem::exists(outputs.figures));
+  EXPECT_TRUE(std::filesystem::exists(outputs.json));
 }
 
 TEST(AgilityAnalysis, ErrorsInTheLogNameTheFileAndTheChannelRole) {

@@ -64,7 +64,7 @@ std::pair<std::string, std::string> option_error_of(F&& f) {
 TEST(RunStep, LeastSquaresRecoversBothStepsOfAnAnalyticLog) {
   const TempDir dir;
   const StepReport report = run_step(request_for(dir.write("steps.csv", fopdt_csv())));
-  EXPECT_EQ(report.method, "lsq");
+  EXPECT_EQ(report.method, StepMethod::kLeastSquares);
   EXPECT_EQ(report.timing, StepTimingSource::kCommand);
   EXPECT_EQ(report.output_unit, "m");
   ASSERT_TRUE(report.input_unit.has_value());
@@ -111,7 +111,7 @@ TEST(RunStep, AHugeClockOriginGivesTheSameFits) {
 TEST(RunStep, SecondOrderMethodsReportTheirOwnDetails) {
   const TempDir dir;
   StepRequest r = request_for(dir.write("steps.csv", fopdt_csv()));
-  r.method = "rk";
+  r.method = StepMethod::kRangaiahKrishnaswamy;
   const StepReport report = run_step(r);
   ASSERT_EQ(report.steps.size(), 2u);
   EXPECT_FALSE(report.steps[0].fopdt.has_value());
@@ -157,28 +157,54 @@ TEST(RunStep, AWindowIsAllThatIsRead) {
     j->erase("log");
   }
   EXPECT_EQ(a.dump(), b.dump());
-  // One end past the log: outside it, however the log was read.
+  // One end past the log: no row in the window (LogSource's one message, key "from/to"),
+  // however the log was read.
   in_memory.from_s = 500.0;
   in_memory.to_s.reset();
-  EXPECT_THAT(option_error_of([&] { run_step(in_memory); }).second,
-              HasSubstr("window [500, 70] s is outside the log [0, 70] s"));
+  auto [key, what] = option_error_of([&] { run_step(in_memory); });
+  EXPECT_EQ(key, "from/to");
+  EXPECT_THAT(what, HasSubstr("the window 500 … 70 s holds no row of the log (0 … 70 s)"));
   in_memory.from_s.reset();
   in_memory.to_s = -5.0;
-  EXPECT_THAT(option_error_of([&] { run_step(in_memory); }).second,
-              HasSubstr("window [0, -5] s ends before the log starts (0 s)"));
+  std::tie(key, what) = option_error_of([&] { run_step(in_memory); });
+  EXPECT_EQ(key, "from/to");
+  EXPECT_THAT(what, HasSubstr("the window 0 … -5 s holds no row of the log"));
   r.from_s.reset();
   r.to_s = -5.0;  // the same when the reading stops at the log's first row
-  EXPECT_THAT(option_error_of([&] { run_step(r); }).second,
-              HasSubstr("window [0, -5] s ends before the log starts (0 s)"));
-  // A window between two rows holds none; one past the end is outside the log.
+  std::tie(key, what) = option_error_of([&] { run_step(r); });
+  EXPECT_EQ(key, "from/to");
+  EXPECT_THAT(what, HasSubstr("s holds no row of the log"));
+  // A window between two rows holds none; one reaching past the end is outside the log.
   r.from_s = 30.01;
   r.to_s = 30.02;
-  EXPECT_THAT(option_error_of([&] { run_step(r); }).second,
-              HasSubstr("window [30.01, 30.02] s holds no sample of the log"));
+  std::tie(key, what) = option_error_of([&] { run_step(r); });
+  EXPECT_EQ(key, "from/to");
+  EXPECT_THAT(what, HasSubstr("the window 30.01 … 30.02 s holds no row of the log"));
   r.from_s = 65.0;
   r.to_s = 80.0;
-  EXPECT_THAT(option_error_of([&] { run_step(r); }).second,
-              HasSubstr("window [65, 80] s is outside the log [0, 70] s"));
+  std::tie(key, what) = option_error_of([&] { run_step(r); });
+  EXPECT_EQ(key, "from/to");
+  EXPECT_THAT(what, HasSubstr("window [65, 80] s is outside the log [0, 70] s"));
+}
+
+TEST(RunStep, WindowErrorsAreTheLogSourcesForEveryAnalysis) {
+  // The step analysis' window errors are LogSource::load's: the same message any windowed
+  // analysis gives for the same log and window (an empty window, one without a row).
+  const TempDir dir;
+  StepRequest r = request_for(dir.write("steps.csv", fopdt_csv()));
+  for (const auto& [from, to] : {std::pair{40.0, 30.0}, {30.01, 30.02}, {100.0, 200.0}}) {
+    r.from_s = from;
+    r.to_s = to;
+    LogSource source = r.source;
+    source.window_from_s = from;
+    source.window_to_s = to;
+    const auto step_error = option_error_of([&] { run_step(r); });
+    const auto source_error =
+        option_error_of([&] { source.load([](const std::string&) { return false; }); });
+    EXPECT_EQ(step_error.first, "from/to");
+    EXPECT_EQ(step_error, source_error);
+    EXPECT_THAT(step_error.second, HasSubstr(r.source.log.string()));
+  }
 }
 
 TEST(RunStep, TotalSpeedIsDerivedFromUAndV) {
@@ -186,7 +212,7 @@ TEST(RunStep, TotalSpeedIsDerivedFromUAndV) {
   StepRequest r;
   r.source.log = dir.write("steps.csv", fopdt_csv());
   r.source.columns = {"input=cmd"};
-  r.derive = "total-speed";
+  r.derive = StepDerive::kTotalSpeed;
   const StepReport report = run_step(r);
   EXPECT_EQ(report.output_unit, "m/s");
   ASSERT_EQ(report.steps.size(), 2u);
@@ -196,17 +222,27 @@ TEST(RunStep, TotalSpeedIsDerivedFromUAndV) {
 
 TEST(StepRequest, ValidateNamesTheBadKey) {
   StepRequest r;
-  r.method = "fast";
+  r.min_plateau_s = 0.0;
   auto [key, what] = option_error_of([&] { r.validate(); });
-  EXPECT_EQ(key, "method");
-  EXPECT_THAT(what, HasSubstr("unknown method 'fast'"));
-  r.method = "smith";
-  r.derive = "speed";
+  EXPECT_EQ(key, "min_plateau");
+  EXPECT_THAT(what, HasSubstr("the shortest plateau must be > 0 s"));
+  r.min_plateau_s = 3.0;
+  r.step_at_s = std::nan("");
   std::tie(key, what) = option_error_of([&] { r.validate(); });
-  EXPECT_EQ(key, "derive");
-  EXPECT_THAT(what, HasSubstr("unknown derived output 'speed'"));
-  r.derive = "total-speed";
+  EXPECT_EQ(key, "step_at");
+  r.step_at_s.reset();
+  r.method = StepMethod::kSmith;
+  r.derive = StepDerive::kTotalSpeed;
   EXPECT_NO_THROW(r.validate());
+}
+
+TEST(StepRequest, MethodsAndDerivedOutputsHaveTheirNames) {
+  for (const auto& [name, method] : step_method_names()) EXPECT_EQ(to_string(method), name);
+  EXPECT_EQ(to_string(StepMethod::kLeastSquares), "lsq");
+  EXPECT_EQ(to_string(StepMethod::kRangaiahKrishnaswamy), "rk");
+  EXPECT_EQ(to_string(StepDerive::kTotalSpeed), "total-speed");
+  EXPECT_EQ(to_string(StepDerive::kNone), "");
+  EXPECT_EQ(step_method_names().size(), 4u);
 }
 
 TEST(RunStep, MissingColumnsAreNamedByTheirRole) {
@@ -462,8 +498,9 @@ TEST(RunStep, ErrorsFromInsideTheAnalysisNameTheLog) {
   StepRequest r = request_for(log);
   r.from_s = 100.0;
   r.to_s = 200.0;
-  EXPECT_THAT(option_error_of([&] { run_step(r); }).second,
-              HasSubstr(log.string() + " (input): window [100, 200] s is outside the log"));
+  EXPECT_THAT(
+      option_error_of([&] { run_step(r); }).second,
+      HasSubstr(log.string() + " (from/to): the window 100 … 200 s holds no row of the log"));
   // A bad segment file is named with its line and column.
   r = request_for(log);
   r.segments_file = dir.write("segments.csv", "name,start,end\nfirst,10,20\nsecond,30,x\n");
@@ -489,7 +526,7 @@ TEST(StepReport, TextSaysWhenNoStepWasFound) {
 TEST(StepReport, TextHasAHeaderAndARowPerStep) {
   const TempDir dir;
   StepRequest r = request_for(dir.write("s.csv", fopdt_csv()));
-  r.method = "smith";
+  r.method = StepMethod::kSmith;
   const std::string text = to_text(run_step(r));
   EXPECT_THAT(text, HasSubstr("2 step(s), method smith, output in m (SI)"));
   EXPECT_THAT(text, HasSubstr("t_step"));

@@ -67,6 +67,7 @@ TEST(RunThrustMap, AppliesTheVesselModelsCoefficients) {
   ThrustMapRequest r;
   r.source.log = dir.write("log.csv", thrust_csv());
   r.apply = true;
+  r.out = "out.csv";
   const ThrustMapReport report = run_thrust_map(r);
   ASSERT_TRUE(report.applied.has_value());
   EXPECT_TRUE(report.thrusters.empty());
@@ -86,9 +87,8 @@ TEST(RunThrustMap, AppliesTheVesselModelsCoefficients) {
   }
   const double n_tunnel = log.values("rpm.tunnel").back() / 60.0;
   EXPECT_NEAR(log.values("thrust.tunnel").back(), tunnel.thrust(n_tunnel, 0.0) / 1000.0, 1e-12);
-  EXPECT_THAT(to_text(report, "out.csv"),
-              HasSubstr("thrust of 2 thruster(s) from " + vessel.source +
-                        " (signed n: c+ / c- (3.17)) into out.csv"));
+  EXPECT_THAT(to_text(report), HasSubstr("thrust of 2 thruster(s) from " + vessel.source +
+                                         " (signed n: c+ / c- (3.17)) into out.csv"));
 }
 
 TEST(RunThrustMap, ErrorsNameTheLogOrTheKey) {
@@ -116,11 +116,37 @@ TEST(RunThrustMap, ErrorsNameTheLogOrTheKey) {
   r.apply = true;
   try {
     run_thrust_map(r);
+    ADD_FAILURE() << "apply needs a CSV to write";
+  } catch (const core::InputError& e) {
+    EXPECT_EQ(e.option(), "out");
+  }
+  r.out = dir.path() / "applied.csv";
+  try {
+    run_thrust_map(r);
     ADD_FAILURE() << "no map for 'aft'";
   } catch (const core::InputError& e) {
     EXPECT_EQ(e.where().file, r.source.log.string());
     EXPECT_EQ(e.where().column_name, "rpm.aft");
   }
+}
+
+TEST(RunThrustMap, WriteOutputsWritesTheAppliedCsvAndTheJson) {
+  const TempDir dir;
+  ThrustMapRequest r = request_for(dir.write("log.csv", thrust_csv()));
+  r.apply = true;
+  r.out = dir.path() / "applied.csv";
+  const ThrustMapReport report = run_thrust_map(r);
+  Outputs outputs;
+  outputs.json = (dir.path() / "map.json").string();
+  const Written written = write_outputs(report, outputs);
+  ASSERT_EQ(written.size(), 1u);  // the CSV is named by the text, not listed
+  EXPECT_EQ(written[0], dir.path() / "map.json");
+  EXPECT_TRUE(std::filesystem::exists(r.out));
+  EXPECT_THAT(to_text(report), HasSubstr("into " + r.out.string()));
+  // Without apply: the JSON only.
+  r.apply = false;
+  const Written fit = write_outputs(run_thrust_map(r), outputs);
+  EXPECT_EQ(fit.size(), 1u);
 }
 
 TEST(ThrustMapReport, JsonHasTheContractKeysAndNullNotZero) {

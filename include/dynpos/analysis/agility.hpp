@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "dynpos/analysis/log_source.hpp"
+#include "dynpos/analysis/outputs.hpp"
 #include "dynpos/ident/agility.hpp"
 #include "dynpos/report/table.hpp"
 
@@ -30,7 +31,8 @@ struct AgilityRequest {
   /// Roles: time, command.surge, command.sway, command.yaw [%], thrust.NAME or rpm.NAME per
   /// thruster, u, v, wind_speed, wind_dir, heading.
   LogSource source;
-  /// The steps given explicitly (window); empty: found in the joystick demands.
+  /// The steps given explicitly (window): T_STEP, T_END, DIR_DEG and the thrust (100 % when
+  /// not given) and yaw demands [%] of each; empty: found in the joystick demands.
   std::vector<ident::AgilityWindow> windows;
   /// The current as observed (current), drawn as an arrow; absent: none drawn.
   std::optional<ObservedCurrent> current;
@@ -45,16 +47,6 @@ struct AgilityRequest {
   /// Throws option_error naming the key of the first bad field.
   void validate() const;
 };
-
-/// One step given as T_STEP,T_END,DIR_DEG[,THRUST_PCT[,YAW_PCT]] (thrust 100 % when not given).
-/// Throws option_error("window") when it is not 3 to 5 numbers, naming `log` (the log the
-/// window belongs to) when given.
-ident::AgilityWindow parse_agility_window(const std::string& spec,
-                                          const std::filesystem::path& log = {});
-
-/// A current given as SPEED_MPS,TO_DEG. Throws option_error("current") when it is not two
-/// numbers with a speed ≥ 0.
-ObservedCurrent parse_observed_current(const std::string& spec);
 
 /// Mean wind over the steps of a case.
 struct AgilityWind {
@@ -92,6 +84,8 @@ AgilityReport run_agility(const AgilityRequest& request);
 /// 63.2 % of its response [s], i.e. the slowest one; absent when none responded.
 std::optional<double> thrust_envelope_s(const ident::AgilityStep& step);
 
+// The report's adapters: agility_report.cpp.
+
 /// The JSON document of `identify agility --json`.
 nlohmann::json to_json(const AgilityReport& report);
 
@@ -108,5 +102,8 @@ std::string to_text(const AgilityReport& report);
 /// "Thrust agility: LOG_FILE_NAME" when empty.
 void write_plot(const AgilityReport& report, const std::filesystem::path& svg,
                 const std::string& title = {});
+
+/// The polar plot to outputs.figures (an SVG file) when given, then the JSON.
+Written write_outputs(const AgilityReport& report, const Outputs& outputs);
 
 }  // namespace dynpos::analysis

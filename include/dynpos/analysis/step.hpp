@@ -8,31 +8,54 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "dynpos/analysis/log_source.hpp"
+#include "dynpos/analysis/outputs.hpp"
 #include "dynpos/core/status.hpp"
 #include "dynpos/ident/fit_status.hpp"
 #include "dynpos/ident/step_detector.hpp"
 
 namespace dynpos::analysis {
 
+/// How a step's response is fitted.
+enum class StepMethod {
+  kLeastSquares,          ///< "lsq": FOPDT (3.7) by least squares with the dead time
+  kSmith,                 ///< "smith": FOPDT by Smith's two-point method (3.8)-(3.9)
+  kSmithSecondOrder,      ///< "smith2": Smith's second-order 20/60 %
+  kRangaiahKrishnaswamy,  ///< "rk": Rangaiah-Krishnaswamy second-order 14/55/91 %
+};
+
+/// What is fitted instead of the role output.
+enum class StepDerive {
+  kNone,        ///< "": the role output
+  kTotalSpeed,  ///< "total-speed": √(u² + v²) (3.19) from the roles u and v (sway tests)
+};
+
+/// The method's name in reports and options: "lsq", "smith", "smith2" or "rk".
+std::string to_string(StepMethod method);
+/// "" or "total-speed".
+std::string to_string(StepDerive derive);
+
+/// Every method and derived output by its name, for the front ends' option parsing.
+const std::vector<std::pair<std::string, StepMethod>>& step_method_names();
+const std::vector<std::pair<std::string, StepDerive>>& step_derive_names();
+
 /// What to identify: the log's roles time, input (the command), output (the response) and
 /// optionally trigger (e.g. power feedback, to time steps without a command); or u and v with
-/// derive = "total-speed".
+/// derive = kTotalSpeed.
 struct StepRequest {
   LogSource source;
-  /// "lsq": least squares with the dead time; "smith": Smith's two-point method (3.8)-(3.9);
-  /// "smith2": Smith's second-order 20/60 %; "rk": Rangaiah-Krishnaswamy 14/55/91 %.
-  std::string method = "lsq";
-  std::optional<double> from_s;     ///< window start [s]: one step in the window (only the
-                                    ///< window is read, with its own step threshold)
-  std::optional<double> to_s;       ///< window end [s]
+  StepMethod method = StepMethod::kLeastSquares;
+  /// Window [s] (request keys "from", "to"; judged as "from/to" by LogSource::load): one step
+  /// in the window; only the window is read, with its own step threshold.
+  std::optional<double> from_s;
+  std::optional<double> to_s;
   std::optional<double> step_at_s;  ///< step time [s], with or without a window
-  /// "" or "total-speed": fit √(u² + v²) (3.19) from the roles u and v (sway tests).
-  std::string derive;
+  StepDerive derive = StepDerive::kNone;
   /// Smallest input change counted as a step, in the input's SI unit; 0: adapted to the log
   /// (ident/step_detector.hpp: from its noise and its largest changes).
   double min_step = 0.0;
@@ -42,7 +65,8 @@ struct StepRequest {
   /// the whole log.
   std::filesystem::path segments_file;
 
-  /// Throws option_error naming "method" or "derive" for a value it does not know.
+  /// Throws option_error naming the key of the first bad range (min_step, min_plateau, from,
+  /// to, step_at).
   void validate() const;
 };
 
@@ -94,7 +118,7 @@ struct StepFit {
 struct StepReport {
   std::filesystem::path log;
   io::InputReport input;  ///< the files read, their formats and skipped lines
-  std::string method;
+  StepMethod method = StepMethod::kLeastSquares;
   std::string output_unit;                ///< SI unit of the output; "" is dimensionless
   std::optional<std::string> input_unit;  ///< SI unit of the input; absent without one
   StepTimingSource timing = StepTimingSource::kCommand;
@@ -113,8 +137,11 @@ struct StepReport {
 /// A step that cannot be fitted (too short, no response, a degenerate fit, ...) is a row with
 /// status kFailed and the reason, never an error. Throws option_error("col:output") without an
 /// output, option_error("col:input") without an input, a trigger or a window to find the steps
-/// in, and InputError naming the log (or the segment file) for a bad file or window.
+/// in, and InputError naming the log (or the segment file) for a bad file or window (an
+/// empty window, or one without a row of the log: "from/to", LogSource::load).
 StepReport run_step(const StepRequest& request);
+
+// The report's adapters: step_report.cpp.
 
 /// The `identify step --json` document: {log, method, output_unit, input_unit, timing,
 /// step_threshold, step_threshold_source ("auto" or "min_step"), input_noise_sigma, segments?,
@@ -125,5 +152,8 @@ nlohmann::json to_json(const StepReport& report);
 
 /// A header line and one table row per step, as `identify step` prints them.
 std::string to_text(const StepReport& report);
+
+/// Writes the JSON where outputs.json says (the step analysis draws no figure).
+Written write_outputs(const StepReport& report, const Outputs& outputs);
 
 }  // namespace dynpos::analysis

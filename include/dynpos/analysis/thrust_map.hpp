@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "dynpos/analysis/log_source.hpp"
+#include "dynpos/analysis/outputs.hpp"
 #include "dynpos/core/log.hpp"
 #include "dynpos/ident/thrust_map.hpp"
 
@@ -30,8 +31,12 @@ struct ThrustMapRequest {
   bool abs_speed = false;
   /// With apply: the vessel file; empty for the built-in Gunnerus.
   std::filesystem::path vessel;
+  /// With apply: the CSV the applied thrust goes to (request key "out"). The analysis' further
+  /// output: write_outputs() writes it, next to Outputs' JSON, and the report's text names it.
+  std::filesystem::path out;
 
-  /// Throws option_error("min_speed") for a negative speed.
+  /// Throws option_error("min_speed") for a negative speed, option_error("out") for apply
+  /// without a CSV to write.
   void validate() const;
 };
 
@@ -48,6 +53,7 @@ struct AppliedThrust {
   std::size_t thrusters = 0;  ///< how many thrusters
   std::string vessel_source;  ///< the vessel file, or "" for the built-in vessel
   bool abs_speed = false;     ///< |n| only: the mean coefficient (3.18)
+  std::filesystem::path csv;  ///< where write_outputs() writes `log` (the request's out)
 };
 
 /// The result of run_thrust_map(): the fits, or with apply the applied thrust.
@@ -65,13 +71,19 @@ struct ThrustMapReport {
 /// to apply a map to.
 ThrustMapReport run_thrust_map(const ThrustMapRequest& request);
 
+// The report's adapters: thrust_map_report.cpp.
+
 /// The `identify thrust-map --json` document: {analysis, log, unit, thrusters: [{name, c_pos,
 /// c_neg, sigma {c_pos, c_neg}, c_mean, n_samples {pos, neg}, r_squared, status, message}]}, in
 /// N/rps². With apply the thrusters are empty (nothing is fitted).
 nlohmann::json to_json(const ThrustMapReport& report);
 
 /// What `identify thrust-map` prints: the table of the fits in kN/rps², or with apply one line
-/// that names the CSV `csv_out` the applied thrust goes to.
-std::string to_text(const ThrustMapReport& report, const std::filesystem::path& csv_out = {});
+/// that names the CSV the applied thrust goes to.
+std::string to_text(const ThrustMapReport& report);
+
+/// With apply, writes the applied thrust to its CSV (AppliedThrust::csv; named by to_text(),
+/// so not listed in the files written); then the JSON where outputs.json says.
+Written write_outputs(const ThrustMapReport& report, const Outputs& outputs);
 
 }  // namespace dynpos::analysis

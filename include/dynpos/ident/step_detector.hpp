@@ -58,8 +58,8 @@
 #include <string>
 #include <vector>
 
-#include "dynpos/core/parallel_for.hpp"
 #include "dynpos/core/log.hpp"
+#include "dynpos/core/parallel_for.hpp"
 
 namespace dynpos::ident {
 
@@ -175,8 +175,9 @@ struct StepWindow {
 /// The step in an explicit window. With window.t_step given, the levels are the medians of u
 /// before and after it (nullopt when u is empty: no input logged); without it, detect_steps()
 /// runs on the window and exactly one step must be found.
-/// Throws core::InputError if the window is empty or reversed, lies (partly) outside the log,
-/// t_step is not inside it, u is constant in it, or no or several steps are found.
+/// Throws core::InputError if the window is empty or reversed, or lies (partly) outside the log
+/// (option "from/to"), t_step is not inside it (option "step_at"), u is constant in it, or no or
+/// several steps are found.
 Step step_from_window(std::span<const double> t, std::span<const double> u,
                       const StepWindow& window, const StepDetectorOptions& options = {});
 
