@@ -2,17 +2,12 @@
 // accumulated thrust and energy per thruster per leg and in total (thesis table 3.6), and the
 // NE plot of the track (figure 3.5).
 
-#include <fmt/core.h>
-
-#include <array>
-#include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "commands.hpp"
 #include "dynpos/analysis/four_corner.hpp"
-#include "dynpos/io/json_writer.hpp"
 #include "log_input.hpp"
 
 namespace dynpos::cli {
@@ -20,28 +15,20 @@ namespace {
 
 struct FourCornerCliOptions {
   LogInput input;
-  std::string segment = "auto";
+  std::string segment;        ///< a name of analysis::leg_segmentation_names()
   std::vector<double> arm_m;  ///< X,Y [m]
-  std::string json;
   std::string plot;
-  analysis::FourCornerRequest request;  ///< the typed options; source and the parsed ones are added
+  analysis::FourCornerRequest request;  ///< the typed options; source, segment, arm are added
+  analysis::Outputs outputs;
 };
 
-void run_four_corner(const FourCornerCliOptions& o) {
-  check_json_target(o.json);
-  check_json_target(o.plot);
-  analysis::FourCornerRequest request = o.request;
-  request.source = o.input;
-  request.segmentation = analysis::parse_leg_segmentation(o.segment);
-  if (!o.arm_m.empty()) request.arm_m = std::array<double, 2>{o.arm_m[0], o.arm_m[1]};
-  request.validate();
-  const analysis::FourCornerReport report = analysis::run_four_corner(request);
-  if (!o.plot.empty()) analysis::write_plot(report, o.plot);
-  if (!o.json.empty()) io::write_json(o.json, analysis::to_json(report));
-  std::FILE* out = o.json == "-" ? stderr : stdout;
-  print_text(out, "{}", analysis::to_text(report));
-  if (!o.plot.empty()) print_text(out, "wrote {}\n", o.plot);
-  if (!o.json.empty() && o.json != "-") print_text(out, "wrote {}\n", o.json);
+void run_four_corner(FourCornerCliOptions& o) {
+  o.request.source = o.input;
+  // The library's parser, so that a bad name reads as in the Python API: "(--segment): …".
+  o.request.segmentation = analysis::parse_leg_segmentation(o.segment);
+  if (!o.arm_m.empty()) o.request.arm_m = Eigen::Vector2d(o.arm_m[0], o.arm_m[1]);
+  o.outputs.figures = o.plot;
+  write_and_print(analysis::run_four_corner(o.request), o.outputs);
 }
 
 }  // namespace
@@ -58,6 +45,7 @@ void add_identify_four_corner(CLI::App& identify) {
   sub->add_option("--heading-tol", o->request.heading_tol_deg,
                   "Operating circle heading tolerance [deg]")
       ->capture_default_str();
+  o->segment = analysis::to_string(o->request.segmentation);
   sub->add_option("--segment", o->segment, "Leg segmentation: auto, setpoints or track")
       ->capture_default_str();
   sub->add_option("--arm", o->arm_m,
@@ -67,7 +55,7 @@ void add_identify_four_corner(CLI::App& identify) {
       ->delimiter(',');
   sub->add_option("--from", o->request.t_from_s, "Analyse from this time [s]");
   sub->add_option("--to", o->request.t_to_s, "Analyse up to this time [s]");
-  add_json_option(*sub, o->json, "Write the results as JSON to FILE, or '-' for stdout");
+  add_json_option(*sub, o->outputs.json, "Write the results as JSON to FILE, or '-' for stdout");
   output_file(sub->add_option("--plot", o->plot, "Write the NE plot of the track to FILE.svg"));
   sub->footer(
       "Legs start at each setpoint change and end when the position is within --radius and "

@@ -1,15 +1,10 @@
 // dynpos identify station-keeping: pure-DP statistics over a window or per setpoint hold
 // (thesis tables 3.11-3.22).
 
-#include <fmt/core.h>
-
-#include <cstdio>
 #include <memory>
-#include <string>
 
 #include "commands.hpp"
 #include "dynpos/analysis/station_keeping.hpp"
-#include "dynpos/io/json_writer.hpp"
 #include "log_input.hpp"
 
 namespace dynpos::cli {
@@ -18,19 +13,12 @@ namespace {
 struct StationKeepingOptions {
   LogInput input;
   analysis::StationKeepingRequest request;
-  std::string json;
+  analysis::Outputs outputs;
 };
 
 void run(StationKeepingOptions& o) {
-  // The output file is checked first, as the command always has.
-  check_json_target(o.json);
   o.request.source = o.input;
-  o.request.validate();
-  const analysis::StationKeepingReport report = analysis::run_station_keeping(o.request);
-  if (!o.json.empty()) io::write_json(o.json, analysis::to_json(report));
-  std::FILE* out = o.json == "-" ? stderr : stdout;
-  print_text(out, "{}", analysis::to_text(report));
-  if (!o.json.empty() && o.json != "-") print_text(out, "wrote {}\n", o.json);
+  write_and_print(analysis::run_station_keeping(o.request), o.outputs);
 }
 
 }  // namespace
@@ -53,7 +41,7 @@ void add_identify_station_keeping(CLI::App& identify) {
                 "One window per DP setpoint hold: its last --duration seconds");
   sub->add_option("--waves", r.waves, "Waves as observed, printed and kept in the JSON");
   sub->add_option("--current", r.current, "Current as observed, printed and kept in the JSON");
-  add_json_option(*sub, o->json, "Write the results as JSON to FILE, or '-' for stdout");
+  add_json_option(*sub, o->outputs.json, "Write the results as JSON to FILE, or '-' for stdout");
   sub->footer(
       "Position std about the window's mean [m]; heading and wind direction by circular "
       "statistics [deg]; mean |thrust| [kN] and energy ∫P dt [kJ] per thruster and total. A "

@@ -293,8 +293,8 @@ def identify_four_corner(log, col=None, unit=None, map=None, *, json=None, plot=
                          **options) -> Result:
     """DP 4-corner test (thesis 3.5.2): the legs, their durations [s], accumulated thrust
     [kNs] and energy [kJ]. Options as ``dynpos identify four-corner``: ``radius`` [m],
-    ``heading_tol`` [deg], ``segment`` ("auto", "setpoints", "track"), ``arm`` ((X, Y) [m]),
-    ``from_``, ``to`` [s]; ``plot`` (SVG). Table: ``legs``."""
+    ``heading_tol`` [deg], ``segment`` ("auto", "setpoints", "track"), ``arm`` ((X, Y) [m]: a
+    tuple, list or numpy array), ``from_``, ``to`` [s]; ``plot`` (SVG). Table: ``legs``."""
     if "arm" in options and isinstance(options["arm"], str):
         options["arm"] = [float(v) for v in options["arm"].split(",")]
     q = _request(_dynpos.FourCornerRequest, log, col, unit, map, options)

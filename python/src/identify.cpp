@@ -1,6 +1,7 @@
 // Identification from logs (thesis chapter 3): the requests with their CLI option names, and one
 // run function each that writes the outputs the CLI writes and returns the --json text.
 
+#include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
@@ -175,7 +176,7 @@ void bind_four_corner(py::module_& m) {
       .def_readwrite("radius", &FourCornerRequest::radius_m)
       .def_readwrite("heading_tol", &FourCornerRequest::heading_tol_deg)
       .def_property(
-          "segment", [](const FourCornerRequest&) { return std::string{}; },
+          "segment", [](const FourCornerRequest& q) { return to_string(q.segmentation); },
           [](FourCornerRequest& q, const std::string& s) {
             q.segmentation = parse_leg_segmentation(s);
           })
@@ -185,7 +186,9 @@ void bind_four_corner(py::module_& m) {
   m.def(
       "run_four_corner",
       [](const FourCornerRequest& q, const std::string& json, const std::string& plot) {
-        return run_checked(q, json, &run_four_corner, &plot);
+        const Outputs outputs{.json = json, .figures = plot};
+        outputs.check("plot", false);
+        return run_and_write(q, outputs, run_four_corner);
       },
       py::arg("request"), py::arg("json") = "", py::arg("plot") = "");
 }
@@ -203,7 +206,9 @@ void bind_station_keeping(py::module_& m) {
   m.def(
       "run_station_keeping",
       [](const StationKeepingRequest& q, const std::string& json) {
-        return run_checked(q, json, &run_station_keeping);
+        const Outputs outputs{.json = json, .figures = {}};
+        outputs.check("plots", true);
+        return run_and_write(q, outputs, run_station_keeping);
       },
       py::arg("request"), py::arg("json") = "");
 }

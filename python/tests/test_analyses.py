@@ -87,6 +87,46 @@ def test_identify_four_corner(runs, tmp_path):
     assert len(r.legs) == 4 and (tmp_path / "ne.svg").exists()
 
 
+def test_four_corner_typed_arguments(runs):
+    """The arm as a tuple, a list or a numpy array, the segmentation by name; a bad one of
+    either is an InputError naming the keyword."""
+    import numpy
+
+    log = runs / "four-corner" / "log.csv"
+    col = {"north": "gnss1.north", "east": "gnss1.east"}
+    by_tuple = dynpos.identify_four_corner(log, col=col, arm=(-2.0, 0.5), segment="track")
+    for arm in ([-2.0, 0.5], numpy.array([-2.0, 0.5])):
+        assert dynpos.identify_four_corner(log, col=col, arm=arm,
+                                           segment="track").to_dict() == by_tuple.to_dict()
+    assert by_tuple.segmentation == "track" and by_tuple.arm_m == [-2.0, 0.5]
+    q = dynpos._dynpos.FourCornerRequest()
+    q.segment = "setpoints"
+    assert q.segment == "setpoints"
+    with pytest.raises(dynpos.InputError, match=r"\(segment=\): unknown segmentation 'box'") as e:
+        dynpos.identify_four_corner(log, col=col, segment="box")
+    assert e.value.option == "segment"
+    with pytest.raises(dynpos.InputError, match=r"\(arm=\)") as e:
+        dynpos.identify_four_corner(log, col=col, arm=(1.0, 2.0, 3.0))
+    assert e.value.option == "arm"
+    with pytest.raises(dynpos.InputError, match=r"\(arm=\): the antenna lever arm is not finite"):
+        dynpos.identify_four_corner(log, col=col, arm=(float("nan"), 0.0))
+
+
+@pytest.mark.parametrize("window", [(5000, 6000), (50, 10)])
+def test_window_errors_are_the_same_in_every_windowed_analysis(runs, window):
+    """One window rule (LogSource): the same bad window, the same message, naming from_=/to=."""
+    log = runs / "pure-dp" / "log.csv"
+    col = {"north": "gnss1.north", "east": "gnss1.east"}
+    messages = []
+    for analysis in (dynpos.identify_four_corner, dynpos.identify_station_keeping):
+        with pytest.raises(dynpos.InputError) as e:
+            analysis(log, col=col, from_=window[0], to=window[1])
+        assert e.value.option == "from/to" and e.value.file == str(log)
+        messages.append(str(e.value))
+    assert messages[0] == messages[1]
+    assert f"(from_=/to=): the window {window[0]} … {window[1]} s " in messages[0]
+
+
 def test_identify_station_keeping(runs, tmp_path):
     log = runs / "pure-dp" / "log.csv"
     col = {"north": "gnss1.north", "east": "gnss1.east"}

@@ -3,15 +3,12 @@
 
 #include <fmt/core.h>
 
-#include <array>
+#include <Eigen/Core>
 #include <optional>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "dynpos/analysis/demo_sections.hpp"
 #include "dynpos/analysis/four_corner.hpp"
-#include "dynpos/io/json_writer.hpp"
 #include "dynpos/report/table.hpp"
 #include "dynpos/scenario/trial_truth.hpp"
 
@@ -21,7 +18,7 @@ namespace {
 // What the section takes from the scenario's truth.json.
 struct FourCornerTruth {
   /// The surveyed horizontal lever arm of GNSS antenna 1 (x, y) [m], when given.
-  std::optional<std::array<double, 2>> gnss1_arm_m;
+  std::optional<Eigen::Vector2d> gnss1_arm_m;
   /// The duration of each leg, t_reached − t_start of each setpoint but the hold, in order [s];
   /// absent without truth.json.
   std::optional<std::vector<double>> leg_durations_s;
@@ -33,7 +30,7 @@ FourCornerTruth read_truth(const std::filesystem::path& truth_json) {
   if (!std::filesystem::exists(truth_json)) return truth;
   const scenario::TrialTruth t = scenario::read_trial_truth(truth_json);
   if (const auto arm = t.lever_arms.find("gnss1"); arm != t.lever_arms.end()) {
-    truth.gnss1_arm_m = std::array<double, 2>{arm->second.x(), arm->second.y()};
+    truth.gnss1_arm_m = arm->second.head<2>();
   }
   truth.leg_durations_s.emplace();
   for (const scenario::SetpointTruth& s : t.setpoints) {
@@ -72,13 +69,14 @@ ReportSection four_corner_demo_section(const std::filesystem::path& campaign_dir
   // The antenna's surveyed lever arm (the vessel file's, which truth.json repeats), so the
   // circle is tested at the control origin as the DP system does.
   request.arm_m = truth.gnss1_arm_m;
-  const FourCornerReport report = run_four_corner(request);
-  nlohmann::json doc = to_json(report);
-  doc["log"] = "four-corner/log.csv";  // relative to the report, so it is relocatable
-  doc["input"] = io::to_json(relative_to(report.input, campaign_dir));
+  FourCornerReport report = run_four_corner(request);
+  report.log = "four-corner/log.csv";  // relative to the report, so it is relocatable
+  report.input = relative_to(std::move(report.input), campaign_dir);
   const std::filesystem::path dir = campaign_dir / "analysis" / "four-corner";
   std::filesystem::create_directories(dir);
-  io::write_json((dir / "four-corner.json").string(), doc);
+  Written written;
+  write_json_output({.json = (dir / "four-corner.json").string(), .figures = {}}, to_json(report),
+                    written);
   write_plot(report, dir / "four-corner_ne.svg", "DP 4-corner on the virtual Gunnerus");
   // The simulator's own reach times (truth.json) beside the identified legs.
   const report::Table truth_durations = truth_table(report.result, truth.leg_durations_s);

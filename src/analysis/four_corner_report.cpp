@@ -94,7 +94,8 @@ nlohmann::json to_json(const FourCornerReport& report) {
   doc["input"] = io::to_json(report.input);
   doc["segmentation"] = r.segmentation;
   doc["radius_m"] = report.radius_m;
-  doc["arm_m"] = report.arm_m ? nlohmann::json(*report.arm_m) : nlohmann::json(nullptr);
+  doc["arm_m"] = report.arm_m ? nlohmann::json::array({report.arm_m->x(), report.arm_m->y()})
+                              : nlohmann::json(nullptr);
   doc["heading_tol_deg"] = report.heading_tol_deg;
   doc["thrusters"] = nlohmann::json::array();
   for (const auto& t : r.total.thrusters) doc["thrusters"].push_back(t.name);
@@ -154,6 +155,16 @@ void write_plot(const FourCornerReport& report, const std::filesystem::path& svg
   f.panel_height_px = 600.0;
   f.panels.push_back(std::move(p));
   report::write_svg(svg, f);
+}
+
+Written write_outputs(const FourCornerReport& report, const Outputs& outputs) {
+  Written written;
+  if (!outputs.figures.empty()) {
+    write_plot(report, outputs.figures);
+    written.push_back(outputs.figures);
+  }
+  write_json_output(outputs, to_json(report), written);
+  return written;
 }
 
 }  // namespace dynpos::analysis

@@ -9,7 +9,6 @@
 #include "dynpos/analysis/options.hpp"
 #include "dynpos/core/error.hpp"
 #include "dynpos/ident/local_position.hpp"
-#include "dynpos/io/csv_reader.hpp"
 
 namespace dynpos::analysis {
 namespace {
@@ -52,20 +51,8 @@ ident::StationKeepingInput make_input(core::Log& log) {
   return in;
 }
 
-// The log, read within source's window; a window without rows is an error of --from/--to.
-LoadedLog load_window(const LogSource& source, const StationKeepingRequest& request) {
-  try {
-    return source.load(wanted_role);
-  } catch (const io::EmptyWindowError& e) {
-    throw option_error_in_file(
-        request.source.log, "from/to",
-        fmt::format("the window {:g} … {:g} s is not inside the log ({:g} … {:g} s)",
-                    *source.window_from_s, *source.window_to_s, e.first_row_s, e.last_row_read_s),
-        "choose --from/--to inside the log, or a shorter --duration");
-  }
-}
-
-// The window --from/--to give; a missing end is duration_s from the other.
+// The window from/to give; a missing end is duration_s from the other (the rule of this
+// analysis: LogSource takes the window it makes).
 ident::TimeWindow given_window(const StationKeepingRequest& request) {
   const std::optional<double>& from = request.t_from_s;
   const std::optional<double>& to = request.t_to_s;
@@ -83,10 +70,10 @@ std::vector<ident::TimeWindow> windows_of(const StationKeepingRequest& request,
   const double duration = request.duration_s;
   if (request.per_setpoint) {
     if (!log.has("setpoint.heading") && !log.has("setpoint.north")) {
-      throw core::InputError({request.source.log.string(), {}, {}, "setpoint.heading"},
-                             "--per-setpoint needs the DP setpoints in the log",
-                             "map setpoint.north, setpoint.east, setpoint.heading, or give "
-                             "--from/--to");
+      throw request.source.error("setpoint.heading",
+                                 "--per-setpoint needs the DP setpoints in the log",
+                                 "map setpoint.north, setpoint.east, setpoint.heading, or give "
+                                 "--from/--to");
     }
     auto holds = ident::setpoint_windows(in.t_s, values_or_empty(log, "setpoint.north"),
                                          values_or_empty(log, "setpoint.east"),
@@ -112,27 +99,20 @@ void StationKeepingRequest::validate() const {
 
 StationKeepingReport run_station_keeping(const StationKeepingRequest& request) {
   request.validate();
-  // A window given with --from/--to is all that is read of the main log (M2 of the review:
-  // memory and time follow the window, not the file).
+  // A window given with from/to is all that is read of the main log (memory and time follow
+  // the window, not the file); LogSource::load judges it.
   LogSource source = request.source;
   if (request.t_from_s || request.t_to_s) {
     const ident::TimeWindow w = given_window(request);
-    if (!(w.t_to_s > w.t_from_s)) {
-      throw option_error_in_file(
-          request.source.log, "from/to",
-          fmt::format("the window {:g} … {:g} s is empty", w.t_from_s, w.t_to_s),
-          "choose --from < --to");
-    }
     source.window_from_s = w.t_from_s;
     source.window_to_s = w.t_to_s;
   }
-  LoadedLog loaded = load_window(source, request);
+  LoadedLog loaded = source.load(wanted_role);
   core::Log& log = loaded.log;
   if (!(log.has("north") && log.has("east")) && !(log.has("lat") && log.has("lon"))) {
-    throw core::InputError({request.source.log.string(), {}, {}, "north/east"},
-                           "no position in the log",
-                           "map north and east in metres (any offset, e.g. UTM: --col "
-                           "north=gnss1.north --col east=gnss1.east) or lat and lon");
+    throw request.source.error("north/east", "no position in the log",
+                               "map north and east in metres (any offset, e.g. UTM: --col "
+                               "north=gnss1.north --col east=gnss1.east) or lat and lon");
   }
   ident::StationKeepingInput in = make_input(log);
   in.log_start_s = loaded.log_start_s;
@@ -147,12 +127,9 @@ StationKeepingReport run_station_keeping(const StationKeepingRequest& request) {
     try {
       report.windows.push_back(ident::analyse_station_keeping(in, w));
     } catch (const core::InputError& e) {
-      // Named by the file; a window's problem is one of --from/--to only when they gave it.
-      if (e.where().column_name != "--from/--to") throw with_file(e, request.source.log.string());
-      if (request.t_from_s || request.t_to_s) {
-        throw option_error_in_file(request.source.log, "from/to", e.problem(), e.hint());
-      }
-      throw core::InputError({request.source.log.string(), {}, {}, w.name}, e.problem(), e.hint());
+      // A window's problem is one of from/to only when they gave it; else of the window made.
+      if (e.option() != "from/to" || source.has_window()) throw request.source.in_log(e);
+      throw request.source.error(w.name, e.problem(), e.hint());
     }
   }
   return report;

@@ -175,4 +175,10 @@ std::string to_text(const StationKeepingReport& report) {
   return out + report::render_text(station_keeping_table(report)) + io::to_text(report.input);
 }
 
+Written write_outputs(const StationKeepingReport& report, const Outputs& outputs) {
+  Written written;
+  write_json_output(outputs, to_json(report), written);
+  return written;
+}
+
 }  // namespace dynpos::analysis

@@ -1,5 +1,7 @@
 #include "dynpos/ident/station_keeping.hpp"
 
+#include <fmt/core.h>
+
 #include <cmath>
 #include <numbers>
 
@@ -9,8 +11,9 @@
 namespace dynpos::ident {
 namespace {
 
+// An error of the window, named by its request key (analysis/options.hpp).
 core::InputError window_error(const std::string& what, const std::string& hint = {}) {
-  return core::InputError({{}, {}, {}, "--from/--to"}, what, hint);
+  return core::InputError::for_option("from/to", what, hint);
 }
 
 // Valid samples of x with t in [from, to].
@@ -51,13 +54,11 @@ StationKeepingResult analyse_station_keeping(const StationKeepingInput& in, cons
   const double t0 = in.log_start_s.value_or(in.t_s.front());
   const double t1 = in.log_end_s.value_or(in.t_s.back());
   if (!(w.t_to_s > w.t_from_s)) {
-    throw window_error("the window " + std::to_string(w.t_from_s) + " … " +
-                       std::to_string(w.t_to_s) + " s is empty");
+    throw window_error(fmt::format("the window {:g} … {:g} s is empty", w.t_from_s, w.t_to_s));
   }
   if (w.t_from_s < t0 - 1e-9 || w.t_to_s > t1 + 1e-9) {
-    throw window_error("the window " + std::to_string(w.t_from_s) + " … " +
-                           std::to_string(w.t_to_s) + " s is not inside the log (" +
-                           std::to_string(t0) + " … " + std::to_string(t1) + " s)",
+    throw window_error(fmt::format("the window {:g} … {:g} s is not inside the log ({:g} … {:g} s)",
+                                   w.t_from_s, w.t_to_s, t0, t1),
                        "choose --from/--to inside the log, or a shorter --duration");
   }
   if (in.north_m.empty() || in.east_m.empty()) {

@@ -3,7 +3,9 @@
 #include <fmt/core.h>
 #include <gtest/gtest.h>
 
+#include <Eigen/Core>
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -91,7 +93,9 @@ TEST(FourCornerAnalysis, BadOptionsNameTheirKey) {
   EXPECT_EQ(key_of([&] { r.validate(); }), "radius/heading_tol");
   r = {};
   EXPECT_EQ(key_of([&] { r.validate(); }), "no error");
-  // A window outside the log names the option and the log.
+  r.arm_m = Eigen::Vector2d(0.5, std::nan(""));
+  EXPECT_EQ(key_of([&] { r.validate(); }), "arm");
+  // A window without a row of the log names the option and the log (LogSource::load).
   FourCornerRequest outside = request_for(write_log("outside.csv"));
   outside.t_from_s = 5000.0;
   try {
@@ -100,13 +104,47 @@ TEST(FourCornerAnalysis, BadOptionsNameTheirKey) {
   } catch (const core::InputError& e) {
     EXPECT_EQ(e.option(), "from/to");
     EXPECT_EQ(e.where().file, outside.source.log.string());
-    EXPECT_NE(e.problem().find("outside the log (0 … 340 s)"), std::string::npos) << e.problem();
+    EXPECT_NE(e.problem().find("holds no row of the log (0 … 340 s)"), std::string::npos)
+        << e.problem();
   }
+}
+
+// The segmentations by name: the names reports show are the names the options take.
+TEST(FourCornerAnalysis, SegmentationsByName) {
+  ASSERT_EQ(leg_segmentation_names().size(), 3u);
+  for (const auto& [name, segmentation] : leg_segmentation_names()) {
+    EXPECT_EQ(to_string(segmentation), name);
+    EXPECT_EQ(parse_leg_segmentation(name), segmentation);
+  }
+  EXPECT_EQ(to_string(FourCornerRequest{}.segmentation), "auto");
+}
+
+// The same bad windows give the same errors as every windowed analysis (LogSource::load):
+// one without a row of the log, and an empty one; the ident error of the legs names the log.
+TEST(FourCornerAnalysis, WindowErrorsAreTheLogSources) {
+  FourCornerRequest request = request_for(write_log("windows.csv"));
+  const auto problem_of = [&](double from, double to) {
+    request.t_from_s = from;
+    request.t_to_s = to;
+    const core::InputError e = testing::input_error([&] { run_four_corner(request); });
+    EXPECT_EQ(e.option(), "from/to");
+    EXPECT_EQ(e.where().file, request.source.log.string());
+    return e.problem();
+  };
+  EXPECT_EQ(problem_of(5000.0, 6000.0),
+            "the window 5000 … 6000 s holds no row of the log (0 … 340 s)");
+  EXPECT_EQ(problem_of(50.0, 10.0), "the window 50 … 10 s is empty");
+  // A window inside the log is read alone: the legs it holds.
+  request.t_from_s = 50.0;
+  request.t_to_s = 190.0;
+  const FourCornerReport report = run_four_corner(request);
+  EXPECT_EQ(report.input.files.at(0).records, 141u);
+  EXPECT_EQ(report.track.t_s.front(), 50.0);
 }
 
 TEST(FourCornerAnalysis, JsonTableAndPlot) {
   FourCornerRequest request = request_for(write_log("adapters.csv"));
-  request.arm_m = std::array<double, 2>{0.0, 0.0};
+  request.arm_m = Eigen::Vector2d::Zero();
   const FourCornerReport report = run_four_corner(request);
   const nlohmann::json doc = to_json(report);
   for (const char* key : {"analysis", "log", "segmentation", "radius_m", "arm_m", "heading_tol_deg",

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <memory>
 #include <string>
 
@@ -210,16 +211,41 @@ TEST(StationKeepingAnalysis, AGivenWindowIsAllThatIsRead) {
   }
   EXPECT_EQ(a.dump(), b.dump());
 
-  // A window that reaches past either end of the log is still not inside it.
-  for (const auto& [from, to] : {std::pair{300.0, 450.0}, std::pair{-50.0, 100.0},
-                                 std::pair{500.0, 600.0}, std::pair{-90.0, -10.0}}) {
+  // A window that reaches past either end of the log is still not inside it (the analysis'
+  // rule); one without a row of the log is refused by LogSource::load, as in every analysis.
+  const auto problem_of = [&](double from, double to) {
     request.t_from_s = from;
     request.t_to_s = to;
     const core::InputError e = input_error([&] { run_station_keeping(request); });
     EXPECT_EQ(e.option(), "from/to") << from;
     EXPECT_EQ(e.where().file, request.source.log.string());
-    EXPECT_NE(e.problem().find("is not inside the log (0"), std::string::npos) << e.problem();
-  }
+    return e.problem();
+  };
+  EXPECT_EQ(problem_of(300.0, 450.0), "the window 300 … 450 s is not inside the log (0 … 399 s)");
+  // (Read up to the window's end, the log is known to reach the first row after it.)
+  EXPECT_EQ(problem_of(-50.0, 100.0), "the window -50 … 100 s is not inside the log (0 … 101 s)");
+  EXPECT_EQ(problem_of(500.0, 600.0), "the window 500 … 600 s holds no row of the log (0 … 399 s)");
+  EXPECT_EQ(problem_of(50.0, 10.0), "the window 50 … 10 s is empty");
+  // A missing end is duration_s from the other: 5000 … 5300 s.
+  request.t_to_s.reset();
+  request.t_from_s = 5000.0;
+  const core::InputError e = input_error([&] { run_station_keeping(request); });
+  EXPECT_EQ(e.problem(), "the window 5000 … 5300 s holds no row of the log (0 … 399 s)");
+}
+
+// The outputs: the JSON only (the analysis draws no figure), listed as written.
+TEST(StationKeepingAnalysis, WritesItsJson) {
+  TempDir dir;
+  StationKeepingRequest request;
+  request.source.log = write_log(dir);
+  const StationKeepingReport report = run_station_keeping(request);
+  const std::filesystem::path json = dir.path() / "sk.json";
+  const Written written = write_outputs(report, {.json = json.string(), .figures = {}});
+  ASSERT_EQ(written.size(), 1u);
+  EXPECT_EQ(written[0], json);
+  std::ifstream in(json);
+  EXPECT_EQ(nlohmann::json::parse(in), to_json(report));
+  EXPECT_TRUE(write_outputs(report, {}).empty());
 }
 
 }  // namespace

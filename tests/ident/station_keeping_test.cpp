@@ -86,6 +86,17 @@ TEST(StationKeeping, BadWindowsAndMissingPositionAreInputErrors) {
   EXPECT_THROW(analyse_station_keeping(in, {"w", 500.0, 700.0}), core::InputError);
   EXPECT_THROW(analyse_station_keeping(in, {"w", 300.0, 300.0}), core::InputError);
   EXPECT_THROW(analyse_station_keeping(in, {"w", 100.0, 100.5}), core::InputError);  // 6 fixes
+  // A window's problem names its request key, never a command-line spelling.
+  try {
+    analyse_station_keeping(in, {"w", 500.0, 700.0});
+    ADD_FAILURE() << "no error";
+  } catch (const core::InputError& e) {
+    EXPECT_EQ(e.option(), "from/to");
+    EXPECT_EQ(e.where().column_name, "from/to");
+    EXPECT_NE(e.problem().find("the window 500 … 700 s is not inside the log (0 … "),
+              std::string::npos)
+        << e.problem();
+  }
   in.north_m.clear();
   EXPECT_THROW(analyse_station_keeping(in, {"w", 100.0, 400.0}), core::InputError);
 }

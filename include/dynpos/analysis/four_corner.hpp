@@ -5,14 +5,16 @@
 /// leg and in total. The adapters give the JSON document, the table (thesis table 3.6) and the
 /// NE plot of the track (figure 3.5).
 
-#include <array>
+#include <Eigen/Core>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "dynpos/analysis/log_source.hpp"
+#include "dynpos/analysis/outputs.hpp"
 #include "dynpos/ident/four_corner.hpp"
 #include "dynpos/report/table.hpp"
 
@@ -25,14 +27,16 @@ struct FourCornerRequest {
   LogSource source;
   double radius_m = 2.0;         ///< operating circle radius [m], > 0 (radius)
   double heading_tol_deg = 2.0;  ///< operating circle heading tolerance [deg], > 0 (heading_tol)
-  /// How the legs are found (segment).
+  /// How the legs are found (segment; leg_segmentation_names()).
   ident::LegSegmentation segmentation = ident::LegSegmentation::kAuto;
   /// Horizontal lever arm (x forward, y starboard, BODY) [m] of the antenna whose position is
   /// logged; the position is moved to the control origin (arm). Absent: the logged position
   /// is the control origin's.
-  std::optional<std::array<double, 2>> arm_m;
-  std::optional<double> t_from_s;  ///< analyse from this log time [s] (from)
-  std::optional<double> t_to_s;    ///< analyse up to this log time [s] (to)
+  std::optional<Eigen::Vector2d> arm_m;
+  /// Analyse from / up to this log time [s] (from, to): only these rows are read; a window
+  /// without a row of the log is an error of "from/to" (LogSource::load).
+  std::optional<double> t_from_s;
+  std::optional<double> t_to_s;
 
   /// The analysis options of the request. Throws option_error("radius/heading_tol") when the
   /// operating circle is not > 0.
@@ -40,6 +44,12 @@ struct FourCornerRequest {
   /// Throws option_error naming the key of the first bad field.
   void validate() const;
 };
+
+/// The name of a segmentation in reports and options: "auto", "setpoints" or "track".
+std::string to_string(ident::LegSegmentation segmentation);
+
+/// Every segmentation by its name (to_string), for the front ends' choices.
+const std::map<std::string, ident::LegSegmentation>& leg_segmentation_names();
 
 /// The segmentation named "auto", "setpoints" or "track". Throws option_error("segment")
 /// for another name.
@@ -51,15 +61,15 @@ struct FourCornerReport {
   io::InputReport input;      ///< the files read, their formats and skipped lines
   double radius_m = 2.0;
   double heading_tol_deg = 2.0;
-  std::optional<std::array<double, 2>> arm_m;
+  std::optional<Eigen::Vector2d> arm_m;
   /// The logged channels of the analysed window, SI: the track the NE plot draws.
   ident::FourCornerInput track;
   ident::FourCornerResult result;  ///< the legs and the total
 };
 
-/// Validates the request, reads the log, cuts out the window [from, to] and finds the legs.
+/// Validates the request, reads the log within the window [from, to] and finds the legs.
 /// Throws core::InputError naming the log on bad input (no position, no heading, a window
-/// outside the log, no leg).
+/// without a row of the log, no leg).
 FourCornerReport run_four_corner(const FourCornerRequest& request);
 
 /// The JSON document of `identify four-corner --json`.
@@ -77,5 +87,9 @@ report::Table four_corner_table(const FourCornerReport& report);
 /// setpoints. Title: `title`, or "DP 4-corner: LOG" when empty.
 void write_plot(const FourCornerReport& report, const std::filesystem::path& svg,
                 const std::string& title = {});
+
+/// Writes the outputs of `identify four-corner`: outputs.figures is the SVG file of the NE plot
+/// (--plot, plot=), then the JSON.
+Written write_outputs(const FourCornerReport& report, const Outputs& outputs);
 
 }  // namespace dynpos::analysis

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "dynpos/analysis/log_source.hpp"
+#include "dynpos/analysis/outputs.hpp"
 #include "dynpos/ident/station_keeping.hpp"
 #include "dynpos/report/table.hpp"
 
@@ -21,15 +22,18 @@ struct StationKeepingRequest {
   /// time; north, east [m, any offset] or lat, lon; heading, wind_speed, wind_dir;
   /// thrust.NAME, power.NAME; setpoint.north/east/heading.
   LogSource source;
-  std::optional<double> t_from_s;  ///< window start [s] (from)
-  std::optional<double> t_to_s;    ///< window end [s] (to)
+  /// The window [s] (from, to): only its rows are read; a window without a row of the log is
+  /// an error of "from/to" (LogSource::load), as is one not inside the log.
+  std::optional<double> t_from_s;
+  std::optional<double> t_to_s;
   /// Window length [s] when t_from_s or t_to_s is missing: the last duration_s of the log, or
   /// of each setpoint hold (duration), > 0.
   double duration_s = 300.0;
   /// One window per DP setpoint hold (per_setpoint); t_from_s/t_to_s take precedence.
   bool per_setpoint = false;
-  std::string waves;    ///< the waves as observed, kept in the report (waves)
-  std::string current;  ///< the current as observed, kept in the report (current)
+  /// The waves and the current as observed, free text kept in the report (waves, current).
+  std::string waves;
+  std::string current;
 
   /// Throws option_error naming the key of the first bad option.
   void validate() const;
@@ -60,5 +64,8 @@ report::Table station_keeping_table(const StationKeepingReport& report);
 /// What `identify station-keeping` prints: the log and its windows, the observed conditions
 /// and the table.
 std::string to_text(const StationKeepingReport& report);
+
+/// Writes the outputs of `identify station-keeping`: the JSON (it draws no figure).
+Written write_outputs(const StationKeepingReport& report, const Outputs& outputs);
 
 }  // namespace dynpos::analysis

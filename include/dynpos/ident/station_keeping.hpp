@@ -78,8 +78,8 @@ struct StationKeepingResult {
 };
 
 /// The statistics of one window. Throws core::InputError when the window is not inside the
-/// log, when the position is not logged, or when fewer than `min_position_samples` position
-/// samples fall in the window.
+/// log or when fewer than `min_position_samples` position samples fall in it (of the request
+/// key "from/to"), or when the position is not logged.
 StationKeepingResult analyse_station_keeping(const StationKeepingInput& input,
                                              const TimeWindow& window,
                                              const ChannelIntegralOptions& integrals = {},
