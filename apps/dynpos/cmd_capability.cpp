@@ -3,7 +3,6 @@
 
 #include <fmt/core.h>
 
-#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -12,7 +11,6 @@
 #include "dynpos/analysis/capability.hpp"
 #include "dynpos/analysis/feasibility.hpp"
 #include "dynpos/analysis/options.hpp"
-#include "dynpos/io/json_writer.hpp"
 
 namespace dynpos::cli {
 namespace {
@@ -20,19 +18,8 @@ namespace {
 struct CapabilityCliOptions {
   analysis::CapabilityRequest request;
   std::filesystem::path loads;  ///< a load table: the feasibility mode
-  std::string json;
-  std::filesystem::path out;  ///< folder for rose.svg
+  analysis::Outputs outputs;    ///< --json, --out (the folder of rose.svg)
 };
-
-// The JSON (if asked), the text, and the files written, in that order for either mode.
-void write_outputs(const std::string& json, const nlohmann::json& doc, const std::string& text,
-                   const std::filesystem::path& rose = {}) {
-  if (!json.empty()) io::write_json(json, doc);
-  std::FILE* out = json == "-" ? stderr : stdout;
-  print_text(out, "{}", text);
-  if (!rose.empty()) print_text(out, "wrote {}\n", rose.string());
-  if (!json.empty() && json != "-") print_text(out, "wrote {}\n", json);
-}
 
 // --loads: the factor of each load of the table (analysis/feasibility.hpp). The outputs were
 // checked with every other before the run (check_outputs).
@@ -47,22 +34,7 @@ void run_loads(const CapabilityCliOptions& o, const CLI::App& sub) {
     }
   }
   const analysis::FeasibilityRequest request{o.request.vessel, o.loads, o.request.failure};
-  const analysis::FeasibilityReport report = analysis::run_feasibility(request);
-  write_outputs(o.json, analysis::to_json(report), analysis::to_text(report));
-}
-
-void run(const CapabilityCliOptions& o) {
-  o.request.validate();
-  analysis::check_output_file("json", o.json);
-  analysis::check_output_dir("out", o.out);
-  const analysis::CapabilityReport report = analysis::run_capability(o.request);
-  std::filesystem::path rose;
-  if (!o.out.empty()) {
-    std::filesystem::create_directories(o.out);
-    rose = o.out / "rose.svg";
-    analysis::write_rose(report, rose);
-  }
-  write_outputs(o.json, analysis::to_json(report), analysis::to_text(report), rose);
+  write_and_print(analysis::run_feasibility(request), o.outputs);
 }
 
 }  // namespace
@@ -109,14 +81,18 @@ void register_capability(CLI::App& app) {
       ->capture_default_str();
   add_seed_option(*sub, r.seed, "Level 3: master seed of the runs");
   sub->add_option("--jobs", r.jobs, "Level 3: parallel runs (default: every core)");
-  output_folder(sub->add_option("--out", o->out, "Folder for the capability rose (rose.svg)"));
-  add_json_option(*sub, o->json, "Write the results as JSON to FILE, or '-' for stdout");
+  output_folder(
+      sub->add_option("--out", o->outputs.figures, "Folder for the capability rose (rose.svg)"));
+  add_json_option(*sub, o->outputs.json, "Write the results as JSON to FILE, or '-' for stdout");
   sub->footer(
       "Wind, waves and current come from the same direction, relative to the bow (0 = head-on, "
       "90 = from starboard). Levels 1 and 2 balance the mean load × 1.25 (DNV's reserve for "
       "dynamics) against the thrusters' limits exactly; level 3 bisects the environment until "
       "the vessel leaves its footprint. Example: dynpos capability --failure worst --out cap");
-  sub->callback([o, sub] { o->loads.empty() ? run(*o) : run_loads(*o, *sub); });
+  sub->callback([o, sub] {
+    if (!o->loads.empty()) return run_loads(*o, *sub);
+    write_and_print(analysis::run_capability(o->request), o->outputs);
+  });
 }
 
 }  // namespace dynpos::cli

@@ -3,32 +3,22 @@
 
 #include <fmt/core.h>
 
-#include <cstdio>
 #include <memory>
 #include <string>
 
 #include "commands.hpp"
 #include "dynpos/analysis/compare.hpp"
-#include "dynpos/analysis/options.hpp"
-#include "dynpos/io/json_writer.hpp"
 
 namespace dynpos::cli {
 namespace {
 
+// The request, with its text options as given (parsed when the command runs), and the outputs.
 struct CompareOptions {
   analysis::CompareRequest request;
-  std::string json;
+  std::string format = analysis::to_string(request.format);
+  std::string labels;
+  analysis::Outputs outputs;
 };
-
-void run(const CompareOptions& opt) {
-  opt.request.validate();
-  analysis::check_output_file("json", opt.json);
-  const analysis::CompareReport report = analysis::run_compare(opt.request);
-  if (!opt.json.empty()) io::write_json(opt.json, analysis::to_json(report));
-  std::FILE* out = opt.json == "-" ? stderr : stdout;
-  print_text(out, "{}", analysis::to_text(report));
-  if (!opt.json.empty() && opt.json != "-") print_text(out, "wrote {}\n", opt.json);
-}
 
 }  // namespace
 
@@ -43,9 +33,10 @@ void register_compare(CLI::App& app) {
   sub->add_option("B", r.b, "Second result of the same analysis")
       ->required()
       ->check(CLI::ExistingFile);
-  add_json_option(*sub, opt->json, "Write the comparison as JSON to FILE, or '-' for stdout");
-  sub->add_option("--format", r.format, "Table format: text or markdown")->capture_default_str();
-  sub->add_option("--labels", r.labels,
+  add_json_option(*sub, opt->outputs.json,
+                  "Write the comparison as JSON to FILE, or '-' for stdout");
+  sub->add_option("--format", opt->format, "Table format: text or markdown")->capture_default_str();
+  sub->add_option("--labels", opt->labels,
                   "Names of A and B in the table, comma-separated (default: the file names), "
                   "e.g. \"Aug 2014,Nov 2014\"");
   sub->add_option("--step-tolerance", r.step_tolerance_s,
@@ -59,7 +50,12 @@ void register_compare(CLI::App& app) {
       "numeric figure is shown as A, B, B - A and (B - A)/|A| in %; a missing figure is \"—\". "
       "Any two JSON documents of the same shape compare the same way. Example: dynpos compare "
       "aug/steps.json nov/steps.json --labels \"Aug 2014,Nov 2014\"");
-  sub->callback([opt] { run(*opt); });
+  sub->callback([opt] {
+    analysis::CompareRequest& q = opt->request;
+    q.format = analysis::table_format_from_string(opt->format);
+    if (!opt->labels.empty()) q.labels = analysis::parse_compare_labels(opt->labels);
+    write_and_print(analysis::run_compare(q), opt->outputs);
+  });
 }
 
 }  // namespace dynpos::cli

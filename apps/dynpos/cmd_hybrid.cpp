@@ -4,54 +4,35 @@
 
 #include <fmt/core.h>
 
-#include <cstdio>
-#include <filesystem>
 #include <memory>
 #include <string>
-#include <vector>
 
 #include "commands.hpp"
 #include "dynpos/analysis/hybrid_case.hpp"
 #include "dynpos/core/error.hpp"
-#include "dynpos/io/json_writer.hpp"
 
 namespace dynpos::cli {
 namespace {
 
 struct HybridOptions {
   analysis::HybridCaseRequest request;
-  std::filesystem::path out_dir;
-  std::string json;
+  analysis::Outputs outputs;  ///< --json, --out (the folder of the plots)
 };
 
-void run_hybrid(const HybridOptions& opt) {
-  opt.request.validate();
-  analysis::check_hybrid_case_outputs(opt.out_dir, opt.json);
-  const analysis::HybridCaseReport report = analysis::run_hybrid_case(opt.request);
-  std::vector<std::filesystem::path> plots;
-  if (!opt.out_dir.empty()) plots = analysis::write_figures(report, opt.out_dir);
-  if (!opt.json.empty()) io::write_json(opt.json, analysis::to_json(report, plots));
-  // With the JSON on stdout, the human-readable part goes to stderr.
-  std::FILE* out = opt.json == "-" ? stderr : stdout;
-  print_text(out, "{}", analysis::to_text(report));
-  for (const auto& p : plots) print_text(out, "wrote {}\n", p.string());
-  if (!opt.json.empty() && opt.json != "-") print_text(out, "wrote {}\n", opt.json);
-}
-
-void add_case(CLI::App& parent, const std::string& name, const std::string& description,
-              bool first_order) {
+void add_case(CLI::App& parent, analysis::HybridCase study_case, const std::string& description) {
   auto opt = std::make_shared<HybridOptions>();
   analysis::HybridCaseRequest& r = opt->request;
-  r.case_name = name;
-  CLI::App* sub = parent.add_subcommand(name, description);
+  r.study_case = study_case;
+  const bool first_order = study_case == analysis::HybridCase::kFirstOrder;
+  CLI::App* sub = parent.add_subcommand(analysis::to_string(study_case), description);
   sub->add_flag("--no-jumps", r.no_jumps, "Run only the conventional (continuous) integral action");
   sub->add_flag("--sampled", r.sampled,
                 "Hybrid run with the practical jump set: the integral error estimated from a "
                 "sampled, noisy state derivative (default: the ideal jump set of the theorem)");
   add_seed_option(*sub, r.seed, "Seed of the derivative noise (--sampled)");
-  output_folder(
-      sub->add_option("--out", opt->out_dir, "Folder for the SVG plots (created if needed)"));
-  add_json_option(*sub, opt->json, "Write the results as JSON to FILE, or '-' for stdout");
+  output_folder(sub->add_option("--out", opt->outputs.figures,
+                                "Folder for the SVG plots (created if needed)"));
+  add_json_option(*sub, opt->outputs.json, "Write the results as JSON to FILE, or '-' for stdout");
   sub->add_option("--lambda", r.lambda,
                   first_order ? "Jump gain lambda (default 3, (5.76))"
                               : "Jump gain lambda (default 25, (5.88))");
@@ -81,7 +62,7 @@ void add_case(CLI::App& parent, const std::string& name, const std::string& desc
         "sampled: T_s = 0.03 s, noise power 20. Plots: dp_position.svg, dp_velocity.svg, "
         "dp_integral.svg, dp_lyapunov.svg.");
   }
-  sub->callback([opt] { run_hybrid(*opt); });
+  sub->callback([opt] { write_and_print(analysis::run_hybrid_case(opt->request), opt->outputs); });
 }
 
 }  // namespace
@@ -101,8 +82,10 @@ void register_hybrid(CLI::App& app) {
         unknown->empty() ? std::string("no case given") : "unknown case '" + *unknown + "'",
         "choose one of first-order, dp, vessel (dynpos hybrid --help)");
   });
-  add_case(*hybrid, "first-order", "First-order system with hybrid integral action (5.3.1)", true);
-  add_case(*hybrid, "dp", "DP vessel, backstepping with hybrid integral action (5.3.2)", false);
+  add_case(*hybrid, analysis::HybridCase::kFirstOrder,
+           "First-order system with hybrid integral action (5.3.1)");
+  add_case(*hybrid, analysis::HybridCase::kDp,
+           "DP vessel, backstepping with hybrid integral action (5.3.2)");
   add_hybrid_vessel(*hybrid);
 }
 

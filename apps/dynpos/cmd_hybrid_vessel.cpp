@@ -4,38 +4,20 @@
 
 #include <fmt/core.h>
 
-#include <cstdio>
-#include <filesystem>
 #include <memory>
 #include <string>
-#include <vector>
 
 #include "commands.hpp"
-#include "dynpos/analysis/hybrid_case.hpp"
 #include "dynpos/analysis/hybrid_vessel.hpp"
-#include "dynpos/io/json_writer.hpp"
 
 namespace dynpos::cli {
 namespace {
 
 struct VesselOptions {
   analysis::HybridVesselRequest request;
-  std::filesystem::path out_dir;
-  std::string json;
+  std::string scenario;       ///< --scenario, a load case's name (analysis::HybridLoad)
+  analysis::Outputs outputs;  ///< --json, --out (the folder of the plots)
 };
-
-void run_vessel(const VesselOptions& opt) {
-  opt.request.validate();
-  analysis::check_hybrid_case_outputs(opt.out_dir, opt.json);
-  const analysis::HybridVesselReport r = analysis::run_hybrid_vessel(opt.request);
-  std::vector<std::filesystem::path> plots;
-  if (!opt.out_dir.empty()) plots = analysis::write_figures(r, opt.out_dir);
-  if (!opt.json.empty()) io::write_json(opt.json, analysis::to_json(r, plots));
-  std::FILE* out = opt.json == "-" ? stderr : stdout;
-  print_text(out, "{}", analysis::to_text(r));
-  for (const auto& p : plots) print_text(out, "wrote {}\n", p.string());
-  if (!opt.json.empty() && opt.json != "-") print_text(out, "wrote {}\n", opt.json);
-}
 
 }  // namespace
 
@@ -44,13 +26,13 @@ void add_hybrid_vessel(CLI::App& hybrid) {
   CLI::App* sub = hybrid.add_subcommand(
       "vessel",
       "Hybrid vs conventional integral action on the virtual Gunnerus under a sudden load");
-  sub->add_option("--scenario", opt->request.scenario,
+  sub->add_option("--scenario", opt->scenario,
                   "ice: a 20 kN ice load sets in; mooring: a mooring line holding 20 kN snaps")
       ->required();
   add_seed_option(*sub, opt->request.seed, "Master seed (the same for both designs)");
-  output_folder(
-      sub->add_option("--out", opt->out_dir, "Folder for the SVG plots (created if needed)"));
-  add_json_option(*sub, opt->json, "Write the results as JSON to FILE, or '-' for stdout");
+  output_folder(sub->add_option("--out", opt->outputs.figures,
+                                "Folder for the SVG plots (created if needed)"));
+  add_json_option(*sub, opt->outputs.json, "Write the results as JSON to FILE, or '-' for stdout");
   // The library checks the value (HybridVesselRequest::validate); the type name says the range.
   sub->add_option("--within", opt->request.within_m, "Distance for 'back within' [m]")
       ->type_name("FLOAT:POSITIVE")
@@ -64,7 +46,10 @@ void add_hybrid_vessel(CLI::App& hybrid) {
       "back within 1 m, IAE, energy, jumps. Plots: hybrid_vessel_<scenario>_{{position,integral,"
       "power}}.svg.",
       cases[0].scenario_file, cases[1].scenario_file));
-  sub->callback([opt] { run_vessel(*opt); });
+  sub->callback([opt] {
+    opt->request.scenario = analysis::hybrid_load_from_string(opt->scenario);
+    write_and_print(analysis::run_hybrid_vessel(opt->request), opt->outputs);
+  });
 }
 
 }  // namespace dynpos::cli

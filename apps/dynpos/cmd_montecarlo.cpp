@@ -4,34 +4,28 @@
 
 #include <fmt/core.h>
 
-#include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "commands.hpp"
 #include "dynpos/analysis/montecarlo.hpp"
-#include "dynpos/analysis/options.hpp"
-#include "dynpos/io/json_writer.hpp"
 
 namespace dynpos::cli {
 namespace {
 
+// The request, with its text options as given (parsed when the command runs, defaults from the
+// request), and the outputs of the run and of `merge`.
 struct MonteCarloOptions {
   analysis::MonteCarloRequest request;
-  std::string seeds = "1..20";
-  std::string shard = "1/1";
-  std::string json;
+  std::string seeds = fmt::format("{}..{}", request.seeds.first, request.seeds.last);
+  std::string shard = fmt::format("{}/{}", request.shard.index, request.shard.count);
+  std::string measure = analysis::to_string(request.measure);
+  analysis::Outputs outputs;
   std::vector<std::filesystem::path> shard_files;
-  std::string merged_json;
+  analysis::Outputs merged;
 };
-
-void print(const analysis::MonteCarloReport& report, const std::string& json) {
-  if (!json.empty()) io::write_json(json, analysis::to_json(report));
-  std::FILE* out = json == "-" ? stderr : stdout;
-  print_text(out, "{}", analysis::to_text(report));
-  if (!json.empty() && json != "-") print_text(out, "wrote {}\n", json);
-}
 
 }  // namespace
 
@@ -55,7 +49,7 @@ void register_montecarlo(CLI::App& app) {
   sub->add_option("--vessel", r.vessel_file, "Vessel file (default: data/vessels/gunnerus.toml)");
   sub->add_option("--duration", r.duration_s, "Override the run length [s]")
       ->type_name("FLOAT:POSITIVE");
-  sub->add_option("--measure", r.measure,
+  sub->add_option("--measure", opt->measure,
                   "What to identify: auto (steps for a step test, stationkeeping for a DP run, "
                   "else the GNSS lever arms), steps, station-keeping or lever-arms")
       ->capture_default_str();
@@ -63,7 +57,8 @@ void register_montecarlo(CLI::App& app) {
       sub->add_option("--work-dir", r.work_dir,
                       "Folder for each seed's files while it is analysed (default: the temporary "
                       "folder); removed afterwards"));
-  add_json_option(*sub, opt->json, "Write the samples and the summary as JSON to FILE, or '-'");
+  add_json_option(*sub, opt->outputs.json,
+                  "Write the samples and the summary as JSON to FILE, or '-'");
   sub->footer(
       "Quantities: step tests give K, T and delay per step (Smith's method, the one that defines "
       "the truth), DP runs the stationkeeping standard deviations, other runs the GNSS lever "
@@ -76,20 +71,17 @@ void register_montecarlo(CLI::App& app) {
   merge->add_option("files", opt->shard_files, "The shards' JSON documents")
       ->required()
       ->check(CLI::ExistingFile);
-  add_json_option(*merge, opt->merged_json, "Write the merged document to FILE, or '-'");
-  merge->callback([opt] {
-    analysis::check_output_file("json", opt->merged_json);
-    print(analysis::merge_montecarlo(opt->shard_files), opt->merged_json);
-  });
+  add_json_option(*merge, opt->merged.json, "Write the merged document to FILE, or '-'");
+  merge->callback(
+      [opt] { write_and_print(analysis::merge_montecarlo(opt->shard_files), opt->merged); });
 
   sub->callback([opt, sub] {
     if (sub->got_subcommand("merge")) return;
     analysis::MonteCarloRequest& q = opt->request;
-    q.set_seeds(opt->seeds);
-    q.set_shard(opt->shard);
-    q.validate();
-    analysis::check_output_file("json", opt->json);
-    print(analysis::run_montecarlo(q), opt->json);
+    q.seeds = analysis::parse_seed_range(opt->seeds);
+    q.shard = analysis::parse_shard(opt->shard);
+    q.measure = analysis::montecarlo_measure_from_string(opt->measure);
+    write_and_print(analysis::run_montecarlo(q), opt->outputs);
   });
 }
 

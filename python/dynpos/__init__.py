@@ -358,7 +358,8 @@ def compare(a, b, *, json=None, **options) -> Result:
     """Two results of the same analysis side by side (e.g. before and after a retrofit): each
     figure of A and B with its change. ``a`` and ``b`` are JSON files written by an analysis,
     or :class:`Result` objects / dicts (written to a temporary file first). Options as
-    ``dynpos compare``: ``format``, ``labels`` ("LABEL_A,LABEL_B"), ``step_tolerance`` [s].
+    ``dynpos compare``: ``format`` ("text", "markdown"), ``labels`` ("LABEL_A,LABEL_B" or
+    (LABEL_A, LABEL_B)), ``step_tolerance`` [s].
     Table: ``rows``."""
     with tempfile.TemporaryDirectory(prefix="dynpos-") as tmp:
         paths = []
@@ -403,17 +404,12 @@ def montecarlo(scenario: str, seeds: str | tuple[int, int] = (1, 10), *, json=No
     sea-trial result can be trusted. ``seeds``: "A..B" or (A, B), inclusive. Options as
     ``dynpos montecarlo``: ``jobs`` (seeds at once, 0 = every core; the result does not depend
     on it), ``measure`` ("auto", "steps", "station-keeping" or "lever-arms"), ``duration`` [s],
-    ``vessel`` (file), ``shard`` ("i/N": this part of the seeds, for ``dynpos montecarlo
-    merge``), ``work_dir`` (where each seed's files go; default temporary). Table: ``summary``
-    (quantity: n, mean, std, min, max, truth, bias, rms_error); ``samples`` per seed."""
-    q = _dynpos.MonteCarloRequest()
+    ``vessel`` (file), ``shard`` ((i, N) or "i/N": this part of the seeds, for ``dynpos
+    montecarlo merge``), ``work_dir`` (where each seed's files go; default temporary). Table:
+    ``summary`` (quantity: n, mean, std, min, max, truth, bias, rms_error); ``samples`` per
+    seed."""
+    q = _options(_dynpos.MonteCarloRequest, {"seeds": seeds, **options})
     q.scenario = _fspath(scenario, "scenario")
-    q.set_seeds(seeds if isinstance(seeds, str) else f"{seeds[0]}..{seeds[1]}")
-    shard = options.pop("shard", None)
-    if shard is not None:
-        q.set_shard(shard)
-    for key, value in options.items():
-        _set(q, key, value)
     return Result(_json.loads(_dynpos.run_montecarlo(q, _path(json))), "summary")
 
 

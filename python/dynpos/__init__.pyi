@@ -142,7 +142,7 @@ def hybrid_vessel(scenario: Literal["ice", "mooring"], *, json: _Path | None = N
                   out: _Path | None = None, seed: int = ..., within: float = ...) -> Result: ...
 def compare(a: _Path | Result | Mapping[str, Any], b: _Path | Result | Mapping[str, Any], *,
             json: _Path | None = None, format: Literal["text", "markdown"] = ...,
-            labels: str = ..., step_tolerance: float = ...) -> Result: ...
+            labels: str | tuple[str, str] | None = ..., step_tolerance: float = ...) -> Result: ...
 def capability(*, json: _Path | None = None, out: _Path | None = None,
                level: Literal[1, 2, 3] = ..., vessel: _Path = ...,
                failure: str = ..., site: _Path = ..., hs: float | None = ...,
@@ -155,7 +155,8 @@ def capability_loads(loads: _Path, *, json: _Path | None = None, vessel: _Path =
 def montecarlo(scenario: str, seeds: str | tuple[int, int] = ..., *, json: _Path | None = None,
                jobs: int = ..., measure: Literal["auto", "steps", "station-keeping",
                                                  "lever-arms"] = ...,
-               duration: float | None = ..., vessel: _Path = ..., shard: str = ...,
+               duration: float | None = ..., vessel: _Path = ...,
+               shard: str | tuple[int, int] = ...,
                work_dir: _Path = ...) -> Result: ...
 def simulate(scenario: str, seed: int = 1, out: _Path | None = None,
              duration: float | None = None, vessel: _Path | None = None,

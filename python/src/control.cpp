@@ -4,7 +4,10 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <cstddef>
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <utility>
 #include <variant>
@@ -25,11 +28,26 @@ namespace {
 
 using namespace dynpos::analysis;
 
+// The hybrid documents list the plots written (as --json does): the JSON returned is the one
+// write_outputs writes, made from the files written, not from the report alone. The JSON may go
+// into the plots' folder (check_hybrid_case_outputs).
+template <typename Request, typename Run>
+std::string run_and_write_plots(const Request& request, const Outputs& outputs, Run run) {
+  check_hybrid_case_outputs(outputs.figures, outputs.json);
+  py::gil_scoped_release release;
+  const auto report = run(request);
+  Written plots = write_outputs(report, outputs);
+  if (!outputs.json.empty() && outputs.json != "-") plots.pop_back();  // the JSON, last
+  return to_json(report, plots).dump();
+}
+
 void bind_hybrid_case(py::module_& m) {
   using Q = HybridCaseRequest;
   py::class_<Q>(m, "HybridCaseRequest")
       .def(py::init<>())
-      .def_readwrite("case", &Q::case_name)
+      .def_property(
+          "case", [](const Q& q) { return to_string(q.study_case); },
+          [](Q& q, const std::string& name) { q.study_case = hybrid_case_from_string(name); })
       .def_readwrite("no_jumps", &Q::no_jumps)
       .def_readwrite("sampled", &Q::sampled)
       .def_readwrite("seed", &Q::seed)
@@ -44,13 +62,7 @@ void bind_hybrid_case(py::module_& m) {
   m.def(
       "run_hybrid_case",
       [](const Q& q, const std::string& json, const std::filesystem::path& out) {
-        q.validate();
-        check_hybrid_case_outputs(out, json);
-        return run_to_json(q, json, run_hybrid_case, [&out](const HybridCaseReport& r) {
-          std::vector<std::filesystem::path> plots;
-          if (!out.empty()) plots = write_figures(r, out);
-          return to_json(r, plots);
-        });
+        return run_and_write_plots(q, Outputs{json, out}, run_hybrid_case);
       },
       py::arg("request"), py::arg("json") = "", py::arg("out") = std::filesystem::path());
 }
@@ -59,22 +71,21 @@ void bind_hybrid_vessel(py::module_& m) {
   using Q = HybridVesselRequest;
   py::class_<Q>(m, "HybridVesselRequest")
       .def(py::init<>())
-      .def_readwrite("scenario", &Q::scenario)
+      .def_property(
+          "scenario", [](const Q& q) { return to_string(q.scenario); },
+          [](Q& q, const std::string& name) { q.scenario = hybrid_load_from_string(name); })
       .def_readwrite("seed", &Q::seed)
       .def_readwrite("within", &Q::within_m);
   m.def(
       "run_hybrid_vessel",
       [](const Q& q, const std::string& json, const std::filesystem::path& out) {
-        q.validate();
-        check_hybrid_case_outputs(out, json);  // the same rules: the JSON may go into `out`
-        return run_to_json(q, json, run_hybrid_vessel, [&out](const HybridVesselReport& r) {
-          std::vector<std::filesystem::path> plots;
-          if (!out.empty()) plots = write_figures(r, out);
-          return to_json(r, plots);
-        });
+        return run_and_write_plots(q, Outputs{json, out}, run_hybrid_vessel);
       },
       py::arg("request"), py::arg("json") = "", py::arg("out") = std::filesystem::path());
 }
+
+// Labels as "LABEL_A,LABEL_B" or a pair of texts.
+using LabelsArg = std::variant<std::string, CompareLabels>;
 
 void bind_compare(py::module_& m) {
   using Q = CompareRequest;
@@ -82,15 +93,23 @@ void bind_compare(py::module_& m) {
       .def(py::init<>())
       .def_readwrite("a", &Q::a)
       .def_readwrite("b", &Q::b)
-      .def_readwrite("format", &Q::format)
-      .def_readwrite("labels", &Q::labels)
+      .def_property(
+          "format", [](const Q& q) { return to_string(q.format); },
+          [](Q& q, const std::string& name) { q.format = table_format_from_string(name); })
+      .def_property(
+          "labels", [](const Q& q) { return q.labels; },
+          [](Q& q, const std::optional<LabelsArg>& labels) {
+            if (!labels) return q.labels.reset();
+            const auto* text = std::get_if<std::string>(&*labels);
+            q.labels = text ? parse_compare_labels(*text) : std::get<CompareLabels>(*labels);
+          })
       .def_readwrite("step_tolerance", &Q::step_tolerance_s);
   m.def(
       "run_compare",
       [](const Q& q, const std::string& json) {
-        q.validate();
-        check_output_file("json", json);
-        return run_to_json(q, json, run_compare, [](const CompareReport& r) { return to_json(r); });
+        const Outputs outputs{json, {}};
+        outputs.check("out", true);
+        return run_and_write(q, outputs, run_compare);
       },
       py::arg("request"), py::arg("json") = "");
 }
@@ -117,16 +136,9 @@ void bind_capability(py::module_& m) {
   m.def(
       "run_capability",
       [](const Q& q, const std::string& json, const std::filesystem::path& out) {
-        q.validate();
-        check_output_file("json", json);
-        check_output_dir("out", out);
-        return run_to_json(q, json, run_capability, [&out](const CapabilityReport& r) {
-          if (!out.empty()) {
-            std::filesystem::create_directories(out);
-            write_rose(r, out / "rose.svg");
-          }
-          return to_json(r);
-        });
+        const Outputs outputs{json, out};
+        outputs.check("out", true);
+        return run_and_write(q, outputs, run_capability);
       },
       py::arg("request"), py::arg("json") = "", py::arg("out") = std::filesystem::path());
 }
@@ -141,10 +153,9 @@ void bind_capability_loads(py::module_& m) {
   m.def(
       "run_feasibility",
       [](const Q& q, const std::string& json) {
-        q.validate();
-        check_output_file("json", json);
-        return run_to_json(q, json, run_feasibility,
-                           [](const FeasibilityReport& r) { return to_json(r); });
+        const Outputs outputs{json, {}};
+        outputs.check("out", true);
+        return run_and_write(q, outputs, run_feasibility);
       },
       py::arg("request"), py::arg("json") = "");
 }
@@ -163,25 +174,42 @@ std::vector<std::pair<std::string, std::filesystem::path>> simulate(const Simula
   return runs;
 }
 
+// Seeds as (A, B) or "A..B", a shard as (i, N) or "i/N".
+using SeedsArg = std::variant<std::string, std::pair<std::uint64_t, std::uint64_t>>;
+using ShardArg = std::variant<std::string, std::pair<std::size_t, std::size_t>>;
+
 void bind_montecarlo(py::module_& m) {
   using Q = MonteCarloRequest;
   py::class_<Q>(m, "MonteCarloRequest")
       .def(py::init<>())
       .def_readwrite("scenario", &Q::scenario)
-      .def("set_seeds", &Q::set_seeds, py::arg("text"))
-      .def("set_shard", &Q::set_shard, py::arg("text"))
+      .def_property(
+          "seeds", [](const Q& q) { return std::pair(q.seeds.first, q.seeds.last); },
+          [](Q& q, const SeedsArg& seeds) {
+            const auto* text = std::get_if<std::string>(&seeds);
+            const auto* pair = std::get_if<1>(&seeds);
+            q.seeds = text ? parse_seed_range(*text) : SeedRange{pair->first, pair->second};
+          })
+      .def_property(
+          "shard", [](const Q& q) { return std::pair(q.shard.index, q.shard.count); },
+          [](Q& q, const ShardArg& shard) {
+            const auto* text = std::get_if<std::string>(&shard);
+            const auto* pair = std::get_if<1>(&shard);
+            q.shard = text ? parse_shard(*text) : Shard{pair->first, pair->second};
+          })
+      .def_property(
+          "measure", [](const Q& q) { return to_string(q.measure); },
+          [](Q& q, const std::string& name) { q.measure = montecarlo_measure_from_string(name); })
       .def_readwrite("jobs", &Q::jobs)
       .def_readwrite("vessel", &Q::vessel_file)
       .def_readwrite("duration", &Q::duration_s)
-      .def_readwrite("work_dir", &Q::work_dir)
-      .def_readwrite("measure", &Q::measure);
+      .def_readwrite("work_dir", &Q::work_dir);
   m.def(
       "run_montecarlo",
       [](const Q& q, const std::string& json) {
-        q.validate();
-        check_output_file("json", json);
-        return run_to_json(q, json, run_montecarlo,
-                           [](const MonteCarloReport& r) { return to_json(r); });
+        const Outputs outputs{json, {}};
+        outputs.check("out", true);
+        return run_and_write(q, outputs, run_montecarlo);
       },
       py::arg("request"), py::arg("json") = "");
 }

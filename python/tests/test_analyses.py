@@ -172,7 +172,7 @@ def test_compare(runs, tmp_path):
     col = {"input": "command.surge", "output": "rpm.port"}
     lsq = dynpos.identify_step(log, col=col)
     smith = dynpos.identify_step(log, col=col, method="smith")
-    c = dynpos.compare(lsq, smith, labels="lsq,smith")
+    c = dynpos.compare(lsq, smith, labels=("lsq", "smith"))
     assert c.labels == ["lsq", "smith"] and c.kind == "step"
 
 
@@ -185,6 +185,18 @@ def test_hybrid_case(tmp_path):
     f = dynpos.hybrid_case("first-order", lambda_=2.0, no_jumps=True)
     expected, _ = cli(tmp_path, "hybrid", "first-order", "--lambda", "2", "--no-jumps")
     assert f.to_dict() == expected
+
+
+def test_hybrid_cases_are_named():
+    q = dynpos._dynpos.HybridCaseRequest()
+    assert q.case == "first-order"
+    q.case = "dp"
+    assert q.case == "dp"
+    for call, key in ((lambda: dynpos.hybrid_case("second-order"), "case"),
+                      (lambda: dynpos.hybrid_vessel("ice2"), "scenario")):
+        with pytest.raises(dynpos.InputError) as e:
+            call()
+        assert e.value.option == key and f"({key}=): unknown" in str(e.value)
 
 
 def test_hybrid_vessel(tmp_path):
@@ -236,5 +248,18 @@ def test_montecarlo(tmp_path):
     # A shard of the range, as for `dynpos montecarlo merge`.
     second = dynpos.montecarlo("turning-circle", "1..2", shard="2/2", jobs=1)
     assert second.to_dict()["samples"] == doc["samples"][1:]
-    with pytest.raises(dynpos.InputError, match="--seeds"):
+    with pytest.raises(dynpos.InputError, match=r"\(seeds=\): the range 5\.\.4 is empty"):
         dynpos.montecarlo("turning-circle", "5..4")
+
+
+def test_montecarlo_takes_typed_seeds_shards_and_measures():
+    q = dynpos._dynpos.MonteCarloRequest()
+    q.seeds, q.shard, q.measure = (3, 9), (2, 4), "lever-arms"
+    assert (q.seeds, q.shard, q.measure) == ((3, 9), (2, 4), "lever-arms")
+    q.seeds, q.shard = "7", "1/3"
+    assert (q.seeds, q.shard) == ((7, 7), (1, 3))
+    for options, key in (({"measure": "everything"}, "measure"), ({"shard": "2-4"}, "shard"),
+                         ({"seeds": "a..b"}, "seeds")):
+        with pytest.raises(dynpos.InputError) as e:
+            dynpos.montecarlo("turning-circle", **{"seeds": (1, 2), **options})
+        assert e.value.option == key and f"({key}=)" in str(e.value)

@@ -1,7 +1,8 @@
 #include "dynpos/analysis/capability.hpp"
 
-#include <fmt/core.h>
+#include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "dynpos/analysis/data_dir.hpp"
@@ -67,19 +68,6 @@ std::vector<capability::CapabilityPoint> rose(const CapabilityRequest& q,
   return capability::quasi_static_rose(vessel, failed, o);
 }
 
-nlohmann::json points_json(const std::vector<capability::CapabilityPoint>& points) {
-  nlohmann::json out = nlohmann::json::array();
-  for (const auto& p : points) {
-    out.push_back({{"direction_deg", p.direction_deg},
-                   {"dp_number", p.dp_number},
-                   {"max_wind_mps", p.max_wind_mps},
-                   {"limiting", p.limiting},
-                   {"failure", p.failure},
-                   {"beyond_table", p.beyond_table}});
-  }
-  return out;
-}
-
 }  // namespace
 
 void CapabilityRequest::validate() const {
@@ -89,6 +77,16 @@ void CapabilityRequest::validate() const {
   }
   if (failure != "none" && failure != "worst") {
     capability::with_failures({}, {failure});  // throws for an unknown actuator
+  }
+  if (!worst_of.empty() && failure != "worst") {
+    throw option_error("worst_of", "the failures of the worst case need failure \"worst\"");
+  }
+  const std::vector<std::string> singles = capability::single_failures();
+  for (const std::string& f : worst_of) {
+    if (std::find(singles.begin(), singles.end(), f) == singles.end()) {
+      throw option_error("worst_of", "unknown actuator '" + f + "'",
+                         fmt::format("one of {}", fmt::join(singles, ", ")));
+    }
   }
   if (level != 2 && (!site.empty() || hs || tp || current)) {
     throw option_error("site/hs/tp/current", "a site environment is for level 2",
@@ -130,7 +128,7 @@ CapabilityReport run_capability(const CapabilityRequest& q) {
   r.intact = {"none", rose(q, vessel, table, {})};
   if (q.failure == "worst") {
     std::vector<std::vector<capability::CapabilityPoint>> all;
-    for (const std::string& f : capability::single_failures()) {
+    for (const std::string& f : q.worst_of.empty() ? capability::single_failures() : q.worst_of) {
       r.failures.push_back({f, rose(q, vessel, table, {f})});
       all.push_back(r.failures.back().points);
     }
@@ -158,35 +156,6 @@ std::array<std::optional<int>, 4> capability_notation(const CapabilityReport& re
     out[3] = lowest(report.headline().points, false);
   }
   return out;
-}
-
-nlohmann::json to_json(const CapabilityReport& report) {
-  nlohmann::json j;
-  j["analysis"] = "capability";
-  j["level"] = report.level;
-  j["vessel"] = report.vessel;
-  if (!report.vessel_source.empty()) j["vessel_file"] = report.vessel_source;
-  j["environment"] = report.environment;
-  j["failure"] = report.failure;
-  j["dynamic_allowance"] = report.dynamic_allowance;
-  const auto notation = capability_notation(report);
-  nlohmann::json n = nlohmann::json::array();
-  for (const auto& v : notation) n.push_back(v ? nlohmann::json(*v) : nlohmann::json());
-  j["notation"] = n;
-  j["points"] = points_json(report.headline().points);
-  j["intact"] = points_json(report.intact.points);
-  j["cases"] = nlohmann::json::object();
-  for (const auto& c : report.failures) j["cases"][c.failure] = points_json(c.points);
-  if (report.time_domain) {
-    const auto& o = *report.time_domain;
-    j["time_domain"] = {{"duration_s", o.duration_s},
-                        {"settle_s", o.settle_s},
-                        {"footprint_m", o.footprint_m},
-                        {"footprint_deg", o.footprint_deg},
-                        {"wind_tolerance_mps", o.wind_tolerance_mps},
-                        {"seed", o.seed}};
-  }
-  return j;
 }
 
 }  // namespace dynpos::analysis

@@ -7,13 +7,9 @@
 #include <set>
 
 #include "dynpos/analysis/capability.hpp"
-#include "dynpos/analysis/data_dir.hpp"
 #include "dynpos/analysis/demo_sections.hpp"
-#include "dynpos/capability/quasi_static.hpp"
-#include "dynpos/capability/time_domain.hpp"
 #include "dynpos/io/json_writer.hpp"
 #include "dynpos/report/table.hpp"
-#include "dynpos/scenario/vessel_config.hpp"
 
 namespace dynpos::analysis {
 namespace {
@@ -22,7 +18,6 @@ namespace {
 CapabilityRequest level3_request(std::uint64_t seed) {
   CapabilityRequest q;
   q.level = 3;
-  q.failure = "none";
   q.direction_step = 30.0;
   q.settle = 300.0;
   q.duration = 300.0;
@@ -34,19 +29,12 @@ CapabilityRequest level3_request(std::uint64_t seed) {
 // Level 3 intact and for each failure that is the worst somewhere at level 1 (the others are
 // never the worst there), with their worst case.
 CapabilityReport level3_report(const CapabilityReport& l1, std::uint64_t seed) {
-  CapabilityReport r = run_capability(level3_request(seed));
+  CapabilityRequest q = level3_request(seed);
   std::set<std::string> worst_at_l1;
   for (const auto& p : l1.worst->points) worst_at_l1.insert(p.failure);
-  const scenario::VesselConfig vessel = scenario::load_vessel_config(vessel_file_or_default());
-  const capability::TimeDomainOptions& o = *r.time_domain;
-  std::vector<std::vector<capability::CapabilityPoint>> roses;
-  for (const std::string& f : worst_at_l1) {
-    r.failures.push_back({f, capability::time_domain_rose(vessel, {f}, o)});
-    roses.push_back(r.failures.back().points);
-  }
-  r.failure = "worst";
-  r.worst = CapabilityCase{"worst", capability::worst_case(roses)};
-  return r;
+  q.failure = "worst";
+  q.worst_of.assign(worst_at_l1.begin(), worst_at_l1.end());
+  return run_capability(q);
 }
 
 report::Table summary_table(const CapabilityReport& l1, const CapabilityReport& l3) {
@@ -84,12 +72,6 @@ ReportSection capability_demo_section(const std::filesystem::path& campaign_dir,
   io::write_json(dir / "capability-l3.json", to_json(l3));
   write_rose(l1, dir / "capability-l1.svg");
   write_rose(l3, dir / "capability-l3.svg");
-  const auto notation = [](const CapabilityReport& r) {
-    const auto n = capability_notation(r);
-    const auto c = [](const std::optional<int>& v) { return v ? std::to_string(*v) : "NA"; };
-    return fmt::format("DP capability-L{}({},{},{},{})", r.level, c(n[0]), c(n[1]), c(n[2]),
-                       c(n[3]));
-  };
   const std::string head = fmt::format(
       "The virtual Gunnerus' DP capability number (and the strongest wind held) per direction "
       "of wind, waves and current off the bow, intact and for the worst single failure. Level 1: "
@@ -98,8 +80,8 @@ ReportSection capability_demo_section(const std::filesystem::path& campaign_dir,
       "footprint {} m and {} deg, seed {}; its failure cases are those worst somewhere at level "
       "1 ({}). Level 3 holds more than level 1 where the 25 % reserve on the current's load, "
       "which the table keeps at 0.75 m/s, uses up the thrust (docs/theory.md).",
-      l1.dynamic_allowance, notation(l1), l3.time_domain->duration_s, l3.time_domain->settle_s,
-      l3.time_domain->footprint_m, l3.time_domain->footprint_deg, seed, notation(l3));
+      l1.dynamic_allowance, notation_text(l1), l3.time_domain->duration_s, l3.time_domain->settle_s,
+      l3.time_domain->footprint_m, l3.time_domain->footprint_deg, seed, notation_text(l3));
   const report::Table t = summary_table(l1, l3);
   section.markdown = head + "\n\n" + report::render_markdown(t) + "\n";
   section.html = "<p>" + head + "</p>\n" + report::render_html(t);

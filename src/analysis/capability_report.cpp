@@ -1,4 +1,4 @@
-// The capability report's table and rose (analysis/capability.hpp).
+// The capability report: its JSON, table and rose, and the files written (analysis/capability.hpp).
 
 #include <fmt/core.h>
 
@@ -13,13 +13,17 @@ std::string wind_cell(const capability::CapabilityPoint& p) {
   return fmt::format("{}{:.1f}", p.beyond_table ? "≥ " : "", p.max_wind_mps);
 }
 
-std::string notation_text(const CapabilityReport& r) {
-  const auto n = capability_notation(r);
-  const auto cell = [](const std::optional<int>& v) {
-    return v ? std::to_string(*v) : std::string("NA");
-  };
-  return fmt::format("DP capability-L{}({},{},{},{})", r.level, cell(n[0]), cell(n[1]), cell(n[2]),
-                     cell(n[3]));
+nlohmann::json points_json(const std::vector<capability::CapabilityPoint>& points) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& p : points) {
+    out.push_back({{"direction_deg", p.direction_deg},
+                   {"dp_number", p.dp_number},
+                   {"max_wind_mps", p.max_wind_mps},
+                   {"limiting", p.limiting},
+                   {"failure", p.failure},
+                   {"beyond_table", p.beyond_table}});
+  }
+  return out;
 }
 
 report::PolarSeries series(const CapabilityCase& c, bool numbers, const std::string& label,
@@ -36,6 +40,44 @@ report::PolarSeries series(const CapabilityCase& c, bool numbers, const std::str
 }
 
 }  // namespace
+
+std::string notation_text(const CapabilityReport& r) {
+  const auto n = capability_notation(r);
+  const auto cell = [](const std::optional<int>& v) {
+    return v ? std::to_string(*v) : std::string("NA");
+  };
+  return fmt::format("DP capability-L{}({},{},{},{})", r.level, cell(n[0]), cell(n[1]), cell(n[2]),
+                     cell(n[3]));
+}
+
+nlohmann::json to_json(const CapabilityReport& report) {
+  nlohmann::json j;
+  j["analysis"] = "capability";
+  j["level"] = report.level;
+  j["vessel"] = report.vessel;
+  if (!report.vessel_source.empty()) j["vessel_file"] = report.vessel_source;
+  j["environment"] = report.environment;
+  j["failure"] = report.failure;
+  j["dynamic_allowance"] = report.dynamic_allowance;
+  const auto notation = capability_notation(report);
+  nlohmann::json n = nlohmann::json::array();
+  for (const auto& v : notation) n.push_back(v ? nlohmann::json(*v) : nlohmann::json());
+  j["notation"] = n;
+  j["points"] = points_json(report.headline().points);
+  j["intact"] = points_json(report.intact.points);
+  j["cases"] = nlohmann::json::object();
+  for (const auto& c : report.failures) j["cases"][c.failure] = points_json(c.points);
+  if (report.time_domain) {
+    const auto& o = *report.time_domain;
+    j["time_domain"] = {{"duration_s", o.duration_s},
+                        {"settle_s", o.settle_s},
+                        {"footprint_m", o.footprint_m},
+                        {"footprint_deg", o.footprint_deg},
+                        {"wind_tolerance_mps", o.wind_tolerance_mps},
+                        {"seed", o.seed}};
+  }
+  return j;
+}
 
 std::string to_text(const CapabilityReport& r) {
   std::string out = fmt::format(
@@ -89,6 +131,17 @@ void write_rose(const CapabilityReport& r, const std::filesystem::path& svg) {
     fig.panels.push_back(panel);
   }
   report::write_polar_svg(svg, fig);
+}
+
+Written write_outputs(const CapabilityReport& report, const Outputs& outputs) {
+  Written written;
+  if (!outputs.figures.empty()) {
+    std::filesystem::create_directories(outputs.figures);
+    written.push_back(outputs.figures / "rose.svg");
+    write_rose(report, written.back());
+  }
+  write_json_output(outputs, to_json(report), written);
+  return written;
 }
 
 }  // namespace dynpos::analysis

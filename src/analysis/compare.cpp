@@ -8,46 +8,55 @@
 
 #include "dynpos/analysis/options.hpp"
 #include "dynpos/core/error.hpp"
-#include "dynpos/report/table.hpp"
 
 namespace dynpos::analysis {
 namespace {
 
-// The labels as given ("A,B"), else the file names, or the paths as given when the names are
-// the same.
-std::pair<std::string, std::string> labels_of(const CompareRequest& request) {
-  const std::string& labels = request.labels;
-  if (labels.empty()) {
-    if (request.a.filename() == request.b.filename()) {
-      return {request.a.string(), request.b.string()};
-    }
-    return {request.a.filename().string(), request.b.filename().string()};
-  }
-  const auto comma = labels.find(',');
-  if (comma == std::string::npos || labels.find(',', comma + 1) != std::string::npos) {
-    throw option_error("labels", "'" + labels + "' is not two labels",
-                       "give two labels separated by one comma, e.g. --labels \"Aug 2014,Nov "
-                       "2014\"");
-  }
-  std::string label_a = labels.substr(0, comma), label_b = labels.substr(comma + 1);
-  if (label_a.empty() || label_b.empty()) {
-    throw option_error("labels", "an empty label in '" + labels + "'",
+// The labels as given, else the file names, or the paths as given when the names are the same.
+CompareLabels labels_of(const CompareRequest& request) {
+  if (request.labels) return *request.labels;
+  if (request.a.filename() == request.b.filename()) return {request.a.string(), request.b.string()};
+  return {request.a.filename().string(), request.b.filename().string()};
+}
+
+void check_labels(const CompareLabels& labels) {
+  if (labels.first.empty() || labels.second.empty()) {
+    throw option_error("labels", "an empty label in '" + labels.first + "," + labels.second + "'",
                        "give two non-empty labels, e.g. --labels \"before,after\"");
   }
-  return {label_a, label_b};
 }
 
 }  // namespace
 
-void CompareRequest::validate() const {
-  if (format != "text" && format != "markdown") {
-    throw option_error("format", "unknown format '" + format + "'",
-                       "choose text (default) or markdown");
+std::string to_string(TableFormat format) {
+  return format == TableFormat::kMarkdown ? "markdown" : "text";
+}
+
+TableFormat table_format_from_string(const std::string& name) {
+  for (const TableFormat f : {TableFormat::kText, TableFormat::kMarkdown}) {
+    if (name == to_string(f)) return f;
   }
+  throw option_error("format", "unknown format '" + name + "'",
+                     "choose text (default) or markdown");
+}
+
+CompareLabels parse_compare_labels(const std::string& text) {
+  const auto comma = text.find(',');
+  if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos) {
+    throw option_error("labels", "'" + text + "' is not two labels",
+                       "give two labels separated by one comma, e.g. --labels \"Aug 2014,Nov "
+                       "2014\"");
+  }
+  CompareLabels labels{text.substr(0, comma), text.substr(comma + 1)};
+  check_labels(labels);
+  return labels;
+}
+
+void CompareRequest::validate() const {
   if (!(step_tolerance_s > 0.0)) {
     throw option_error("step_tolerance", "must be > 0 s", "e.g. --step-tolerance 5");
   }
-  labels_of(*this);
+  if (labels) check_labels(*labels);
 }
 
 CompareReport run_compare(const CompareRequest& request) {
@@ -78,23 +87,6 @@ CompareReport run_compare(const CompareRequest& request) {
                            "give two results of the same analysis written with --json");
   }
   return out;
-}
-
-nlohmann::json to_json(const CompareReport& report) {
-  return report::comparison_json(report.result, report.label_a, report.label_b);
-}
-
-std::string to_text(const CompareReport& report) {
-  const report::Table table =
-      report::comparison_table(report.result, report.label_a, report.label_b);
-  const bool md = report.markdown();
-  return fmt::format(
-             "{} results: {} = {}, {} = {}; {} figures ({} in both, {} only in {}, {} only in "
-             "{})\n{}",
-             report.result.kind, report.label_a, report.a.string(), report.label_b,
-             report.b.string(), report.result.rows.size(), report.common, report.result.only_in_a,
-             report.label_a, report.result.only_in_b, report.label_b, md ? "\n" : "") +
-         (md ? report::render_markdown(table) : report::render_text(table));
 }
 
 }  // namespace dynpos::analysis

@@ -13,9 +13,6 @@
 namespace dynpos::analysis {
 namespace {
 
-constexpr const char* kFirstOrder = "first-order";
-constexpr const char* kDp = "dp";
-
 // Applies the common settings to the timing; option_error on a bad value.
 void apply_timing(const HybridCaseRequest& request, hybrid::CaseTiming& timing) {
   if (request.dwell_s) timing.dwell_time_s = *request.dwell_s;
@@ -128,10 +125,8 @@ std::variant<FirstOrderStudy, DpStudy> study_of(const HybridCaseRequest& request
                        "--no-jumps runs no hybrid run",
                        "drop one of them");
   }
-  if (request.case_name == kFirstOrder) return first_order_study(request);
-  if (request.case_name == kDp) return dp_study(request);
-  throw option_error("case", "unknown case '" + request.case_name + "'",
-                     "choose one of first-order, dp");
+  if (request.study_case == HybridCase::kDp) return dp_study(request);
+  return first_order_study(request);
 }
 
 // Runs the conventional design and (unless no_jumps) the hybrid one with the options' jump set.
@@ -148,12 +143,23 @@ void run_both(HybridCaseReport& report, CaseOptions o, bool no_jumps, RunCase ru
 
 }  // namespace
 
+std::string to_string(HybridCase study_case) {
+  return study_case == HybridCase::kDp ? "dp" : "first-order";
+}
+
+HybridCase hybrid_case_from_string(const std::string& name) {
+  for (const HybridCase c : {HybridCase::kFirstOrder, HybridCase::kDp}) {
+    if (name == to_string(c)) return c;
+  }
+  throw option_error("case", "unknown case '" + name + "'", "choose one of first-order, dp");
+}
+
 void HybridCaseRequest::validate() const { (void)study_of(*this); }
 
 HybridCaseReport run_hybrid_case(const HybridCaseRequest& request) {
   HybridCaseReport report;
   report.study = study_of(request);
-  report.case_name = request.case_name;
+  report.study_case = request.study_case;
   report.jump_set = hybrid_jump_set(request);
   report.seed = request.seed;
   if (const auto* fo = std::get_if<FirstOrderStudy>(&report.study)) {

@@ -206,8 +206,8 @@ std::optional<report::XRange> jump_zoom(const HybridCaseReport& run) {
 }
 
 std::string prefix_of(const HybridCaseReport& run) {
-  if (!run.hybrid) return run.case_name + "-conventional";
-  return run.case_name + (run.jump_set == hybrid::JumpSet::kSampled ? "-sampled" : "");
+  if (!run.hybrid) return to_string(run.study_case) + "-conventional";
+  return to_string(run.study_case) + (run.jump_set == hybrid::JumpSet::kSampled ? "-sampled" : "");
 }
 
 std::string designs_of(const HybridCaseReport& run) {
@@ -276,7 +276,7 @@ std::vector<std::pair<std::string, report::Figure>> dp_figures(const HybridCaseR
 nlohmann::json to_json(const HybridCaseReport& report,
                        const std::vector<std::filesystem::path>& plots) {
   nlohmann::json doc;
-  doc["case"] = report.case_name;
+  doc["case"] = to_string(report.study_case);
   doc["jump_set"] = report.hybrid ? hybrid::to_string(report.jump_set) : "none";
   doc["seed"] = report.seed;
   doc["parameters"] = std::visit([](const auto& s) { return parameters_json(s); }, report.study);
@@ -300,7 +300,7 @@ std::string to_text(const HybridCaseReport& report) {
   const hybrid::CaseResult& c = report.conventional;
   const hybrid::CaseResult* h = report.hybrid ? &*report.hybrid : nullptr;
   std::string out =
-      fmt::format("dynpos hybrid {}: {}\n", report.case_name,
+      fmt::format("dynpos hybrid {}: {}\n", to_string(report.study_case),
                   h ? std::string(hybrid::to_string(report.jump_set)) + " jump set vs conventional"
                     : std::string("conventional only (--no-jumps)"));
   out += std::visit([](const auto& s) { return stability_line(s); }, report.study) + "\n\n";
@@ -327,7 +327,7 @@ std::string to_text(const HybridCaseReport& report) {
       number_cell(c.metrics.iae, "{:.4g}"));
   row("peak error" + unit, h ? number_cell(h->metrics.peak_error, "{:.4g}") : "",
       number_cell(c.metrics.peak_error, "{:.4g}"));
-  if (report.case_name == "dp") {
+  if (report.study_case == HybridCase::kDp) {
     row("IAE heading [deg·s]",
         h ? number_cell(h->metrics.heading_iae * core::kDegPerRad, "{:.4g}") : "",
         number_cell(c.metrics.heading_iae * core::kDegPerRad, "{:.4g}"));
@@ -352,6 +352,13 @@ std::vector<std::filesystem::path> write_figures(const HybridCaseReport& run,
     written.push_back(dir / (prefix_of(run) + "_" + name + ".svg"));
     report::write_svg(written.back(), figure);
   }
+  return written;
+}
+
+Written write_outputs(const HybridCaseReport& report, const Outputs& outputs) {
+  Written written;
+  if (!outputs.figures.empty()) written = write_figures(report, outputs.figures);
+  write_json_output(outputs, to_json(report, written), written);
   return written;
 }
 

@@ -26,14 +26,20 @@ std::string load_case_hint() {
   return hint;
 }
 
-const LoadCase& load_case(const std::string& short_name) {
-  for (const LoadCase& c : kHybridVesselLoadCases) {
-    if (short_name == c.name) return c;
-  }
-  throw option_error("scenario", "unknown load scenario '" + short_name + "'", load_case_hint());
+}  // namespace
+
+const LoadCase& load_case(HybridLoad load) {
+  return kHybridVesselLoadCases[static_cast<std::size_t>(load)];
 }
 
-}  // namespace
+std::string to_string(HybridLoad load) { return load_case(load).name; }
+
+HybridLoad hybrid_load_from_string(const std::string& name) {
+  for (const HybridLoad load : {HybridLoad::kIce, HybridLoad::kMooring}) {
+    if (name == to_string(load)) return load;
+  }
+  throw option_error("scenario", "unknown load scenario '" + name + "'", load_case_hint());
+}
 
 std::string load_case_phrase(const LoadCase& load_case, const scenario::ScenarioSpec& spec) {
   if (spec.loads.empty()) return load_case.load;
@@ -45,15 +51,10 @@ std::string load_case_phrase(const LoadCase& load_case, const scenario::Scenario
 }
 
 void HybridVesselRequest::validate() const {
-  (void)load_case(scenario);
   if (!(within_m > 0.0) || !std::isfinite(within_m)) {
     throw option_error("within",
                        fmt::format("the 'back within' distance must be > 0 m, got {:g}", within_m));
   }
-}
-
-std::string hybrid_vessel_scenario_file(const std::string& short_name) {
-  return load_case(short_name).scenario_file;
 }
 
 HybridVesselReport run_hybrid_vessel(const HybridVesselRequest& request) {
@@ -63,7 +64,7 @@ HybridVesselReport run_hybrid_vessel(const HybridVesselRequest& request) {
       scenario::load_scenario(scenario_path(data, load_case(request.scenario)));
   const scenario::VesselConfig vessel = scenario::load_vessel_config(vessel_file_or_default());
   HybridVesselReport r;
-  r.name = request.scenario;
+  r.name = to_string(request.scenario);
   r.scenario_name = spec.name;
   r.seed = request.seed;
   r.comparison = scenario::compare_integral_action(spec, vessel, request.seed, request.within_m);

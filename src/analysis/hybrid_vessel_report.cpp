@@ -1,5 +1,5 @@
-// The adapters of the hybrid-vessel comparison: JSON, the table in three formats, the plots and
-// the demo report's section.
+// The report of the hybrid-vessel comparison: JSON, the table in three formats, the plots and
+// the files written (the demo report's section is hybrid_vessel_demo.cpp).
 
 #include <fmt/core.h>
 
@@ -7,7 +7,6 @@
 #include <cmath>
 #include <utility>
 
-#include "dynpos/analysis/demo_sections.hpp"
 #include "dynpos/analysis/hybrid_vessel.hpp"
 #include "dynpos/analysis/json_fields.hpp"
 #include "dynpos/io/json_writer.hpp"
@@ -212,28 +211,11 @@ std::vector<std::filesystem::path> write_figures(const HybridVesselReport& r,
   return written;
 }
 
-ReportSection hybrid_vessel_demo_section(const std::filesystem::path& campaign_dir,
-                                         std::uint64_t seed) {
-  ReportSection section{"Hybrid integral action on the virtual Gunnerus", "", ""};
-  const std::filesystem::path dir = campaign_dir / "hybrid";
-  for (const LoadCase& load : kHybridVesselLoadCases) {
-    const HybridVesselReport r = run_hybrid_vessel({load.name, seed});
-    const auto plots = write_figures(r, dir);
-    io::write_json(dir / (std::string("vessel_") + load.name + ".json"), to_json(r));
-    const std::string head = fmt::format(
-        "{} (seed {}): the load changes at {:.0f} s; DP controller (5.35)-(5.38) with "
-        "continuous integral action vs hybrid integral action (jumps by (5.64)-(5.67)).",
-        r.scenario_name, r.seed, r.comparison.t_load_s);
-    section.markdown += head + "\n\n" + to_markdown(r) + "\n";
-    section.html += "<p>" + head + "</p>\n" + to_html(r);
-    for (const auto& p : plots) {
-      const std::string rel = "hybrid/" + p.filename().string();
-      section.markdown += fmt::format("![{}]({})\n", p.filename().string(), rel);
-      section.html +=
-          fmt::format("<p><img src=\"{}\" alt=\"{}\"></p>\n", rel, p.filename().string());
-    }
-  }
-  return section;
+Written write_outputs(const HybridVesselReport& report, const Outputs& outputs) {
+  Written written;
+  if (!outputs.figures.empty()) written = write_figures(report, outputs.figures);
+  write_json_output(outputs, to_json(report, written), written);
+  return written;
 }
 
 }  // namespace dynpos::analysis

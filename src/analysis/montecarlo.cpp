@@ -150,16 +150,18 @@ void measure_lever_arms(const std::filesystem::path& log, const scenario::TrialT
 // manoeuvre such as the turning circle has a few), a DP run has setpoints.
 constexpr std::size_t kMinStepTest = 4;
 
-std::string auto_measure(const scenario::TrialTruth& truth) {
-  if (truth.propeller_steps.size() + truth.rudder_steps.size() >= kMinStepTest) return "steps";
-  if (!truth.setpoints.empty()) return "station-keeping";
-  return "lever-arms";
+MonteCarloMeasure auto_measure(const scenario::TrialTruth& truth) {
+  if (truth.propeller_steps.size() + truth.rudder_steps.size() >= kMinStepTest) {
+    return MonteCarloMeasure::kSteps;
+  }
+  if (!truth.setpoints.empty()) return MonteCarloMeasure::kStationKeeping;
+  return MonteCarloMeasure::kLeverArms;
 }
 
 // One seed: the run's files in their own folder, analysed as a user's logs, then removed.
 MonteCarloSample run_seed(const scenario::ScenarioSpec& spec, const scenario::VesselConfig& vessel,
                           std::uint64_t seed, const std::filesystem::path& work_dir,
-                          const std::string& measure) {
+                          MonteCarloMeasure measure) {
   const std::filesystem::path dir = work_dir / fmt::format("seed-{}", seed);
   const scenario::ScenarioRun run = scenario::run_scenario_into(spec, vessel, seed, dir);
   MonteCarloSample out;
@@ -167,11 +169,12 @@ MonteCarloSample run_seed(const scenario::ScenarioSpec& spec, const scenario::Ve
   const std::filesystem::path log = dir / "log.csv";
   const scenario::TrialTruth& truth = run.truth;
   // "auto" from the truth's commands, which do not depend on the seed.
-  const std::string what = measure == "auto" ? auto_measure(truth) : measure;
-  if (what == "steps") {
+  const MonteCarloMeasure what =
+      measure == MonteCarloMeasure::kAuto ? auto_measure(truth) : measure;
+  if (what == MonteCarloMeasure::kSteps) {
     measure_propeller_steps(log, truth, out);
     measure_rudder_steps(log, truth, out);
-  } else if (what == "station-keeping") {
+  } else if (what == MonteCarloMeasure::kStationKeeping) {
     measure_station_keeping(log, out);
   } else {
     measure_lever_arms(log, truth, out);
@@ -226,13 +229,15 @@ std::string fnv1a64_of_file(const std::filesystem::path& file) {
 
 }  // namespace
 
-void MonteCarloRequest::set_seeds(const std::string& text) {
+SeedRange parse_seed_range(const std::string& text) {
   const auto dots = text.find("..");
-  seed_first = parse_seed(text.substr(0, dots), text);
-  seed_last = dots == std::string::npos ? seed_first : parse_seed(text.substr(dots + 2), text);
+  SeedRange r;
+  r.first = parse_seed(text.substr(0, dots), text);
+  r.last = dots == std::string::npos ? r.first : parse_seed(text.substr(dots + 2), text);
+  return r;
 }
 
-void MonteCarloRequest::set_shard(const std::string& text) {
+Shard parse_shard(const std::string& text) {
   const auto slash = text.find('/');
   std::size_t i = 0, n = 0;
   const char* end = text.data() + text.size();
@@ -244,30 +249,48 @@ void MonteCarloRequest::set_shard(const std::string& text) {
     throw option_error("shard", fmt::format("'{}' is not a shard", text),
                        "give i/N with 1 ≤ i ≤ N, e.g. --shard 3/8");
   }
-  shard_index = i;
-  shard_count = n;
+  return {i, n};
+}
+
+std::string to_string(MonteCarloMeasure measure) {
+  switch (measure) {
+    case MonteCarloMeasure::kSteps:
+      return "steps";
+    case MonteCarloMeasure::kStationKeeping:
+      return "station-keeping";
+    case MonteCarloMeasure::kLeverArms:
+      return "lever-arms";
+    case MonteCarloMeasure::kAuto:
+      break;
+  }
+  return "auto";
+}
+
+MonteCarloMeasure montecarlo_measure_from_string(const std::string& name) {
+  for (const MonteCarloMeasure m :
+       {MonteCarloMeasure::kAuto, MonteCarloMeasure::kSteps, MonteCarloMeasure::kStationKeeping,
+        MonteCarloMeasure::kLeverArms}) {
+    if (name == to_string(m)) return m;
+  }
+  throw option_error("measure", fmt::format("'{}' is not a measurement", name),
+                     "give auto, steps, station-keeping or lever-arms");
 }
 
 void MonteCarloRequest::validate() const {
   if (scenario.empty()) throw option_error("scenario", "no scenario given");
   if (!work_dir.empty()) check_output_dir("work_dir", work_dir);
-  if (seed_last < seed_first) {
-    throw option_error("seeds", fmt::format("the range {}..{} is empty", seed_first, seed_last),
+  if (seeds.last < seeds.first) {
+    throw option_error("seeds", fmt::format("the range {}..{} is empty", seeds.first, seeds.last),
                        "the first seed must not be after the last");
   }
-  if (seed_last - seed_first >= kMaxSeeds) {
+  if (seeds.last - seeds.first >= kMaxSeeds) {
     throw option_error(
-        "seeds", fmt::format("{}..{} is more than {} seeds", seed_first, seed_last, kMaxSeeds),
+        "seeds", fmt::format("{}..{} is more than {} seeds", seeds.first, seeds.last, kMaxSeeds),
         "split it into ranges and merge the results");
   }
-  if (shard_count < 1 || shard_index < 1 || shard_index > shard_count) {
-    throw option_error("shard", fmt::format("shard {}/{} does not exist", shard_index, shard_count),
+  if (shard.count < 1 || shard.index < 1 || shard.index > shard.count) {
+    throw option_error("shard", fmt::format("shard {}/{} does not exist", shard.index, shard.count),
                        "give i/N with 1 ≤ i ≤ N");
-  }
-  if (measure != "auto" && measure != "steps" && measure != "station-keeping" &&
-      measure != "lever-arms") {
-    throw option_error("measure", fmt::format("'{}' is not a measurement", measure),
-                       "give auto, steps, station-keeping or lever-arms");
   }
   if (duration_s && !(*duration_s > 0.0 && *duration_s <= 86'400.0)) {
     throw option_error("duration", fmt::format("{} s is not a run length", *duration_s),
@@ -276,10 +299,10 @@ void MonteCarloRequest::validate() const {
 }
 
 std::pair<std::uint64_t, std::uint64_t> MonteCarloRequest::shard_seeds() const {
-  const std::uint64_t count = seed_last - seed_first + 1;
-  const std::uint64_t begin = count * (shard_index - 1) / shard_count;
-  const std::uint64_t end = count * shard_index / shard_count;
-  return {seed_first + begin, seed_first + end - 1};  // first > last when empty
+  const std::uint64_t count = seeds.last - seeds.first + 1;
+  const std::uint64_t begin = count * (shard.index - 1) / shard.count;
+  const std::uint64_t end = count * shard.index / shard.count;
+  return {seeds.first + begin, seeds.first + end - 1};  // first > last when empty
 }
 
 std::map<std::string, MonteCarloStats> summarise(const std::vector<MonteCarloSample>& samples) {
@@ -335,11 +358,11 @@ MonteCarloReport run_montecarlo(const MonteCarloRequest& request) {
   MonteCarloReport report;
   report.scenario = spec.name;
   report.run = {fnv1a64_of_file(scenario_file), fnv1a64_of_file(vessel_file), spec.duration_s,
-                request.measure, DYNPOS_VERSION};
-  report.seed_first = request.seed_first;
-  report.seed_last = request.seed_last;
-  report.shard_index = request.shard_index;
-  report.shard_count = request.shard_count;
+                to_string(request.measure), DYNPOS_VERSION};
+  report.seed_first = request.seeds.first;
+  report.seed_last = request.seeds.last;
+  report.shard_index = request.shard.index;
+  report.shard_count = request.shard.count;
   const auto [first, last] = request.shard_seeds();
   const std::size_t n = last >= first ? static_cast<std::size_t>(last - first + 1) : 0;
   report.samples.resize(n);

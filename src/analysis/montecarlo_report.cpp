@@ -238,4 +238,10 @@ MonteCarloReport merge_montecarlo(const std::vector<std::filesystem::path>& shar
   return report;
 }
 
+Written write_outputs(const MonteCarloReport& report, const Outputs& outputs) {
+  Written written;
+  write_json_output(outputs, to_json(report), written);
+  return written;
+}
+
 }  // namespace dynpos::analysis

@@ -145,7 +145,40 @@ TEST(CapabilityRequest, BadOptionsAreNamed) {
               q.tp = 0.0;
             }),
             "tp");
+  EXPECT_EQ(key([](CapabilityRequest& q) { q.worst_of = {"port", "bow"}; }), "worst_of");
+  EXPECT_EQ(key([](CapabilityRequest& q) {
+              q.failure = "none";
+              q.worst_of = {"port"};
+            }),
+            "worst_of");
   EXPECT_EQ(key([](CapabilityRequest&) {}), "no error");
+}
+
+TEST(Capability, TheWorstCaseCanBeTakenOverSomeFailures) {
+  CapabilityRequest q = gunnerus();
+  q.worst_of = {"tunnel", "port"};
+  const CapabilityReport some = run_capability(q);
+  ASSERT_EQ(some.failures.size(), 2u);
+  EXPECT_EQ(some.failures[0].failure, "tunnel");
+  EXPECT_EQ(some.failures[1].failure, "port");
+  const CapabilityReport all = run_capability(gunnerus());
+  for (std::size_t i = 0; i < some.worst->points.size(); ++i) {  // fewer cases: no worse
+    EXPECT_GE(some.worst->points[i].max_wind_mps, all.worst->points[i].max_wind_mps);
+  }
+}
+
+TEST(Capability, WriteOutputsWritesTheRoseThenTheJson) {
+  const CapabilityReport r = run_capability(gunnerus());
+  const std::filesystem::path dir = scratch("outputs");
+  const Outputs outputs{(scratch("r.json")).string(), dir};
+  const Written written = write_outputs(r, outputs);
+  ASSERT_EQ(written.size(), 2u);
+  EXPECT_EQ(written[0], dir / "rose.svg");
+  EXPECT_EQ(written[1], scratch("r.json"));
+  EXPECT_TRUE(std::filesystem::is_regular_file(written[0]));
+  std::ifstream in(written[1]);
+  EXPECT_EQ(nlohmann::json::parse(in), to_json(r));
+  EXPECT_TRUE(write_outputs(r, Outputs{}).empty());
 }
 
 }  // namespace

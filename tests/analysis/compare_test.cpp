@@ -78,8 +78,8 @@ TEST(CompareAnalysis, LabelsAndMarkdown) {
   CompareRequest request;
   request.a = f.a;
   request.b = f.b;
-  request.labels = "Aug 2014,Nov 2014";
-  request.format = "markdown";
+  request.labels = parse_compare_labels("Aug 2014,Nov 2014");
+  request.format = table_format_from_string("markdown");
   const CompareReport report = run_compare(request);
   EXPECT_EQ(report.label_a, "Aug 2014");
   EXPECT_EQ(report.label_b, "Nov 2014");
@@ -89,19 +89,18 @@ TEST(CompareAnalysis, LabelsAndMarkdown) {
 
 TEST(CompareAnalysis, ValidateNamesTheOption) {
   CompareRequest request;
-  request.format = "html";
-  EXPECT_EQ(input_error([&] { request.validate(); }).option(), "format");
-  request.format = "text";
+  EXPECT_EQ(input_error([] { table_format_from_string("html"); }).option(), "format");
+  EXPECT_EQ(to_string(TableFormat::kMarkdown), "markdown");
   request.step_tolerance_s = 0.0;
   EXPECT_EQ(input_error([&] { request.validate(); }).option(), "step_tolerance");
   request.step_tolerance_s = 5.0;
-  request.labels = "only one";
-  core::InputError e = input_error([&] { request.validate(); });
+  core::InputError e = input_error([] { parse_compare_labels("only one"); });
   EXPECT_EQ(e.option(), "labels");
   EXPECT_EQ(e.problem(), "'only one' is not two labels");
-  request.labels = "a,";
-  EXPECT_EQ(input_error([&] { request.validate(); }).problem(), "an empty label in 'a,'");
-  request.labels = "a,b";
+  EXPECT_EQ(input_error([] { parse_compare_labels("a,"); }).problem(), "an empty label in 'a,'");
+  request.labels = CompareLabels{"", "b"};  // as the Python API gives a pair
+  EXPECT_EQ(input_error([&] { request.validate(); }).option(), "labels");
+  request.labels = parse_compare_labels("a,b");
   EXPECT_NO_THROW(request.validate());
 }
 

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "dynpos/core/error.hpp"
+#include "input_error_capture.hpp"
 
 namespace dynpos::analysis {
 namespace {
@@ -32,7 +33,7 @@ std::string failing_key(const HybridCaseRequest& request, std::string* message =
 
 HybridCaseRequest dp_request() {
   HybridCaseRequest r;
-  r.case_name = "dp";
+  r.study_case = HybridCase::kDp;
   return r;
 }
 
@@ -44,7 +45,7 @@ const HybridCaseReport& first_order_report() {
 
 TEST(HybridCaseRequest, DefaultsAreTheThesisFirstOrderCase) {
   const HybridCaseRequest r;
-  EXPECT_EQ(r.case_name, "first-order");
+  EXPECT_EQ(r.study_case, HybridCase::kFirstOrder);
   EXPECT_EQ(r.seed, 1u);
   EXPECT_FALSE(r.no_jumps || r.sampled || r.solve_p);
   EXPECT_EQ(failing_key(r), "");
@@ -52,11 +53,12 @@ TEST(HybridCaseRequest, DefaultsAreTheThesisFirstOrderCase) {
 }
 
 TEST(HybridCaseRequest, ErrorsNameTheirOption) {
-  HybridCaseRequest r;
-  r.case_name = "second-order";
-  EXPECT_EQ(failing_key(r), "case");
+  EXPECT_EQ(analysis::testing::option_key_of([] { (void)hybrid_case_from_string("second-order"); }),
+            "case");
+  EXPECT_EQ(hybrid_case_from_string("dp"), HybridCase::kDp);
+  EXPECT_EQ(to_string(HybridCase::kFirstOrder), "first-order");
 
-  r = dp_request();
+  HybridCaseRequest r = dp_request();
   r.no_jumps = true;
   r.sampled = true;
   EXPECT_EQ(failing_key(r), "sampled");

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "../source_dir.hpp"
@@ -20,9 +21,8 @@ const std::filesystem::path kScenarios =
     std::filesystem::path(DYNPOS_SOURCE_DIR) / "data" / "scenarios";
 
 TEST(HybridVesselRequest, UnknownLoadCaseIsNamedWithWhatEachCaseIs) {
-  HybridVesselRequest r{"ice2"};
   try {
-    r.validate();
+    (void)hybrid_load_from_string("ice2");
     FAIL() << "an unknown load case was accepted";
   } catch (const core::InputError& e) {
     EXPECT_EQ(e.option(), "scenario");
@@ -36,7 +36,7 @@ TEST(HybridVesselRequest, UnknownLoadCaseIsNamedWithWhatEachCaseIs) {
 
 TEST(HybridVesselRequest, WithinMustBePositive) {
   for (const double within : {0.0, -1.0}) {
-    HybridVesselRequest r{"mooring", 1, within};
+    HybridVesselRequest r{HybridLoad::kMooring, 1, within};
     try {
       r.validate();
       FAIL() << "within " << within << " was accepted";
@@ -44,12 +44,15 @@ TEST(HybridVesselRequest, WithinMustBePositive) {
       EXPECT_EQ(e.option(), "within");
     }
   }
-  EXPECT_NO_THROW((HybridVesselRequest{"ice", 1, 0.5}.validate()));
+  EXPECT_NO_THROW((HybridVesselRequest{HybridLoad::kIce, 1, 0.5}.validate()));
 }
 
 TEST(HybridVessel, LoadCasesNameTheirScenarioFiles) {
-  EXPECT_EQ(hybrid_vessel_scenario_file("ice"), "dp-ice-load");
-  EXPECT_EQ(hybrid_vessel_scenario_file("mooring"), "dp-mooring-snap");
+  EXPECT_EQ(hybrid_load_from_string("ice"), HybridLoad::kIce);
+  EXPECT_EQ(hybrid_load_from_string("mooring"), HybridLoad::kMooring);
+  EXPECT_STREQ(load_case(HybridLoad::kIce).scenario_file, "dp-ice-load");
+  EXPECT_STREQ(load_case(HybridLoad::kMooring).scenario_file, "dp-mooring-snap");
+  EXPECT_EQ(to_string(HybridLoad::kMooring), "mooring");
   for (const LoadCase& c : kHybridVesselLoadCases) {
     EXPECT_TRUE(std::filesystem::exists(kScenarios / (std::string(c.scenario_file) + ".toml")))
         << c.scenario_file;
@@ -71,7 +74,7 @@ TEST(HybridVessel, LoadPhraseFollowsTheScenariosFirstLoad) {
 
 // Both designs on the 900 s ice scenario: about a second of simulation, run once.
 const HybridVesselReport& ice_report() {
-  static const HybridVesselReport r = run_hybrid_vessel({"ice", 1});
+  static const HybridVesselReport r = run_hybrid_vessel({HybridLoad::kIce, 1});
   return r;
 }
 
@@ -116,6 +119,15 @@ TEST(HybridVessel, AdaptersShowTheSameFigures) {
   EXPECT_EQ(written[0].filename(), "hybrid_vessel_ice_position.svg");
   EXPECT_EQ(written[2].filename(), "hybrid_vessel_ice_power.svg");
   for (const auto& p : written) EXPECT_GT(std::filesystem::file_size(p), 1000u) << p;
+  std::filesystem::remove_all(dir);
+
+  // write_outputs: the plots, then the JSON listing them (the --json document).
+  const Written all = write_outputs(r, {(dir / "r.json").string(), dir});
+  ASSERT_EQ(all.size(), 4u);
+  EXPECT_EQ(all.back(), dir / "r.json");
+  std::ifstream in(dir / "r.json");
+  EXPECT_EQ(nlohmann::json::parse(in), to_json(r, Written(all.begin(), all.end() - 1)));
+  EXPECT_TRUE(write_outputs(r, Outputs{}).empty());
   std::filesystem::remove_all(dir);
 }
 

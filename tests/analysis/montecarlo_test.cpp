@@ -12,6 +12,7 @@
 
 #include "dynpos/core/error.hpp"
 #include "dynpos/io/json_writer.hpp"
+#include "input_error_capture.hpp"
 
 namespace dynpos::analysis {
 namespace {
@@ -48,33 +49,39 @@ TEST(MonteCarlo, SummaryStatisticsByHand) {
 TEST(MonteCarlo, SeedRangesAndShards) {
   MonteCarloRequest q;
   q.scenario = "turning-circle";
-  q.set_seeds("10..19");
-  EXPECT_EQ(q.seed_first, 10u);
-  EXPECT_EQ(q.seed_last, 19u);
-  q.set_shard("3/4");
+  q.seeds = parse_seed_range("10..19");
+  EXPECT_EQ(q.seeds.first, 10u);
+  EXPECT_EQ(q.seeds.last, 19u);
+  q.shard = parse_shard("3/4");
+  EXPECT_EQ(q.shard.index, 3u);
+  EXPECT_EQ(q.shard.count, 4u);
   EXPECT_EQ(q.shard_seeds(), (std::pair<std::uint64_t, std::uint64_t>{15, 16}));
   // The shards tile the range: 10 seeds in 4 shards of 2, 3, 2, 3.
   std::uint64_t next = 10;
   for (std::size_t i = 1; i <= 4; ++i) {
-    q.shard_index = i;
+    q.shard.index = i;
     const auto [first, last] = q.shard_seeds();
     EXPECT_EQ(first, next);
     next = last + 1;
   }
   EXPECT_EQ(next, 20u);
-  q.set_seeds("18446744073709551615");
-  EXPECT_EQ(q.seed_first, q.seed_last);
-  EXPECT_THROW(q.set_seeds("5..-1"), core::InputError);
-  EXPECT_THROW(q.set_seeds("a..b"), core::InputError);
-  EXPECT_THROW(q.set_shard("0"), core::InputError);
-  q.set_seeds("5..4");
-  EXPECT_THROW(q.validate(), core::InputError);
-  q.set_seeds("1..2");
-  q.set_shard("5/4");
-  EXPECT_THROW(q.validate(), core::InputError);
-  q.set_shard("1/1");
-  q.measure = "everything";
-  EXPECT_THROW(q.validate(), core::InputError);
+  q.seeds = parse_seed_range("18446744073709551615");
+  EXPECT_EQ(q.seeds.first, q.seeds.last);
+  // Text errors name the request key; the range rules are validate()'s.
+  EXPECT_EQ(testing::option_key_of([] { parse_seed_range("5..-1"); }), "seeds");
+  EXPECT_EQ(testing::option_key_of([] { parse_seed_range("a..b"); }), "seeds");
+  EXPECT_EQ(testing::option_key_of([] { parse_shard("0"); }), "shard");
+  q.seeds = {5, 4};
+  EXPECT_EQ(testing::option_key_of([&] { q.validate(); }), "seeds");
+  q.seeds = {1, 2};
+  q.shard = {5, 4};
+  EXPECT_EQ(testing::option_key_of([&] { q.validate(); }), "shard");
+  q.shard = {};
+  EXPECT_EQ(testing::option_key_of([&] { q.validate(); }), "no error");
+  EXPECT_EQ(testing::option_key_of([] { montecarlo_measure_from_string("everything"); }),
+            "measure");
+  EXPECT_EQ(montecarlo_measure_from_string("station-keeping"), MonteCarloMeasure::kStationKeeping);
+  EXPECT_EQ(to_string(MonteCarloMeasure::kLeverArms), "lever-arms");
 }
 
 class MonteCarloRuns : public ::testing::Test {
@@ -82,10 +89,9 @@ class MonteCarloRuns : public ::testing::Test {
   static std::string run(unsigned jobs, std::size_t shard, std::size_t shards) {
     MonteCarloRequest q;
     q.scenario = "turning-circle";
-    q.set_seeds("1..3");
+    q.seeds = {1, 3};
     q.jobs = jobs;
-    q.shard_index = shard;
-    q.shard_count = shards;
+    q.shard = {shard, shards};
     return io::json_text(to_json(run_montecarlo(q)));
   }
 };

@@ -15,10 +15,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "dynpos/core/parallel_for.hpp"
+#include "dynpos/analysis/outputs.hpp"
 #include "dynpos/capability/environment_table.hpp"
 #include "dynpos/capability/quasi_static.hpp"
 #include "dynpos/capability/time_domain.hpp"
+#include "dynpos/core/parallel_for.hpp"
 
 namespace dynpos::analysis {
 
@@ -29,6 +30,10 @@ struct CapabilityRequest {
   /// "none" (intact only), "worst" (intact and every single failure, the worst per direction)
   /// or an actuator lost (capability::actuator_names()).
   std::string failure = "worst";
+  /// With failure "worst": the single failures it is the worst of (actuator names, computed in
+  /// this order); empty: every one (capability::single_failures()). The demo takes level 3's
+  /// worst case over the failures worst somewhere at level 1.
+  std::vector<std::string> worst_of;
   std::filesystem::path site;            ///< level 2: a site table (TOML [[environment]] rows)
   std::optional<double> hs;              ///< level 2: fixed H_s [m] instead of the table's
   std::optional<double> tp;              ///< level 2: fixed T_p [s]
@@ -40,7 +45,7 @@ struct CapabilityRequest {
   double footprint_deg = 3.0;            ///< level 3: heading footprint [deg]
   std::optional<double> wind_tolerance;  ///< [m/s]; default 0.01 (levels 1, 2), 0.25 (level 3)
   std::uint64_t seed = 1;                ///< level 3: master seed of the runs
-  unsigned jobs = core::kEveryCore;                     ///< level 3: parallel runs, 0 = every core
+  unsigned jobs = core::kEveryCore;      ///< level 3: parallel runs, 0 = every core
   /// Throws option_error naming the first bad option.
   void validate() const;
 };
@@ -81,11 +86,17 @@ std::array<std::optional<int>, 4> capability_notation(const CapabilityReport& re
 /// limiting, failure, beyond_table}], intact: [...], cases: {name: [...]}, time_domain?: {...}}.
 nlohmann::json to_json(const CapabilityReport& report);
 
+/// "DP capability-L1(A,B,C,D)", NA for a number not computed.
+std::string notation_text(const CapabilityReport& report);
+
 /// One row per direction: intact and the failure case, DP number and wind.
 std::string to_text(const CapabilityReport& report);
 
 /// The capability rose (two polar panels, DP number and limiting wind, intact and failure
 /// overlaid) as SVG into `svg`.
 void write_rose(const CapabilityReport& report, const std::filesystem::path& svg);
+
+/// The rose as outputs.figures/rose.svg (a folder, created when needed), then the JSON.
+Written write_outputs(const CapabilityReport& report, const Outputs& outputs);
 
 }  // namespace dynpos::analysis

@@ -3,7 +3,11 @@
 /// The main job on the built-in virtual Gunnerus (`dynpos demo`): every built-in scenario
 /// simulated into its own folder (scenario::run_campaign), each analysis run on those logs as a
 /// section of the report (demo_sections.hpp), and the report written: index.html, summary.md
-/// and summary.json (campaign_report.hpp).
+/// and summary.json (campaign_report.hpp). Each section builds its analysis' public request,
+/// calls its runner and writes the analysis' own JSON document (the one `--json` writes).
+///
+/// The report folder is the output, written by the run itself as the campaign and the sections
+/// go (a stopped demo keeps what is done): there is no separate write_outputs.
 ///
 /// Request keys (option_error): "out" for out_dir.
 
@@ -37,7 +41,7 @@ struct DemoReport {
 
 /// Validates; runs the campaign into out_dir, then the analysis sections in the order of
 /// demo_sections.hpp (step, agility, four-corner, station keeping, GNSS and MRU lever arms,
-/// hybrid vessel), and writes the report.
+/// hybrid vessel, capability), and writes the report.
 DemoReport run_demo(const DemoRequest& request);
 
 /// One line per scenario run, the totals and where index.html is.

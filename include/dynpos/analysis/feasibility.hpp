@@ -3,6 +3,9 @@
 /// `capability --loads`: for each environmental load of a table, the largest factor λ such that
 /// λ times it is held by the vessel's thruster layout, intact, with a unit or a group lost, or
 /// in the worst such case (capability/feasibility.hpp).
+///
+/// The second mode of the capability command, an analysis of its own: feasibility.cpp (request,
+/// validate, run) and feasibility_report.cpp (JSON, text, write_outputs); no demo section.
 
 #include <filesystem>
 #include <string>
@@ -10,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "dynpos/analysis/outputs.hpp"
 #include "dynpos/capability/feasibility.hpp"
 
 namespace dynpos::analysis {
@@ -45,5 +49,8 @@ nlohmann::json to_json(const FeasibilityReport& report);
 
 /// One row per load: direction, factor, the case and the limiting units.
 std::string to_text(const FeasibilityReport& report);
+
+/// The JSON (outputs.json); the load factors draw no figure.
+Written write_outputs(const FeasibilityReport& report, const Outputs& outputs);
 
 }  // namespace dynpos::analysis

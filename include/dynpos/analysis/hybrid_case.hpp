@@ -5,7 +5,7 @@
 /// steps, with the stability conditions (Theorem 6 or 7) checked first.
 ///
 /// Request keys (option_error): the field name without its unit suffix ("dwell" for dwell_s,
-/// "heading" for heading_deg); "case" for case_name.
+/// "heading" for heading_deg); "case" for study_case.
 
 #include <cstdint>
 #include <filesystem>
@@ -16,15 +16,28 @@
 
 #include <nlohmann/json.hpp>
 
+#include "dynpos/analysis/outputs.hpp"
 #include "dynpos/hybrid/case_study.hpp"
 #include "dynpos/hybrid/stability_check.hpp"
 
 namespace dynpos::analysis {
 
+/// The case studies of thesis section 5.3.
+enum class HybridCase {
+  kFirstOrder,  ///< "first-order": a first-order system (5.3.1)
+  kDp,          ///< "dp": a DP vessel, backstepping (5.3.2)
+};
+
+/// "first-order" or "dp".
+std::string to_string(HybridCase study_case);
+
+/// The case named `name` ("first-order", "dp"); option_error("case") for another name.
+HybridCase hybrid_case_from_string(const std::string& name);
+
 /// One run of a case study: which case, which designs, and the settings that differ from the
 /// thesis. An absent value keeps the thesis' (hybrid::FirstOrderCaseOptions, DpCaseOptions).
 struct HybridCaseRequest {
-  std::string case_name = "first-order";  ///< "first-order" (5.3.1) or "dp" (5.3.2)
+  HybridCase study_case = HybridCase::kFirstOrder;  ///< the case study (case)
   bool no_jumps = false;   ///< run only the conventional (continuous) integral action
   bool sampled = false;    ///< hybrid run with the practical (sampled) jump set, not the ideal one
   std::uint64_t seed = 1;  ///< master seed of the derivative noise (sampled)
@@ -56,7 +69,7 @@ struct DpStudy {
 
 /// Both designs of one case study.
 struct HybridCaseReport {
-  std::string case_name;                               ///< "first-order" or "dp"
+  HybridCase study_case = HybridCase::kFirstOrder;
   hybrid::JumpSet jump_set = hybrid::JumpSet::kIdeal;  ///< of the hybrid run
   std::uint64_t seed = 1;
   std::variant<FirstOrderStudy, DpStudy> study;  ///< options (jump set aside) and the check
@@ -68,7 +81,9 @@ struct HybridCaseReport {
 HybridCaseReport run_hybrid_case(const HybridCaseRequest& request);
 
 /// Throws option_error if `out_dir` exists and is not a folder ("out"), or if the folder of the
-/// JSON file `json` does not exist and is not `out_dir` ("json"; "" and "-" are fine).
+/// JSON file `json` does not exist and is not `out_dir` ("json"; "" and "-" are fine). The
+/// Python API's check of the outputs of `hybrid` and `hybrid vessel` (the CLI's is
+/// check_outputs).
 void check_hybrid_case_outputs(const std::filesystem::path& out_dir, const std::string& json);
 
 /// The `--json` document: case, jump_set, seed, parameters, stability, both runs in full under
@@ -85,5 +100,8 @@ std::string to_text(const HybridCaseReport& report);
 /// (dp), prefix the case name with "-sampled" or "-conventional". Returns the paths.
 std::vector<std::filesystem::path> write_figures(const HybridCaseReport& report,
                                                  const std::filesystem::path& dir);
+
+/// The plots into outputs.figures (a folder, write_figures), then the JSON listing them.
+Written write_outputs(const HybridCaseReport& report, const Outputs& outputs);
 
 }  // namespace dynpos::analysis

@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "dynpos/analysis/outputs.hpp"
 #include "dynpos/hybrid/integral_jump.hpp"
 #include "dynpos/scenario/load_response.hpp"
 
@@ -34,18 +35,33 @@ inline constexpr std::array<LoadCase, 2> kHybridVesselLoadCases = {{
     {"mooring", "dp-mooring-snap", "mooring line"},
 }};
 
+/// A load case by its place in kHybridVesselLoadCases.
+enum class HybridLoad {
+  kIce,      ///< "ice": an ice load sets in
+  kMooring,  ///< "mooring": a mooring line snaps
+};
+
+/// The load case's entry of kHybridVesselLoadCases.
+const LoadCase& load_case(HybridLoad load);
+
+/// "ice" or "mooring".
+std::string to_string(HybridLoad load);
+
+/// The load case named `name`; option_error("scenario") for another name, the hint saying what
+/// each is (from its scenario file).
+HybridLoad hybrid_load_from_string(const std::string& name);
+
 /// What happens in a load case, from its scenario's first load: "a 20 kN ice load sets in", or
 /// for a load on from the start "a mooring line holding 20 kN snaps"; without a load, just what
 /// the load is.
 std::string load_case_phrase(const LoadCase& load_case, const scenario::ScenarioSpec& spec);
 
 struct HybridVesselRequest {
-  std::string scenario;    ///< a load case: "ice" or "mooring"
-  std::uint64_t seed = 1;  ///< master seed, the same for both designs
-  double within_m = 1.0;   ///< distance for "back within" [m], > 0
+  HybridLoad scenario = HybridLoad::kIce;  ///< the load case
+  std::uint64_t seed = 1;                  ///< master seed, the same for both designs
+  double within_m = 1.0;                   ///< distance for "back within" [m], > 0
 
-  /// Throws option_error for an unknown load case ("scenario", the hint saying what each is,
-  /// from its scenario file) or within_m ≤ 0.
+  /// Throws option_error for within_m ≤ 0.
   void validate() const;
 };
 
@@ -57,10 +73,6 @@ struct HybridVesselReport {
   scenario::HybridComparison comparison;
   hybrid::IntegralJumpParams jump_params;  ///< the hybrid design's jump rule
 };
-
-/// The scenario file's stem of a load case ("ice" → "dp-ice-load"); option_error("scenario")
-/// for an unknown one.
-std::string hybrid_vessel_scenario_file(const std::string& short_name);
 
 /// Validates, then runs both designs (data from find_data_dir(): the load scenario and the
 /// Gunnerus vessel file).
@@ -89,5 +101,8 @@ std::string to_html(const HybridVesselReport& report);
 /// returns the paths.
 std::vector<std::filesystem::path> write_figures(const HybridVesselReport& report,
                                                  const std::filesystem::path& dir);
+
+/// The plots into outputs.figures (a folder, write_figures), then the JSON listing them.
+Written write_outputs(const HybridVesselReport& report, const Outputs& outputs);
 
 }  // namespace dynpos::analysis

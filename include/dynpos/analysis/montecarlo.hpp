@@ -26,28 +26,55 @@
 
 #include <nlohmann/json.hpp>
 
+#include "dynpos/analysis/outputs.hpp"
 #include "dynpos/core/parallel_for.hpp"
 
 namespace dynpos::analysis {
 
+/// A range of seeds, both ends included.
+struct SeedRange {
+  std::uint64_t first = 1;
+  std::uint64_t last = 20;
+};
+
+/// "A..B", or one seed "A", decimal 0 … 2⁶⁴−1; option_error("seeds") for other text.
+SeedRange parse_seed_range(const std::string& text);
+
+/// Part `index` of `count` contiguous parts of a seed range.
+struct Shard {
+  std::size_t index = 1;  ///< 1 … count
+  std::size_t count = 1;
+};
+
+/// "i/N"; option_error("shard") for other text (the range 1 ≤ i ≤ N is validate()'s).
+Shard parse_shard(const std::string& text);
+
+/// What each seed's run is analysed for.
+enum class MonteCarloMeasure {
+  /// Steps for a step test (four or more commanded steps in truth.json), station keeping for
+  /// a DP run (setpoints), else lever arms.
+  kAuto,
+  kSteps,           ///< "steps": K, T and δ of each step (Smith)
+  kStationKeeping,  ///< "station-keeping": the stationkeeping standard deviations
+  kLeverArms,       ///< "lever-arms": the GNSS lever arms (least squares)
+};
+
+/// "auto", "steps", "station-keeping" or "lever-arms".
+std::string to_string(MonteCarloMeasure measure);
+
+/// The measurement named `name`; option_error("measure") for another name.
+MonteCarloMeasure montecarlo_measure_from_string(const std::string& name);
+
 struct MonteCarloRequest {
   std::string scenario;               ///< a built-in name or a .toml file
-  std::uint64_t seed_first = 1;       ///< first seed of the range
-  std::uint64_t seed_last = 1;        ///< last seed (inclusive), ≥ seed_first
-  std::size_t shard_index = 1;        ///< this shard, 1 … shard_count
-  std::size_t shard_count = 1;        ///< shards the range is split into (contiguous)
-  unsigned jobs = core::kEveryCore;                  ///< seeds run at once, 0 = every core
+  SeedRange seeds;                    ///< the seeds of the whole run
+  Shard shard;                        ///< the part of `seeds` this run takes
+  unsigned jobs = core::kEveryCore;   ///< seeds run at once, 0 = every core
   std::filesystem::path vessel_file;  ///< empty: the data folder's gunnerus.toml
   std::optional<double> duration_s;   ///< run length override [s]
   std::filesystem::path work_dir;     ///< where each seed's files go for the run; empty: temp
-  /// "steps", "station-keeping", "lever-arms", or "auto": steps for a step test (four or more
-  /// commanded steps in truth.json), stationkeeping for a DP run (setpoints), else lever arms.
-  std::string measure = "auto";
+  MonteCarloMeasure measure = MonteCarloMeasure::kAuto;
 
-  /// Parses "A..B" (or one seed "A") into seed_first/seed_last; option_error "seeds".
-  void set_seeds(const std::string& text);
-  /// Parses "i/N"; option_error "shard".
-  void set_shard(const std::string& text);
   /// option_error for an empty range, more than 100 000 seeds, a shard outside 1 … N, a
   /// duration not > 0.
   void validate() const;
@@ -110,5 +137,8 @@ MonteCarloReport merge_montecarlo(const std::vector<std::filesystem::path>& shar
 nlohmann::json to_json(const MonteCarloReport& report);
 /// The table of the summary: quantity, n, mean, std, min, max, truth, bias, rms error.
 std::string to_text(const MonteCarloReport& report);
+
+/// The JSON (outputs.json: the samples and the summary); Monte Carlo draws no figure.
+Written write_outputs(const MonteCarloReport& report, const Outputs& outputs);
 
 }  // namespace dynpos::analysis

@@ -4,6 +4,9 @@
 /// virtual R/V Gunnerus and written into a run folder — log.csv, truth.csv, truth.json and the
 /// NMEA files (scenario/campaign.hpp); the campaign adds one folder per scenario and its report.
 ///
+/// The run folder is the analysis' output, written by the run itself as it goes (a campaign's
+/// logs do not fit in memory): there is no separate write_outputs, no JSON and no figure.
+///
 /// Request keys (option_error): the field name without its unit suffix or _dir/_file ("out" for
 /// out_dir, "vessel" for vessel_file, "duration" for duration_s, "log_rate" for log_rate_hz).
 
@@ -34,7 +37,7 @@ struct SimulateRequest {
   std::optional<double> duration_s;   ///< run length override [s], > 0
   std::optional<double> log_rate_hz;  ///< log rate override [Hz], > 0
   bool list = false;                  ///< only list the built-in scenarios
-  unsigned jobs = core::kEveryCore;                  ///< campaign: scenarios run at once, 0 = every core
+  unsigned jobs = core::kEveryCore;   ///< campaign: scenarios run at once, 0 = every core
 
   /// Throws option_error for a duration or log rate that is not > 0 ("duration", "log_rate"),
   /// and InputError when no scenario or (unless list) no output folder is given.
