@@ -47,10 +47,9 @@ LeverarmGnssReport ins_estimate(const std::filesystem::path& log,
                                 const std::map<std::string, Vec3>& arms) {
   LeverarmGnssRequest q;
   q.source.log = log;
-  q.method = "ins";
+  q.method = LeverarmGnssMethod::kIns;
   const auto mru1 = arms.find("mru1");
-  if (mru1 != arms.end())
-    q.imu_arm = fmt::format("{},{},{}", mru1->second(0), mru1->second(1), mru1->second(2));
+  if (mru1 != arms.end()) q.imu_arm = mru1->second;
   LeverarmGnssReport report = run_leverarm_gnss(q);
   nlohmann::json doc = to_json(report);
   doc["log"] = "turning-circle/log.csv";
@@ -66,7 +65,7 @@ ReportSection leverarm_gnss_demo_section(const std::filesystem::path& campaign_d
   if (!std::filesystem::exists(log)) return {};
   LeverarmGnssRequest q;
   q.source.log = log;
-  q.method = "lsq";
+  q.method = LeverarmGnssMethod::kLsq;
   q.source.columns = {"roll=mru1.roll", "pitch=mru1.pitch", "p=mru1.p", "q=mru1.q", "r=mru1.r"};
   const LeverarmGnssReport report = run_leverarm_gnss(q);
   nlohmann::json doc = to_json(report);
