@@ -12,12 +12,13 @@
 namespace dynpos::cli {
 
 /// Adds the option `name` bound to the enum `value`, given by the names of `names` (any case);
-/// the help shows the request's default by the library's to_string.
+/// the help shows the request's default by the library's to_string (the names are in `help`).
 template <class E>
 CLI::Option* add_enum_option(CLI::App& sub, const std::string& name, E& value,
                              std::map<std::string, E> names, const std::string& help) {
   return sub.add_option<E, int>(name, value, help)
-      ->transform(CLI::CheckedTransformer(std::move(names), CLI::ignore_case))
+      ->transform(CLI::CheckedTransformer(std::move(names), CLI::ignore_case).description(""))
+      ->type_name("NAME")
       ->default_str(std::string(to_string(value)));
 }
 
