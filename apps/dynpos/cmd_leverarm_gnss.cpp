@@ -11,6 +11,7 @@
 
 #include "commands.hpp"
 #include "dynpos/analysis/leverarm_gnss.hpp"
+#include "dynpos/analysis/leverarm_mru.hpp"
 #include "dynpos/analysis/option_spelling.hpp"
 #include "dynpos/analysis/options.hpp"
 #include "leverarm_options.hpp"
@@ -97,9 +98,7 @@ void add_leverarm_gnss(CLI::App& leverarm) {
                        "ins: mruK.roll/pitch/p/q/r/ax/ay/az and heading; thesis methods: time, "
                        "roll, pitch, heading, p, q, r, u, v, w (optional); per antenna "
                        "gnssK.lat/lon/height or gnssK.north/east/down");
-  std::map<std::string, analysis::LeverarmGnssMethod> methods;
-  for (const auto m : analysis::kLeverarmGnssMethods) methods[std::string(to_string(m))] = m;
-  add_enum_option(*sub, "--method", o->request.method, methods,
+  add_enum_option(*sub, "--method", o->request.method, analysis::gnss_method_from_name,
                   "auto, ins, luenberger, adaptive or lsq (auto: ins when the log has an MRU "
                   "with accelerations and the heading, else lsq)");
   sub->add_option("--imu", o->request.imu,
@@ -107,7 +106,7 @@ void add_leverarm_gnss(CLI::App& leverarm) {
   sub->add_option("--imu-arm", o->imu_arm,
                   "ins: X,Y,Z of that MRU from CO [m]; given, every arm is from CO, else from "
                   "the MRU");
-  add_enum_option(*sub, "--accel", o->request.accel, mru_accel_names(),
+  add_enum_option(*sub, "--accel", o->request.accel, analysis::accel_from_name,
                   "ins: the MRUs' accelerations, kinematic or specific-force");
   sub->add_option("--antennas", o->request.antennas,
                   "Antennas to estimate, e.g. gnss1,gnss2 (default: every gnssK found)")

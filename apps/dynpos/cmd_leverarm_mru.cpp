@@ -49,11 +49,10 @@ void add_leverarm_mru(CLI::App& leverarm) {
   sub->add_option("--mru-log", o->mru_log,
                   "MRU accelerations in a file of their own (repeatable): NAME=FILE with "
                   "columns time, NAME.ax, NAME.ay, NAME.az");
-  add_enum_option(*sub, "--accel", o->request.accel, mru_accel_names(),
+  add_enum_option(*sub, "--accel", o->request.accel, analysis::accel_from_name,
                   "What the MRU acceleration channels hold: kinematic (gravity removed) or "
                   "specific-force (g rotated into BODY is added back)");
-  add_enum_option(*sub, "--method", o->request.method,
-                  {{"lsq", calib::MruMethod::kLsq}, {"observer", calib::MruMethod::kObserver}},
+  add_enum_option(*sub, "--method", o->request.method, analysis::mru_method_from_name,
                   "lsq (batch least squares, the default: most accurate) or observer "
                   "(Luenberger observer (4.80))");
   add_json_option(*sub, o->outputs.json, "Write the arms as JSON to FILE, or '-'");

@@ -1,7 +1,8 @@
 // Lever-arm calibration (thesis chapter 4): GNSS antennas and MRUs. The requests' typed fields
 // take Python values: vectors as sequences of three numbers (tuple, list, numpy array; or the
-// text "X,Y,Z"), enums by name, per-antenna inputs as dicts; a bad value raises InputError
-// naming the keyword. The run functions write the outputs as the CLI does and return the JSON.
+// text "X,Y,Z"), enums by name (the library's lookups, as the CLI), per-antenna inputs as dicts; a
+// bad value raises InputError naming the keyword. The run functions write the outputs as the CLI
+// does and return the JSON.
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -10,7 +11,6 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -50,26 +50,6 @@ std::optional<Vec3> optional_vec3(const py::handle& value, const char* key, cons
 
 py::object vec3_or_none(const std::optional<Vec3>& v) { return v ? py::cast(*v) : py::none(); }
 
-// An enum keyword by its name (any case, as the CLI takes it).
-template <class E, std::size_t N>
-E enum_of(const std::string& name, const char* key, const char* what, const E (&all)[N]) {
-  std::string lower = name;
-  std::transform(lower.begin(), lower.end(), lower.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  std::vector<std::string> names;
-  for (const E e : all) {
-    names.emplace_back(to_string(e));
-    if (names.back() == lower) return e;
-  }
-  const std::string last = names.back();
-  names.pop_back();
-  throw option_error(key, fmt::format("unknown {} '{}'", what, name),
-                     fmt::format("use {} or {}", fmt::join(names, ", "), last));
-}
-
-const calib::MruAccel kAccels[] = {calib::MruAccel::kKinematic, calib::MruAccel::kSpecificForce};
-const calib::MruMethod kMruMethods[] = {calib::MruMethod::kLsq, calib::MruMethod::kObserver};
-
 // The "X,Y,Z" examples of the CLI's hints.
 const char* const kGain = "0.02,0.02,20";
 const char* const kImuArm = "0.358,0.804,-4.321";
@@ -78,9 +58,7 @@ template <class Q>
 void accel_property(py::class_<Q>& c) {
   c.def_property(
       "accel", [](const Q& q) { return std::string(calib::to_string(q.accel)); },
-      [](Q& q, const std::string& name) {
-        q.accel = enum_of(name, "accel", "acceleration convention", kAccels);
-      });
+      [](Q& q, const std::string& name) { q.accel = accel_from_name(name); });
 }
 
 // A Vector3d option of LeverarmGnssRequest as a property taking Python values.
@@ -96,9 +74,7 @@ void bind_leverarm_gnss(py::module_& m) {
       .def_readwrite("source", &Q::source)
       .def_property(
           "method", [](const Q& q) { return std::string(to_string(q.method)); },
-          [](Q& q, const std::string& name) {
-            q.method = enum_of(name, "method", "method", kLeverarmGnssMethods);
-          })
+          [](Q& q, const std::string& name) { q.method = gnss_method_from_name(name); })
       .def_readwrite("imu", &Q::imu)
       .DYNPOS_VEC3_PROPERTY(imu_arm, kImuArm)
       .def_readwrite("antennas", &Q::antennas)
@@ -155,9 +131,7 @@ void bind_leverarm_mru(py::module_& m) {
       .def_readwrite("mru_log", &Q::mru_log)
       .def_property(
           "method", [](const Q& q) { return std::string(calib::to_string(q.method)); },
-          [](Q& q, const std::string& name) {
-            q.method = enum_of(name, "method", "method", kMruMethods);
-          })
+          [](Q& q, const std::string& name) { q.method = mru_method_from_name(name); })
       .def_readwrite("window_s", &Q::window_s)
       .def_readwrite("tau_s", &Q::tau_s)
       .def_readwrite("w1", &Q::w1);

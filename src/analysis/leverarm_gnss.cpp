@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -30,6 +31,12 @@ bool motion_role(const std::string& role) {
 bool gnss_role(const std::string& role) { return role.rfind("gnss", 0) == 0; }
 
 bool mru_role(const std::string& role) { return role.rfind("mru", 0) == 0; }
+
+// A name as the lookups compare it: options are taken in any case.
+std::string lower_case(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
 
 // The example of an X,Y,Z option in its error's hint (gains, initial arms and P₀ alike).
 const char* const kGainExample = "0.02,0.02,20";
@@ -312,6 +319,13 @@ std::string_view to_string(LeverarmGnssMethod m) {
       return "lsq";
   }
   return "lsq";
+}
+
+LeverarmGnssMethod gnss_method_from_name(const std::string& name) {
+  for (const LeverarmGnssMethod m : kLeverarmGnssMethods)
+    if (lower_case(name) == to_string(m)) return m;
+  throw option_error("method", "unknown method '" + name + "'",
+                     "use auto, ins, luenberger, adaptive or lsq");
 }
 
 double parse_utc_at_zero(const std::string& text) {

@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <cctype>
 #include <cmath>
 
 #include "dynpos/analysis/options.hpp"
@@ -10,6 +11,12 @@
 
 namespace dynpos::analysis {
 namespace {
+
+// A name as the lookups compare it: options are taken in any case.
+std::string lower_case(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
 
 using detail::is_mru_accel_role;
 using detail::mru_names;
@@ -43,6 +50,17 @@ std::vector<MruFile> read_mru_files(const LeverarmMruRequest& q) {
 }
 
 }  // namespace
+
+calib::MruAccel accel_from_name(const std::string& name) {
+  if (const auto a = calib::parse_mru_accel(lower_case(name))) return *a;
+  throw option_error("accel", "unknown acceleration convention '" + name + "'",
+                     "use kinematic or specific-force");
+}
+
+calib::MruMethod mru_method_from_name(const std::string& name) {
+  if (const auto m = calib::parse_mru_method(lower_case(name))) return *m;
+  throw option_error("method", "unknown method '" + name + "'", "use lsq or observer");
+}
 
 void LeverarmMruRequest::validate() const {
   // The smoother's window is a count of samples: bounded so that it is one at any log rate.

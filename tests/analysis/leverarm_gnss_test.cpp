@@ -8,10 +8,13 @@
 
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <string>
+#include <utility>
 
 #include "../source_dir.hpp"
 #include "dynpos/analysis/demo_sections.hpp"
+#include "dynpos/analysis/leverarm_mru.hpp"
 #include "dynpos/core/error.hpp"
 #include "dynpos/scenario/campaign.hpp"
 #include "dynpos/scenario/runner.hpp"
@@ -192,6 +195,23 @@ TEST(LeverarmGnssText, UtcAtZeroIsReadAsSecondsOfDayAndABadOneNamesItsKey) {
   }
   for (const auto m : kLeverarmGnssMethods) EXPECT_FALSE(to_string(m).empty());
   EXPECT_EQ(to_string(LeverarmGnssMethod::kIns), "ins");
+  // Enums by name, in any case; another name is an error of the request key.
+  EXPECT_EQ(gnss_method_from_name("LSQ"), LeverarmGnssMethod::kLsq);
+  EXPECT_EQ(accel_from_name("Specific-Force"), calib::MruAccel::kSpecificForce);
+  EXPECT_EQ(mru_method_from_name("observer"), calib::MruMethod::kObserver);
+  for (const auto& [key, lookup] :
+       std::vector<std::pair<std::string, std::function<void(const std::string&)>>>{
+           {"method", [](const std::string& n) { gnss_method_from_name(n); }},
+           {"accel", [](const std::string& n) { accel_from_name(n); }},
+           {"method", [](const std::string& n) { mru_method_from_name(n); }}}) {
+    try {
+      lookup("fast");
+      FAIL() << key << ": 'fast' was accepted";
+    } catch (const core::InputError& e) {
+      EXPECT_EQ(e.option(), key);
+      EXPECT_NE(e.problem().find("'fast'"), std::string::npos) << e.problem();
+    }
+  }
 }
 
 // An initial arm for an antenna that is not estimated needs the data to be found: run names it.

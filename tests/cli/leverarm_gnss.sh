@@ -116,11 +116,12 @@ awk -F, -v OFS=, 'NR == 1 {for (i = 1; i <= NF; i++) if ($i ~ /^gnss/) g[i] = 1;
 expect2 "gnss1.*0 fixes" "$out/nofix.csv" "${mru[@]}" --method lsq
 head -n 3001 "$run/log.csv" > "$out/short.csv"  # 30 s
 expect2 "short.csv \(--pe-window\).*spans [0-9.]+ s, shorter than one excitation window" "$out/short.csv" "${mru[@]}" --method lsq
-expect2 "--method: Check fast value in \{adaptive" "$run/log.csv" "${mru[@]}" --method fast
+expect2 "unknown method 'fast'" "$run/log.csv" "${mru[@]}" --method fast
 expect2 "log.csv \(mru9.roll\)" "$out/run/log.csv" --imu mru9
 expect2 "\(--imu\).*'imu1' is not an MRU" "$out/run/log.csv" --imu imu1
 expect2 "\(--imu-arm\).*not three numbers" "$out/run/log.csv" --imu-arm 1,2
-expect2 "--accel: Check raw value in \{kinematic" "$out/run/log.csv" --accel raw
+expect2 "\(--accel\).*unknown acceleration" "$out/run/log.csv" --accel raw
+expect2 "\(--method\).*unknown method 'INSS'" "$out/run/log.csv" --method INSS
 
 # 6. From the logger alone (method ins, the default with an MRU in the log): the fixes, MRU 1
 #    and the gyro heading, no velocity. Arms from CO with MRU 1's arm given. The antennas'

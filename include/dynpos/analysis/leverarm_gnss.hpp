@@ -34,6 +34,9 @@ inline constexpr LeverarmGnssMethod kLeverarmGnssMethods[] = {
 /// "auto", "ins", "luenberger", "adaptive" or "lsq".
 std::string_view to_string(LeverarmGnssMethod m);
 
+/// The method of that name, in any case; option_error("method") for another name.
+LeverarmGnssMethod gnss_method_from_name(const std::string& name);
+
 /// The options of `leverarm gnss`; each field's name is its request key. Antennas are named by
 /// their role prefix gnssK; the thesis' gains left unset take calib::GnssArmOptions' defaults.
 struct LeverarmGnssRequest {

@@ -36,6 +36,13 @@ struct LeverarmMruRequest {
   void validate() const;
 };
 
+/// The acceleration convention of that name ("kinematic", "specific-force"), in any case;
+/// option_error("accel") for another name. `leverarm gnss` takes it too.
+calib::MruAccel accel_from_name(const std::string& name);
+
+/// The method of that name ("lsq", "observer"), in any case; option_error("method") otherwise.
+calib::MruMethod mru_method_from_name(const std::string& name);
+
 /// The estimate and the resolved inputs its outputs need.
 struct LeverarmMruReport {
   std::filesystem::path log;        ///< the motion log as given
