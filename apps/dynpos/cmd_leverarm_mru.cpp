@@ -4,14 +4,14 @@
 
 #include <fmt/core.h>
 
-#include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "commands.hpp"
 #include "dynpos/analysis/leverarm_mru.hpp"
-#include "dynpos/io/json_writer.hpp"
+#include "dynpos/analysis/options.hpp"
+#include "leverarm_options.hpp"
 #include "log_input.hpp"
 
 namespace dynpos::cli {
@@ -20,22 +20,21 @@ namespace {
 struct MruCliOptions {
   LogInput input;
   analysis::LeverarmMruRequest request;
-  std::string json;
-  std::string plots;
+  analysis::Outputs outputs;
+  std::vector<std::string> mru_log;  ///< NAME=FILE, made request.mru_log by run_cli
 };
 
 void run_cli(MruCliOptions& o) {
   o.request.source = o.input;
-  o.request.validate();
-  check_json_target(o.json);
-  const analysis::LeverarmMruReport report = analysis::run_leverarm_mru(o.request);
-  std::vector<std::filesystem::path> plots;
-  if (!o.plots.empty()) plots = analysis::write_figures(report, o.plots);
-  if (!o.json.empty()) io::write_json(o.json, analysis::to_json(report));
-  std::FILE* out = o.json == "-" ? stderr : stdout;
-  print_text(out, "{}", analysis::to_text(report));
-  for (const auto& p : plots) print_text(out, "wrote {}\n", p.string());
-  if (!o.json.empty() && o.json != "-") print_text(out, "wrote {}\n", o.json);
+  for (const std::string& spec : o.mru_log) {
+    const auto eq = spec.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == spec.size()) {
+      throw analysis::option_error("mru_log", "malformed argument '" + spec + "'",
+                                   "expected NAME=FILE, e.g. --mru-log mru1=mru1.csv");
+    }
+    o.request.mru_log[spec.substr(0, eq)] = spec.substr(eq + 1);
+  }
+  write_and_print(analysis::run_leverarm_mru(o.request), o.outputs);
 }
 
 }  // namespace
@@ -47,20 +46,18 @@ void add_leverarm_mru(CLI::App& leverarm) {
   o->input.add_options(*sub,
                        "time, roll, pitch, heading, p, q, r, u, v, w (optional), and per MRU "
                        "mruK.ax, mruK.ay, mruK.az (or --mru-log)");
-  sub->add_option("--mru-log", o->request.mru_log,
+  sub->add_option("--mru-log", o->mru_log,
                   "MRU accelerations in a file of their own (repeatable): NAME=FILE with "
                   "columns time, NAME.ax, NAME.ay, NAME.az");
-  sub->add_option("--accel", o->request.accel,
+  add_enum_option(*sub, "--accel", o->request.accel, analysis::accel_from_name,
                   "What the MRU acceleration channels hold: kinematic (gravity removed) or "
-                  "specific-force (g rotated into BODY is added back)")
-      ->capture_default_str();
-  sub->add_option("--method", o->request.method,
+                  "specific-force (g rotated into BODY is added back)");
+  add_enum_option(*sub, "--method", o->request.method, analysis::mru_method_from_name,
                   "lsq (batch least squares, the default: most accurate) or observer "
-                  "(Luenberger observer (4.80))")
-      ->capture_default_str();
-  add_json_option(*sub, o->json, "Write the arms as JSON to FILE, or '-'");
-  output_folder(
-      sub->add_option("--plots", o->plots, "Write SVG plots of the estimates over time into DIR"));
+                  "(Luenberger observer (4.80))");
+  add_json_option(*sub, o->outputs.json, "Write the arms as JSON to FILE, or '-'");
+  output_folder(sub->add_option("--plots", o->outputs.figures,
+                                "Write SVG plots of the estimates over time into DIR"));
   sub->add_option("--window-s", o->request.window_s,
                   "Savitzky–Golay smoothing window for ω̇, ν̇ and every term [s]")
       ->capture_default_str();

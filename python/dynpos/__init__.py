@@ -129,6 +129,22 @@ def _pairs(mapping: Mapping[str, Any] | Sequence[str] | None, key: str = "col") 
                        "NAME=VALUE strings; give e.g. {\"input\": \"cmd\"}", key)
 
 
+def _by_name(value, key: str) -> dict:
+    """{"gnss1": VALUE} as it is, or ["gnss1=VALUE"] as that dict; paths as text."""
+    if isinstance(value, str):
+        value = [value]
+    if isinstance(value, (list, tuple)) and all(isinstance(v, str) for v in value):
+        pairs = [v.split("=", 1) for v in value]
+        if any(len(p) != 2 or not p[0] or not p[1] for p in pairs):
+            raise _input_error(f"({_option_name(key)}): expected NAME=VALUE strings or a dict, "
+                               f"e.g. {{\"gnss1\": ...}}", key)
+        value = dict(pairs)
+    if not isinstance(value, Mapping):
+        raise _input_error(f"({_option_name(key)}): {_type_name(value)} is not a dict; give e.g. "
+                           "{\"gnss1\": ...}", key)
+    return {k: os.fspath(v) if isinstance(v, os.PathLike) else v for k, v in value.items()}
+
+
 def _type_name(value) -> str:
     """"a float", "an int": what a value is, for a message."""
     name = type(value).__name__
@@ -170,7 +186,9 @@ def _is_frame(value) -> bool:
 _LOG_OPTIONS = ("clock_offset", "max_gap", "format", "strict", "time_format", "date",
                 "time_order", "jobs")
 # Options given as ROLE=VALUE (or NAME=FILE) pairs: a dict or a list of strings.
-_PAIR_OPTIONS = ("clock_offset", "gnss_log", "nmea", "init", "mru_log")
+_PAIR_OPTIONS = ("clock_offset",)
+# Options taken as a dict by name (gnssK, mruK); a list of "NAME=VALUE" strings is read as one.
+_DICT_OPTIONS = ("gnss_log", "nmea", "init", "mru_log")
 
 
 def _option_name(key: str) -> str:
@@ -190,6 +208,8 @@ def _set(request, key: str, value) -> None:
         raise _input_error(f"({_option_name(key)}): unknown option '{key}'", key)
     if key in _PAIR_OPTIONS:
         value = _pairs(value, key)
+    elif key in _DICT_OPTIONS:
+        value = _by_name(value, key)
     elif isinstance(value, os.PathLike):
         value = os.fspath(value)
     elif isinstance(value, (list, tuple)) and value and isinstance(value[0], os.PathLike):
@@ -316,9 +336,11 @@ def leverarm_gnss(log, col=None, unit=None, map=None, *, json=None, plots=None,
     """GNSS antenna (and further MRU) lever arms [m, BODY]: from the logger alone by GNSS/INS
     fusion (``method="ins"``, the default with an MRU in the log) or the thesis' estimators
     (``"lsq"``, ``"luenberger"``, ``"adaptive"``). Options as ``dynpos leverarm gnss``:
-    ``imu``, ``imu_arm`` ("X,Y,Z" [m]), ``accel``, ``antennas``, ``nmea``/``gnss_log``
-    ({"gnssK": FILE}), ``time_offset`` [s], ``max_time_offset`` [s], ``gnss_std`` [m], ...;
-    ``plots`` (folder). Table: ``arms``."""
+    ``imu``, ``imu_arm`` ((X, Y, Z) [m]: a tuple, list or numpy array), ``accel``
+    ("kinematic", "specific-force"), ``antennas``, ``nmea``/``gnss_log`` ({"gnssK": FILE}),
+    ``utc_at_zero`` ("HH:MM:SS" or seconds of the UTC day), ``init`` ({"gnssK": (X, Y, Z)}),
+    ``w1``, ``w2``, ``gamma``, ``L``, ``init_p0`` ((X, Y, Z)), ``time_offset`` [s],
+    ``max_time_offset`` [s], ``gnss_std`` [m], ...; ``plots`` (folder). Table: ``arms``."""
     q = _request(_dynpos.LeverarmGnssRequest, log, col, unit, map, options)
     doc = _dynpos.run_leverarm_gnss(q, _path(json), _path(plots, "plots"))
     return Result(_json.loads(doc), "arms")

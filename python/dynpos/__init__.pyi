@@ -12,6 +12,7 @@ import numpy.typing
 _Path = str | os.PathLike[str]
 _Pairs = Mapping[str, Any] | Sequence[str] | str | None
 _LogLike = _Path | Log | Any  # a path, a Log or a pandas DataFrame
+_Vec3 = tuple[float, float, float] | Sequence[float] | numpy.typing.ArrayLike | str  # X,Y,Z
 
 class InputError(ValueError):
     """Bad input: the CLI's message; where it was found, None where not known."""
@@ -112,11 +113,13 @@ def leverarm_gnss(log: _LogLike, col: _Pairs = None, unit: _Pairs = None,
                   map: _Path | None = None, *, json: _Path | None = None,
                   plots: _Path | None = None,
                   method: Literal["auto", "ins", "luenberger", "adaptive", "lsq"] = ...,
-                  imu: str = ..., imu_arm: str = ...,
+                  imu: str = ..., imu_arm: _Vec3 | None = ...,
                   accel: Literal["kinematic", "specific-force"] = ...,
-                  antennas: Sequence[str] = ..., gnss_log: _Pairs = ..., nmea: _Pairs = ...,
-                  utc_at_zero: str = ..., init: _Pairs = ..., w1: str = ..., w2: str = ...,
-                  gamma: str = ..., L: str = ..., init_p0: str = ..., adaptive_rate: float = ...,
+                  antennas: Sequence[str] = ..., gnss_log: Mapping[str, _Path] = ...,
+                  nmea: Mapping[str, _Path] = ..., utc_at_zero: str | float | None = ...,
+                  init: Mapping[str, _Vec3] = ..., w1: _Vec3 | None = ...,
+                  w2: _Vec3 | None = ..., gamma: _Vec3 | None = ..., L: _Vec3 | None = ...,
+                  init_p0: _Vec3 | None = ..., adaptive_rate: float = ...,
                   lag: int = ..., time_offset: float | None = ...,
                   estimate_time_offset: bool = ..., max_time_offset: float = ...,
                   converged_from: float = ..., pe_window: float = ..., gnss_std: float = ...,
@@ -125,7 +128,7 @@ def leverarm_gnss(log: _LogLike, col: _Pairs = None, unit: _Pairs = None,
                   time_order: str = ..., jobs: int = ...) -> Result: ...
 def leverarm_mru(log: _LogLike, col: _Pairs = None, unit: _Pairs = None,
                  map: _Path | None = None, *, json: _Path | None = None,
-                 plots: _Path | None = None, mru_log: _Pairs = ...,
+                 plots: _Path | None = None, mru_log: Mapping[str, _Path] = ...,
                  accel: Literal["kinematic", "specific-force"] = ...,
                  method: Literal["lsq", "observer"] = ..., window_s: float = ...,
                  tau_s: float = ..., w1: float = ..., clock_offset: _Pairs = ...,

@@ -71,7 +71,7 @@ def test_leverarm_gnss_equals_the_cli_json(tmp_path):
     run = dynpos.simulate("turning-circle", seed=2, duration=150, out=tmp_path / "tc")
     assert run.truth["seed"] == 2
     log = tmp_path / "tc" / "log.csv"
-    r = dynpos.leverarm_gnss(log, imu_arm="0.358,0.804,-4.321")
+    r = dynpos.leverarm_gnss(log, imu_arm=(0.358, 0.804, -4.321))
     expected = cli_json(tmp_path, "leverarm", "gnss", str(log), "--imu-arm",
                         "0.358,0.804,-4.321")
     assert r.to_dict() == expected

@@ -121,7 +121,9 @@ def options(argv):
         elif flag in REPEATED:
             kwargs.setdefault(key, []).append(value)
         else:
-            kwargs[key] = number(value) if key not in ("labels", "date", "imu_arm") else value
+            kwargs[key] = number(value) if key not in ("labels", "date") else value
+        if key == "imu_arm":  # a vector: the API takes the numbers, (1, 2) for "1,2"
+            kwargs[key] = tuple(number(v) for v in value.split(","))
         i += 2
     return kwargs
 
@@ -266,3 +268,34 @@ def test_the_wind_tolerance_has_a_range(tolerance):
                        r"be from 1e-06 to 10 m/s") as e:
         dynpos.capability(direction_step=90, wind_tolerance=tolerance)
     assert e.value.option == "wind_tolerance"
+
+
+def test_leverarm_takes_typed_arguments_and_names_a_bad_one():
+    """Vectors as tuples or numpy arrays, enums by name; a bad name or a vector of two numbers
+    raises InputError naming the keyword."""
+    import numpy as np
+    q = dynpos._dynpos.LeverarmGnssRequest()
+    q.imu_arm = np.array([0.358, 0.804, -4.321])
+    assert tuple(q.imu_arm) == (0.358, 0.804, -4.321)
+    q.imu_arm = (1, 2, 3)
+    q.init = {"gnss1": [0.2, -0.6, -13.9]}
+    assert tuple(q.init["gnss1"]) == (0.2, -0.6, -13.9)
+    q.method = "Luenberger"
+    q.accel = "specific-force"
+    assert (q.method, q.accel) == ("luenberger", "specific-force")
+    q.utc_at_zero = "10:00:01.5"
+    assert q.utc_at_zero == 36001.5
+    for function, key, value, text in [
+            (dynpos.leverarm_mru, "accel", "gravity", "unknown acceleration convention 'gravity'"),
+            (dynpos.leverarm_mru, "method", "kalman", "unknown method 'kalman'"),
+            (dynpos.leverarm_gnss, "method", "fast", "unknown method 'fast'"),
+            (dynpos.leverarm_gnss, "imu_arm", (1, 2), "'1,2' is not three numbers X,Y,Z"),
+            (dynpos.leverarm_gnss, "w1", np.array([1.0, np.nan, 1.0]), "is not three numbers"),
+            (dynpos.leverarm_gnss, "utc_at_zero", "25:00", "is not a UTC time")]:
+        with pytest.raises(dynpos.InputError) as e:
+            function(STEPS, **{key: value})
+        assert e.value.option == key, (key, str(e.value))
+        assert f"({key}=): " in str(e.value) and text in str(e.value), str(e.value)
+    with pytest.raises(dynpos.InputError) as e:
+        dynpos.leverarm_gnss(STEPS, init={"gnss1": (1, 2)})
+    assert e.value.option == "init"

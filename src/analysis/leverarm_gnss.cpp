@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -31,32 +32,24 @@ bool gnss_role(const std::string& role) { return role.rfind("gnss", 0) == 0; }
 
 bool mru_role(const std::string& role) { return role.rfind("mru", 0) == 0; }
 
-// The option of request key `key` as the command line spells it, for the examples in hints.
-std::string flag(std::string key) {
-  std::replace(key.begin(), key.end(), '_', '-');
-  return "--" + key;
+// A name as the lookups compare it: options are taken in any case.
+std::string lower_case(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
 }
 
 // The example of an X,Y,Z option in its error's hint (gains, initial arms and P₀ alike).
 const char* const kGainExample = "0.02,0.02,20";
 
-// "gnssK=VALUE" → (gnssK, VALUE).
-std::pair<std::string, std::string> split_eq(const std::string& text, const std::string& key,
-                                             const std::string& example) {
-  const auto eq = text.find('=');
-  if (eq == std::string::npos || eq == 0 || eq + 1 == text.size()) {
-    throw option_error(key, "malformed argument '" + text + "': expected " + example,
-                       "for example " + flag(key) + " " + example);
+calib::GnssArmMethod thesis_method(LeverarmGnssMethod m) {
+  switch (m) {
+    case LeverarmGnssMethod::kLuenberger:
+      return calib::GnssArmMethod::kLuenberger;
+    case LeverarmGnssMethod::kAdaptive:
+      return calib::GnssArmMethod::kAdaptive;
+    default:
+      return calib::GnssArmMethod::kLsq;
   }
-  return {text.substr(0, eq), text.substr(eq + 1)};
-}
-
-calib::GnssArmMethod parse_method(const std::string& m) {
-  if (m == "luenberger") return calib::GnssArmMethod::kLuenberger;
-  if (m == "adaptive") return calib::GnssArmMethod::kAdaptive;
-  if (m == "lsq") return calib::GnssArmMethod::kLsq;
-  throw option_error("method", "unknown method '" + m + "'",
-                     "use auto, ins, luenberger, adaptive or lsq");
 }
 
 void check_prefix(const std::string& p, const std::string& key) {
@@ -65,28 +58,34 @@ void check_prefix(const std::string& p, const std::string& key) {
                        "antennas are named gnssK, e.g. gnss1");
 }
 
-// The per-antenna input files: "gnssK=FILE", an antenna name and an existing file.
-void check_antenna_files(const std::vector<std::string>& specs, const std::string& key,
-                         const std::string& example, const std::string& what) {
-  for (const std::string& g : specs) {
-    const auto [prefix, file] = split_eq(g, key, example);
+// The per-antenna input files: an antenna name and an existing file each.
+void check_antenna_files(const std::map<std::string, std::filesystem::path>& files,
+                         const std::string& key, const std::string& what) {
+  for (const auto& [prefix, file] : files) {
     check_prefix(prefix, key);
     if (!std::filesystem::exists(file))
       throw option_error_in_file(file, key, "file not found", "give an existing " + what);
   }
 }
 
+// A vector option given from a program (not parsed from text) must still be finite.
+void check_finite(const Vec3& v, const std::string& key) {
+  if (!v.allFinite())
+    throw option_error(key, "the vector must be three finite numbers",
+                       "for example " + std::string(kGainExample));
+}
+
 // The estimator's options from the request, every option but the initial arms (which need the
 // antennas of the data) checked in the command line's order.
 calib::GnssArmOptions arm_options(const LeverarmGnssRequest& q) {
   calib::GnssArmOptions lo;
-  if (q.method != "auto" && q.method != "ins") lo.method = parse_method(q.method);
-  if (!q.w1.empty()) lo.luenberger_w_p0 = parse_vec3(q.w1, "w1", kGainExample);
-  if (!q.w2.empty()) lo.luenberger_w_arm = parse_vec3(q.w2, "w2", kGainExample);
-  if (!q.gamma.empty()) lo.adaptive_gamma = parse_vec3(q.gamma, "gamma", kGainExample);
-  if (!q.L.empty()) lo.adaptive_l = parse_vec3(q.L, "L", kGainExample);
+  lo.method = thesis_method(q.method);
+  if (q.w1) lo.luenberger_w_p0 = *q.w1;
+  if (q.w2) lo.luenberger_w_arm = *q.w2;
+  if (q.gamma) lo.adaptive_gamma = *q.gamma;
+  if (q.L) lo.adaptive_l = *q.L;
   auto positive = [](const Vec3& v, const char* key) {
-    if (!(v.array() > 0.0).all())
+    if (!(v.array() > 0.0).all() || !v.allFinite())
       throw option_error(key, "gains must be > 0", "for example 0.02,0.02,20");
   };
   positive(lo.luenberger_w_p0, "w1");
@@ -96,9 +95,9 @@ calib::GnssArmOptions arm_options(const LeverarmGnssRequest& q) {
   if (!(q.adaptive_rate > 0.0) || !std::isfinite(q.adaptive_rate))
     throw option_error("adaptive_rate", "the rate must be > 0", "for example 0.1 [1/s]");
   lo.adaptive_rate_per_s = q.adaptive_rate;
-  if (!q.init_p0.empty()) lo.initial_p0_n_m = parse_vec3(q.init_p0, "init_p0", kGainExample);
-  for (const std::string& s : q.init)
-    parse_vec3(split_eq(s, "init", "gnss1=0.2,-0.6,-13.9").second, "init", kGainExample);
+  if (q.init_p0) check_finite(*q.init_p0, "init_p0");
+  lo.initial_p0_n_m = q.init_p0;
+  for (const auto& [antenna, arm] : q.init) check_finite(arm, "init");
   if (q.lag < 1) throw option_error("lag", "the lag must be >= 1 epoch");
   lo.lag_epochs = q.lag;
   if (q.time_offset && q.estimate_time_offset)
@@ -130,17 +129,16 @@ calib::GnssArmOptions arm_options(const LeverarmGnssRequest& q) {
 }
 
 // The initial arms of `init` in the order of the estimated antennas `names`.
-std::vector<Vec3> initial_arms(const std::vector<std::string>& init,
+std::vector<Vec3> initial_arms(const std::map<std::string, Vec3>& init,
                                const std::vector<std::string>& names) {
   if (init.empty()) return {};
   std::vector<Vec3> arms(names.size(), Vec3::Zero());
-  for (const std::string& s : init) {
-    const auto [p, v] = split_eq(s, "init", "gnss1=0.2,-0.6,-13.9");
+  for (const auto& [p, v] : init) {
     const auto it = std::find(names.begin(), names.end(), p);
     if (it == names.end())
       throw option_error("init", "antenna '" + p + "' is not estimated",
                          "the antennas are the gnssK of the inputs (or --antennas)");
-    arms[static_cast<std::size_t>(it - names.begin())] = parse_vec3(v, "init", kGainExample);
+    arms[static_cast<std::size_t>(it - names.begin())] = v;
   }
   return arms;
 }
@@ -241,8 +239,8 @@ void read_inputs(const LeverarmGnssRequest& q, Inputs& in) {
   in.input = std::move(loaded.input);
   std::map<std::string, std::pair<std::size_t, std::string>> external;  // prefix → (extra, file)
   in.extra.reserve(q.gnss_log.size() + q.nmea.size());
-  for (const std::string& g : q.gnss_log) {
-    const auto [prefix, file] = split_eq(g, "gnss_log", "gnss1=FILE.csv");
+  for (const auto& [prefix, path] : q.gnss_log) {
+    const std::string file = path.string();
     LogSource li;
     li.log = file;
     li.map_file = q.source.map_file;
@@ -250,24 +248,22 @@ void read_inputs(const LeverarmGnssRequest& q, Inputs& in) {
       if (c.rfind(prefix + ".", 0) == 0) li.columns.push_back(c);
     for (const std::string& u : q.source.units)
       if (u.rfind(prefix + ".", 0) == 0) li.units.push_back(u);
-    LoadedLog extra = li.load([&](const std::string& r) { return r.rfind(prefix + ".", 0) == 0; });
+    const std::string dot = prefix + ".";
+    LoadedLog extra = li.load([&dot](const std::string& r) { return r.rfind(dot, 0) == 0; });
     in.extra.push_back(std::move(extra.log));
     in.input.append(std::move(extra.input));
     external[prefix] = {in.extra.size() - 1, file};
   }
-  std::optional<double> utc0;
-  if (!q.utc_at_zero.empty()) utc0 = io::parse_utc_time_of_day(q.utc_at_zero);
-  for (const std::string& g : q.nmea) {
-    const auto [prefix, file] = split_eq(g, "nmea", "gnss1=FILE.nmea");
-    in.extra.push_back(read_antenna_capture(q, prefix, file, in, utc0));
+  for (const auto& [prefix, path] : q.nmea) {
+    const std::string file = path.string();
+    in.extra.push_back(read_antenna_capture(q, prefix, file, in, q.utc_at_zero));
     external[prefix] = {in.extra.size() - 1, file};
   }
   const std::vector<std::string> prefixes = antenna_names(q, in.log, external);
   if (prefixes.empty())
-    throw core::InputError({q.source.log.string(), {}, {}, "gnss1.lat"},
-                           "no GNSS antenna in the inputs",
-                           "map gnssK.lat/lon/height or gnssK.north/east/down with --col, or give "
-                           "--gnss-log gnssK=FILE or --nmea gnssK=FILE");
+    throw q.source.error("gnss1.lat", "no GNSS antenna in the inputs",
+                         "map gnssK.lat/lon/height or gnssK.north/east/down with --col, or give "
+                         "--gnss-log gnssK=FILE or --nmea gnssK=FILE");
   for (const std::string& p : prefixes) {
     const auto it = external.find(p);
     if (it != external.end())
@@ -278,11 +274,11 @@ void read_inputs(const LeverarmGnssRequest& q, Inputs& in) {
 }
 
 // The motion of the log; the library does not know the file, so it is put into its errors.
-calib::MotionFromLog motion_of(const core::Log& log, const std::filesystem::path& file) {
+calib::MotionFromLog motion_of(const core::Log& log, const LogSource& source) {
   try {
     return calib::motion_from_mixed_log(log);
   } catch (const core::InputError& e) {
-    throw with_file(e, file.string());
+    throw source.in_log(e);
   }
 }
 
@@ -298,9 +294,9 @@ double fix_rate_hz(const calib::GnssSeries& g) {
 LeverarmGnssReport run_ins_report(const LeverarmGnssRequest& q, Inputs& in) {
   const std::vector<calib::GnssSeries> gnss = calib::gnss_from_logs(in.sources);
   LeverarmGnssReport report;
-  report.method = "ins";
+  report.method = LeverarmGnssMethod::kIns;
   report.log = q.source.log;
-  report.ins = detail::run_ins(q, in.log, gnss, q.source.log.string());
+  report.ins = detail::run_ins(q, in.log, gnss);
   report.input = std::move(in.input);
   report.gnss_rate_hz = fix_rate_hz(gnss[0]);
   report.input_notes = in.notes;
@@ -309,10 +305,43 @@ LeverarmGnssReport run_ins_report(const LeverarmGnssRequest& q, Inputs& in) {
 
 }  // namespace
 
+std::string_view to_string(LeverarmGnssMethod m) {
+  switch (m) {
+    case LeverarmGnssMethod::kAuto:
+      return "auto";
+    case LeverarmGnssMethod::kIns:
+      return "ins";
+    case LeverarmGnssMethod::kLuenberger:
+      return "luenberger";
+    case LeverarmGnssMethod::kAdaptive:
+      return "adaptive";
+    case LeverarmGnssMethod::kLsq:
+      return "lsq";
+  }
+  return "lsq";
+}
+
+LeverarmGnssMethod gnss_method_from_name(const std::string& name) {
+  for (const LeverarmGnssMethod m : kLeverarmGnssMethods)
+    if (lower_case(name) == to_string(m)) return m;
+  throw option_error("method", "unknown method '" + name + "'",
+                     "use auto, ins, luenberger, adaptive or lsq");
+}
+
+double parse_utc_at_zero(const std::string& text) {
+  try {
+    return io::parse_utc_time_of_day(text);
+  } catch (const core::InputError& e) {
+    throw option_error("utc_at_zero", e.problem(), e.hint());
+  }
+}
+
 void LeverarmGnssRequest::validate() const {
-  check_antenna_files(gnss_log, "gnss_log", "gnss1=FILE.csv", "CSV file");
-  if (!utc_at_zero.empty()) io::parse_utc_time_of_day(utc_at_zero);
-  check_antenna_files(nmea, "nmea", "gnss1=FILE.nmea", "NMEA 0183 file");
+  check_antenna_files(gnss_log, "gnss_log", "CSV file");
+  if (utc_at_zero && !(*utc_at_zero >= 0.0 && *utc_at_zero < 86'400.0))
+    throw option_error("utc_at_zero", fmt::format("{} s is not a time of day", *utc_at_zero),
+                       "give seconds of the UTC day in [0, 86400), or HH:MM:SS[.sss]");
+  check_antenna_files(nmea, "nmea", "NMEA 0183 file");
   for (const std::string& p : antennas) check_prefix(p, "antennas");
   arm_options(*this);
   detail::validate_ins_options(*this);
@@ -322,9 +351,10 @@ LeverarmGnssReport run_leverarm_gnss(const LeverarmGnssRequest& q) {
   q.validate();
   Inputs in;
   read_inputs(q, in);
-  const bool ins = q.method == "ins" || (q.method == "auto" && detail::has_ins_inputs(in.log));
+  const bool ins = q.method == LeverarmGnssMethod::kIns ||
+                   (q.method == LeverarmGnssMethod::kAuto && detail::has_ins_inputs(in.log));
   if (ins) return run_ins_report(q, in);
-  const calib::MotionFromLog motion = motion_of(in.log, q.source.log);
+  const calib::MotionFromLog motion = motion_of(in.log, q.source);
   const std::vector<calib::GnssSeries> gnss = calib::gnss_from_logs(in.sources);
   // Proposition 2's persistence of excitation is judged over windows of pe_window seconds: a
   // log shorter than one window cannot show it (and is too short for a calibration).
@@ -342,7 +372,7 @@ LeverarmGnssReport run_leverarm_gnss(const LeverarmGnssRequest& q) {
   calib::GnssArmOptions lo = arm_options(q);
   lo.initial_arms_b_m = initial_arms(q.init, names);
   LeverarmGnssReport report;
-  report.method = std::string(calib::gnss_arm_method_name(lo.method));
+  report.method = q.method == LeverarmGnssMethod::kAuto ? LeverarmGnssMethod::kLsq : q.method;
   report.log = q.source.log;
   report.input = std::move(in.input);
   report.pe_window_s = q.pe_window;
@@ -350,9 +380,9 @@ LeverarmGnssReport run_leverarm_gnss(const LeverarmGnssRequest& q) {
   lo.excitation.gnss_rate_hz = report.gnss_rate_hz;
   report.result = calib::estimate_gnss_arms(motion.motion, gnss, lo);
   if (report.result.status != core::Status::kOk)
-    throw core::InputError({q.source.log.string(), {}, {}, "time"}, report.result.message,
-                           "check that the GNSS fixes and the motion cover the same time (a "
-                           "maneuver of a few minutes with turning and roll)");
+    throw q.source.error("time", report.result.message,
+                         "check that the GNSS fixes and the motion cover the same time (a "
+                         "maneuver of a few minutes with turning and roll)");
   report.input_notes = motion.notes;
   report.input_notes.insert(report.input_notes.end(), in.notes.begin(), in.notes.end());
   return report;

@@ -16,10 +16,10 @@ namespace {
 
 using Vec3 = Eigen::Vector3d;
 
-// The true arms [m, BODY] of a trial's truth.json; none when the file is missing.
-std::map<std::string, Vec3> true_arms(const std::filesystem::path& truth_file) {
+// A trial's truth.json (the true arms [m, BODY] and the scenario's name); empty when missing.
+scenario::TrialTruth trial_truth(const std::filesystem::path& truth_file) {
   if (!std::filesystem::exists(truth_file)) return {};
-  return scenario::read_trial_truth(truth_file).lever_arms;
+  return scenario::read_trial_truth(truth_file);
 }
 
 // Estimate against truth per sensor and method, and the largest error.
@@ -47,10 +47,9 @@ LeverarmGnssReport ins_estimate(const std::filesystem::path& log,
                                 const std::map<std::string, Vec3>& arms) {
   LeverarmGnssRequest q;
   q.source.log = log;
-  q.method = "ins";
+  q.method = LeverarmGnssMethod::kIns;
   const auto mru1 = arms.find("mru1");
-  if (mru1 != arms.end())
-    q.imu_arm = fmt::format("{},{},{}", mru1->second(0), mru1->second(1), mru1->second(2));
+  if (mru1 != arms.end()) q.imu_arm = mru1->second;
   LeverarmGnssReport report = run_leverarm_gnss(q);
   nlohmann::json doc = to_json(report);
   doc["log"] = "turning-circle/log.csv";
@@ -66,14 +65,15 @@ ReportSection leverarm_gnss_demo_section(const std::filesystem::path& campaign_d
   if (!std::filesystem::exists(log)) return {};
   LeverarmGnssRequest q;
   q.source.log = log;
-  q.method = "lsq";
+  q.method = LeverarmGnssMethod::kLsq;
   q.source.columns = {"roll=mru1.roll", "pitch=mru1.pitch", "p=mru1.p", "q=mru1.q", "r=mru1.r"};
   const LeverarmGnssReport report = run_leverarm_gnss(q);
   nlohmann::json doc = to_json(report);
   doc["log"] = "turning-circle/log.csv";
   doc["input"] = io::to_json(relative_to(report.input, campaign_dir));
-  const std::map<std::string, Vec3> truth =
-      true_arms(campaign_dir / "turning-circle" / "truth.json");
+  const scenario::TrialTruth trial = trial_truth(campaign_dir / "turning-circle" / "truth.json");
+  const std::map<std::string, Vec3>& truth = trial.lever_arms;
+  const std::string name = trial.scenario.name.empty() ? "turning-circle" : trial.scenario.name;
   const std::filesystem::path dir = campaign_dir / "analysis" / "leverarm";
   auto plots = write_figures(report, dir, truth);
   io::write_json((dir / "gnss.json").string(), doc);
@@ -87,7 +87,7 @@ ReportSection leverarm_gnss_demo_section(const std::filesystem::path& campaign_d
   add_truth_rows(cmp, "ins", ins.ins->gnss.arms, truth);
   add_truth_rows(cmp, "ins", ins.ins->mrus.arms, truth);
   const std::string intro = fmt::format(
-      "Turning circle (`turning-circle`), method {}: motion from MRU 1 (roll, pitch, p, q, r at "
+      "Turning circle (`{}`), method {}: motion from MRU 1 (roll, pitch, p, q, r at "
       "100 Hz), gyro heading (10 Hz) and the speed log (u, v over ground, 1 Hz; no heave speed "
       "w); fixes of every antenna at 1 Hz with RTK noise; GNSS time offset {:.3f} s (given). "
       "The baselines between antennas need no velocity and come out within millimetres; the "
@@ -101,7 +101,7 @@ ReportSection leverarm_gnss_demo_section(const std::filesystem::path& campaign_d
       "accelerometer's noise and bias limit what one steady turn shows of the horizontal "
       "arms), the GNSS time offset {:.1f} ms (±{:.1f}). JSON: analysis/leverarm/gnss.json and "
       "gnss-ins.json.",
-      calib::gnss_arm_method_name(r.method), r.time_offset_s,
+      name, calib::gnss_arm_method_name(r.method), r.time_offset_s,
       100.0 * ins.ins->gnss.arms.front().std_m.head<2>().maxCoeff(),
       100.0 * ins.ins->gnss.arms.front().std_m(2), 1e3 * ins.ins->gnss.time_offset_s,
       1e3 * ins.ins->gnss.time_offset_std_s);

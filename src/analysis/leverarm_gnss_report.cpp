@@ -235,4 +235,11 @@ std::vector<std::filesystem::path> write_figures(const LeverarmGnssReport& repor
   return out;
 }
 
+Written write_outputs(const LeverarmGnssReport& report, const Outputs& outputs) {
+  Written written;
+  if (!outputs.figures.empty()) written = write_figures(report, outputs.figures);
+  write_json_output(outputs, to_json(report), written);
+  return written;
+}
+
 }  // namespace dynpos::analysis

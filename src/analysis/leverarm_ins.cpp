@@ -18,12 +18,6 @@ namespace {
 
 using Vec3 = Eigen::Vector3d;
 
-// --imu-arm: the fusion MRU's arm from CO, or none.
-std::optional<Vec3> imu_arm(const std::string& text) {
-  if (text.empty()) return std::nullopt;
-  return parse_vec3(text, "imu_arm", "0.358,0.804,-4.321");
-}
-
 nlohmann::json vec_json(const Vec3& v) {
   return nlohmann::json::array(
       {io::json_number(v(0)), io::json_number(v(1)), io::json_number(v(2))});
@@ -53,26 +47,24 @@ void validate_ins_options(const LeverarmGnssRequest& q) {
                          !std::all_of(q.imu.begin() + 3, q.imu.end(), ::isdigit)))
     throw option_error("imu", "'" + q.imu + "' is not an MRU role prefix",
                        "MRUs are named mruK, e.g. mru1");
-  imu_arm(q.imu_arm);
-  if (!calib::parse_mru_accel(q.accel))
-    throw option_error("accel", "unknown acceleration convention '" + q.accel + "'",
-                       "use kinematic or specific-force");
+  if (q.imu_arm && !q.imu_arm->allFinite())
+    throw option_error("imu_arm", "the arm must be three finite numbers X,Y,Z [m]",
+                       "for example 0.358,0.804,-4.321");
 }
 
 LeverarmInsResult run_ins(const LeverarmGnssRequest& q, const core::Log& log,
-                          const std::vector<calib::GnssSeries>& gnss, const std::string& file) {
+                          const std::vector<calib::GnssSeries>& gnss) {
   const std::vector<std::string> imus = calib::imu_names(log);
   LeverarmInsResult out;
   out.imu = q.imu.empty() ? (imus.empty() ? "mru1" : imus.front()) : q.imu;
-  const calib::MruAccel accel = *calib::parse_mru_accel(q.accel);
   calib::ImuSeries imu;
   try {
-    imu = calib::imu_from_log(log, out.imu, accel);
+    imu = calib::imu_from_log(log, out.imu, q.accel);
   } catch (const core::InputError& e) {
-    throw with_file(e, file);
+    throw q.source.in_log(e);
   }
   calib::InsArmOptions o;
-  o.imu_arm_b_m = imu_arm(q.imu_arm);
+  o.imu_arm_b_m = q.imu_arm;
   o.estimate_time_offset = !q.time_offset.has_value();
   o.time_offset_s = q.time_offset.value_or(0.0);
   o.max_time_offset_s = q.max_time_offset;
@@ -80,8 +72,8 @@ LeverarmInsResult run_ins(const LeverarmGnssRequest& q, const core::Log& log,
   o.gnss_vertical_std_m = 2.0 * q.gnss_std;
   out.gnss = calib::estimate_ins_arms(imu, gnss, o);
   if (out.gnss.status != core::Status::kOk)
-    throw core::InputError({file, {}, {}, "time"}, out.gnss.message,
-                           "log the GNSS fixes and the MRU over the same maneuver");
+    throw q.source.error("time", out.gnss.message,
+                         "log the GNSS fixes and the MRU over the same maneuver");
   out.gnss.notes.insert(out.gnss.notes.begin(), imu.notes.begin(), imu.notes.end());
   for (const std::string& m : calib::mru_accel_names(log))
     if (m != out.imu) out.mru_names.push_back(m);
@@ -89,7 +81,7 @@ LeverarmInsResult run_ins(const LeverarmGnssRequest& q, const core::Log& log,
     try {
       out.mrus = calib::estimate_mru_arms_from_imu(imu, log, out.mru_names, 2.0);
     } catch (const core::InputError& e) {
-      throw with_file(e, file);
+      throw q.source.in_log(e);
     }
     const Vec3 offset = o.imu_arm_b_m.value_or(Vec3::Zero());
     for (calib::ArmEstimate& a : out.mrus.arms) a.l_b_m += offset;

@@ -18,12 +18,12 @@ namespace dynpos::analysis::detail {
 /// Whether `log` has what ins needs: an MRU with every role and the heading.
 bool has_ins_inputs(const core::Log& log);
 
-/// Checks the ins options of `q` (imu, imu_arm, accel), each by its request key.
+/// Checks the ins options of `q` (imu, imu_arm), each by its request key.
 void validate_ins_options(const LeverarmGnssRequest& q);
 
-/// The estimate from the MRU of `log` and the fixes `gnss`; `file` names the log in errors.
+/// The estimate from the MRU of `log` and the fixes `gnss`; q.source names the log in errors.
 LeverarmInsResult run_ins(const LeverarmGnssRequest& q, const core::Log& log,
-                          const std::vector<calib::GnssSeries>& gnss, const std::string& file);
+                          const std::vector<calib::GnssSeries>& gnss);
 
 nlohmann::json ins_json(const LeverarmInsResult& r);
 std::string ins_text(const LeverarmInsResult& r);

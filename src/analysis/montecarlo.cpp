@@ -128,7 +128,7 @@ void measure_lever_arms(const std::filesystem::path& log, const scenario::TrialT
   LeverarmGnssRequest q;
   q.source.log = log;
   q.source.jobs = 1;
-  q.method = "lsq";
+  q.method = LeverarmGnssMethod::kLsq;
   q.source.columns = {"roll=mru1.roll", "pitch=mru1.pitch", "p=mru1.p", "q=mru1.q", "r=mru1.r"};
   try {
     const LeverarmGnssReport report = run_leverarm_gnss(q);

@@ -312,8 +312,8 @@ Eigen::Matrix3d mru_g_matrix(const Eigen::Vector3d& omega, const Eigen::Vector3d
 
 MruSignals mru_signals_from_samples(const MruRawSamples& raw, const MruSignalOptions& options) {
   if (!(options.smooth_window_s > 0.0) || !std::isfinite(options.smooth_window_s)) {
-    throw core::InputError({{}, {}, {}, "--window-s"}, "the smoothing window must be > 0 s",
-                           "give e.g. --window-s 1");
+    throw core::InputError::for_option("window_s", "the smoothing window must be > 0 s",
+                                       "give e.g. --window-s 1");
   }
   const std::size_t n = raw.t_s.size();
   if (raw.names.empty()) {

@@ -158,7 +158,7 @@ TEST(DeviceFiles, MruArmsFromTheMruFileMatchTheCleanLog) {
   write_with_devices("turning-circle", 0.0, {}, dir.path());
   LeverarmMruRequest clean;
   clean.source.log = dir.path() / "truth.csv";
-  clean.mru_log = {"mru1=" + (dir.path() / "log.csv").string()};
+  clean.mru_log = {{"mru1", dir.path() / "log.csv"}};
   LeverarmMruRequest devices;
   const std::string mru = (dir.path() / "devices" / "mru.csv").string();
   devices.source.log = dir.path() / "truth.csv";
@@ -249,7 +249,7 @@ TEST(DeviceFiles, LoggerOnlyLeverArmsFromTheDeviceFiles) {
   LeverarmGnssRequest clean;
   clean.source.log = dir / "log.csv";
   clean.antennas = {"gnss1", "gnss2", "gnss3"};
-  clean.imu_arm = "0.358,0.804,-4.321";
+  clean.imu_arm = Eigen::Vector3d(0.358, 0.804, -4.321);
   const LeverarmGnssReport a = run_leverarm_gnss(clean);
   LeverarmGnssRequest devices = clean;
   devices.source.log = dir / "devices" / "mru.csv";
@@ -259,11 +259,10 @@ TEST(DeviceFiles, LoggerOnlyLeverArmsFromTheDeviceFiles) {
                             "mru1.ax=AccX",     "mru1.ay=AccY",
                             "mru1.az=AccZ",     "heading=heading@" + (dir / "log.csv").string()};
   for (const char* k : {"gnss1", "gnss2", "gnss3"})
-    devices.nmea.push_back(std::string(k) + "=" +
-                           (dir / "devices" / (std::string(k) + ".nmea")).string());
+    devices.nmea[k] = dir / "devices" / (std::string(k) + ".nmea");
   const LeverarmGnssReport b = run_leverarm_gnss(devices);
   ASSERT_TRUE(a.ins && b.ins);
-  EXPECT_EQ(b.method, "ins");
+  EXPECT_EQ(b.method, LeverarmGnssMethod::kIns);
   EXPECT_EQ(b.ins->gnss.fixes, a.ins->gnss.fixes);
   ASSERT_EQ(b.ins->gnss.arms.size(), 3u);
   for (std::size_t k = 0; k < 3; ++k)

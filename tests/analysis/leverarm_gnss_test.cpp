@@ -8,10 +8,13 @@
 
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <string>
+#include <utility>
 
 #include "../source_dir.hpp"
 #include "dynpos/analysis/demo_sections.hpp"
+#include "dynpos/analysis/leverarm_mru.hpp"
 #include "dynpos/core/error.hpp"
 #include "dynpos/scenario/campaign.hpp"
 #include "dynpos/scenario/runner.hpp"
@@ -48,8 +51,7 @@ class LeverarmGnss : public ::testing::Test {
   static LeverarmGnssRequest reference_request(const std::vector<std::string>& antennas) {
     LeverarmGnssRequest q;
     q.source.log = trial() / "truth.csv";
-    for (const std::string& a : antennas)
-      q.gnss_log.push_back(a + "=" + (trial() / "log.csv").string());
+    for (const std::string& a : antennas) q.gnss_log[a] = trial() / "log.csv";
     return q;
   }
 
@@ -102,9 +104,8 @@ TEST_F(LeverarmGnss, ReferenceMotionRecoversTheTrueArms) {
 TEST_F(LeverarmGnss, NmeaFixesOnTheLogClock) {
   LeverarmGnssRequest q;
   q.source.log = trial() / "truth.csv";
-  q.nmea = {"gnss1=" + (trial() / "gnss1.nmea").string(),
-            "gnss2=" + (trial() / "gnss2.nmea").string()};
-  q.utc_at_zero = start_utc_;
+  q.nmea = {{"gnss1", trial() / "gnss1.nmea"}, {"gnss2", trial() / "gnss2.nmea"}};
+  q.utc_at_zero = parse_utc_at_zero(start_utc_);
   const LeverarmGnssReport nmea = run_leverarm_gnss(q);
   const LeverarmGnssReport csv = run_leverarm_gnss(reference_request({"gnss1", "gnss2"}));
   ASSERT_EQ(nmea.result.arms.size(), 2U);
@@ -114,7 +115,7 @@ TEST_F(LeverarmGnss, NmeaFixesOnTheLogClock) {
   EXPECT_NE(nmea.input_notes[0].find("gnss1: "), std::string::npos);
   EXPECT_NE(nmea.input_notes[0].find("NMEA sentences from"), std::string::npos);
 
-  q.utc_at_zero.clear();
+  q.utc_at_zero.reset();
   try {
     run_leverarm_gnss(q);
     FAIL() << "NMEA times outside the log's were accepted";
@@ -128,20 +129,23 @@ TEST_F(LeverarmGnss, ValidateNamesTheBadOption) {
   const LeverarmGnssRequest good = reference_request({"gnss1"});
   EXPECT_EQ(error_key(good), "");
   LeverarmGnssRequest q = good;
-  q.method = "fast";
-  EXPECT_EQ(error_key(q), "method");
-  q = good;
   q.lag = 0;
   EXPECT_EQ(error_key(q), "lag");
   q = good;
-  q.w1 = "1,2";
+  q.w1 = Eigen::Vector3d(1, 2, NAN);
   EXPECT_EQ(error_key(q), "w1");
   q = good;
-  q.L = "1,0,1";
+  q.L = Eigen::Vector3d(1, 0, 1);
   EXPECT_EQ(error_key(q), "L");
   q = good;
-  q.init = {"gnss1=1,2,x"};
+  q.init = {{"gnss1", Eigen::Vector3d(1, 2, INFINITY)}};
   EXPECT_EQ(error_key(q), "init");
+  q = good;
+  q.imu_arm = Eigen::Vector3d(NAN, 0, 0);
+  EXPECT_EQ(error_key(q), "imu_arm");
+  q = good;
+  q.utc_at_zero = 86'400.0;
+  EXPECT_EQ(error_key(q), "utc_at_zero");
   q = good;
   q.antennas = {"gps1"};
   EXPECT_EQ(error_key(q), "antennas");
@@ -164,10 +168,10 @@ TEST_F(LeverarmGnss, ValidateNamesTheBadOption) {
   q.gnss_std = -1.0;
   EXPECT_EQ(error_key(q), "gnss_std");
   q = good;
-  q.gnss_log = {"gnss1"};
+  q.gnss_log = {{"gps1", trial() / "log.csv"}};
   EXPECT_EQ(error_key(q), "gnss_log");
   q = good;
-  q.gnss_log = {"gnss1=" + (dir_ / "no-such.csv").string()};
+  q.gnss_log = {{"gnss1", dir_ / "no-such.csv"}};
   try {
     q.validate();
     FAIL() << "a missing file was accepted";
@@ -177,11 +181,44 @@ TEST_F(LeverarmGnss, ValidateNamesTheBadOption) {
   }
 }
 
+// utc_at_zero given as text is read at the edge; a bad one is an error of its key, not of the
+// column "time" of the NMEA reader.
+TEST(LeverarmGnssText, UtcAtZeroIsReadAsSecondsOfDayAndABadOneNamesItsKey) {
+  EXPECT_DOUBLE_EQ(parse_utc_at_zero("10:00:01.5"), 36'001.5);
+  EXPECT_DOUBLE_EQ(parse_utc_at_zero("2014-08-27T10:00:00Z"), 36'000.0);
+  try {
+    parse_utc_at_zero("25:00:00");
+    FAIL() << "25:00:00 was accepted";
+  } catch (const core::InputError& e) {
+    EXPECT_EQ(e.option(), "utc_at_zero");
+    EXPECT_NE(e.problem().find("is not a UTC time"), std::string::npos) << e.problem();
+  }
+  for (const auto m : kLeverarmGnssMethods) EXPECT_FALSE(to_string(m).empty());
+  EXPECT_EQ(to_string(LeverarmGnssMethod::kIns), "ins");
+  // Enums by name, in any case; another name is an error of the request key.
+  EXPECT_EQ(gnss_method_from_name("LSQ"), LeverarmGnssMethod::kLsq);
+  EXPECT_EQ(accel_from_name("Specific-Force"), calib::MruAccel::kSpecificForce);
+  EXPECT_EQ(mru_method_from_name("observer"), calib::MruMethod::kObserver);
+  for (const auto& [key, lookup] :
+       std::vector<std::pair<std::string, std::function<void(const std::string&)>>>{
+           {"method", [](const std::string& n) { gnss_method_from_name(n); }},
+           {"accel", [](const std::string& n) { accel_from_name(n); }},
+           {"method", [](const std::string& n) { mru_method_from_name(n); }}}) {
+    try {
+      lookup("fast");
+      FAIL() << key << ": 'fast' was accepted";
+    } catch (const core::InputError& e) {
+      EXPECT_EQ(e.option(), key);
+      EXPECT_NE(e.problem().find("'fast'"), std::string::npos) << e.problem();
+    }
+  }
+}
+
 // An initial arm for an antenna that is not estimated needs the data to be found: run names it.
 TEST_F(LeverarmGnss, InitialArmOfAnUnknownAntennaIsAnOptionError) {
   LeverarmGnssRequest q = reference_request({"gnss1"});
-  q.method = "luenberger";
-  q.init = {"gnss2=0,0,-13"};
+  q.method = LeverarmGnssMethod::kLuenberger;
+  q.init = {{"gnss2", Eigen::Vector3d(0, 0, -13)}};
   try {
     run_leverarm_gnss(q);
     FAIL() << "an initial arm of gnss2 was accepted";
@@ -192,7 +229,7 @@ TEST_F(LeverarmGnss, InitialArmOfAnUnknownAntennaIsAnOptionError) {
 
 TEST_F(LeverarmGnss, JsonHasTheDocumentedKeys) {
   LeverarmGnssRequest q = reference_request({"gnss1", "gnss2"});
-  q.method = "adaptive";
+  q.method = LeverarmGnssMethod::kAdaptive;
   const nlohmann::json j = to_json(run_leverarm_gnss(q));
   for (const char* key : {"method", "arms", "arms_frame", "interval_s", "p0", "excitation",
                           "adaptive_gamma", "time_offset_s", "time_offset_estimated",

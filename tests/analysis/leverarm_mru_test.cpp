@@ -45,8 +45,7 @@ class LeverarmMru : public ::testing::Test {
   static LeverarmMruRequest reference_request() {
     LeverarmMruRequest q;
     q.source.log = trial() / "truth.csv";
-    for (const char* m : {"mru1", "mru2"})
-      q.mru_log.push_back(std::string(m) + "=" + (trial() / "log.csv").string());
+    for (const char* m : {"mru1", "mru2"}) q.mru_log[m] = trial() / "log.csv";
     return q;
   }
 
@@ -86,7 +85,7 @@ TEST_F(LeverarmMru, ReferenceMotionRecoversTheTrueArms) {
 // used span (the converged interval), where least squares uses all of it.
 TEST_F(LeverarmMru, ObserverAveragesOverTheConvergedInterval) {
   LeverarmMruRequest q = reference_request();
-  q.method = "observer";
+  q.method = calib::MruMethod::kObserver;
   const LeverarmMruReport o = run_leverarm_mru(q);
   const LeverarmMruReport l = run_leverarm_mru(reference_request());
   EXPECT_EQ(o.result.method, calib::MruMethod::kObserver);
@@ -102,12 +101,6 @@ TEST_F(LeverarmMru, ValidateNamesTheBadOption) {
   const LeverarmMruRequest good = reference_request();
   EXPECT_EQ(error_key(good), "");
   LeverarmMruRequest q = good;
-  q.accel = "gravity";
-  EXPECT_EQ(error_key(q), "accel");
-  q = good;
-  q.method = "kalman";
-  EXPECT_EQ(error_key(q), "method");
-  q = good;
   q.tau_s = 0.0;
   EXPECT_EQ(error_key(q), "tau_s");
   q = good;
@@ -117,12 +110,34 @@ TEST_F(LeverarmMru, ValidateNamesTheBadOption) {
   q.window_s = std::nan("");
   EXPECT_EQ(error_key(q), "window_s");
   q = good;
-  q.mru_log = {"mru1="};
+  q.mru_log = {{"mru1", ""}};
   EXPECT_EQ(error_key(q), "mru_log");
   for (const double w1 : {-1.0, 0.0, std::nan(""), HUGE_VAL}) {
     q = good;
     q.w1 = w1;  // was a std::invalid_argument of the observer naming "w1_per_s"
     EXPECT_EQ(error_key(q), "w1") << w1;
+  }
+}
+
+// Errors of the calibration library name options by their request key, and errors about the
+// log name the log as given.
+TEST(LeverarmMruErrors, CalibNamesTheKeyAndTheAnalysisTheLog) {
+  calib::MruSignalOptions so;
+  so.smooth_window_s = 0.0;
+  try {
+    calib::mru_signals_from_samples(calib::MruRawSamples{}, so);
+    FAIL() << "a window of 0 s was accepted";
+  } catch (const core::InputError& e) {
+    EXPECT_EQ(e.option(), "window_s");
+  }
+  LeverarmMruRequest q;
+  q.source.log = std::filesystem::path(DYNPOS_SOURCE_DIR) / "tests" / "cli" / "short_steps.csv";
+  try {
+    run_leverarm_mru(q);
+    FAIL() << "a log without an MRU was accepted";
+  } catch (const core::InputError& e) {
+    EXPECT_EQ(e.where().file, q.source.log.string());
+    EXPECT_NE(e.problem().find("no MRU acceleration channels"), std::string::npos) << e.what();
   }
 }
 

@@ -121,7 +121,7 @@ expect2 "log.csv \(mru9.roll\)" "$out/run/log.csv" --imu mru9
 expect2 "\(--imu\).*'imu1' is not an MRU" "$out/run/log.csv" --imu imu1
 expect2 "\(--imu-arm\).*not three numbers" "$out/run/log.csv" --imu-arm 1,2
 expect2 "\(--accel\).*unknown acceleration" "$out/run/log.csv" --accel raw
-expect2 "\(--method\).*unknown method" "$out/run/log.csv" --method INS
+expect2 "\(--method\).*unknown method 'INSS'" "$out/run/log.csv" --method INSS
 
 # 6. From the logger alone (method ins, the default with an MRU in the log): the fixes, MRU 1
 #    and the gyro heading, no velocity. Arms from CO with MRU 1's arm given. The antennas'

@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// `leverarm mru`: MRU lever arms from MRU accelerations and vessel motion (thesis 4.3, case
-/// study 4.4.2) as one request → report, with its JSON, text, figures and demo section.
+/// study 4.4.2) as one request → report, with its JSON, text, figures and demo section
+/// (leverarm_mru.cpp, leverarm_mru_report.cpp, leverarm_mru_demo.cpp).
 
 #include <Eigen/Core>
 #include <filesystem>
@@ -12,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "dynpos/analysis/log_source.hpp"
+#include "dynpos/analysis/outputs.hpp"
 #include "dynpos/calib/mru_observer.hpp"
 #include "dynpos/report/table.hpp"
 
@@ -21,18 +23,25 @@ namespace dynpos::analysis {
 struct LeverarmMruRequest {
   /// Motion (time, roll, pitch, heading, p, q, r, u, v, w) and any mruK.ax/ay/az.
   LogSource source;
-  /// NAME=FILE: an MRU's accelerations NAME.ax/ay/az in a file of their own, read with the
+  /// NAME → FILE: an MRU's accelerations NAME.ax/ay/az in a file of their own, read with the
   /// source's map, columns and units.
-  std::vector<std::string> mru_log;
-  std::string accel = "kinematic";  ///< kinematic or specific-force
-  std::string method = "lsq";       ///< lsq or observer
-  double window_s = 1.0;            ///< Savitzky–Golay window of the smoother [s], > 0
-  double tau_s = 5.0;               ///< observer convergence time constant [s], > 0
-  double w1 = 0.01;                 ///< observer gain W₁ on A₀ [1/s] (4.80)
+  std::map<std::string, std::filesystem::path> mru_log;
+  calib::MruAccel accel = calib::MruAccel::kKinematic;  ///< what the acceleration channels hold
+  calib::MruMethod method = calib::MruMethod::kLsq;     ///< batch least squares or observer
+  double window_s = 1.0;  ///< Savitzky–Golay window of the smoother [s], > 0
+  double tau_s = 5.0;     ///< observer convergence time constant [s], > 0
+  double w1 = 0.01;       ///< observer gain W₁ on A₀ [1/s] (4.80)
 
   /// Throws analysis::option_error naming the first bad option.
   void validate() const;
 };
+
+/// The acceleration convention of that name ("kinematic", "specific-force"), in any case;
+/// option_error("accel") for another name. `leverarm gnss` takes it too.
+calib::MruAccel accel_from_name(const std::string& name);
+
+/// The method of that name ("lsq", "observer"), in any case; option_error("method") otherwise.
+calib::MruMethod mru_method_from_name(const std::string& name);
 
 /// The estimate and the resolved inputs its outputs need.
 struct LeverarmMruReport {
@@ -63,5 +72,8 @@ std::string to_text(const LeverarmMruReport& report);
 std::vector<std::filesystem::path> write_figures(
     const LeverarmMruReport& report, const std::filesystem::path& dir,
     const std::map<std::string, Eigen::Vector3d>& true_arms_b_m = {});
+
+/// The figures into the folder outputs.figures (write_figures), then the JSON.
+Written write_outputs(const LeverarmMruReport& report, const Outputs& outputs);
 
 }  // namespace dynpos::analysis
