@@ -17,8 +17,8 @@ namespace dynpos::cli {
 /// Exit codes of the dynpos executable.
 enum ExitCode : int {
   kExitOk = 0,
-  kExitFailure = 1,      ///< an unexpected error while running
-  kExitInputError = 2,   ///< bad input or options: the message says where and how to fix it
+  kExitFailure = 1,     ///< an unexpected error while running
+  kExitInputError = 2,  ///< bad input or options: the message says where and how to fix it
 };
 
 /// Adds --seed bound to `seed`: a decimal number from 0 to 2⁶⁴−1, anything else (a sign, "-1",

@@ -31,14 +31,4 @@ std::string run_and_write(const Request& request, const analysis::Outputs& outpu
   return to_json(report).dump();
 }
 
-/// Runs `run(request)` without the GIL; writes the JSON to `json` when given (as --json does,
-/// "-" for standard output) and returns its text. `to_json` turns the report into the document.
-template <typename Request, typename Run, typename ToJson>
-std::string run_to_json(const Request& request, const std::string& json, Run run, ToJson to_json) {
-  py::gil_scoped_release release;
-  const nlohmann::json doc = to_json(run(request));
-  if (!json.empty()) io::write_json(json, doc);
-  return doc.dump();
-}
-
 }  // namespace dynpos::python

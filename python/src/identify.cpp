@@ -25,27 +25,6 @@ namespace {
 
 using namespace dynpos::analysis;
 
-// An analysis with the CLI's --json (and --plot, when `plot` is given): the output targets
-// checked first, then the request; the plot written before the JSON, as the command line does.
-template <typename Request, typename Report>
-std::string run_checked(const Request& q, const std::string& json, Report (*run)(const Request&),
-                        const std::string* plot = nullptr) {
-  check_output_file("json", json);
-  if (plot) check_output_file("plot", *plot);
-  return run_to_json(
-      q, json,
-      [run](const Request& r) {
-        r.validate();
-        return run(r);
-      },
-      [plot](const Report& r) {
-        if constexpr (requires { write_plot(r, std::filesystem::path()); }) {
-          if (plot && !plot->empty()) write_plot(r, *plot);
-        }
-        return to_json(r);
-      });
-}
-
 // The enum value named `text` (any case) in `names`, else option_error(key) listing the names:
 // the Python API takes the step analysis' methods by name, as the command line does.
 template <typename Enum>

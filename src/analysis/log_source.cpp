@@ -170,15 +170,30 @@ LoadedLog load_file(const LogSource& source, const RoleFilter& wanted) {
 
 namespace {
 
-// The error of a window [from, to] that holds no row of a log whose rows span first … last s.
+// "the window 5 … 10 s", "the window from 5 s on", "the window up to 10 s": as it was given.
+std::string window_text(const LogSource& source) {
+  if (source.window_from_s && source.window_to_s) {
+    return fmt::format("the window {:g} … {:g} s", *source.window_from_s, *source.window_to_s);
+  }
+  if (source.window_from_s) return fmt::format("the window from {:g} s on", *source.window_from_s);
+  return fmt::format("the window up to {:g} s", source.window_to_s.value_or(0.0));
+}
+
+// The error of a window that holds no row of the log: the log's first row is at first_s, and
+// last_s is its last row, or the first row after the window where reading stopped there.
 core::InputError window_without_rows(const LogSource& source, double first_s, double last_s) {
-  const double from = source.window_from_s.value_or(first_s);
-  const double to = source.window_to_s.value_or(last_s);
-  return option_error_in_file(
-      source.log, "from/to",
-      fmt::format("the window {:g} … {:g} s holds no row of the log ({:g} … {:g} s)", from, to,
-                  first_s, last_s),
-      "choose a window inside the logged time");
+  const std::string window = window_text(source);
+  std::string problem;
+  if (source.window_to_s && *source.window_to_s < first_s) {
+    problem = fmt::format("{} ends before the log's first row at {:g} s", window, first_s);
+  } else if (source.window_from_s && *source.window_from_s > last_s) {
+    problem = fmt::format("{} starts after the log's last row at {:g} s", window, last_s);
+  } else {
+    problem =
+        fmt::format("{} falls between two rows of the log (the next at {:g} s)", window, last_s);
+  }
+  return option_error_in_file(source.log, "from/to", problem,
+                              "choose a window inside the logged time");
 }
 
 // `loaded` cut to the source's window: for a log read whole (an NMEA capture, a log in
@@ -192,7 +207,9 @@ void cut_to_window(const LogSource& source, LoadedLog& loaded) {
   if (from <= first && to >= last) return;
   if (from > last || to < first) throw window_without_rows(source, first, last);
   core::Log cut = loaded.log.window(from, to);
-  if (cut.empty()) throw window_without_rows(source, first, last);
+  if (cut.empty()) {  // between two rows: the next one after the window
+    throw window_without_rows(source, first, *std::upper_bound(t.begin(), t.end(), to));
+  }
   loaded.log = std::move(cut);
 }
 
@@ -203,20 +220,21 @@ core::InputError LogSource::in_log(const core::InputError& e) const {
   if (where.file.empty() || (!read_from.empty() && where.file == read_from.string())) {
     where.file = log.empty() ? "<memory>" : log.string();
   }
-  if (!e.option().empty()) return core::InputError::for_option(e.option(), e.problem(), e.hint(), where.file);
+  if (!e.option().empty())
+    return core::InputError::for_option(e.option(), e.problem(), e.hint(), where.file);
   return core::InputError(where, e.problem(), e.hint());
 }
 
 core::InputError LogSource::error(const std::string& column, const std::string& problem,
                                   const std::string& hint) const {
-  return core::InputError({log.empty() ? "<memory>" : log.string(), {}, {}, column}, problem,
-                          hint);
+  return core::InputError({log.empty() ? "<memory>" : log.string(), {}, {}, column}, problem, hint);
 }
 
 LoadedLog LogSource::load(const RoleFilter& wanted) const {
   if (window_from_s && window_to_s && !(*window_to_s > *window_from_s)) {
     throw option_error_in_file(
-        log, "from/to", fmt::format("the window {:g} … {:g} s is empty", *window_from_s, *window_to_s),
+        log, "from/to",
+        fmt::format("the window {:g} … {:g} s is empty", *window_from_s, *window_to_s),
         "give a start before the end");
   }
   if (memory) {

@@ -45,7 +45,8 @@ LoadedLog load_nmea(const LogSource& source, const RoleFilter& wanted) {
   };
   io::NmeaLog read = io::read_nmea_log(source.file(), options);
   const std::size_t sentences = read.report.records;
-  io::InputReport input = describe_input(read.log, source.log.string(), std::move(read.report), source.jobs);
+  io::InputReport input =
+      describe_input(read.log, source.log.string(), std::move(read.report), source.jobs);
   input.files.front().records = sentences;  // sentences used, not rows of the time axis
   input.origin = read.origin;
   if (read.origin) input.origin_zone = "UTC";

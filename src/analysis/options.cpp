@@ -28,12 +28,6 @@ core::InputError option_error_in_file(const std::filesystem::path& file, const s
   return core::InputError::for_option(key, problem, hint, file.string());
 }
 
-core::InputError with_file(const core::InputError& e, const std::string& file) {
-  core::InputLocation where = e.where();
-  if (where.file.empty()) where.file = file;
-  return core::InputError(where, e.problem(), e.hint());
-}
-
 Eigen::Vector3d parse_vec3(const std::string& text, const std::string& key,
                            const std::string& example) {
   std::stringstream ss(text);

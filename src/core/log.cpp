@@ -40,8 +40,7 @@ std::string num(double x) {
 std::string single_quoted(std::string_view name) { return "'" + std::string(name) + "'"; }
 
 // Throws std::invalid_argument unless every time is finite and strictly increasing.
-void check_time_axis(const std::vector<double>& time_s, std::string_view context,
-                     unsigned jobs) {
+void check_time_axis(const std::vector<double>& time_s, std::string_view context, unsigned jobs) {
   const std::size_t i = first_unordered_time(time_s, jobs);
   if (i == time_s.size()) return;
   if (!std::isfinite(time_s[i])) {
@@ -99,7 +98,8 @@ std::vector<double> resample_channel(const std::vector<double>& time_s, const Ch
   if (n == 0) return out;
   // The spacing rule applies to this channel's own valid samples, so a 1 Hz channel blank on
   // the rows of a 100 Hz log sees 1 s spacing and bridges its blank rows.
-  const double max_gap = (max_gap_s == 0.0 && n >= 2) ? 2.5 * median_spacing_s(valid_t, 1) : max_gap_s;
+  const double max_gap =
+      (max_gap_s == 0.0 && n >= 2) ? 2.5 * median_spacing_s(valid_t, 1) : max_gap_s;
   const std::optional<double> angle_start =
       channel.interp == Interp::kAngle ? angle_range_start(valid_v) : std::nullopt;
 

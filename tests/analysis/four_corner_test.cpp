@@ -104,7 +104,9 @@ TEST(FourCornerAnalysis, BadOptionsNameTheirKey) {
   } catch (const core::InputError& e) {
     EXPECT_EQ(e.option(), "from/to");
     EXPECT_EQ(e.where().file, outside.source.log.string());
-    EXPECT_NE(e.problem().find("holds no row of the log (0 … 340 s)"), std::string::npos)
+    EXPECT_NE(
+        e.problem().find("the window from 5000 s on starts after the log's last row at 340 s"),
+        std::string::npos)
         << e.problem();
   }
 }
@@ -132,7 +134,7 @@ TEST(FourCornerAnalysis, WindowErrorsAreTheLogSources) {
     return e.problem();
   };
   EXPECT_EQ(problem_of(5000.0, 6000.0),
-            "the window 5000 … 6000 s holds no row of the log (0 … 340 s)");
+            "the window 5000 … 6000 s starts after the log's last row at 340 s");
   EXPECT_EQ(problem_of(50.0, 10.0), "the window 50 … 10 s is empty");
   // A window inside the log is read alone: the legs it holds.
   request.t_from_s = 50.0;

@@ -224,13 +224,14 @@ TEST(StationKeepingAnalysis, AGivenWindowIsAllThatIsRead) {
   EXPECT_EQ(problem_of(300.0, 450.0), "the window 300 … 450 s is not inside the log (0 … 399 s)");
   // (Read up to the window's end, the log is known to reach the first row after it.)
   EXPECT_EQ(problem_of(-50.0, 100.0), "the window -50 … 100 s is not inside the log (0 … 101 s)");
-  EXPECT_EQ(problem_of(500.0, 600.0), "the window 500 … 600 s holds no row of the log (0 … 399 s)");
+  EXPECT_EQ(problem_of(500.0, 600.0),
+            "the window 500 … 600 s starts after the log's last row at 399 s");
   EXPECT_EQ(problem_of(50.0, 10.0), "the window 50 … 10 s is empty");
   // A missing end is duration_s from the other: 5000 … 5300 s.
   request.t_to_s.reset();
   request.t_from_s = 5000.0;
   const core::InputError e = input_error([&] { run_station_keeping(request); });
-  EXPECT_EQ(e.problem(), "the window 5000 … 5300 s holds no row of the log (0 … 399 s)");
+  EXPECT_EQ(e.problem(), "the window 5000 … 5300 s starts after the log's last row at 399 s");
 }
 
 // The outputs: the JSON only (the analysis draws no figure), listed as written.

@@ -163,23 +163,26 @@ TEST(RunStep, AWindowIsAllThatIsRead) {
   in_memory.to_s.reset();
   auto [key, what] = option_error_of([&] { run_step(in_memory); });
   EXPECT_EQ(key, "from/to");
-  EXPECT_THAT(what, HasSubstr("the window 500 … 70 s holds no row of the log (0 … 70 s)"));
+  EXPECT_THAT(what, HasSubstr("the window from 500 s on starts after the log's last row at 70 s"));
   in_memory.from_s.reset();
   in_memory.to_s = -5.0;
   std::tie(key, what) = option_error_of([&] { run_step(in_memory); });
   EXPECT_EQ(key, "from/to");
-  EXPECT_THAT(what, HasSubstr("the window 0 … -5 s holds no row of the log"));
+  EXPECT_THAT(what, HasSubstr("the window up to -5 s ends before the log's first row at 0 s"));
   r.from_s.reset();
   r.to_s = -5.0;  // the same when the reading stops at the log's first row
   std::tie(key, what) = option_error_of([&] { run_step(r); });
   EXPECT_EQ(key, "from/to");
-  EXPECT_THAT(what, HasSubstr("s holds no row of the log"));
+  EXPECT_THAT(what, HasSubstr("the window up to -5 s ends before the log's first row at 0 s"));
   // A window between two rows holds none; one reaching past the end is outside the log.
   r.from_s = 30.01;
   r.to_s = 30.02;
   std::tie(key, what) = option_error_of([&] { run_step(r); });
   EXPECT_EQ(key, "from/to");
-  EXPECT_THAT(what, HasSubstr("the window 30.01 … 30.02 s holds no row of the log"));
+  EXPECT_THAT(
+      what,
+      HasSubstr(
+          "the window 30.01 … 30.02 s falls between two rows of the log (the next at 30.1 s)"));
   r.from_s = 65.0;
   r.to_s = 80.0;
   std::tie(key, what) = option_error_of([&] { run_step(r); });
@@ -498,9 +501,9 @@ TEST(RunStep, ErrorsFromInsideTheAnalysisNameTheLog) {
   StepRequest r = request_for(log);
   r.from_s = 100.0;
   r.to_s = 200.0;
-  EXPECT_THAT(
-      option_error_of([&] { run_step(r); }).second,
-      HasSubstr(log.string() + " (from/to): the window 100 … 200 s holds no row of the log"));
+  EXPECT_THAT(option_error_of([&] { run_step(r); }).second,
+              HasSubstr(log.string() +
+                        " (from/to): the window 100 … 200 s starts after the log's last row"));
   // A bad segment file is named with its line and column.
   r = request_for(log);
   r.segments_file = dir.write("segments.csv", "name,start,end\nfirst,10,20\nsecond,30,x\n");

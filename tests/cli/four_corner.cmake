@@ -15,6 +15,6 @@ dynpos_cli_test(identify_four_corner_bad_segment
           ${DYNPOS_EXE} identify four-corner ${CMAKE_CURRENT_SOURCE_DIR}/short_steps.csv
           --col north=response --col east=response --col heading=flat --unit heading=rad --segment box)
 dynpos_cli_test(identify_four_corner_window_outside
-  COMMAND bash ${EXPECT_EXIT} 2 "short_steps.csv \\(--from/--to\\): the window 5000 … 70 s holds no row of the log \\(0 … 70 s\\)"
+  COMMAND bash ${EXPECT_EXIT} 2 "short_steps.csv \\(--from/--to\\): the window from 5000 s on starts after the log's last row at 70 s"
           ${DYNPOS_EXE} identify four-corner ${CMAKE_CURRENT_SOURCE_DIR}/short_steps.csv
           --col north=response --col east=response --col heading=flat --unit heading=rad --from 5000)

@@ -18,6 +18,6 @@ check() {  # WINDOW_ARGS EXPECTED_MESSAGE
 }
 where="dynpos: error: $log (--from/--to)"
 check "--from 5000 --to 6000" \
-  "$where: the window 5000 … 6000 s holds no row of the log (0 … 70 s); choose a window inside the logged time"
+  "$where: the window 5000 … 6000 s starts after the log's last row at 70 s; choose a window inside the logged time"
 check "--from 50 --to 10" "$where: the window 50 … 10 s is empty; give a start before the end"
 echo "ok"

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "dynpos/core/parallel_for.hpp"
 #include "dynpos/core/log.hpp"
+#include "dynpos/core/parallel_for.hpp"
 #include "dynpos/ident/local_position.hpp"
 #include "dynpos/ident/station_keeping.hpp"
 #include "dynpos/io/column_map.hpp"

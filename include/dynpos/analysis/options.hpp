@@ -25,10 +25,6 @@ core::InputError option_error(const std::string& key, const std::string& problem
 core::InputError option_error_in_file(const std::filesystem::path& file, const std::string& key,
                                       const std::string& problem, const std::string& hint = {});
 
-/// `e` with the file `file` in its location when the library did not know the file (it read a
-/// Log, not the file); an error that names a file keeps it.
-core::InputError with_file(const core::InputError& e, const std::string& file);
-
 /// The text "X,Y,Z" as three finite numbers; else option_error(key), the hint showing the
 /// option with `example`.
 Eigen::Vector3d parse_vec3(const std::string& text, const std::string& key,
