@@ -214,14 +214,22 @@ class TimeStampReader {
     return true;
   }
 
-  /// accept() for `count` rows whose times are strictly increasing, the first at first_t, the
-  /// last at last_t on `last_line`: true, all of them kept, if first_t is after the last kept
-  /// time; false, nothing changed, if it is not (then accept() them one by one).
-  bool accept_increasing(double first_t, double last_t, std::size_t count, std::size_t last_line) {
-    if (kept_ > 0 && !(first_t > last_t_)) return false;
-    last_t_ = last_t;
-    last_line_ = last_line;
-    kept_ += count;
+  /// Rows whose times are strictly increasing, for accept_increasing().
+  struct IncreasingRows {
+    double first_t = 0.0;       ///< the first row's time [s]
+    double last_t = 0.0;        ///< the last row's time [s]
+    std::size_t count = 0;      ///< how many rows
+    std::size_t last_line = 0;  ///< the last row's line
+  };
+
+  /// accept() for rows whose times are strictly increasing: true, all of them kept, if their
+  /// first time is after the last kept time; false, nothing changed, if it is not (then
+  /// accept() them one by one).
+  bool accept_increasing(const IncreasingRows& rows) {
+    if (kept_ > 0 && !(rows.first_t > last_t_)) return false;
+    last_t_ = rows.last_t;
+    last_line_ = rows.last_line;
+    kept_ += rows.count;
     return true;
   }
 
