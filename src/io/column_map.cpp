@@ -299,6 +299,8 @@ RoleColumn& ColumnMap::entry(std::string_view role, const InputLocation& where) 
   return it->second;
 }
 
+// Public API (role first, as everywhere in ColumnMap); its callers name both arguments.
+// NOLINTNEXTLINE(bugprone-easily-swappable-parameters)
 void ColumnMap::set_column(std::string_view role, std::string_view column, InputLocation where) {
   RoleColumn& e = entry(role, where);
   const std::string_view name = detail::trim(column);
@@ -317,6 +319,8 @@ void ColumnMap::replace_column(std::string_view role, std::string_view column,
   e.scale = 1.0;
 }
 
+// Public API (role first, as everywhere in ColumnMap); its callers name both arguments.
+// NOLINTNEXTLINE(bugprone-easily-swappable-parameters)
 void ColumnMap::set_unit(std::string_view role, std::string_view unit, InputLocation where) {
   const RoleSpec spec = require_role(role, where);
   unit_for_role(spec, unit, where);
@@ -354,6 +358,8 @@ void ColumnMap::set_file(std::string_view role, std::string_view file, InputLoca
   entry(role, where).file = std::string(file);
 }
 
+// Public API (file first, as in set_file); its callers name both arguments.
+// NOLINTNEXTLINE(bugprone-easily-swappable-parameters)
 void ColumnMap::set_time_column(std::string_view file, std::string_view column,
                                 InputLocation where) {
   const std::string_view name = detail::trim(column);
