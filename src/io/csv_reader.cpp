@@ -584,11 +584,11 @@ void CsvRead::no_rows_in_window() const {
   const double t_from = options_.t_from_s.value_or(-std::numeric_limits<double>::infinity());
   const double t_to = options_.t_to_s.value_or(std::numeric_limits<double>::infinity());
   throw EmptyWindowError(
-      where, fmt::format("no rows inside the window [{}, {}] s", t_from, t_to),
-      fmt::format(
-          "the log starts at {} s{}", *rows_.first_t,
-          rows_.last_t > t_to ? std::string() : fmt::format(" and ends at {} s", rows_.last_t)),
-      *rows_.first_t, rows_.last_t);
+      InputError(where, fmt::format("no rows inside the window [{}, {}] s", t_from, t_to),
+                 fmt::format("the log starts at {} s{}", *rows_.first_t,
+                             rows_.last_t > t_to ? std::string()
+                                                 : fmt::format(" and ends at {} s", rows_.last_t))),
+      {.first_row_s = *rows_.first_t, .last_row_read_s = rows_.last_t});
 }
 
 // Index of the header cell for the role's column: the full header text first, then the name

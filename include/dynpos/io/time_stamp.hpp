@@ -98,8 +98,15 @@ constexpr std::int64_t days_from_civil(std::int64_t y, unsigned m, unsigned d) n
   return era * 146097 + static_cast<std::int64_t>(doe) - 719468;
 }
 
+/// A date of the proleptic Gregorian calendar as written: year, month 1…12, day 1…31.
+struct CivilDate {
+  std::int64_t year = 1970;
+  unsigned month = 1;
+  unsigned day = 1;
+};
+
 /// True for a real date of the proleptic Gregorian calendar (29 February in leap years only).
-bool is_valid_date(std::int64_t year, unsigned month, unsigned day) noexcept;
+bool is_valid_date(const CivilDate& date) noexcept;
 
 /// A stamp read from one cell: nanoseconds since 1970-01-01T00:00:00, UTC when utc_offset_min
 /// is set (the cell's offset already removed), the local wall clock otherwise.
