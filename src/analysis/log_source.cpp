@@ -38,8 +38,9 @@ auto naming_the_log(const LogSource& source, Read&& read) -> decltype(read()) {
   try {
     return read();
   } catch (const io::EmptyWindowError& e) {
-    throw io::EmptyWindowError(renamed(e.where()), e.problem(), e.hint(), e.first_row_s,
-                               e.last_row_read_s);
+    throw io::EmptyWindowError(
+        core::InputError(renamed(e.where()), e.problem(), e.hint()),
+        {.first_row_s = e.first_row_s, .last_row_read_s = e.last_row_read_s});
   } catch (const core::InputError& e) {
     if (!e.option().empty()) throw;
     throw core::InputError(renamed(e.where()), e.problem(), e.hint());

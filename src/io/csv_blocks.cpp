@@ -70,11 +70,20 @@ struct RowCells {
   std::vector<char> is_number;
 };
 
+// The bytes of the file whose lines make a block: the lines that start in [start, stop),
+// `start` itself when it is known to be a line start.
+struct BlockSpan {
+  std::uint64_t start = 0;
+  std::uint64_t stop = 0;
+  bool at_line_start = false;
+};
+
 }  // namespace
 
 struct BlockReader::State {
   std::string path;
   int fd = -1;
+  std::uint64_t file_size = 0;
   BlockLayout layout;
   unsigned jobs = 1;
   std::vector<std::size_t> slot_of_field;  // field → index into a row's cells, or kNoSlot
@@ -87,17 +96,15 @@ struct BlockReader::State {
   std::vector<Buffer> buffers;
 
   // Reads [from, from + bytes) (up to the end of the file) into `b`, keeping what it holds.
-  void read_into(Buffer& b, std::uint64_t from, std::uint64_t bytes, std::uint64_t file_size);
-  void parse_block(Block& block, Buffer& buffer, bool at_line_start, std::uint64_t start,
-                   std::uint64_t stop, std::uint64_t file_size);
+  void read_into(Buffer& b, std::uint64_t from, std::uint64_t bytes);
+  void parse_block(Block& block, Buffer& buffer, BlockSpan span);
   bool parse_row(std::string_view line, RowCells& cells, Block& block) const;
   const char* scan_plain_row(const char* p, const char* end, RowCells& cells) const;
   bool store_row(const RowCells& cells, Block& block) const;
   CellKind cell(const RowCells& cells, std::size_t slot, double& value) const;
 };
 
-void BlockReader::State::read_into(Buffer& b, std::uint64_t from, std::uint64_t bytes,
-                                   std::uint64_t file_size) {
+void BlockReader::State::read_into(Buffer& b, std::uint64_t from, std::uint64_t bytes) {
   const std::uint64_t to = std::min(from + bytes, file_size);
   if (b.size == 0 || b.from != from) {
     b.from = from;
@@ -229,10 +236,11 @@ bool BlockReader::State::store_row(const RowCells& cells, Block& block) const {
   return true;
 }
 
-// The block of the lines that start in [start, stop) (start itself when `at_line_start`).
-void BlockReader::State::parse_block(Block& block, Buffer& buffer, bool at_line_start,
-                                     std::uint64_t start, std::uint64_t stop,
-                                     std::uint64_t file_size) {
+// The block of the lines of `span`.
+void BlockReader::State::parse_block(Block& block, Buffer& buffer, BlockSpan span) {
+  const std::uint64_t start = span.start;
+  const std::uint64_t stop = span.stop;
+  const bool at_line_start = span.at_line_start;
   block.time_s.clear();
   block.skipped.clear();
   block.channels.resize(layout.channels.size());
@@ -241,7 +249,7 @@ void BlockReader::State::parse_block(Block& block, Buffer& buffer, bool at_line_
   block.clean = true;
 
   const std::uint64_t from = at_line_start ? start : start - 1;
-  read_into(buffer, from, stop - from + kSlackBytes, file_size);
+  read_into(buffer, from, stop - from + kSlackBytes);
   // Finds the end of the line from buffer offset `at`, reading on while it is not in view;
   // returns the offset of its '\n' or of the end of the file, or kTooLong past
   // kMaxCsvRecordBytes (the row reader then names the line).
@@ -254,7 +262,7 @@ void BlockReader::State::parse_block(Block& block, Buffer& buffer, bool at_line_
         return static_cast<std::size_t>(static_cast<const char*>(nl) - buffer.data.get());
       if (buffer.from + buffer.size >= file_size) return buffer.size;
       if (buffer.size - at > kMaxCsvRecordBytes) return kTooLong;
-      read_into(buffer, buffer.from, 2 * buffer.size + kSlackBytes, file_size);
+      read_into(buffer, buffer.from, 2 * buffer.size + kSlackBytes);
     }
   };
   std::size_t at = 0;
@@ -325,6 +333,7 @@ BlockReader::BlockReader(std::filesystem::path path, BlockLayout layout, unsigne
   struct stat info {};
   if (::fstat(s.fd, &info) != 0) throw_read_error(s.path, errno);
   file_size_ = static_cast<std::uint64_t>(info.st_size);
+  s.file_size = file_size_;
   s.jobs = core::job_count(jobs, 1024);
   s.slot_of_field.assign(s.layout.field_count, kNoSlot);
   const auto slot = [&](std::size_t field) {
@@ -393,8 +402,8 @@ void BlockReader::stream(std::uint64_t offset, const std::function<bool(const Bl
       const std::size_t slot = k % slots;
       const std::uint64_t start = offset + k * kBlockBytes;
       try {
-        s.parse_block(s.blocks[slot], s.buffers[slot], k == 0, start,
-                      std::min(start + kBlockBytes, file_size_), file_size_);
+        s.parse_block(s.blocks[slot], s.buffers[slot],
+                      {start, std::min(start + kBlockBytes, file_size_), k == 0});
       } catch (...) {
         lock.lock();
         stop = true;

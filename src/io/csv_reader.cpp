@@ -15,10 +15,10 @@
 
 #include <fmt/format.h>
 
-#include "bounded_line.hpp"
 #include "csv_blocks.hpp"
 #include "csv_cell.hpp"
 #include "dynpos/io/time_stamp.hpp"
+#include "line_reader.hpp"
 #include "text_util.hpp"
 
 namespace dynpos::io {
@@ -26,6 +26,7 @@ namespace {
 
 using core::InputError;
 using core::InputLocation;
+using detail::LineReader;
 
 constexpr std::size_t kNoSlot = std::numeric_limits<std::size_t>::max();
 
@@ -33,123 +34,6 @@ constexpr std::size_t kNoSlot = std::numeric_limits<std::size_t>::max();
 bool is_time_role(std::string_view role) {
   return role == "time" || role == "time.sec" || role == "time.nsec" || role == "date";
 }
-
-// Reads physical lines and assembles records: skips blank and comment lines, strips CR and a
-// UTF-8 byte-order mark, and joins lines while a quoted field is open.
-class LineReader {
- public:
-  LineReader(const std::filesystem::path& path, std::string comment_prefix)
-      : path_(path.string()), comment_prefix_(std::move(comment_prefix)) {
-    in_.open(path, std::ios::binary);
-    if (!in_) {
-      InputLocation where;
-      where.file = path_;
-      throw InputError(where, fmt::format("cannot open the log: {}", std::strerror(errno)),
-                       "check the path");
-    }
-  }
-
-  const std::string& path() const noexcept { return path_; }
-
-  // The next record that is not blank or a comment; false at the end of the file.
-  bool next(std::string& record, std::size_t& record_line) {
-    while (read_physical(record)) {
-      const std::string_view text = detail::trim(record);
-      if (text.empty()) continue;
-      if (!comment_prefix_.empty() && text.substr(0, comment_prefix_.size()) == comment_prefix_) {
-        continue;
-      }
-      record_line = line_;
-      record_line_ = line_;
-      return true;
-    }
-    return false;
-  }
-
-  // Appends the next physical line to a record whose quoted field is still open.
-  bool continue_record(std::string& record) {
-    std::string more;
-    if (!read_physical(more)) return false;
-    if (record.size() + 1 + more.size() > kMaxCsvRecordBytes) too_long("record");
-    record += '\n';
-    record += more;
-    return true;
-  }
-
-  std::size_t line() const noexcept { return line_; }
-  /// Byte offset of the next physical line.
-  std::uint64_t offset() const noexcept { return offset_; }
-  /// Whether the log is a regular file (the block parser reads it at offsets).
-  bool regular() const { return std::filesystem::is_regular_file(path_); }
-
-  /// Continues at byte `offset`, a line start, after `line` physical lines.
-  void seek(std::uint64_t offset, std::size_t line) {
-    in_.clear();
-    in_.seekg(static_cast<std::streamoff>(offset));
-    offset_ = offset;
-    line_ = line;
-  }
-
- private:
-  bool read_physical(std::string& out) {
-    bool ended = false;
-    const detail::LineStatus status =
-        detail::read_bounded_line(in_, out, kMaxCsvRecordBytes, ended);
-    if (in_.bad()) {
-      InputLocation where;
-      where.file = path_;
-      where.line = line_ + 1;
-      throw InputError(where, fmt::format("read error: {}", std::strerror(errno)));
-    }
-    if (status == detail::LineStatus::kEnd) return false;
-    ++line_;
-    if (!out.empty() && out.back() == '\r' && status != detail::LineStatus::kTooLong) {
-      out.pop_back();
-      offset_ += 1;
-    }
-    if (line_ == 1) refuse_cr_line_ends(out);
-    if (status == detail::LineStatus::kTooLong) too_long("line");
-    offset_ += out.size() + (ended ? 1 : 0);
-    if (line_ == 1 && out.compare(0, 3, "\xEF\xBB\xBF") == 0) out.erase(0, 3);
-    return true;
-  }
-
-  // A carriage return within the first line: lines that end with CR alone (classic Mac OS)
-  // would be read as one line, the whole file a header.
-  void refuse_cr_line_ends(std::string_view first_line) const {
-    const std::size_t cr = first_line.find('\r');
-    if (cr == std::string_view::npos) return;
-    InputLocation where;
-    where.file = path_;
-    where.line = 1;
-    where.column = cr + 1;
-    throw InputError(where,
-                     "a carriage return (CR) within the first line: the file's lines seem to end "
-                     "with CR alone",
-                     "convert the line ends to LF or CR LF, e.g. tr '\\r' '\\n' < IN > OUT");
-  }
-
-  // A line (or a record of lines joined by a quoted field) beyond kMaxCsvRecordBytes.
-  [[noreturn]] void too_long(std::string_view what) const {
-    InputLocation where;
-    where.file = path_;
-    where.line = what == "line" ? line_ : record_line_;
-    throw InputError(where,
-                     fmt::format("a {} longer than {} MiB: the limit of one row of a CSV log", what,
-                                 kMaxCsvRecordBytes >> 20),
-                     what == "line" ? "is this a text log? a binary file or one without line "
-                                      "ends is not read"
-                                    : "a quote opened in this row is not closed: check the "
-                                      "quoting");
-  }
-
-  std::ifstream in_;
-  std::string path_;
-  std::string comment_prefix_;
-  std::size_t line_ = 0;
-  std::size_t record_line_ = 0;  // the first line of the record being read
-  std::uint64_t offset_ = 0;
-};
 
 // One field scanned from `pos`: its text (a view into the record, or into `buffer` when a
 // quoted field had "" escapes), the position after its delimiter (npos at the end), and
@@ -287,47 +171,6 @@ Header read_header(LineReader& reader, const CsvFormat& format) {
   return header;
 }
 
-// A number that the column's scale and unit carry beyond the range of a double.
-[[noreturn]] void throw_overflow(std::string_view cell, const InputLocation& where, double scale) {
-  throw InputError(where,
-                   fmt::format("'{}' times the column's scale {} in SI is beyond the range of a "
-                               "double",
-                               detail::trim(cell), scale),
-                   "check the scale and unit of the column in the column map");
-}
-
-InputLocation cell_location(const std::string& file, std::size_t line, const ColumnPlan& plan) {
-  InputLocation where;
-  where.file = file;
-  where.line = line;
-  where.column = plan.field + 1;
-  where.column_name = plan.header;
-  return where;
-}
-
-[[noreturn]] void throw_bad_cell(CellKind kind, std::string_view cell, const InputLocation& where,
-                                 char delimiter) {
-  const std::string text(detail::trim(cell));
-  switch (kind) {
-    case CellKind::kNonFinite:
-      throw InputError(where, fmt::format("'{}' is not a finite number", text),
-                       fmt::format("leave the cell blank for missing data, or declare the token "
-                                   "as missing (missing = [\"{}\"] in [csv] of the column map)",
-                                   text));
-    case CellKind::kOutOfRange:
-      throw InputError(where, fmt::format("'{}' is out of the range of a double", text));
-    default: {
-      std::string hint =
-          "numbers use '.' as the decimal point; leave the cell blank for missing data, or "
-          "declare the token as missing in [csv] of the column map";
-      if (text.find(',') != std::string::npos && delimiter != ',') {
-        hint = "decimal commas are not supported: use '.' as the decimal point";
-      }
-      throw InputError(where, fmt::format("'{}' is not a number", text), hint);
-    }
-  }
-}
-
 // The time column and its optional companions (time.nsec, date).
 struct TimePlans {
   ColumnPlan time;
@@ -416,55 +259,154 @@ struct RowStream {
   double last_t = 0.0;
 };
 
-// The time of the row in `cells` [s]: plain seconds parsed here (fast path, unit and scale),
-// other forms by `stamps`.
-double row_time_s(const std::vector<std::string_view>& cells, const TimePlans& time,
-                  const CsvFormat& format, char delimiter, TimeStampReader& stamps,
-                  const std::string& path, std::size_t line) {
-  const std::string_view time_cell = cells[time.time.slot];
-  if (!stamps.plain_seconds()) {
-    return stamps.time_s({time_cell, time.nsec ? cells[time.nsec->slot] : std::string_view(),
-                          time.date ? cells[time.date->slot] : std::string_view()},
-                         line);
+// One read of a CSV log: the file, its format and the options, the header, the plans of the
+// time and channel columns, the time stamps and the rows read so far. The header is read on
+// construction; plan_mapped() or plan_all() plans the columns, read_rows() reads the rows.
+class CsvRead {
+ public:
+  CsvRead(const std::filesystem::path& path, const CsvFormat& format, const CsvReadOptions& options)
+      : reader_(path, format.comment_prefix), format_(format), options_(options) {
+    header_ = read_header(reader_, format_);
+  }
+  CsvRead(const CsvRead&) = delete;
+  CsvRead& operator=(const CsvRead&) = delete;
+
+  /// read_csv_log: the columns of the map's roles.
+  void plan_mapped(const ColumnMap& map);
+  /// read_csv_all: time in the first column, every other column a channel.
+  void plan_all();
+
+  /// Streams the data rows into the plans' vectors; returns the time axis and the times of the
+  /// first and the last row read. Throws if no row is inside the window.
+  RowStream read_rows();
+
+  std::vector<ColumnPlan>& channels() noexcept { return channels_; }
+  const TimeStampInfo& stamp_info() const { return stamps_->info(); }
+
+ private:
+  ColumnPlan plan_role(const std::string& role, const RoleColumn& entry);
+  std::size_t find_column(const std::string& role, const RoleColumn& entry) const;
+  InputLocation header_location(std::size_t field) const;
+  InputLocation cell_location(const ColumnPlan& plan, std::size_t line) const;
+  [[noreturn]] void bad_cell(CellKind kind, std::string_view cell, const ColumnPlan& plan,
+                             std::size_t line) const;
+  [[noreturn]] void overflow(std::string_view cell, const ColumnPlan& plan, std::size_t line) const;
+  [[noreturn]] void no_rows_in_window() const;
+  double row_time_s(std::size_t line);
+  bool store_row(std::size_t line);
+  void stream_blocks();
+  bool merge_block(const detail::Block& block, std::size_t line_base);
+  void reserve_rows(const detail::Block& block, std::uint64_t file_size);
+
+  LineReader reader_;
+  const CsvFormat& format_;
+  const CsvReadOptions& options_;
+  Header header_;
+  TimePlans time_;
+  std::vector<ColumnPlan> channels_;
+  std::optional<InputError> time_unit_error_;  // thrown if the time stamps are plain seconds
+  std::optional<TimeStampReader> stamps_;      // set by the plan
+  std::optional<RowSplitter> splitter_;        // set by read_rows()
+  std::vector<std::size_t> plan_of_;           // block channel → plan (text columns are not read)
+  RowStream rows_;
+  bool more_ = true;  // false once a row is past the window: reading stops
+};
+
+InputLocation CsvRead::header_location(std::size_t field) const {
+  InputLocation where;
+  where.file = reader_.path();
+  where.line = header_.line;
+  where.column = field + 1;
+  where.column_name = header_.cells[field];
+  return where;
+}
+
+InputLocation CsvRead::cell_location(const ColumnPlan& plan, std::size_t line) const {
+  InputLocation where;
+  where.file = reader_.path();
+  where.line = line;
+  where.column = plan.field + 1;
+  where.column_name = plan.header;
+  return where;
+}
+
+void CsvRead::bad_cell(CellKind kind, std::string_view cell, const ColumnPlan& plan,
+                       std::size_t line) const {
+  const InputLocation where = cell_location(plan, line);
+  const std::string text(detail::trim(cell));
+  switch (kind) {
+    case CellKind::kNonFinite:
+      throw InputError(where, fmt::format("'{}' is not a finite number", text),
+                       fmt::format("leave the cell blank for missing data, or declare the token "
+                                   "as missing (missing = [\"{}\"] in [csv] of the column map)",
+                                   text));
+    case CellKind::kOutOfRange:
+      throw InputError(where, fmt::format("'{}' is out of the range of a double", text));
+    default: {
+      std::string hint =
+          "numbers use '.' as the decimal point; leave the cell blank for missing data, or "
+          "declare the token as missing in [csv] of the column map";
+      if (text.find(',') != std::string::npos && header_.delimiter != ',') {
+        hint = "decimal commas are not supported: use '.' as the decimal point";
+      }
+      throw InputError(where, fmt::format("'{}' is not a number", text), hint);
+    }
+  }
+}
+
+// A number that the column's scale and unit carry beyond the range of a double.
+void CsvRead::overflow(std::string_view cell, const ColumnPlan& plan, std::size_t line) const {
+  throw InputError(cell_location(plan, line),
+                   fmt::format("'{}' times the column's scale {} in SI is beyond the range of a "
+                               "double",
+                               detail::trim(cell), plan.scale),
+                   "check the scale and unit of the column in the column map");
+}
+
+// The time of the split row [s]: plain seconds parsed here (fast path, unit and scale), other
+// forms by the time stamp reader.
+double CsvRead::row_time_s(std::size_t line) {
+  const std::vector<std::string_view>& cells = splitter_->cells();
+  const ColumnPlan& plan = time_.time;
+  const std::string_view time_cell = cells[plan.slot];
+  if (!stamps_->plain_seconds()) {
+    return stamps_->time_s({time_cell, time_.nsec ? cells[time_.nsec->slot] : std::string_view(),
+                            time_.date ? cells[time_.date->slot] : std::string_view()},
+                           line);
   }
   double raw = 0.0;
-  const CellKind kind = parse_cell(time_cell, format.missing_tokens, raw);
+  const CellKind kind = parse_cell(time_cell, format_.missing_tokens, raw);
   if (kind == CellKind::kMissing) {
-    throw InputError(cell_location(path, line, time.time), "the time cell is blank",
+    throw InputError(cell_location(plan, line), "the time cell is blank",
                      "every row needs a time; remove the row or fill in its time");
   }
-  if (kind != CellKind::kNumber) {
-    throw_bad_cell(kind, time_cell, cell_location(path, line, time.time), delimiter);
-  }
-  const double t = to_si(time.time.unit, raw * time.time.scale);
-  if (!std::isfinite(t))
-    throw_overflow(time_cell, cell_location(path, line, time.time), time.time.scale);
+  if (kind != CellKind::kNumber) bad_cell(kind, time_cell, plan, line);
+  const double t = to_si(plan.unit, raw * plan.scale);
+  if (!std::isfinite(t)) overflow(time_cell, plan, line);
   return t;
 }
 
-// Stores one split row: its time (if the order policy keeps it and it is inside the window)
-// and its channel values. False once the row is after the window: reading stops.
-bool store_row(const std::vector<std::string_view>& cells, const TimePlans& time,
-               std::vector<ColumnPlan>& channels, const CsvFormat& format, char delimiter,
-               TimeStampReader& stamps, const std::string& path, std::size_t line,
-               const CsvReadOptions& options, RowStream& out) {
-  const double t = row_time_s(cells, time, format, delimiter, stamps, path, line);
-  if (!stamps.accept(t, cells[time.time.slot], line)) return true;
-  if (!out.first_t) out.first_t = t;
-  out.last_t = t;
-  ++out.rows;
-  if (options.t_from_s && t < *options.t_from_s) return true;
-  if (options.t_to_s && t > *options.t_to_s) return false;
+// Stores the split row of `line`: its time (if the order policy keeps it and it is inside the
+// window) and its channel values. False once the row is after the window: reading stops.
+bool CsvRead::store_row(std::size_t line) {
+  const std::vector<std::string_view>& cells = splitter_->cells();
+  const double t = row_time_s(line);
+  if (!stamps_->accept(t, cells[time_.time.slot], line)) return true;
+  if (!rows_.first_t) rows_.first_t = t;
+  rows_.last_t = t;
+  ++rows_.rows;
+  if (options_.t_from_s && t < *options_.t_from_s) return true;
+  if (options_.t_to_s && t > *options_.t_to_s) return false;
 
-  out.time_s.push_back(t);
+  rows_.time_s.push_back(t);
   double raw = 0.0;
-  for (auto& plan : channels) {
+  for (auto& plan : channels_) {
     double value = core::kMissing;
     const std::string_view cell = cells[plan.slot];
-    const CellKind cell_kind = parse_cell(cell, format.missing_tokens, raw);
+    const CellKind cell_kind = parse_cell(cell, format_.missing_tokens, raw);
     if (cell_kind == CellKind::kNumber) {
       value = to_si(plan.unit, raw * plan.scale);
-      if (!std::isfinite(value)) throw_overflow(cell, cell_location(path, line, plan), plan.scale);
+      if (!std::isfinite(value)) overflow(cell, plan, line);
       if (plan.state == ColumnPlan::State::kUnknown) plan.state = ColumnPlan::State::kNumeric;
     } else if (cell_kind != CellKind::kMissing) {
       if (plan.may_be_text && cell_kind == CellKind::kText &&
@@ -473,9 +415,7 @@ bool store_row(const std::vector<std::string_view>& cells, const TimePlans& time
         plan.values.clear();
         plan.values.shrink_to_fit();
       }
-      if (plan.state != ColumnPlan::State::kText) {
-        throw_bad_cell(cell_kind, cell, cell_location(path, line, plan), delimiter);
-      }
+      if (plan.state != ColumnPlan::State::kText) bad_cell(cell_kind, cell, plan, line);
     }
     if (plan.state != ColumnPlan::State::kText) plan.values.push_back(value);
   }
@@ -484,12 +424,9 @@ bool store_row(const std::vector<std::string_view>& cells, const TimePlans& time
 
 // The parts of a clean block inside the window, appended as store_row() would append them row
 // by row. False, nothing changed, when its first time is not after the last kept one (the caller
-// then reads it row by row, where the order policy applies). `more` is false once a row is past
+// then reads it row by row, where the order policy applies). Clears more_ once a row is past
 // the window.
-bool merge_block(const detail::Block& block, std::size_t line_base,
-                 const std::vector<std::size_t>& plan_of, std::vector<ColumnPlan>& channels,
-                 const CsvReadOptions& options, TimeStampReader& stamps, RowStream& out,
-                 bool& more) {
+bool CsvRead::merge_block(const detail::Block& block, std::size_t line_base) {
   const std::vector<double>& t = block.time_s;
   const std::size_t n = t.size();
   if (n == 0) return true;
@@ -498,24 +435,24 @@ bool merge_block(const detail::Block& block, std::size_t line_base,
   };
   // Rows after the window: the first of them is kept and counted, then reading stops.
   const std::size_t k_end =
-      options.t_to_s ? index(std::upper_bound(t.begin(), t.end(), *options.t_to_s)) : n;
+      options_.t_to_s ? index(std::upper_bound(t.begin(), t.end(), *options_.t_to_s)) : n;
   const std::size_t counted = std::min(k_end + 1, n);
-  if (!stamps.accept_increasing(t.front(), t[counted - 1], counted,
-                                line_base + block.line_of_row(counted - 1) + 1)) {
+  if (!stamps_->accept_increasing(
+          {t.front(), t[counted - 1], counted, line_base + block.line_of_row(counted - 1) + 1})) {
     return false;
   }
-  if (!out.first_t) out.first_t = t.front();
-  out.last_t = t[counted - 1];
-  out.rows += counted;
+  if (!rows_.first_t) rows_.first_t = t.front();
+  rows_.last_t = t[counted - 1];
+  rows_.rows += counted;
   const std::size_t k_from =
-      options.t_from_s
-          ? std::min(index(std::lower_bound(t.begin(), t.end(), *options.t_from_s)), k_end)
+      options_.t_from_s
+          ? std::min(index(std::lower_bound(t.begin(), t.end(), *options_.t_from_s)), k_end)
           : 0;
   const auto first = static_cast<std::ptrdiff_t>(k_from);
   const auto last = static_cast<std::ptrdiff_t>(k_end);
-  out.time_s.insert(out.time_s.end(), t.begin() + first, t.begin() + last);
-  for (std::size_t k = 0; k < plan_of.size(); ++k) {
-    ColumnPlan& plan = channels[plan_of[k]];
+  rows_.time_s.insert(rows_.time_s.end(), t.begin() + first, t.begin() + last);
+  for (std::size_t k = 0; k < plan_of_.size(); ++k) {
+    ColumnPlan& plan = channels_[plan_of_[k]];
     const std::vector<double>& v = block.channels[k].values;
     if (plan.state == ColumnPlan::State::kUnknown &&
         std::any_of(v.begin() + first, v.begin() + last, [](double x) { return !std::isnan(x); })) {
@@ -523,16 +460,14 @@ bool merge_block(const detail::Block& block, std::size_t line_base,
     }
     plan.values.insert(plan.values.end(), v.begin() + first, v.begin() + last);
   }
-  more = k_end == n;
+  more_ = k_end == n;
   return true;
 }
 
 // Room for the rows still to come, estimated from the first block's bytes per row (room never
 // written costs no memory). Not for a window that ends early.
-void reserve_rows(const detail::Block& block, std::uint64_t file_size,
-                  const std::vector<std::size_t>& plan_of, std::vector<ColumnPlan>& channels,
-                  const CsvReadOptions& options, RowStream& out) {
-  if (options.t_to_s) return;
+void CsvRead::reserve_rows(const detail::Block& block, std::uint64_t file_size) {
+  if (options_.t_to_s) return;
   const std::size_t rows = block.time_s.size();
   const std::uint64_t bytes = block.end - block.begin;
   if (rows == 0 || bytes == 0) return;
@@ -540,92 +475,76 @@ void reserve_rows(const detail::Block& block, std::uint64_t file_size,
   const auto more = static_cast<std::size_t>(1.02 * left * static_cast<double>(rows) /
                                              static_cast<double>(bytes)) +
                     4096;
-  out.time_s.reserve(out.time_s.size() + more);
-  for (const std::size_t p : plan_of) {
-    channels[p].values.reserve(channels[p].values.size() + more);
+  rows_.time_s.reserve(rows_.time_s.size() + more);
+  for (const std::size_t p : plan_of_) {
+    channels_[p].values.reserve(channels_[p].values.size() + more);
   }
 }
 
 // The rows after the first ones, of a regular file with plain-seconds time: by the block parser
-// (csv_blocks.hpp), each block that is not clean row by row through `store`. Returns once the
-// file or the window ends (`more` false for the window).
-void stream_blocks(LineReader& reader, const Header& header, const CsvFormat& format,
-                   const TimePlans& time, std::vector<ColumnPlan>& channels,
-                   const CsvReadOptions& options, TimeStampReader& stamps, RowSplitter& splitter,
-                   RowStream& out, const std::function<bool(std::size_t)>& store, bool& more) {
+// (csv_blocks.hpp), each block that is not clean row by row. Returns once the file or the
+// window ends (more_ false for the window).
+void CsvRead::stream_blocks() {
   detail::BlockLayout layout;
-  layout.delimiter = header.delimiter;
-  layout.field_count = header.cells.size();
-  layout.comment_prefix = format.comment_prefix;
-  layout.missing_tokens = format.missing_tokens;
-  layout.time = {time.time.field, time.time.unit, time.time.scale};
-  std::vector<std::size_t> plan_of;  // block channel → plan (a column known to be text is not read)
-  for (std::size_t p = 0; p < channels.size(); ++p) {
-    if (channels[p].state == ColumnPlan::State::kText) continue;
-    plan_of.push_back(p);
-    layout.channels.push_back({channels[p].field, channels[p].unit, channels[p].scale});
+  layout.delimiter = header_.delimiter;
+  layout.field_count = header_.cells.size();
+  layout.comment_prefix = format_.comment_prefix;
+  layout.missing_tokens = format_.missing_tokens;
+  layout.time = {time_.time.field, time_.time.unit, time_.time.scale};
+  for (std::size_t p = 0; p < channels_.size(); ++p) {
+    if (channels_[p].state == ColumnPlan::State::kText) continue;
+    plan_of_.push_back(p);
+    layout.channels.push_back({channels_[p].field, channels_[p].unit, channels_[p].scale});
   }
-  detail::BlockReader blocks(reader.path(), std::move(layout), options.jobs);
-  std::uint64_t offset = reader.offset();
-  std::size_t line = reader.line();
+  detail::BlockReader blocks(reader_.path(), std::move(layout), options_.jobs);
+  detail::LinePosition at = reader_.position();
   bool first_block = true;
-  while (more && offset < blocks.file_size()) {
+  while (more_ && at.offset < blocks.file_size()) {
     // Blocks are merged in file order while the next ones are parsed; the first that is not
     // clean stops them.
     std::optional<std::pair<std::uint64_t, std::uint64_t>> by_rows;  // its [begin, end)
-    blocks.stream(offset, [&](const detail::Block& block) {
-      if (first_block) reserve_rows(block, blocks.file_size(), plan_of, channels, options, out);
+    blocks.stream(at.offset, [&](const detail::Block& block) {
+      if (first_block) reserve_rows(block, blocks.file_size());
       first_block = false;
-      if (block.clean && merge_block(block, line, plan_of, channels, options, stamps, out, more)) {
-        offset = block.end;
-        line += block.lines;
-        return more;
+      if (block.clean && merge_block(block, at.line)) {
+        at.offset = block.end;
+        at.line += block.lines;
+        return more_;
       }
       by_rows.emplace(block.begin, block.end);
       return false;
     });
     if (!by_rows) return;  // the end of the file or of the window
     // Row by row, exactly as without blocks; then blocks again from where that ended.
-    reader.seek(by_rows->first, line);
+    reader_.seek({by_rows->first, at.line});
     std::string record;
     std::size_t record_line = 0;
-    while (more && reader.offset() < by_rows->second && reader.next(record, record_line)) {
-      splitter.split(record, record_line, &reader);
-      more = store(record_line);
+    while (more_ && reader_.position().offset < by_rows->second &&
+           reader_.next(record, record_line)) {
+      splitter_->split(record, record_line, &reader_);
+      more_ = store_row(record_line);
     }
-    offset = reader.offset();
-    line = reader.line();
+    at = reader_.position();
   }
 }
 
-// Streams the data rows after the header into the plans' vectors; returns the time axis and the
-// times of the first and the last row read. The
-// first kTimeDetectionRows rows are held back until their time cells have fixed the format;
-// the rest of a regular file with plain-seconds time goes through stream_blocks().
-RowStream stream_rows(LineReader& reader, const Header& header, const CsvFormat& format,
-                      TimePlans& time, std::vector<ColumnPlan>& channels,
-                      const CsvReadOptions& options, TimeStampReader& stamps,
-                      const InputError* time_unit_error) {
-  RowSplitter splitter(header, time, channels);
-  splitter.path = reader.path();
-  RowStream out;
-  auto store = [&](std::size_t line) {
-    return store_row(splitter.cells(), time, channels, format, header.delimiter, stamps,
-                     reader.path(), line, options, out);
-  };
+// The first kTimeDetectionRows rows are held back until their time cells have fixed the
+// format; the rest of a regular file with plain-seconds time goes through stream_blocks().
+RowStream CsvRead::read_rows() {
+  splitter_.emplace(header_, time_, channels_);
+  splitter_->path = reader_.path();
   std::vector<std::pair<std::string, std::size_t>> held;  // record, line
   std::vector<std::string> held_time;
-  bool more = true;
   // Fixes the time format from the held rows, then stores them.
   auto release = [&] {
     std::vector<std::string_view> cells(held_time.begin(), held_time.end());
     std::vector<std::size_t> lines;
     for (const auto& row : held) lines.push_back(row.second);
-    stamps.start(cells, lines);
-    if (stamps.plain_seconds() && time_unit_error != nullptr) throw *time_unit_error;
+    stamps_->start(cells, lines);
+    if (stamps_->plain_seconds() && time_unit_error_) throw *time_unit_error_;
     for (auto& [held_record, held_line] : held) {
-      splitter.split(held_record, held_line, nullptr);
-      if (!(more = store(held_line))) break;
+      splitter_->split(held_record, held_line, nullptr);
+      if (!(more_ = store_row(held_line))) break;
     }
     held.clear();
     held.shrink_to_fit();
@@ -634,57 +553,57 @@ RowStream stream_rows(LineReader& reader, const Header& header, const CsvFormat&
   std::string record;
   std::size_t line = 0;
   bool started = false;
-  while (more && reader.next(record, line)) {
-    splitter.split(record, line, &reader);
+  while (more_ && reader_.next(record, line)) {
+    splitter_->split(record, line, &reader_);
     if (started) {
-      more = store(line);
+      more_ = store_row(line);
       continue;
     }
     held.emplace_back(record, line);
-    held_time.emplace_back(splitter.cells()[time.time.slot]);
+    held_time.emplace_back(splitter_->cells()[time_.time.slot]);
     if (held.size() == kTimeDetectionRows) {
       release();
       started = true;
-      if (more && stamps.plain_seconds() && reader.regular()) {
-        stream_blocks(reader, header, format, time, channels, options, stamps, splitter, out, store,
-                      more);
+      if (more_ && stamps_->plain_seconds() && reader_.regular()) {
+        stream_blocks();
         break;
       }
     }
   }
   if (!started && !held.empty()) release();
-
-  if (out.time_s.empty()) {
-    InputLocation where;
-    where.file = reader.path();
-    if (out.rows == 0) {
-      throw InputError(where, "the log has a header but no data rows");
-    }
-    const double t_from = options.t_from_s.value_or(-std::numeric_limits<double>::infinity());
-    const double t_to = options.t_to_s.value_or(std::numeric_limits<double>::infinity());
-    throw EmptyWindowError(
-        where, fmt::format("no rows inside the window [{}, {}] s", t_from, t_to),
-        fmt::format(
-            "the log starts at {} s{}", *out.first_t,
-            out.last_t > t_to ? std::string() : fmt::format(" and ends at {} s", out.last_t)),
-        *out.first_t, out.last_t);
-  }
-  return out;
+  if (rows_.time_s.empty()) no_rows_in_window();
+  return std::move(rows_);
 }
 
-// Index of the header cell for `column`: the full header text first, then the name without a
-// bracketed unit. Throws if it is absent or ambiguous.
-std::size_t find_column(const Header& header, const std::string& column, const std::string& role,
-                        const RoleColumn& entry, const std::string& file) {
+void CsvRead::no_rows_in_window() const {
   InputLocation where;
-  where.file = file;
-  where.line = header.line;
+  where.file = reader_.path();
+  if (rows_.rows == 0) {
+    throw InputError(where, "the log has a header but no data rows");
+  }
+  const double t_from = options_.t_from_s.value_or(-std::numeric_limits<double>::infinity());
+  const double t_to = options_.t_to_s.value_or(std::numeric_limits<double>::infinity());
+  throw EmptyWindowError(
+      InputError(where, fmt::format("no rows inside the window [{}, {}] s", t_from, t_to),
+                 fmt::format("the log starts at {} s{}", *rows_.first_t,
+                             rows_.last_t > t_to ? std::string()
+                                                 : fmt::format(" and ends at {} s", rows_.last_t))),
+      {.first_row_s = *rows_.first_t, .last_row_read_s = rows_.last_t});
+}
+
+// Index of the header cell for the role's column: the full header text first, then the name
+// without a bracketed unit. Throws if it is absent or ambiguous.
+std::size_t CsvRead::find_column(const std::string& role, const RoleColumn& entry) const {
+  const std::string& column = entry.column;
+  const std::vector<std::string>& cells = header_.cells;
+  InputLocation where;
+  where.file = reader_.path();
+  where.line = header_.line;
   where.column_name = role;
   for (const bool by_name : {false, true}) {
     std::vector<std::size_t> hits;
-    for (std::size_t i = 0; i < header.cells.size(); ++i) {
-      const std::string& cell = header.cells[i];
-      if ((by_name ? split_header_cell(cell).name : cell) == column) hits.push_back(i);
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+      if ((by_name ? split_header_cell(cells[i]).name : cells[i]) == column) hits.push_back(i);
     }
     if (hits.size() == 1) return hits.front();
     if (hits.size() > 1) {
@@ -695,16 +614,16 @@ std::size_t find_column(const Header& header, const std::string& column, const s
                        "rename one of them in the file, or map the full header text");
     }
   }
-  std::string hint = fmt::format("the columns are: {}", detail::join(header.cells));
+  std::string hint = fmt::format("the columns are: {}", detail::join(cells));
   // Compare with the names without units too, so "Heading" finds "HEADING [deg]".
-  std::string near = detail::closest_match(column, header.cells);
+  std::string near = detail::closest_match(column, cells);
   if (near.empty()) {
     std::vector<std::string> names;
-    for (const auto& cell : header.cells) names.push_back(split_header_cell(cell).name);
+    for (const auto& cell : cells) names.push_back(split_header_cell(cell).name);
     const std::string name = detail::closest_match(column, names);
     if (!name.empty()) {
-      near = header.cells[static_cast<std::size_t>(std::find(names.begin(), names.end(), name) -
-                                                   names.begin())];
+      near = cells[static_cast<std::size_t>(std::find(names.begin(), names.end(), name) -
+                                            names.begin())];
     }
   }
   if (!near.empty()) hint = fmt::format("did you mean '{}'? {}", near, hint);
@@ -716,6 +635,125 @@ std::size_t find_column(const Header& header, const std::string& column, const s
   }
   throw InputError(
       where, fmt::format("column '{}' for role '{}' is not in the header", column, role), hint);
+}
+
+// The plan of a mapped role's column: unit declared > header bracket > role default.
+ColumnPlan CsvRead::plan_role(const std::string& role, const RoleColumn& entry) {
+  const std::optional<RoleSpec> spec = find_role(role);
+  assert(spec && "ColumnMap only holds known roles");
+  ColumnPlan plan;
+  plan.field = find_column(role, entry);
+  plan.header = header_.cells[plan.field];
+  plan.channel = role;
+  plan.interp = spec->interp;
+  plan.scale = entry.scale;
+  if (entry.unit) {
+    plan.unit = unit_for_role(*spec, *entry.unit, entry.source);
+  } else if (const HeaderCell cell = split_header_cell(plan.header);
+             !cell.unit.empty() && (!is_time_role(role) || role == "time")) {
+    try {
+      plan.unit = unit_for_role(*spec, cell.unit, header_location(plan.field));
+    } catch (const InputError& e) {
+      InputError error(e.where(), e.problem() + " (from the header)",
+                       e.hint() + fmt::format("; or declare the unit with --unit {}=UNIT or "
+                                              "unit = \"...\" in the column map",
+                                              role));
+      if (role != "time") throw error;
+      // "Time (UTC)" names no unit, but matters only if the stamps are plain seconds.
+      time_unit_error_ = std::move(error);
+      plan.unit = core::si_unit(core::Quantity::kTime);
+    }
+  } else {
+    const auto unit = core::find_unit(spec->default_unit);
+    assert(unit && "every role default is a known unit");
+    plan.unit = *unit;
+  }
+  plan.unit_symbol = core::si_unit(plan.unit.quantity).symbol;
+  return plan;
+}
+
+void CsvRead::plan_mapped(const ColumnMap& map) {
+  std::string declared_time_unit;  // a unit or scale the map or the header gives the time
+  double declared_time_unit_s = 0.0;
+  for (const auto& [role, entry] : map.roles()) {
+    ColumnPlan plan = plan_role(role, entry);
+    if (role == "time" && !time_unit_error_ &&
+        (entry.unit || entry.scale != 1.0 || !split_header_cell(plan.header).unit.empty())) {
+      declared_time_unit = entry.scale != 1.0
+                               ? fmt::format("{} × {}", entry.scale, plan.unit.symbol)
+                               : plan.unit.symbol;
+      declared_time_unit_s = plan.unit.scale * entry.scale;
+    }
+    if (role == "time" || role == "time.sec") {
+      time_.time = std::move(plan);
+    } else if (role == "time.nsec") {
+      time_.nsec = std::move(plan);
+    } else if (role == "date") {
+      time_.date = std::move(plan);
+    } else {
+      channels_.push_back(std::move(plan));
+    }
+  }
+  std::stable_sort(channels_.begin(), channels_.end(),
+                   [](const ColumnPlan& a, const ColumnPlan& b) { return a.field < b.field; });
+  stamps_.emplace(map.time(), TimeColumnSpec{reader_.path(), time_.time.header, time_.time.field,
+                                             time_.nsec.has_value(), time_.date.has_value(),
+                                             declared_time_unit, declared_time_unit_s});
+}
+
+void CsvRead::plan_all() {
+  std::map<std::string, std::size_t> seen;
+  for (std::size_t i = 0; i < header_.cells.size(); ++i) {
+    const HeaderCell cell = split_header_cell(header_.cells[i]);
+    if (cell.name.empty()) {
+      throw InputError(header_location(i), "empty column name in the header",
+                       "name every column (a trailing delimiter makes an empty last column)");
+    }
+    ColumnPlan plan;
+    plan.field = i;
+    plan.header = header_.cells[i];
+    plan.channel = cell.name;
+    const std::optional<core::Unit> unit = core::find_unit(cell.unit.empty() ? "1" : cell.unit);
+    if (i == 0) {
+      const std::optional<core::Unit> time_unit =
+          cell.unit.empty() ? core::si_unit(core::Quantity::kTime) : unit;
+      if (!time_unit || time_unit->quantity != core::Quantity::kTime) {
+        throw InputError(header_location(i),
+                         fmt::format("the first column is time, but its unit '{}' is not a time "
+                                     "unit",
+                                     cell.unit),
+                         fmt::format("use one of: {}",
+                                     detail::join(core::unit_spellings(core::Quantity::kTime))));
+      }
+      plan.unit = *time_unit;
+      time_.time = std::move(plan);
+      continue;
+    }
+    if (const auto [it, inserted] = seen.emplace(cell.name, i); !inserted) {
+      throw InputError(header_location(i),
+                       fmt::format("channel '{}' appears twice (columns {} and {})", cell.name,
+                                   it->second + 1, i + 1),
+                       "give every column a distinct name");
+    }
+    if (cell.unit.empty()) {
+      plan.unit = core::Unit{"", core::Quantity::kDimensionless, 1.0, 0.0};
+      plan.unit_symbol = "";
+    } else if (unit) {
+      plan.unit = *unit;
+      plan.unit_symbol = core::si_unit(unit->quantity).symbol;
+    } else {
+      plan.unit = core::Unit{cell.unit, core::Quantity::kDimensionless, 1.0, 0.0};
+      plan.unit_symbol = cell.unit;  // unknown unit: kept as logged
+    }
+    if (const auto role = find_role(cell.name)) plan.interp = role->interp;
+    plan.may_be_text = true;
+    channels_.push_back(std::move(plan));
+  }
+  const bool time_unit_declared = !split_header_cell(time_.time.header).unit.empty();
+  stamps_.emplace(TimeStampOptions{},
+                  TimeColumnSpec{reader_.path(), time_.time.header, 0, false, false,
+                                 time_unit_declared ? time_.time.unit.symbol : std::string(),
+                                 time_unit_declared ? time_.time.unit.scale : 0.0});
 }
 
 }  // namespace
@@ -764,80 +802,12 @@ CsvLog read_csv_log(const std::filesystem::path& path, const ColumnMap& map,
                        "this reads a single file: map the role to one of its columns");
     }
   }
-  const CsvFormat& format = map.format();
-  LineReader reader(path, format.comment_prefix);
-  const Header header = read_header(reader, format);
-
-  std::vector<ColumnPlan> plans;
-  TimePlans time;
-  std::optional<InputError> time_unit_error;
-  std::string declared_time_unit;  // a unit or scale the map or the header gives the time
-  double declared_time_unit_s = 0.0;
-  for (const auto& [role, entry] : map.roles()) {
-    const std::optional<RoleSpec> spec = find_role(role);
-    assert(spec && "ColumnMap only holds known roles");
-    const bool time_role = is_time_role(role);
-    ColumnPlan plan;
-    plan.field = find_column(header, entry.column, role, entry, reader.path());
-    plan.header = header.cells[plan.field];
-    plan.channel = role;
-    plan.interp = spec->interp;
-    plan.scale = entry.scale;
-    if (entry.unit) {
-      plan.unit = unit_for_role(*spec, *entry.unit, entry.source);
-    } else if (const HeaderCell cell = split_header_cell(plan.header);
-               !cell.unit.empty() && (!time_role || role == "time")) {
-      InputLocation where;
-      where.file = reader.path();
-      where.line = header.line;
-      where.column = plan.field + 1;
-      where.column_name = plan.header;
-      try {
-        plan.unit = unit_for_role(*spec, cell.unit, where);
-      } catch (const InputError& e) {
-        InputError error(e.where(), e.problem() + " (from the header)",
-                         e.hint() + fmt::format("; or declare the unit with --unit {}=UNIT or "
-                                                "unit = \"...\" in the column map",
-                                                role));
-        if (role != "time") throw error;
-        // "Time (UTC)" names no unit, but matters only if the stamps are plain seconds.
-        time_unit_error = std::move(error);
-        plan.unit = core::si_unit(core::Quantity::kTime);
-      }
-    } else {
-      const auto unit = core::find_unit(spec->default_unit);
-      assert(unit && "every role default is a known unit");
-      plan.unit = *unit;
-    }
-    plan.unit_symbol = core::si_unit(plan.unit.quantity).symbol;
-    if (role == "time" && !time_unit_error &&
-        (entry.unit || entry.scale != 1.0 || !split_header_cell(plan.header).unit.empty())) {
-      declared_time_unit = entry.scale != 1.0
-                               ? fmt::format("{} × {}", entry.scale, plan.unit.symbol)
-                               : plan.unit.symbol;
-      declared_time_unit_s = plan.unit.scale * entry.scale;
-    }
-    if (role == "time" || role == "time.sec") {
-      time.time = std::move(plan);
-    } else if (role == "time.nsec") {
-      time.nsec = std::move(plan);
-    } else if (role == "date") {
-      time.date = std::move(plan);
-    } else {
-      plans.push_back(std::move(plan));
-    }
-  }
-  std::stable_sort(plans.begin(), plans.end(),
-                   [](const ColumnPlan& a, const ColumnPlan& b) { return a.field < b.field; });
-
-  TimeStampReader stamps(map.time(),
-                         {reader.path(), time.time.header, time.time.field, time.nsec.has_value(),
-                          time.date.has_value(), declared_time_unit, declared_time_unit_s});
-  RowStream rows = stream_rows(reader, header, format, time, plans, options, stamps,
-                               time_unit_error ? &*time_unit_error : nullptr);
-  CsvLog out{core::Log(std::move(rows.time_s), options.jobs), stamps.info(), *rows.first_t,
+  CsvRead read(path, map.format(), options);
+  read.plan_mapped(map);
+  RowStream rows = read.read_rows();
+  CsvLog out{core::Log(std::move(rows.time_s), options.jobs), read.stamp_info(), *rows.first_t,
              rows.last_t};
-  for (auto& plan : plans) {
+  for (auto& plan : read.channels()) {
     out.log.add_channel(plan.channel, plan.unit_symbol, std::move(plan.values), plan.interp);
   }
   return out;
@@ -852,74 +822,10 @@ core::Log read_csv_all(const std::filesystem::path& path, const CsvReadOptions& 
                        const CsvFormat& format) {
   format.validate();
   options.validate();
-  LineReader reader(path, format.comment_prefix);
-  const Header header = read_header(reader, format);
-
-  const auto header_location = [&](std::size_t field) {
-    InputLocation where;
-    where.file = reader.path();
-    where.line = header.line;
-    where.column = field + 1;
-    where.column_name = header.cells[field];
-    return where;
-  };
-
-  TimePlans time;
-  std::vector<ColumnPlan> plans;
-  std::map<std::string, std::size_t> seen;
-  for (std::size_t i = 0; i < header.cells.size(); ++i) {
-    const HeaderCell cell = split_header_cell(header.cells[i]);
-    if (cell.name.empty()) {
-      throw InputError(header_location(i), "empty column name in the header",
-                       "name every column (a trailing delimiter makes an empty last column)");
-    }
-    ColumnPlan plan;
-    plan.field = i;
-    plan.header = header.cells[i];
-    plan.channel = cell.name;
-    const std::optional<core::Unit> unit = core::find_unit(cell.unit.empty() ? "1" : cell.unit);
-    if (i == 0) {
-      const std::optional<core::Unit> time_unit =
-          cell.unit.empty() ? core::si_unit(core::Quantity::kTime) : unit;
-      if (!time_unit || time_unit->quantity != core::Quantity::kTime) {
-        throw InputError(header_location(i),
-                         fmt::format("the first column is time, but its unit '{}' is not a time "
-                                     "unit",
-                                     cell.unit),
-                         fmt::format("use one of: {}",
-                                     detail::join(core::unit_spellings(core::Quantity::kTime))));
-      }
-      plan.unit = *time_unit;
-      time.time = std::move(plan);
-      continue;
-    }
-    if (const auto [it, inserted] = seen.emplace(cell.name, i); !inserted) {
-      throw InputError(header_location(i),
-                       fmt::format("channel '{}' appears twice (columns {} and {})", cell.name,
-                                   it->second + 1, i + 1),
-                       "give every column a distinct name");
-    }
-    if (cell.unit.empty()) {
-      plan.unit = core::Unit{"", core::Quantity::kDimensionless, 1.0, 0.0};
-      plan.unit_symbol = "";
-    } else if (unit) {
-      plan.unit = *unit;
-      plan.unit_symbol = core::si_unit(unit->quantity).symbol;
-    } else {
-      plan.unit = core::Unit{cell.unit, core::Quantity::kDimensionless, 1.0, 0.0};
-      plan.unit_symbol = cell.unit;  // unknown unit: kept as logged
-    }
-    if (const auto role = find_role(cell.name)) plan.interp = role->interp;
-    plan.may_be_text = true;
-    plans.push_back(std::move(plan));
-  }
-
-  const bool time_unit_declared = !split_header_cell(time.time.header).unit.empty();
-  TimeStampReader stamps({}, {reader.path(), time.time.header, 0, false, false,
-                              time_unit_declared ? time.time.unit.symbol : std::string(),
-                              time_unit_declared ? time.time.unit.scale : 0.0});
-  core::Log log(stream_rows(reader, header, format, time, plans, options, stamps, nullptr).time_s);
-  for (auto& plan : plans) {
+  CsvRead read(path, format, options);
+  read.plan_all();
+  core::Log log(read.read_rows().time_s);
+  for (auto& plan : read.channels()) {
     if (plan.state == ColumnPlan::State::kText) continue;
     log.add_channel(plan.channel, plan.unit_symbol, std::move(plan.values), plan.interp);
   }

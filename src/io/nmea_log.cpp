@@ -440,11 +440,18 @@ bool sentence_like(std::string_view text) {
   return k - start - 1 >= 4 && k < text.size() && text[k] == ',';
 }
 
+// How far a capture has been read: its lines and its bytes.
+struct ReadSoFar {
+  std::size_t lines;
+  std::uint64_t bytes;
+};
+
 // A capture without a valid sentence in its first kMaxNmeaLinesWithoutSentence lines or
 // kMaxNmeaBytesWithoutSentence bytes is not one: refused, not read to an end that may not come.
-void give_up_without_sentence(const std::string& file, std::size_t line, std::uint64_t bytes) {
+void give_up_without_sentence(const std::string& file, ReadSoFar read) {
+  const std::size_t line = read.lines;
   const bool by_lines = line >= kMaxNmeaLinesWithoutSentence;
-  if (!by_lines && bytes < kMaxNmeaBytesWithoutSentence) return;
+  if (!by_lines && read.bytes < kMaxNmeaBytesWithoutSentence) return;
   throw core::InputError(
       {file, line, {}, {}},
       fmt::format("not an NMEA capture: no valid NMEA sentence in the first {}",
@@ -480,7 +487,8 @@ NmeaLog read_nmea_log(const std::filesystem::path& file, const NmeaLogOptions& o
       // Not ended: the file ends inside this line, with no line end after it.
       reader.add_line(text, line_no, !lines.ended());
     }
-    if (reader.sentences() == 0) give_up_without_sentence(name, line_no, lines.bytes());
+    if (reader.sentences() == 0)
+      give_up_without_sentence(name, {.lines = line_no, .bytes = lines.bytes()});
   }
   if (in.bad()) {
     throw core::InputError({name, line_no, {}, {}}, "reading the file failed",

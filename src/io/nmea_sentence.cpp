@@ -16,18 +16,28 @@ constexpr double kDegToRad = std::numbers::pi / 180.0;
 constexpr double kKnotToMps = 1852.0 / 3600.0;
 constexpr double kKmhToMps = 1.0 / 3.6;
 
+// A latitude or longitude field: its name, largest value and hemisphere letters.
+struct AngleField {
+  std::string_view name;
+  int max_deg;
+  char positive;
+  char negative;
+};
+constexpr AngleField kLatitude{"latitude", 90, 'N', 'S'};
+constexpr AngleField kLongitude{"longitude", 180, 'E', 'W'};
+
 // Reads typed values from the fields of one sentence; every error names the field.
 class Fields {
  public:
   Fields(const std::vector<std::string>& fields, const core::InputLocation& where, std::string type)
       : fields_(fields), where_(where), type_(std::move(type)) {}
 
-  [[noreturn]] void fail(std::size_t i, const std::string& name, const std::string& problem,
-                         const std::string& hint) const {
+  // The location of field i, named `name`, for an error in it.
+  core::InputLocation where(std::size_t i, std::string_view name) const {
     core::InputLocation at = where_;
     at.column = i + 1;
-    at.column_name = type_ + "." + name;
-    throw core::InputError(at, problem, hint);
+    at.column_name = type_ + "." + std::string(name);
+    return at;
   }
 
   const std::string& text(std::size_t i) const { return fields_[i]; }
@@ -50,9 +60,10 @@ class Fields {
     double value = 0.0;
     const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
     if (!digit || ec != std::errc() || end != s.data() + s.size()) {
-      fail(i, name, fmt::format("'{}' is not a number", s),
-           "NMEA numeric fields hold digits, an optional '-' and '.'; leave a field empty when "
-           "there is no value");
+      throw core::InputError(
+          where(i, name), fmt::format("'{}' is not a number", s),
+          "NMEA numeric fields hold digits, an optional '-' and '.'; leave a field empty when "
+          "there is no value");
     }
     return value;
   }
@@ -61,8 +72,9 @@ class Fields {
   double heading(std::size_t i) const {
     const double deg = number(i, "heading");
     if (deg < 0.0 || deg >= 360.0) {
-      fail(i, "heading", fmt::format("'{}' is not in [0, 360) degrees", fields_[i]),
-           "a heading is 0 (north) to 359.99… degrees, clockwise");
+      throw core::InputError(where(i, "heading"),
+                             fmt::format("'{}' is not in [0, 360) degrees", fields_[i]),
+                             "a heading is 0 (north) to 359.99… degrees, clockwise");
     }
     return deg * kDegToRad;
   }
@@ -72,8 +84,9 @@ class Fields {
     const std::string& s = fields_[i];
     if (s.empty()) return '\0';
     if (s.size() != 1 || allowed.find(s[0]) == std::string_view::npos) {
-      fail(i, name, fmt::format("'{}' is not one of the letters {}", s, allowed),
-           "check the sentence against the NMEA 0183 field order");
+      throw core::InputError(where(i, name),
+                             fmt::format("'{}' is not one of the letters {}", s, allowed),
+                             "check the sentence against the NMEA 0183 field order");
     }
     return s[0];
   }
@@ -83,8 +96,9 @@ class Fields {
     const std::string& s = fields_[i];
     if (s.empty()) return core::kMissing;
     const auto bad = [&] {
-      fail(i, "time", fmt::format("'{}' is not a UTC time hhmmss[.sss]", s),
-           "hours 00-23, minutes 00-59, seconds 00-60");
+      throw core::InputError(where(i, "time"),
+                             fmt::format("'{}' is not a UTC time hhmmss[.sss]", s),
+                             "hours 00-23, minutes 00-59, seconds 00-60");
     };
     if (s.size() < 6) bad();
     for (std::size_t k = 0; k < 6; ++k) {
@@ -107,14 +121,16 @@ class Fields {
   }
 
   // "(d)ddmm.mmmm" with hemisphere letter at i + 1 → rad; empty → NaN.
-  double angle(std::size_t i, const std::string& name, int max_deg, char positive,
-               char negative) const {
+  double angle(std::size_t i, const AngleField& field) const {
     const std::string& s = fields_[i];
     if (s.empty()) return core::kMissing;
+    const std::string name(field.name);
+    const int max_deg = field.max_deg;
+    const char positive = field.positive, negative = field.negative;
     const auto bad = [&](const std::string& problem) {
-      fail(i, name, problem,
-           fmt::format("write the {} as {}mm.mmmm (degrees and decimal minutes)", name,
-                       max_deg > 90 ? "ddd" : "dd"));
+      throw core::InputError(where(i, name), problem,
+                             fmt::format("write the {} as {}mm.mmmm (degrees and decimal minutes)",
+                                         name, max_deg > 90 ? "ddd" : "dd"));
     };
     const std::size_t dot = s.find('.');
     const std::string whole = s.substr(0, dot);
@@ -137,8 +153,8 @@ class Fields {
     if (deg > max_deg) bad(fmt::format("'{}' is beyond {} degrees", s, max_deg));
     const char hemisphere = letter(i + 1, name + "_hemisphere", std::string{positive, negative});
     if (hemisphere == '\0') {
-      fail(i + 1, name + "_hemisphere", "the hemisphere letter is missing",
-           fmt::format("give {} or {} after the {}", positive, negative, name));
+      throw core::InputError(where(i + 1, name + "_hemisphere"), "the hemisphere letter is missing",
+                             fmt::format("give {} or {} after the {}", positive, negative, name));
     }
     return (hemisphere == negative ? -deg : deg) * kDegToRad;
   }
@@ -157,8 +173,8 @@ class Fields {
       d.year = yy < 80 ? 2000 + yy : 1900 + yy;
     }
     if (!digits || !is_valid(d)) {
-      fail(i, "date", fmt::format("'{}' is not a date ddmmyy", s),
-           "day 01-31, month 01-12, two-digit year (80-99: 19yy, else 20yy)");
+      throw core::InputError(where(i, "date"), fmt::format("'{}' is not a date ddmmyy", s),
+                             "day 01-31, month 01-12, two-digit year (80-99: 19yy, else 20yy)");
     }
     return d;
   }
@@ -190,23 +206,25 @@ void check_count(const Fields& f, std::vector<std::string>& fields, const std::s
   }
   std::vector<std::string> names;
   for (const std::size_t n : allowed) names.push_back(std::to_string(n));
-  f.fail(fields.empty() ? 0 : fields.size() - 1, "field_count",
-         fmt::format("{} has {} fields after the address", type, fields.size()),
-         fmt::format("a {} sentence has {} fields (NMEA 0183 versions 2.0-4.1); the line may be "
-                     "cut off or two sentences may be joined",
-                     type, detail::join(names, " or ")));
+  throw core::InputError(
+      f.where(fields.empty() ? 0 : fields.size() - 1, "field_count"),
+      fmt::format("{} has {} fields after the address", type, fields.size()),
+      fmt::format("a {} sentence has {} fields (NMEA 0183 versions 2.0-4.1); the line may be "
+                  "cut off or two sentences may be joined",
+                  type, detail::join(names, " or ")));
 }
 
 NmeaGga parse_gga(const Fields& f) {
   NmeaGga g;
   g.utc_s = f.time_of_day(0);
-  g.lat_rad = f.angle(1, "latitude", 90, 'N', 'S');
-  g.lon_rad = f.angle(3, "longitude", 180, 'E', 'W');
+  g.lat_rad = f.angle(1, kLatitude);
+  g.lon_rad = f.angle(3, kLongitude);
   const double quality = f.number(5, "quality");
   if (!core::is_missing(quality) &&
       (quality != std::floor(quality) || quality < 0.0 || quality > 9.0)) {
-    f.fail(5, "quality", fmt::format("fix quality '{}' is not a digit 0-9", f.text(5)),
-           "0 no fix, 1 GPS, 2 DGPS, 4 RTK fixed, 5 RTK float, 6 dead reckoning");
+    throw core::InputError(f.where(5, "quality"),
+                           fmt::format("fix quality '{}' is not a digit 0-9", f.text(5)),
+                           "0 no fix, 1 GPS, 2 DGPS, 4 RTK fixed, 5 RTK float, 6 dead reckoning");
   }
   g.quality = core::is_missing(quality) ? -1 : static_cast<int>(quality);
   g.satellites = f.number(6, "satellites");
@@ -224,8 +242,8 @@ NmeaRmc parse_rmc(const Fields& f, std::size_t count) {
   NmeaRmc r;
   r.utc_s = f.time_of_day(0);
   r.valid = f.letter(1, "status", "AV") == 'A';
-  r.lat_rad = f.angle(2, "latitude", 90, 'N', 'S');
-  r.lon_rad = f.angle(4, "longitude", 180, 'E', 'W');
+  r.lat_rad = f.angle(2, kLatitude);
+  r.lon_rad = f.angle(4, kLongitude);
   r.sog_mps = f.number(6, "sog") * kKnotToMps;
   r.cog_rad = f.number(7, "cog") * kDegToRad;
   r.date = f.date(8);
@@ -253,8 +271,8 @@ NmeaVtg parse_vtg(const Fields& f, std::size_t count) {
 
 NmeaGll parse_gll(const Fields& f) {
   NmeaGll g;
-  g.lat_rad = f.angle(0, "latitude", 90, 'N', 'S');
-  g.lon_rad = f.angle(2, "longitude", 180, 'E', 'W');
+  g.lat_rad = f.angle(0, kLatitude);
+  g.lon_rad = f.angle(2, kLongitude);
   g.utc_s = f.time_of_day(4);
   g.valid = f.letter(5, "status", "AV") == 'A';
   return g;
@@ -273,9 +291,10 @@ NmeaZda parse_zda(const Fields& f) {
       whole ? UtcDate{static_cast<int>(year), static_cast<int>(month), static_cast<int>(day)}
             : UtcDate{0, 0, 0};
   if (!whole || !is_valid(d)) {
-    f.fail(1, "date",
-           fmt::format("'{},{},{}' is not a date dd,mm,yyyy", f.text(1), f.text(2), f.text(3)),
-           "day 01-31, month 01-12, a four-digit year 1970-2199");
+    throw core::InputError(
+        f.where(1, "date"),
+        fmt::format("'{},{},{}' is not a date dd,mm,yyyy", f.text(1), f.text(2), f.text(3)),
+        "day 01-31, month 01-12, a four-digit year 1970-2199");
   }
   z.date = d;
   return z;
@@ -293,8 +312,9 @@ int seapath_quality(const Fields& f, std::size_t i, const std::string& name) {
   const double q = f.number(i, name);
   if (core::is_missing(q)) return -1;
   if (q != 0.0 && q != 1.0 && q != 2.0) {
-    f.fail(i, name, fmt::format("quality '{}' is not 0, 1 or 2", f.text(i)),
-           "Seapath quality: 0 normal, 1 reduced, 2 invalid");
+    throw core::InputError(f.where(i, name),
+                           fmt::format("quality '{}' is not 0, 1 or 2", f.text(i)),
+                           "Seapath quality: 0 normal, 1 reduced, 2 invalid");
   }
   return static_cast<int>(q);
 }
@@ -412,17 +432,17 @@ std::uint8_t nmea_checksum(std::string_view body) {
 NmeaSentence parse_nmea_sentence(std::string_view line, const core::InputLocation& where,
                                  const NmeaParseOptions& options) {
   const std::string_view text = detail::trim(line);
-  const auto fail = [&](std::optional<std::size_t> column, const std::string& name,
-                        const std::string& problem, const std::string& hint) {
-    core::InputLocation at = where;
-    at.column = column;
-    at.column_name = name;
-    throw core::InputError(at, problem, hint);
+  const auto at = [&](std::optional<std::size_t> column, std::string name) {
+    core::InputLocation location = where;
+    location.column = column;
+    location.column_name = std::move(name);
+    return location;
   };
   if (text.empty() || text[0] != '$') {
-    fail(1, "start", "the line does not start with '$'",
-         "each line must be one NMEA 0183 sentence \"$TTSSS,…*hh\"; remove logger time stamps "
-         "or other text before the '$'");
+    throw core::InputError(
+        at(1, "start"), "the line does not start with '$'",
+        "each line must be one NMEA 0183 sentence \"$TTSSS,…*hh\"; remove logger time stamps "
+        "or other text before the '$'");
   }
   NmeaSentence out;
   std::string_view body = text.substr(1);
@@ -434,16 +454,18 @@ NmeaSentence parse_nmea_sentence(std::string_view line, const core::InputLocatio
       return (c >= '0' && c <= '9') || (c >= 'A' && c <= 'F') || (c >= 'a' && c <= 'f');
     };
     if (given.size() != 2 || !hex(given[0]) || !hex(given[1])) {
-      fail(std::nullopt, "checksum", fmt::format("checksum '*{}' is not two hex digits", given),
-           "a sentence ends with '*' and two hex digits, e.g. *47");
+      throw core::InputError(at(std::nullopt, "checksum"),
+                             fmt::format("checksum '*{}' is not two hex digits", given),
+                             "a sentence ends with '*' and two hex digits, e.g. *47");
     }
     const unsigned expected = std::stoul(std::string(given), nullptr, 16);
     const unsigned actual = nmea_checksum(body);
     if (expected != actual) {
-      fail(std::nullopt, "checksum",
-           fmt::format("checksum mismatch: the sentence says {:02X}, its text gives {:02X}",
-                       expected, actual),
-           "the line is corrupted (a changed or lost character); drop it or fix the source");
+      throw core::InputError(
+          at(std::nullopt, "checksum"),
+          fmt::format("checksum mismatch: the sentence says {:02X}, its text gives {:02X}",
+                      expected, actual),
+          "the line is corrupted (a changed or lost character); drop it or fix the source");
     }
     out.has_checksum = true;
   }
@@ -461,8 +483,9 @@ NmeaSentence parse_nmea_sentence(std::string_view line, const core::InputLocatio
   for (const char c : address) alnum = alnum && ((c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'));
   const bool proprietary = alnum && address[0] == 'P';
   if (!alnum || (!proprietary && address.size() != 5)) {
-    fail(1, "address", fmt::format("'{}' is not an NMEA address", address),
-         "the address is a two-letter talker ID and a three-letter type, e.g. GPGGA");
+    throw core::InputError(
+        at(1, "address"), fmt::format("'{}' is not an NMEA address", address),
+        "the address is a two-letter talker ID and a three-letter type, e.g. GPGGA");
   }
   out.talker = proprietary ? "P" : address.substr(0, 2);
   out.type = proprietary ? address.substr(1) : address.substr(2);

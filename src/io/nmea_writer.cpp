@@ -30,15 +30,16 @@ std::string number(double value, int decimals) {
   return fmt::format("{:.{}f}", value, decimals);
 }
 
-// An angle in degrees wrapped to [0, 360) after rounding to `decimals`; NaN → empty.
-std::string direction_deg(double rad, int decimals) {
+// An angle in degrees wrapped to [0, 360) after rounding to `Decimals`; NaN → empty.
+template <int Decimals>
+std::string direction_deg(double rad) {
   if (core::is_missing(rad)) return {};
-  const double scale = std::pow(10.0, decimals);
+  const double scale = std::pow(10.0, Decimals);
   double deg = std::round(rad * kRadToDeg * scale) / scale;
   deg = std::fmod(deg, 360.0);
   if (deg < 0.0) deg += 360.0;
   if (deg >= 360.0 - 0.5 / scale) deg = 0.0;
-  return fmt::format("{:.{}f}", deg, decimals);
+  return fmt::format("{:.{}f}", deg, Decimals);
 }
 
 // "hhmmss.sss" of the time of day (modulo one day); NaN → empty.
@@ -52,9 +53,20 @@ std::string time_field(double utc_s) {
   return fmt::format("{:02d}{:02d}{:02d}.{:03d}", s / 3600, s / 60 % 60, s % 60, ms % 1000);
 }
 
+// Latitude or longitude: the digits of its whole degrees and its hemisphere letters.
+struct AngleAxis {
+  int degree_digits;
+  char positive;
+  char negative;
+};
+constexpr AngleAxis kLatitude{2, 'N', 'S'};
+constexpr AngleAxis kLongitude{3, 'E', 'W'};
+
 // Latitude "ddmm.mmmmmmm,N" or longitude "dddmm.mmmmmmm,E" (two fields); NaN → ",".
-std::string angle_fields(double rad, int degree_digits, char positive, char negative) {
+std::string angle_fields(double rad, const AngleAxis& axis) {
   if (core::is_missing(rad)) return ",";
+  const int degree_digits = axis.degree_digits;
+  const char positive = axis.positive, negative = axis.negative;
   const double deg = rad * kRadToDeg;
   const double limit = degree_digits == 2 ? 90.0 : 180.0;
   if (!(std::abs(deg) <= limit)) {
@@ -92,7 +104,7 @@ std::string format_gga(std::string_view talker, const NmeaGga& g) {
       core::is_missing(g.satellites) ? std::string{} : fmt::format("{:02.0f}", g.satellites);
   return nmea_frame(
       fmt::format("{}GGA,{},{},{},{},{},{},{},{},{},{}", talker, time_field(g.utc_s),
-                  angle_fields(g.lat_rad, 2, 'N', 'S'), angle_fields(g.lon_rad, 3, 'E', 'W'),
+                  angle_fields(g.lat_rad, kLatitude), angle_fields(g.lon_rad, kLongitude),
                   g.quality < 0 ? std::string{} : std::to_string(g.quality), satellites,
                   number(g.hdop, 2), with_unit(g.altitude_m, 3, 'M'),
                   with_unit(g.geoid_separation_m, 3, 'M'), number(g.age_s, 1), g.station));
@@ -109,16 +121,16 @@ std::string format_rmc(std::string_view talker, const NmeaRmc& r) {
     variation = fmt::format("{:.1f},{}", std::abs(deg), deg < 0.0 ? 'W' : 'E');
   }
   return nmea_frame(fmt::format("{}RMC,{},{},{},{},{},{},{},{},{}", talker, time_field(r.utc_s),
-                                r.valid ? 'A' : 'V', angle_fields(r.lat_rad, 2, 'N', 'S'),
-                                angle_fields(r.lon_rad, 3, 'E', 'W'),
-                                number(r.sog_mps * kMpsToKnot, 3), direction_deg(r.cog_rad, 2),
+                                r.valid ? 'A' : 'V', angle_fields(r.lat_rad, kLatitude),
+                                angle_fields(r.lon_rad, kLongitude),
+                                number(r.sog_mps * kMpsToKnot, 3), direction_deg<2>(r.cog_rad),
                                 date, variation, mode_field(r.mode)));
 }
 
 std::string format_vtg(std::string_view talker, const NmeaVtg& v) {
   check_talker(talker);
-  const std::string cog = direction_deg(v.cog_rad, 2);
-  const std::string cog_m = direction_deg(v.cog_magnetic_rad, 2);
+  const std::string cog = direction_deg<2>(v.cog_rad);
+  const std::string cog_m = direction_deg<2>(v.cog_magnetic_rad);
   return nmea_frame(fmt::format("{}VTG,{},{},{},{},{},{},{}", talker, cog, cog.empty() ? "" : "T",
                                 cog_m, cog_m.empty() ? "" : "M",
                                 with_unit(v.sog_mps * kMpsToKnot, 3, 'N'),
@@ -127,7 +139,7 @@ std::string format_vtg(std::string_view talker, const NmeaVtg& v) {
 
 std::string format_hdt(std::string_view talker, const NmeaHdt& h) {
   check_talker(talker);
-  const std::string heading = direction_deg(h.heading_rad, 3);
+  const std::string heading = direction_deg<3>(h.heading_rad);
   return nmea_frame(fmt::format("{}HDT,{},{}", talker, heading, heading.empty() ? "" : "T"));
 }
 

@@ -102,14 +102,6 @@ const RoleSpec* catalogue_entry(std::string_view name) {
   return it == all.end() ? nullptr : &*it;
 }
 
-std::optional<RoleSpec> instantiate(std::string_view pattern, std::string_view name) {
-  const RoleSpec* entry = catalogue_entry(pattern);
-  if (entry == nullptr) return std::nullopt;
-  RoleSpec spec = *entry;
-  spec.name = std::string(name);
-  return spec;
-}
-
 }  // namespace
 
 const std::vector<RoleSpec>& role_catalogue() {
@@ -126,6 +118,14 @@ std::optional<RoleSpec> find_role(std::string_view name) {
   }
   const auto dot = name.find('.');
   if (dot == std::string_view::npos) return std::nullopt;
+  // The catalogue's role `pattern` ("thrust.NAME", "gnssK.lat") under the name asked for.
+  const auto instantiate = [name](std::string_view pattern) -> std::optional<RoleSpec> {
+    const RoleSpec* entry = catalogue_entry(pattern);
+    if (entry == nullptr) return std::nullopt;
+    RoleSpec spec = *entry;
+    spec.name = std::string(name);
+    return spec;
+  };
   const std::string_view prefix = name.substr(0, dot);
   const std::string_view suffix = name.substr(dot + 1);
 
@@ -138,19 +138,19 @@ std::optional<RoleSpec> find_role(std::string_view name) {
       const std::string_view kind = suffix.substr(0, dot2);
       if ((kind == "rpm" || kind == "thrust" || kind == "rudder") &&
           valid_name_part(suffix.substr(dot2 + 1))) {
-        return instantiate("command." + std::string(kind) + ".NAME", name);
+        return instantiate("command." + std::string(kind) + ".NAME");
       }
       return std::nullopt;
     }
   }
   if (std::find(kNamed.begin(), kNamed.end(), prefix) != kNamed.end()) {
     if (!valid_name_part(suffix)) return std::nullopt;
-    return instantiate(std::string(prefix) + ".NAME", name);
+    return instantiate(std::string(prefix) + ".NAME");
   }
   for (const std::string_view sensor : {std::string_view("gnss"), std::string_view("mru")}) {
     if (prefix.size() > sensor.size() && prefix.substr(0, sensor.size()) == sensor &&
         valid_index_part(prefix.substr(sensor.size()))) {
-      return instantiate(std::string(sensor) + "K." + std::string(suffix), name);
+      return instantiate(std::string(sensor) + "K." + std::string(suffix));
     }
   }
   return std::nullopt;

@@ -24,11 +24,16 @@ namespace {
 static_assert(kMaxSpoolLineBytes >= kMaxNmeaJunkBytes && kMaxSpoolLineBytes >= kMaxCsvRecordBytes,
               "a copy takes every line a reader takes");
 
-[[noreturn]] void fail(const std::string& file, const std::string& what, int error,
-                       const std::string& hint) {
+// The problem of a failed system call: what failed, then why (errno `error`).
+std::string failed(std::string_view what, int error) {
+  return fmt::format("{}: {}", what, std::strerror(error));
+}
+
+// The place of an error in the file `file` as a whole.
+core::InputLocation in_file(std::string file) {
   core::InputLocation where;
-  where.file = file;
-  throw core::InputError(where, fmt::format("{}: {}", what, std::strerror(error)), hint);
+  where.file = std::move(file);
+  return where;
 }
 
 // Writes all of [data, data + size) to fd; false with errno set on failure.
@@ -112,17 +117,23 @@ struct Copied {
   bool binary = false;           // no sign of text in the first kMaxSpoolLineBytes
 };
 
-// Copies `in` to `out` through a 1 MiB buffer, up to a line (ended by '\n' or '\r') longer
-// than kMaxSpoolLineBytes, or up to kMaxSpoolLineBytes of binary data (TextProbe). Only the
-// first and the last line end of each buffer are looked for: a log costs a few bytes of search
-// a MiB.
-Copied copy_lines(int in, int out) {
+// The two ends of a copy: file descriptors open for reading and for writing.
+struct CopyEnds {
+  int in;
+  int out;
+};
+
+// Copies `ends.in` to `ends.out` through a 1 MiB buffer, up to a line (ended by '\n' or '\r')
+// longer than kMaxSpoolLineBytes, or up to kMaxSpoolLineBytes of binary data (TextProbe). Only
+// the first and the last line end of each buffer are looked for: a log costs a few bytes of
+// search a MiB.
+Copied copy_lines(CopyEnds ends) {
   const auto is_end = [](char c) { return c == '\n' || c == '\r'; };
   std::vector<char> buffer(std::size_t{1} << 20);
   TextProbe probe;
   Copied c;
   for (;;) {
-    const ssize_t got = ::read(in, buffer.data(), buffer.size());
+    const ssize_t got = ::read(ends.in, buffer.data(), buffer.size());
     if (got == 0) return c;
     if (got < 0) {
       if (errno == EINTR) continue;
@@ -147,7 +158,7 @@ Copied copy_lines(int in, int out) {
       c.binary = true;
       return c;
     }
-    if (!write_all(out, begin, static_cast<std::size_t>(got))) {
+    if (!write_all(ends.out, begin, static_cast<std::size_t>(got))) {
       c.error = errno;
       return c;
     }
@@ -189,7 +200,11 @@ bool needs_spool(const std::filesystem::path& path) {
 SpooledInput::SpooledInput(const std::filesystem::path& path, std::filesystem::path dir) {
   const std::string name = path == "-" ? "standard input" : path.string();
   const int in = path == "-" ? STDIN_FILENO : ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (in < 0) fail(name, "cannot open it", errno, "check the path and its permissions");
+  if (in < 0) {
+    const int error = errno;
+    throw core::InputError(in_file(name), failed("cannot open it", error),
+                           "check the path and its permissions");
+  }
   if (dir.empty()) dir = std::filesystem::temp_directory_path();
   // mkstemp() replaces the six X with a unique suffix and creates the file.
   std::string pattern = (dir / "dynpos-input-XXXXXX").string();
@@ -197,12 +212,14 @@ SpooledInput::SpooledInput(const std::filesystem::path& path, std::filesystem::p
   if (out < 0) {
     const int error = errno;
     if (in != STDIN_FILENO) ::close(in);
-    fail(dir.string(), "cannot make a copy of " + name + " in this folder to read it", error,
-         "set TMPDIR to a folder with space and write permission");
+    throw core::InputError(
+        in_file(dir.string()),
+        failed("cannot make a copy of " + name + " in this folder to read it", error),
+        "set TMPDIR to a folder with space and write permission");
   }
   copy_ = pattern;
   temporary_files::add(copy_);
-  const Copied copied = copy_lines(in, out);
+  const Copied copied = copy_lines({.in = in, .out = out});
   if (in != STDIN_FILENO) ::close(in);
   int error = copied.error;
   if (::close(out) != 0 && error == 0) error = errno;
@@ -226,10 +243,14 @@ SpooledInput::SpooledInput(const std::filesystem::path& path, std::filesystem::p
                                        kMaxSpoolLineBytes >> 20),
                            "give a CSV log or an NMEA capture; is this the right file?");
   }
-  if (copied.read_failed) fail(name, "reading it failed", error, "check that it is readable");
-  fail(copy_.string(), "cannot copy " + name + " to read it", error,
-       error == ENOSPC ? "free some space, or set TMPDIR to a folder with space"
-                       : "set TMPDIR to a folder with space and write permission");
+  if (copied.read_failed) {
+    throw core::InputError(in_file(name), failed("reading it failed", error),
+                           "check that it is readable");
+  }
+  throw core::InputError(
+      in_file(copy_.string()), failed("cannot copy " + name + " to read it", error),
+      error == ENOSPC ? "free some space, or set TMPDIR to a folder with space"
+                      : "set TMPDIR to a folder with space and write permission");
 }
 
 SpooledInput::~SpooledInput() {

@@ -76,37 +76,37 @@ bool read_fraction_ns(std::string_view s, std::size_t& pos, std::int64_t& ns) no
 
 // hh:mm[:ss[.f…]] at s[pos] → nanoseconds since midnight. The hour has 1 or 2 digits. With
 // `leap`, a leap second hh:59:60[.f…] is read as the next minute's first second and flagged.
-bool read_clock(std::string_view s, std::size_t& pos, std::int64_t& ns,
-                bool* leap = nullptr) noexcept {
+std::optional<std::int64_t> read_clock(std::string_view s, std::size_t& pos,
+                                       bool* leap = nullptr) noexcept {
   unsigned h = 0, m = 0, sec = 0;
   const std::size_t hour_digits = pos + 1 < s.size() && s[pos + 1] == ':' ? 1 : 2;
-  if (!read_digits(s, pos, hour_digits, h) || pos >= s.size() || s[pos] != ':') return false;
+  if (!read_digits(s, pos, hour_digits, h) || pos >= s.size() || s[pos] != ':') {
+    return std::nullopt;
+  }
   ++pos;
-  if (!read_digits(s, pos, 2, m)) return false;
+  if (!read_digits(s, pos, 2, m)) return std::nullopt;
   std::int64_t fraction = 0;
   if (pos < s.size() && s[pos] == ':') {
     ++pos;
-    if (!read_digits(s, pos, 2, sec) || !read_fraction_ns(s, pos, fraction)) return false;
+    if (!read_digits(s, pos, 2, sec) || !read_fraction_ns(s, pos, fraction)) return std::nullopt;
   }
   const bool leap_second = leap != nullptr && sec == 60 && m == 59;
-  if (h > 23 || m > 59 || (sec > 59 && !leap_second)) return false;
+  if (h > 23 || m > 59 || (sec > 59 && !leap_second)) return std::nullopt;
   if (leap != nullptr) *leap = leap_second;
-  ns = ((h * 60 + m) * 60 + sec) * kNsPerS + fraction;
-  return true;
+  return ((h * 60 + m) * 60 + sec) * kNsPerS + fraction;
 }
 
 // YYYY-MM-DD or YYYY/MM/DD at s[pos] → days since 1970-01-01.
-bool read_date(std::string_view s, std::size_t& pos, std::int64_t& days) noexcept {
+std::optional<std::int64_t> read_date(std::string_view s, std::size_t& pos) noexcept {
   unsigned y = 0, m = 0, d = 0;
-  if (!read_digits(s, pos, 4, y) || pos >= s.size()) return false;
+  if (!read_digits(s, pos, 4, y) || pos >= s.size()) return std::nullopt;
   const char separator = s[pos];
-  if (separator != '-' && separator != '/') return false;
+  if (separator != '-' && separator != '/') return std::nullopt;
   ++pos;
-  if (!read_digits(s, pos, 2, m) || pos >= s.size() || s[pos] != separator) return false;
+  if (!read_digits(s, pos, 2, m) || pos >= s.size() || s[pos] != separator) return std::nullopt;
   ++pos;
-  if (!read_digits(s, pos, 2, d) || !is_valid_date(y, m, d)) return false;
-  days = days_from_civil(y, m, d);
-  return true;
+  if (!read_digits(s, pos, 2, d) || !is_valid_date({y, m, d})) return std::nullopt;
+  return days_from_civil(y, m, d);
 }
 
 // Z, ±hh:mm, ±hhmm or ±hh at s[pos] (after at most one space) up to the end; nullopt offset
@@ -228,7 +228,8 @@ void TimeStampOptions::validate() const {
   }
 }
 
-bool is_valid_date(std::int64_t year, unsigned month, unsigned day) noexcept {
+bool is_valid_date(const CivilDate& date) noexcept {
+  const auto [year, month, day] = date;
   if (month < 1 || month > 12 || day < 1) return false;
   constexpr std::array<unsigned, 12> kDays{31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
   const bool leap = year % 4 == 0 && (year % 100 != 0 || year % 400 == 0);
@@ -238,13 +239,16 @@ bool is_valid_date(std::int64_t year, unsigned month, unsigned day) noexcept {
 std::optional<ParsedStamp> parse_iso8601(std::string_view text) noexcept {
   const std::string_view s = detail::trim(text);
   std::size_t pos = 0;
-  std::int64_t days = 0, clock_ns = 0;
-  if (!read_date(s, pos, days) || pos >= s.size()) return std::nullopt;
+  const std::optional<std::int64_t> date_days = read_date(s, pos);
+  if (!date_days || pos >= s.size()) return std::nullopt;
+  const std::int64_t days = *date_days;
   if (days < kFirstDay || days > kLastDay) return std::nullopt;  // outside int64 ns
   if (s[pos] != 'T' && s[pos] != 't' && s[pos] != ' ') return std::nullopt;
   ++pos;
   ParsedStamp out;
-  if (!read_clock(s, pos, clock_ns, &out.leap_second)) return std::nullopt;
+  const std::optional<std::int64_t> clock = read_clock(s, pos, &out.leap_second);
+  if (!clock) return std::nullopt;
+  const std::int64_t clock_ns = *clock;
   if (!read_zone(s, pos, out.utc_offset_min)) return std::nullopt;
   out.ns = days * kNsPerDay + clock_ns -
            static_cast<std::int64_t>(out.utc_offset_min.value_or(0)) * 60 * kNsPerS;
@@ -259,17 +263,17 @@ std::optional<ParsedStamp> parse_iso8601(std::string_view text) noexcept {
 std::optional<std::int64_t> parse_date_days(std::string_view text) noexcept {
   const std::string_view s = detail::trim(text);
   std::size_t pos = 0;
-  std::int64_t days = 0;
-  if (!read_date(s, pos, days) || pos != s.size()) return std::nullopt;
-  if (days < kFirstDay || days > kLastDay) return std::nullopt;  // outside int64 ns
+  const std::optional<std::int64_t> days = read_date(s, pos);
+  if (!days || pos != s.size()) return std::nullopt;
+  if (*days < kFirstDay || *days > kLastDay) return std::nullopt;  // outside int64 ns
   return days;
 }
 
 std::optional<std::int64_t> parse_time_of_day_ns(std::string_view text) noexcept {
   const std::string_view s = detail::trim(text);
   std::size_t pos = 0;
-  std::int64_t ns = 0;
-  if (!read_clock(s, pos, ns) || pos != s.size()) return std::nullopt;
+  const std::optional<std::int64_t> ns = read_clock(s, pos);
+  if (!ns || pos != s.size()) return std::nullopt;
   return ns;
 }
 

@@ -216,7 +216,7 @@ TEST(CsvTimeStamps, ADeclaredUnitIsNotOverriddenByTheEpochMagnitudes) {
     const auto bare =
         dir.write(fmt::format("bare_{}.csv", c.unit), "time" + text.substr(text.find(',')));
     ColumnMap map = map_of({{"time", "time"}, {"heading", "heading"}});
-    map.set_unit("time", c.unit);
+    map.set_unit({.role = "time", .unit = c.unit});
     EXPECT_EQ(read_csv_log(bare, map).time.format, "seconds") << c.unit;
     // Undeclared, the size still says epoch time.
     EXPECT_NE(read_csv_log(bare, map_of({{"time", "time"}, {"heading", "heading"}})).time.format,

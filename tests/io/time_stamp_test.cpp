@@ -29,13 +29,13 @@ TEST(TimeStamp, DaysFromCivilMatchesKnownDates) {
   EXPECT_EQ(days_from_civil(2024, 3, 1) - days_from_civil(2024, 2, 28), 2);
   EXPECT_EQ(days_from_civil(1900, 3, 1) - days_from_civil(1900, 2, 28), 1);
   EXPECT_EQ(days_from_civil(2023, 3, 1) - days_from_civil(2023, 2, 28), 1);
-  EXPECT_TRUE(is_valid_date(2000, 2, 29));
-  EXPECT_TRUE(is_valid_date(2024, 2, 29));
-  EXPECT_FALSE(is_valid_date(1900, 2, 29));
-  EXPECT_FALSE(is_valid_date(2023, 2, 29));
-  EXPECT_FALSE(is_valid_date(2024, 4, 31));
-  EXPECT_FALSE(is_valid_date(2024, 13, 1));
-  EXPECT_FALSE(is_valid_date(2024, 0, 1));
+  EXPECT_TRUE(is_valid_date({2000, 2, 29}));
+  EXPECT_TRUE(is_valid_date({2024, 2, 29}));
+  EXPECT_FALSE(is_valid_date({1900, 2, 29}));
+  EXPECT_FALSE(is_valid_date({2023, 2, 29}));
+  EXPECT_FALSE(is_valid_date({2024, 4, 31}));
+  EXPECT_FALSE(is_valid_date({2024, 13, 1}));
+  EXPECT_FALSE(is_valid_date({2024, 0, 1}));
 }
 
 TEST(TimeStamp, FormatAndParseRoundTripOverCenturies) {

@@ -89,6 +89,19 @@ struct LogFileOptions {
   core::InputLocation source;  ///< where the file was first named, for error messages
 };
 
+/// A role and the unit of its column: set_unit({.role = "heading", .unit = "deg"}).
+struct RoleUnit {
+  std::string_view role;
+  std::string_view unit;
+};
+
+/// A file other than the main log and its time column: set_time_column({.file = "nav.csv",
+/// .column = "t"}).
+struct FileTimeColumn {
+  std::string_view file;
+  std::string_view column;
+};
+
 /// Roles → columns, plus the CSV format options.
 class ColumnMap {
  public:
@@ -98,18 +111,17 @@ class ColumnMap {
   /// Like set_column(), and forgets the role's unit and scale (they described the old column).
   void replace_column(std::string_view role, std::string_view column,
                       core::InputLocation where = {});
-  /// Declares the unit of `role`. Throws core::InputError for an unknown role, an unknown unit
+  /// Declares the unit of a role. Throws core::InputError for an unknown role, an unknown unit
   /// (the hint lists the spellings of the role's quantity) or a unit of another quantity.
-  void set_unit(std::string_view role, std::string_view unit, core::InputLocation where = {});
+  void set_unit(RoleUnit role_unit, core::InputLocation where = {});
   /// Sets the scale of `role`. Throws core::InputError if it is not finite or is zero.
   void set_scale(std::string_view role, double scale, core::InputLocation where = {});
   /// Reads `role` from `file` (empty = the main log). Throws core::InputError for an unknown
   /// role or for `time` with a file (use set_time_column).
   void set_file(std::string_view role, std::string_view file, core::InputLocation where = {});
-  /// The time column of `file`, another file than the main log. Throws core::InputError for an
-  /// empty file or column name.
-  void set_time_column(std::string_view file, std::string_view column,
-                       core::InputLocation where = {});
+  /// The time column of a file other than the main log. Throws core::InputError for an empty
+  /// file or column name.
+  void set_time_column(FileTimeColumn time, core::InputLocation where = {});
   /// The clock offset [s] of `file`. Throws core::InputError if it is not finite.
   void set_clock_offset(std::string_view file, double offset_s, core::InputLocation where = {});
 

@@ -78,11 +78,15 @@ struct CsvLog {
 /// with where the log is, so that a caller can say it in its own terms (e.g. of --from/--to).
 class EmptyWindowError : public core::InputError {
  public:
-  EmptyWindowError(core::InputLocation where, std::string what, std::string hint,
-                   double first_row_s, double last_row_read_s)
-      : core::InputError(std::move(where), std::move(what), std::move(hint)),
-        first_row_s(first_row_s),
-        last_row_read_s(last_row_read_s) {}
+  /// The times [s] of the log's first row and of the last row read.
+  struct RowTimes {
+    double first_row_s;
+    double last_row_read_s;
+  };
+  EmptyWindowError(core::InputError error, RowTimes rows)
+      : core::InputError(std::move(error)),
+        first_row_s(rows.first_row_s),
+        last_row_read_s(rows.last_row_read_s) {}
   double first_row_s;      ///< the log's first row [s]
   double last_row_read_s;  ///< its last row, or the first row after the window
 };

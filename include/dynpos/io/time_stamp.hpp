@@ -98,8 +98,15 @@ constexpr std::int64_t days_from_civil(std::int64_t y, unsigned m, unsigned d) n
   return era * 146097 + static_cast<std::int64_t>(doe) - 719468;
 }
 
+/// A date of the proleptic Gregorian calendar as written: year, month 1…12, day 1…31.
+struct CivilDate {
+  std::int64_t year = 1970;
+  unsigned month = 1;
+  unsigned day = 1;
+};
+
 /// True for a real date of the proleptic Gregorian calendar (29 February in leap years only).
-bool is_valid_date(std::int64_t year, unsigned month, unsigned day) noexcept;
+bool is_valid_date(const CivilDate& date) noexcept;
 
 /// A stamp read from one cell: nanoseconds since 1970-01-01T00:00:00, UTC when utc_offset_min
 /// is set (the cell's offset already removed), the local wall clock otherwise.
@@ -214,14 +221,22 @@ class TimeStampReader {
     return true;
   }
 
-  /// accept() for `count` rows whose times are strictly increasing, the first at first_t, the
-  /// last at last_t on `last_line`: true, all of them kept, if first_t is after the last kept
-  /// time; false, nothing changed, if it is not (then accept() them one by one).
-  bool accept_increasing(double first_t, double last_t, std::size_t count, std::size_t last_line) {
-    if (kept_ > 0 && !(first_t > last_t_)) return false;
-    last_t_ = last_t;
-    last_line_ = last_line;
-    kept_ += count;
+  /// Rows whose times are strictly increasing, for accept_increasing().
+  struct IncreasingRows {
+    double first_t = 0.0;       ///< the first row's time [s]
+    double last_t = 0.0;        ///< the last row's time [s]
+    std::size_t count = 0;      ///< how many rows
+    std::size_t last_line = 0;  ///< the last row's line
+  };
+
+  /// accept() for rows whose times are strictly increasing: true, all of them kept, if their
+  /// first time is after the last kept time; false, nothing changed, if it is not (then
+  /// accept() them one by one).
+  bool accept_increasing(const IncreasingRows& rows) {
+    if (kept_ > 0 && !(rows.first_t > last_t_)) return false;
+    last_t_ = rows.last_t;
+    last_line_ = rows.last_line;
+    kept_ += rows.count;
     return true;
   }
 
