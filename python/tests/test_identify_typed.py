@@ -33,8 +33,8 @@ def test_a_bad_method_or_derived_output_names_the_keyword():
 
 
 def test_a_step_window_error_names_the_keywords():
-    with pytest.raises(dynpos.InputError, match=r"\(from_=/to=\): the window 500 … 600 s holds "
-                                                r"no row of the log \(0 … 70 s\)") as e:
+    with pytest.raises(dynpos.InputError, match=r"\(from_=/to=\): the window 500 … 600 s starts "
+                                                r"after the log's last row at 70 s") as e:
         dynpos.identify_step(STEPS, col=STEP_COL, from_=500, to=600)
     assert e.value.option == "from/to" and e.value.file.endswith("short_steps.csv")
     cli = subprocess.run([BIN, "identify", "step", STEPS, "--col", "input=cmd", "--col",

@@ -15,6 +15,7 @@
 
 #include "dynpos/analysis/option_spelling.hpp"
 #include "dynpos/io/atomic_file.hpp"
+#include "dynpos/io/temporary_files.hpp"
 
 namespace dynpos::analysis {
 
@@ -59,6 +60,8 @@ void check_writable_folder(const std::string& key, const std::filesystem::path& 
   const std::filesystem::path folder = dir.empty() ? std::filesystem::path(".") : dir;
   const std::filesystem::path probe =
       folder / fmt::format(".dynpos-probe-{}-{:08x}", ::getpid(), std::random_device{}());
+  // Made and removed as one step that a signal's clean-up waits for: never left behind.
+  const io::temporary_files::Hold hold;
   const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
   if (fd < 0) {
     const int error = errno;
