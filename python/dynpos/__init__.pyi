@@ -14,6 +14,8 @@ _Pairs = Mapping[str, Any] | Sequence[str] | str | None
 _LogLike = _Path | Log | Any  # a path, a Log or a pandas DataFrame
 _Vec3 = tuple[float, float, float] | Sequence[float] | numpy.typing.ArrayLike | str  # X,Y,Z
 
+__version__: str  # the command's --version
+
 class InputError(ValueError):
     """Bad input: the CLI's message; where it was found, None where not known."""
 

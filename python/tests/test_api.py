@@ -152,3 +152,9 @@ def test_read_log_takes_nmea_captures_and_several_files():
                           clock_offset={nav: -1000})
     assert log.time[0] == 0.0 and log["heading"][0] == pytest.approx(math.radians(358))
     assert len(log.input["files"]) == 2
+
+
+def test_the_version_is_the_commands():
+    cli = subprocess.run([BIN, "--version"], capture_output=True, text=True, check=True)
+    assert dynpos.__version__ == cli.stdout.strip()
+    assert dynpos.__version__.count(".") == 2
