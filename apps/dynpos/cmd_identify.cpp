@@ -7,6 +7,7 @@
 
 #include "commands.hpp"
 #include "dynpos/analysis/step.hpp"
+#include "enum_option.hpp"
 #include "log_input.hpp"
 
 namespace dynpos::cli {
@@ -25,20 +26,18 @@ void add_identify_step(CLI::App& identify) {
   add_log_options(*step, r.source,
                   "time, input (the command), output (the response), trigger (e.g. power "
                   "feedback, to time steps without a command)");
-  step->add_option("--method", r.method,
-                   "lsq: least squares with the dead time; smith: Smith's two-point "
-                   "method (3.8)-(3.9); smith2: Smith's second-order 20/60 %; rk: "
-                   "Rangaiah-Krishnaswamy 14/55/91 %")
-      ->transform(CLI::CheckedTransformer(analysis::step_method_names(), CLI::ignore_case))
-      ->default_str(analysis::to_string(r.method))
-      ->option_text("lsq|smith|smith2|rk (default: " + analysis::to_string(r.method) + ")");
+  add_enum_option(*step, "--method", r.method, analysis::step_method_from_name,
+                  "lsq: least squares with the dead time; smith: Smith's two-point "
+                  "method (3.8)-(3.9); smith2: Smith's second-order 20/60 %; rk: "
+                  "Rangaiah-Krishnaswamy 14/55/91 %");
   step->add_option("--from", r.from_s, "Window start [s] (one step in the window)");
   step->add_option("--to", r.to_s, "Window end [s]");
   step->add_option("--step-at", r.step_at_s, "Step time [s] (with or without a window)");
-  step->add_option("--derive", r.derive,
-                   "total-speed: fit sqrt(u^2 + v^2) (3.19) from the roles u and v (sway tests)")
-      ->transform(CLI::CheckedTransformer(analysis::step_derive_names(), CLI::ignore_case))
-      ->option_text("total-speed");
+  step->add_option_function<std::string>(
+          "--derive",
+          [&r](const std::string& name) { r.derive = analysis::step_derive_from_name(name); },
+          "total-speed: fit sqrt(u^2 + v^2) (3.19) from the roles u and v (sway tests)")
+      ->type_name("total-speed");
   step->add_option("--min-step", r.min_step,
                    "Smallest input change counted as a step, in the input's SI unit (default: "
                    "adapted to the log from its noise and largest changes, and printed)");

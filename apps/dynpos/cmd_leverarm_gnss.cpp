@@ -14,7 +14,7 @@
 #include "dynpos/analysis/leverarm_mru.hpp"
 #include "dynpos/analysis/option_spelling.hpp"
 #include "dynpos/analysis/options.hpp"
-#include "leverarm_options.hpp"
+#include "enum_option.hpp"
 #include "log_input.hpp"
 
 namespace dynpos::cli {

@@ -11,7 +11,7 @@
 #include "commands.hpp"
 #include "dynpos/analysis/leverarm_mru.hpp"
 #include "dynpos/analysis/options.hpp"
-#include "leverarm_options.hpp"
+#include "enum_option.hpp"
 #include "log_input.hpp"
 
 namespace dynpos::cli {

@@ -6,7 +6,6 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <array>
-#include <cctype>
 #include <string>
 #include <utility>
 #include <vector>
@@ -25,40 +24,19 @@ namespace {
 
 using namespace dynpos::analysis;
 
-// The enum value named `text` (any case) in `names`, else option_error(key) listing the names:
-// the Python API takes the step analysis' methods by name, as the command line does.
-template <typename Enum>
-Enum enum_by_name(const std::vector<std::pair<std::string, Enum>>& names, const std::string& text,
-                  const std::string& key) {
-  const auto lower = [](std::string v) {
-    for (char& c : v) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return v;
-  };
-  std::string known;
-  for (const auto& [name, value] : names) {
-    if (lower(name) == lower(text)) return value;
-    if (!name.empty()) known += (known.empty() ? "" : ", ") + name;
-  }
-  throw option_error(key, "unknown " + key + " '" + text + "'", "choose one of " + known);
-}
-
 void bind_step(py::module_& m) {
   py::class_<StepRequest>(m, "StepRequest")
       .def(py::init<>())
       .def_readwrite("source", &StepRequest::source)
       .def_property(
           "method", [](const StepRequest& q) { return to_string(q.method); },
-          [](StepRequest& q, const std::string& name) {
-            q.method = enum_by_name(step_method_names(), name, "method");
-          })
+          [](StepRequest& q, const std::string& name) { q.method = step_method_from_name(name); })
       .def_readwrite("from_", &StepRequest::from_s)
       .def_readwrite("to", &StepRequest::to_s)
       .def_readwrite("step_at", &StepRequest::step_at_s)
       .def_property(
           "derive", [](const StepRequest& q) { return to_string(q.derive); },
-          [](StepRequest& q, const std::string& name) {
-            q.derive = enum_by_name(step_derive_names(), name, "derive");
-          })
+          [](StepRequest& q, const std::string& name) { q.derive = step_derive_from_name(name); })
       .def_readwrite("min_step", &StepRequest::min_step)
       .def_readwrite("min_plateau", &StepRequest::min_plateau_s)
       .def_readwrite("segments", &StepRequest::segments_file);

@@ -38,6 +38,7 @@ CASES = [
     ["identify", "step", STEPS, "--col", "input=cmd", "--col", "output=no_such_column"],
     ["identify", "step", os.path.join(CLI_DIR, "bad_steps.csv"), *STEP_COLS],
     ["identify", "step", STEPS, *STEP_COLS, "--segments", os.path.join(CLI_DIR, "bad_segments.csv")],
+    ["identify", "step", STEPS, *STEP_COLS, "--method", "fast"],
     ["identify", "step", STEPS, *STEP_COLS, "--min-plateau", "-1"],
     ["identify", "agility", STEPS],
     ["identify", "agility", STEPS, *THRUST],

@@ -1,4 +1,5 @@
 #include "dynpos/analysis/step.hpp"
+#include "dynpos/analysis/enum_names.hpp"
 
 #include <fmt/core.h>
 
@@ -243,6 +244,14 @@ const std::vector<std::pair<std::string, StepDerive>>& step_derive_names() {
   static const std::vector<std::pair<std::string, StepDerive>> names = {
       {"", StepDerive::kNone}, {"total-speed", StepDerive::kTotalSpeed}};
   return names;
+}
+
+StepMethod step_method_from_name(const std::string& name) {
+  return enum_by_name(step_method_names(), name, "method");
+}
+
+StepDerive step_derive_from_name(const std::string& name) {
+  return enum_by_name(step_derive_names(), name, "derive");
 }
 
 std::string to_string(StepMethod method) {

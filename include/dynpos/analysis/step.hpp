@@ -43,6 +43,9 @@ std::string to_string(StepDerive derive);
 /// Every method and derived output by its name, for the front ends' option parsing.
 const std::vector<std::pair<std::string, StepMethod>>& step_method_names();
 const std::vector<std::pair<std::string, StepDerive>>& step_derive_names();
+/// The method or derived output named `name` (any case); else option_error("method"/"derive").
+StepMethod step_method_from_name(const std::string& name);
+StepDerive step_derive_from_name(const std::string& name);
 
 /// What to identify: the log's roles time, input (the command), output (the response) and
 /// optionally trigger (e.g. power feedback, to time steps without a command); or u and v with

@@ -1,6 +1,7 @@
 #pragma once
-// The enum options of `leverarm gnss` and `leverarm mru`: given by name, read by the library's
-// lookup (any case; an unknown name is the library's option error, as in the Python API).
+// An option that takes one of a few names (a method, a convention): read by the library's lookup
+// (any case; an unknown name is the library's option error, the same text as in the Python API),
+// its default shown from the request.
 
 #include <CLI/CLI.hpp>
 #include <string>
