@@ -505,7 +505,41 @@ ColumnMap load_column_map(const std::filesystem::path& path) {
   return parse_column_map(text, path.string());
 }
 
+namespace {
+
+// `e`, raised by the argument `argument` of the option `key` ("col", "unit", "clock_offset"), as
+// an error of that option: the library names the option by its key and each front end spells
+// it (--col on the command line, col= in Python); the argument is quoted in the problem.
+InputError override_error(std::string_view key, std::string_view argument, const InputError& e) {
+  std::string problem = e.problem();
+  if (problem.find(argument) == std::string::npos) {
+    problem = fmt::format("'{}': {}", argument, problem);
+  }
+  return InputError::for_option(std::string(key), problem, e.hint());
+}
+
+// Runs `apply`, turning its errors into errors of the option `key` (override_error).
+template <class Apply>
+void as_option(std::string_view key, std::string_view argument, Apply&& apply) {
+  try {
+    apply();
+  } catch (const InputError& e) {
+    throw override_error(key, argument, e);
+  }
+}
+
+void apply_column_override_at(ColumnMap& map, std::string_view argument);
+void apply_clock_offset_override_at(ColumnMap& map, std::string_view argument);
+
+}  // namespace
+
 void apply_column_override(ColumnMap& map, std::string_view argument) {
+  as_option("col", argument, [&] { apply_column_override_at(map, argument); });
+}
+
+namespace {
+
+void apply_column_override_at(ColumnMap& map, std::string_view argument) {
   auto [role, column] = split_assignment(argument, "--col", "COLUMN", "heading=HDG");
   const InputLocation where = command_line("--col " + std::string(argument));
   std::string file;
@@ -526,7 +560,15 @@ void apply_column_override(ColumnMap& map, std::string_view argument) {
   map.set_file(role, file, where);
 }
 
+}  // namespace
+
 void apply_clock_offset_override(ColumnMap& map, std::string_view argument) {
+  as_option("clock_offset", argument, [&] { apply_clock_offset_override_at(map, argument); });
+}
+
+namespace {
+
+void apply_clock_offset_override_at(ColumnMap& map, std::string_view argument) {
   const InputLocation where = command_line("--clock-offset " + std::string(argument));
   const auto eq = argument.rfind('=');
   const std::string_view file =
@@ -542,9 +584,13 @@ void apply_clock_offset_override(ColumnMap& map, std::string_view argument) {
   map.set_clock_offset(file, offset_s, where);
 }
 
+}  // namespace
+
 void apply_unit_override(ColumnMap& map, std::string_view argument) {
-  auto [role, unit] = split_assignment(argument, "--unit", "UNIT", "heading=deg");
-  map.set_unit({.role = role, .unit = unit}, command_line("--unit " + std::string(argument)));
+  as_option("unit", argument, [&] {
+    auto [role, unit] = split_assignment(argument, "--unit", "UNIT", "heading=deg");
+    map.set_unit({.role = role, .unit = unit}, command_line("--unit " + std::string(argument)));
+  });
 }
 
 void apply_time_overrides(ColumnMap& map, std::string_view format, std::string_view date,
@@ -552,7 +598,7 @@ void apply_time_overrides(ColumnMap& map, std::string_view format, std::string_v
   if (!format.empty()) {
     const std::optional<TimeFormat> f = find_time_format(format);
     if (!f) {
-      throw InputError::for_option("time-format", fmt::format("unknown time format '{}'", format),
+      throw InputError::for_option("time_format", fmt::format("unknown time format '{}'", format),
                                    fmt::format("the formats are: {}", time_format_names()));
     }
     map.time().format = *f;
@@ -567,7 +613,7 @@ void apply_time_overrides(ColumnMap& map, std::string_view format, std::string_v
   if (!order.empty()) {
     const std::optional<TimeOrder> o = find_time_order(order);
     if (!o) {
-      throw InputError::for_option("time-order", fmt::format("unknown time order '{}'", order),
+      throw InputError::for_option("time_order", fmt::format("unknown time order '{}'", order),
                                    "the policies are: error, drop-duplicates, drop-non-increasing");
     }
     map.time().order = *o;
@@ -589,8 +635,8 @@ void check_each_role_once(const std::vector<std::string>& arguments, std::string
     }
     const auto [it, fresh] = seen.emplace(role, argument);
     if (!fresh) {
-      throw InputError(
-          command_line(fmt::format("{} {}", option, argument)),
+      throw InputError::for_option(
+          option == "--col" ? "col" : "unit",
           fmt::format("role '{}' is given twice: '{}' and '{}'", it->first, it->second, argument),
           fmt::format("give each role once with {}", option));
     }

@@ -208,7 +208,7 @@ TEST_F(LogFiles, ErrorsNameTheFile) {
   s = source();
   s.clock_offsets.push_back("gps.csv=abc");
   EXPECT_THAT(input_error([&] { load(s); }).what(),
-              ContainsRegex("\\(--clock-offset gps.csv=abc\\): malformed argument"));
+              ContainsRegex("\\(clock_offset\\): malformed argument .gps.csv=abc."));
 }
 
 }  // namespace

@@ -51,12 +51,12 @@ TEST(ColumnMapFiles, CommandLineColumnAtFile) {
 TEST(ColumnMapFiles, CommandLineErrorsNameTheOption) {
   ColumnMap map;
   EXPECT_THAT(input_error_message([&] { apply_column_override(map, "heading=HDG@"); }),
-              ContainsRegex("\\(--col heading=HDG@\\): malformed argument 'heading=HDG@': "
+              ContainsRegex("\\(col\\): malformed argument 'heading=HDG@': "
                             "expected ROLE=COLUMN@FILE"));
   EXPECT_THAT(input_error_message([&] { apply_column_override(map, "heading=@nav.csv"); }),
               ContainsRegex("expected ROLE=COLUMN@FILE"));
   EXPECT_THAT(input_error_message([&] { apply_clock_offset_override(map, "nav.csv"); }),
-              ContainsRegex("\\(--clock-offset nav.csv\\): malformed argument 'nav.csv': "
+              ContainsRegex("\\(clock_offset\\): malformed argument 'nav.csv': "
                             "expected FILE=SECONDS"));
   EXPECT_THAT(input_error_message([&] { apply_clock_offset_override(map, "nav.csv=0.2s"); }),
               ContainsRegex("malformed argument 'nav.csv=0.2s'"));

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <functional>
+#include <string>
 
 #include "../source_dir.hpp"
 #include "io_test_util.hpp"
@@ -141,15 +143,15 @@ TEST(ColumnMap, AFileOfMoreThan16MiBIsRefused) {
 TEST(ColumnMap, ErrorsOnTheCommandLineNameTheOption) {
   ColumnMap map;
   EXPECT_THAT(input_error_message([&] { apply_column_override(map, "heading"); }),
-              ContainsRegex("\\(--col\\): malformed argument 'heading': expected ROLE=COLUMN"));
+              ContainsRegex("\\(col\\): malformed argument 'heading': expected ROLE=COLUMN"));
   EXPECT_THAT(input_error_message([&] { apply_column_override(map, "=HDG"); }),
               ContainsRegex("malformed argument '=HDG'"));
   EXPECT_THAT(input_error_message([&] { apply_unit_override(map, "heading="); }),
-              ContainsRegex("\\(--unit\\): malformed argument 'heading=': expected ROLE=UNIT"));
+              ContainsRegex("\\(unit\\): malformed argument 'heading=': expected ROLE=UNIT"));
   EXPECT_THAT(input_error_message([&] { apply_column_override(map, "yaw=HDG"); }),
-              ContainsRegex("\\(--col yaw=HDG\\): unknown role 'yaw'"));
+              ContainsRegex("\\(col\\): 'yaw=HDG': unknown role 'yaw'"));
   EXPECT_THAT(input_error_message([&] { apply_unit_override(map, "heading=m/s"); }),
-              ContainsRegex("\\(--unit heading=m/s\\): unit 'm/s' measures speed, but role "
+              ContainsRegex("\\(unit\\): 'heading=m/s': unit 'm/s' measures speed, but role "
                             "'heading' is angle"));
   EXPECT_THAT(input_error_message([&] { apply_unit_override(map, "thrust.port=kNN"); }),
               ContainsRegex("unknown unit 'kNN' for role 'thrust.port'; accepted spellings for "
@@ -163,7 +165,7 @@ TEST(ColumnMap, ARoleGivenTwiceOnTheCommandLineIsAnError) {
   EXPECT_THAT(input_error_message([&] {
                 apply_overrides(map, {"input=A", " input = B"}, {});
               }),
-              ContainsRegex("\\(--col  input = B\\): role 'input' is given twice: 'input=A' "
+              ContainsRegex("\\(col\\): role 'input' is given twice: 'input=A' "
                             "and ' input = B'; give each role once with --col"));
   EXPECT_THAT(input_error_message([&] {
                 apply_overrides(map, {}, {"u=kn", "u=m/s"});
@@ -225,6 +227,31 @@ TEST(ColumnMap, TheDocumentedExampleParses) {
   EXPECT_EQ(map.find("rudder.port")->scale, -1.0);
   EXPECT_EQ(map.find("command.port")->column, "PS cmd [%]");
   EXPECT_NO_THROW(map.validate());
+}
+
+}  // namespace
+}  // namespace dynpos::io
+
+namespace dynpos::io {
+namespace {
+
+// The library names a bad override by its option key; each front end spells it (--col, col=).
+TEST(ColumnMap, OverrideErrorsAreOptionErrorsOfTheirKey) {
+  ColumnMap map;
+  const auto option_of = [](const std::function<void()>& f) {
+    try {
+      f();
+    } catch (const core::InputError& e) {
+      return e.option();
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(option_of([&] { apply_column_override(map, "yaw=HDG"); }), "col");
+  EXPECT_EQ(option_of([&] { apply_unit_override(map, "heading=furlong"); }), "unit");
+  EXPECT_EQ(option_of([&] { apply_clock_offset_override(map, "nav.csv"); }), "clock_offset");
+  EXPECT_EQ(option_of([&] { apply_overrides(map, {"u=A", "u=B"}, {}); }), "col");
+  EXPECT_EQ(option_of([&] { apply_time_overrides(map, "xx", "", ""); }), "time_format");
+  EXPECT_EQ(option_of([&] { apply_time_overrides(map, "", "", "xx"); }), "time_order");
 }
 
 }  // namespace
