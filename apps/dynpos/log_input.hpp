@@ -23,9 +23,4 @@ void add_log_options(CLI::App& sub, analysis::LogSource& source, const std::stri
 
 using analysis::thruster_names;
 
-/// Throws InputError if the parent folder of a --json FILE does not exist (not for "-").
-inline void check_json_target(const std::string& json) {
-  analysis::check_output_file("json", json);
-}
-
 }  // namespace dynpos::cli
