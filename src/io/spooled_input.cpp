@@ -127,14 +127,27 @@ struct CopyEnds {
 // longer than kMaxSpoolLineBytes, or up to kMaxSpoolLineBytes of binary data (TextProbe). Only
 // the first and the last line end of each buffer are looked for: a log costs a few bytes of
 // search a MiB.
+//
+// The verdict depends on the bytes alone, never on how a pipe splits them into reads: the probe
+// sees exactly the first kMaxSpoolLineBytes (a read never crosses that mark), and binary data is
+// told only once the line open at the mark has ended; if it runs past its own limit instead, the
+// error is the endless line (`/dev/zero` is line 1 without an end, not "binary").
 Copied copy_lines(CopyEnds ends) {
   const auto is_end = [](char c) { return c == '\n' || c == '\r'; };
   std::vector<char> buffer(std::size_t{1} << 20);
   TextProbe probe;
   Copied c;
+  bool binary_start = false;  // the first kMaxSpoolLineBytes held no sign of text
   for (;;) {
-    const ssize_t got = ::read(ends.in, buffer.data(), buffer.size());
-    if (got == 0) return c;
+    std::size_t want = buffer.size();
+    if (c.bytes < kMaxSpoolLineBytes) {
+      want = static_cast<std::size_t>(std::min<std::uint64_t>(want, kMaxSpoolLineBytes - c.bytes));
+    }
+    const ssize_t got = ::read(ends.in, buffer.data(), want);
+    if (got == 0) {
+      c.binary = binary_start && c.bytes > kMaxSpoolLineBytes;
+      return c;
+    }
     if (got < 0) {
       if (errno == EINTR) continue;
       c.error = errno;
@@ -148,19 +161,24 @@ Copied copy_lines(CopyEnds ends) {
       c.endless_line = true;
       return c;
     }
+    if (binary_start && (first != end || c.line_start == c.bytes)) {
+      c.binary = true;  // the line open at the mark has ended, or none was open
+      return c;
+    }
     if (first != end) {
       const char* last = end - 1;
       while (!is_end(*last)) --last;
       c.line_start = c.bytes + static_cast<std::uint64_t>(last + 1 - begin);
     }
-    probe.feed(begin, static_cast<std::size_t>(got));
-    if (!probe.text() && c.bytes + static_cast<std::uint64_t>(got) > kMaxSpoolLineBytes) {
-      c.binary = true;
-      return c;
-    }
-    if (!write_all(ends.out, begin, static_cast<std::size_t>(got))) {
-      c.error = errno;
-      return c;
+    if (!binary_start) {
+      probe.feed(begin, static_cast<std::size_t>(got));
+      if (!probe.text() && c.bytes + static_cast<std::uint64_t>(got) == kMaxSpoolLineBytes) {
+        binary_start = true;  // nothing after the mark is copied: the copy will be removed
+      }
+      if (!write_all(ends.out, begin, static_cast<std::size_t>(got))) {
+        c.error = errno;
+        return c;
+      }
     }
     c.bytes += static_cast<std::uint64_t>(got);
   }

@@ -3,9 +3,12 @@
 #include <fcntl.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <poll.h>
+#include <sys/ioctl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <csignal>
 #include <cstring>
 #include <fstream>
@@ -62,17 +65,24 @@ TEST(SpooledInput, AFifoIsCopiedWholeAndTheCopyRemoved) {
 }
 
 // Writes `head`, then `text` `times` times, to a FIFO on a thread; stops when the reader
-// closes it.
+// closes it. Paced, it waits until the reader has taken each write before the next, so that
+// each read gets one write (of at most the pipe's 64 KiB): the test sets where reads end.
 class FifoWriter {
  public:
-  FifoWriter(const std::filesystem::path& fifo, std::string head, std::string text, int times)
-      : thread_([fifo, head = std::move(head), text = std::move(text), times] {
+  enum class Pace { kFree, kOneWriteARead };
+  FifoWriter(const std::filesystem::path& fifo, std::string head, std::string text, int times,
+             Pace pace = Pace::kFree)
+      : thread_([fifo, head = std::move(head), text = std::move(text), times, pace] {
           const int fd = ::open(fifo.c_str(), O_WRONLY | O_CLOEXEC);
           if (fd < 0) return;
-          bool ok = ::write(fd, head.data(), head.size()) == static_cast<ssize_t>(head.size());
-          for (int i = 0; ok && i < times; ++i) {
-            if (::write(fd, text.data(), text.size()) != static_cast<ssize_t>(text.size())) break;
-          }
+          const auto put = [&](const std::string& bytes) {
+            if (::write(fd, bytes.data(), bytes.size()) != static_cast<ssize_t>(bytes.size())) {
+              return false;
+            }
+            return pace == Pace::kFree || taken(fd);
+          };
+          bool ok = put(head);
+          for (int i = 0; ok && i < times; ++i) ok = put(text);
           ::close(fd);
         }) {}
   ~FifoWriter() { thread_.join(); }
@@ -80,6 +90,17 @@ class FifoWriter {
   FifoWriter& operator=(const FifoWriter&) = delete;
 
  private:
+  // Waits until the pipe is empty; false when the reader has closed it.
+  static bool taken(int fd) {
+    for (;;) {
+      int unread = 0;
+      if (::ioctl(fd, FIONREAD, &unread) != 0) return false;
+      if (unread == 0) return true;
+      pollfd p{.fd = fd, .events = 0, .revents = 0};
+      if (::poll(&p, 1, 0) < 0 || (p.revents & POLLERR) != 0) return false;
+      std::this_thread::sleep_for(std::chrono::microseconds(20));
+    }
+  }
   std::thread thread_;
 };
 
@@ -107,6 +128,41 @@ TEST(SpooledInput, ACopyStopsAtALineWithoutEnd) {
     const SpooledInput spooled(fifo, dir.path());
     EXPECT_EQ(spooled.bytes(), 40 * block.size() + 3 + std::strlen(end));
   }
+}
+
+// The verdict depends on the bytes, not on how a pipe splits them into reads: the
+// line-without-end error (line 3 here) must not turn into the binary-data error when a read
+// ends just past the 16 MiB mark (11 + 256 × 64 KiB = the mark + 11 bytes, where line 3 is
+// exactly 16 MiB long and not yet too long). Lines of control bytes up to the mark, then a line
+// that ends after it, are binary data, however split.
+TEST(SpooledInput, TheVerdictDoesNotDependOnHowTheBytesAreSplit) {
+  std::signal(SIGPIPE, SIG_IGN);
+  TempDir dir;
+  const auto fifo = dir / "fifo";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  constexpr int kMiB = 1 << 20;
+  using Pace = FifoWriter::Pace;
+  std::string binary_head;
+  for (int i = 0; i < 8 * kMiB - 1; ++i) binary_head += "\x01\n";
+  binary_head += std::string(10, '\x02') + "\n";  // from 2 bytes before the mark to 9 after it
+  for (const int piece : {4096, 4093, 65536}) {
+    for (const Pace pace : {Pace::kFree, Pace::kOneWriteARead}) {
+      SCOPED_TRACE(::testing::Message()
+                   << piece << " bytes a write, paced " << (pace == Pace::kOneWriteARead));
+      {
+        const FifoWriter writer(fifo, "time,x\n0,1\n", std::string(piece, '\0'), 17 * kMiB / piece,
+                                pace);
+        EXPECT_THAT(input_error_message([&] { SpooledInput(fifo, dir.path()); }),
+                    HasSubstr("fifo:3: no line end within 16 MiB: not a text log"));
+      }
+      const FifoWriter writer(fifo, binary_head, std::string(piece, '\n'), kMiB / piece);
+      EXPECT_THAT(input_error_message([&] { SpooledInput(fifo, dir.path()); }),
+                  HasSubstr("fifo: not a text log: its first 16 MiB hold neither"));
+    }
+  }
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()),
+                          std::filesystem::directory_iterator()),
+            1);  // the FIFO alone: no copy left
 }
 
 // Endless binary data with line ends (/dev/urandom) is not a log either: the first 16 MiB of a
