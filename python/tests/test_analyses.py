@@ -238,6 +238,17 @@ def test_capability_loads(tmp_path):
         dynpos.capability_loads(loads, vessel=vessel, failure="stern")
 
 
+def test_capability_of_a_layout(tmp_path):
+    data = os.path.join(os.path.dirname(__file__), "..", "..", "tests", "cli", "data")
+    vessel = os.path.join(data, "azimuth_layout.toml")
+    r = dynpos.capability(vessel=vessel, direction_step=90, json=tmp_path / "py.json")
+    same_as_cli(tmp_path, r, tmp_path / "py.json", "capability", "--vessel", vessel,
+                "--direction-step", "90")
+    assert r.layout == "[[thruster]]" and [p.failure for p in r.points][:2] == ["az_port", "az_stb"]
+    with pytest.raises(dynpos.InputError, match=r"\(failure=\): no unit or group 'port'"):
+        dynpos.capability(vessel=vessel, failure="port")
+
+
 def test_montecarlo(tmp_path):
     r = dynpos.montecarlo("turning-circle", (1, 2), jobs=2, json=tmp_path / "py.json")
     same_as_cli(tmp_path, r, tmp_path / "py.json", "montecarlo", "turning-circle", "--seeds",

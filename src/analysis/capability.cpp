@@ -10,6 +10,7 @@
 #include "dynpos/capability/thrust_region.hpp"
 #include "dynpos/core/error.hpp"
 #include "dynpos/scenario/vessel_config.hpp"
+#include "dynpos/scenario/vessel_plant.hpp"
 
 namespace dynpos::analysis {
 namespace {
@@ -75,18 +76,8 @@ void CapabilityRequest::validate() const {
     throw option_error("level", fmt::format("unknown level {}", level),
                        "1 (DNV table, rated thrust), 2 (thrust losses, site) or 3 (time domain)");
   }
-  if (failure != "none" && failure != "worst") {
-    capability::with_failures({}, {failure});  // throws for an unknown actuator
-  }
   if (!worst_of.empty() && failure != "worst") {
     throw option_error("worst_of", "the failures of the worst case need failure \"worst\"");
-  }
-  const std::vector<std::string> singles = capability::single_failures();
-  for (const std::string& f : worst_of) {
-    if (std::find(singles.begin(), singles.end(), f) == singles.end()) {
-      throw option_error("worst_of", "unknown actuator '" + f + "'",
-                         fmt::format("one of {}", fmt::join(singles, ", ")));
-    }
   }
   if (level != 2 && (!site.empty() || hs || tp || current)) {
     throw option_error("site/hs/tp/current", "a site environment is for level 2",
@@ -117,18 +108,26 @@ CapabilityReport run_capability(const CapabilityRequest& q) {
   q.validate();
   const std::filesystem::path file = vessel_file_or_default(q.vessel);
   const scenario::VesselConfig vessel = scenario::load_vessel_config(file);
+  // The cases are the vessel's: the model's actuators, or a layout's units and groups.
+  if (q.failure != "none" && q.failure != "worst") {
+    capability::check_failure(vessel, q.failure, "failure");
+  }
+  for (const std::string& f : q.worst_of) capability::check_failure(vessel, f, "worst_of");
+  if (q.level == 3) scenario::check_simulated(vessel, "level");
   const capability::EnvironmentTable table = environment_of(q);
   CapabilityReport r;
   r.level = q.level;
   r.vessel = vessel.name;
   r.vessel_source = q.vessel.empty() ? "" : q.vessel.string();
+  r.layout = vessel.thrusters.empty() ? "model" : "[[thruster]]";
   r.environment = table.name;
   r.failure = q.failure;
   r.dynamic_allowance = q.level == 3 ? 1.0 : capability::kDynamicAllowance;
   r.intact = {"none", rose(q, vessel, table, {})};
   if (q.failure == "worst") {
     std::vector<std::vector<capability::CapabilityPoint>> all;
-    for (const std::string& f : q.worst_of.empty() ? capability::single_failures() : q.worst_of) {
+    for (const std::string& f :
+         q.worst_of.empty() ? capability::single_failures(vessel) : q.worst_of) {
       r.failures.push_back({f, rose(q, vessel, table, {f})});
       all.push_back(r.failures.back().points);
     }

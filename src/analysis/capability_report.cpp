@@ -56,6 +56,7 @@ nlohmann::json to_json(const CapabilityReport& report) {
   j["level"] = report.level;
   j["vessel"] = report.vessel;
   if (!report.vessel_source.empty()) j["vessel_file"] = report.vessel_source;
+  j["layout"] = report.layout;
   j["environment"] = report.environment;
   j["failure"] = report.failure;
   j["dynamic_allowance"] = report.dynamic_allowance;

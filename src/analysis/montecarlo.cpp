@@ -24,6 +24,7 @@
 #include "dynpos/report/table.hpp"
 #include "dynpos/scenario/campaign.hpp"
 #include "dynpos/scenario/runner.hpp"
+#include "dynpos/scenario/vessel_plant.hpp"
 
 namespace dynpos::analysis {
 namespace {
@@ -355,6 +356,7 @@ MonteCarloReport run_montecarlo(const MonteCarloRequest& request) {
   spec.validate();
   const std::filesystem::path vessel_file = vessel_file_or_default(request.vessel_file);
   const scenario::VesselConfig vessel = scenario::load_vessel_config(vessel_file);
+  scenario::check_simulated(vessel);
   MonteCarloReport report;
   report.scenario = spec.name;
   report.run = {fnv1a64_of_file(scenario_file), fnv1a64_of_file(vessel_file), spec.duration_s,

@@ -14,6 +14,7 @@
 #include "dynpos/core/resources.hpp"
 #include "dynpos/scenario/runner.hpp"
 #include "dynpos/scenario/vessel_config.hpp"
+#include "dynpos/scenario/vessel_plant.hpp"
 
 namespace dynpos::analysis {
 namespace {
@@ -57,8 +58,9 @@ std::vector<scenario::RunSummary> simulate_campaign(const SimulateRequest& reque
                                                     const std::filesystem::path& vessel_file) {
   std::vector<scenario::ScenarioSpec> specs = scenario::load_campaign(scenario_dir);
   for (scenario::ScenarioSpec& spec : specs) apply_overrides(request, spec);
-  check_simulation_resources(specs, core::job_count(request.jobs, specs.size()), request.out_dir);
   const scenario::VesselConfig vessel = scenario::load_vessel_config(vessel_file);
+  scenario::check_simulated(vessel);
+  check_simulation_resources(specs, core::job_count(request.jobs, specs.size()), request.out_dir);
   std::vector<scenario::RunSummary> runs =
       scenario::run_campaign(specs, vessel, request.seed, request.out_dir, request.jobs);
   write_campaign_report(runs, vessel, request.seed, request.out_dir, {});
@@ -70,8 +72,9 @@ SimulatedRun simulate_one(const SimulateRequest& request, const std::filesystem:
   scenario::ScenarioSpec spec =
       scenario::load_scenario(scenario::resolve_scenario(request.scenario, scenario_dir));
   apply_overrides(request, spec);
-  check_simulation_resources({spec}, 1, request.out_dir);
   const scenario::VesselConfig vessel = scenario::load_vessel_config(vessel_file);
+  scenario::check_simulated(vessel);
+  check_simulation_resources({spec}, 1, request.out_dir);
   std::size_t rows = 0;
   const scenario::ScenarioRun run = scenario::run_scenario_into(
       spec, vessel, request.seed, request.out_dir,

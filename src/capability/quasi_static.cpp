@@ -1,10 +1,14 @@
 #include "dynpos/capability/quasi_static.hpp"
 
-#include <fmt/core.h>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numbers>
 
+#include "dynpos/capability/feasibility.hpp"
 #include "dynpos/capability/thrust_region.hpp"
 #include "dynpos/core/error.hpp"
 #include "dynpos/model/environment.hpp"
@@ -25,46 +29,110 @@ model::ThrustAllocator allocator_of(const scenario::VesselConfig& v,
       model::ThrustConfiguration(v.layout), with_failures(v.allocation, failed));
 }
 
-// One evaluation: holds the environment at wind w, and which actuators are at a limit.
-struct Check {
-  bool holds = false;
-  std::array<bool, 5> at_limit{};
+// Whether the thrusters hold the environment of one wind from one direction, and which
+// actuators are at a limit when they do: the model's own units (thrust_region.hpp) or a
+// [[thruster]] layout (model/layout_allocator.hpp).
+class WindCheck {
+ public:
+  virtual ~WindCheck() = default;
+  virtual bool holds(double wind_mps) const = 0;
+  /// The actuators at a limit at a wind held, joined by '+'; "none" if none is.
+  virtual std::string limiting(double wind_mps) const = 0;
 };
 
-class Evaluator {
+std::string joined_or_none(const std::vector<std::string>& names) {
+  return names.empty() ? "none" : fmt::format("{}", fmt::join(names, "+"));
+}
+
+// The mean load the thrusters must give at wind w: the reserve times the environment's, reversed.
+Eigen::Vector3d demand_b(const scenario::VesselConfig& vessel, const QuasiStaticOptions& options,
+                         const Environment& e, double from_rel_rad) {
+  return -options.dynamic_allowance * mean_environment_load_b(vessel, e, from_rel_rad);
+}
+
+class ModelCheck final : public WindCheck {
  public:
-  Evaluator(const scenario::VesselConfig& vessel, const std::vector<std::string>& failed,
-            double from_rel_rad, const QuasiStaticOptions& options)
+  ModelCheck(const scenario::VesselConfig& vessel, const std::vector<std::string>& failed,
+             double from_rel_rad, const QuasiStaticOptions& options)
       : vessel_(vessel),
         allocator_(allocator_of(vessel, failed)),
         from_(from_rel_rad),
         options_(options) {}
-
-  Check at(double wind_mps) const {
-    const Environment e = options_.environment.at(wind_mps);
-    const double inflow = options_.level >= 2 ? current_inflow_mps(e.current_mps, from_) : 0.0;
-    const ThrustLimits limits = thrust_limits(allocator_, inflow, options_.level >= 2);
-    const Eigen::Vector3d tau =
-        -options_.dynamic_allowance * mean_environment_load_b(vessel_, e, from_);
-    const auto a = attain(limits, tau);
-    return a ? Check{true, a->at_limit} : Check{};
+  bool holds(double wind_mps) const override { return attained(wind_mps).has_value(); }
+  std::string limiting(double wind_mps) const override {
+    const auto a = attained(wind_mps);
+    std::vector<std::string> names;
+    for (std::size_t k = 0; a && k < a->at_limit.size(); ++k) {
+      if (a->at_limit[k]) names.emplace_back(actuator_names()[k]);
+    }
+    return joined_or_none(names);
   }
 
  private:
+  std::optional<Attainment> attained(double wind_mps) const {
+    const Environment e = options_.environment.at(wind_mps);
+    const double inflow = options_.level >= 2 ? current_inflow_mps(e.current_mps, from_) : 0.0;
+    return attain(thrust_limits(allocator_, inflow, options_.level >= 2),
+                  demand_b(vessel_, options_, e, from_));
+  }
   const scenario::VesselConfig& vessel_;
   model::ThrustAllocator allocator_;
   double from_;
   const QuasiStaticOptions& options_;
 };
 
-std::string limiting_names(const std::array<bool, 5>& at_limit) {
-  std::string out;
-  for (std::size_t k = 0; k < at_limit.size(); ++k) {
-    if (!at_limit[k]) continue;
-    if (!out.empty()) out += '+';
-    out += actuator_names()[k];
+// Every failure of `failed` at once: the product of their capacities.
+std::vector<double> capacity_of(const std::vector<model::ThrusterUnit>& units,
+                                const std::vector<std::string>& failed) {
+  std::vector<double> capacity(units.size(), 1.0);
+  for (const std::string& name : failed) {
+    const FailureCase c = failure_case(units, name);
+    for (std::size_t k = 0; k < units.size(); ++k) capacity[k] *= c.capacity[k];
   }
-  return out.empty() ? "none" : out;
+  return capacity;
+}
+
+// A [[thruster]] layout holds its units' ratings at every level: the units have no propeller
+// model for the current's inflow (docs/vessel-file.md).
+class LayoutCheck final : public WindCheck {
+ public:
+  LayoutCheck(const scenario::VesselConfig& vessel, const std::vector<std::string>& failed,
+              double from_rel_rad, const QuasiStaticOptions& options)
+      : vessel_(vessel),
+        allocator_(vessel.thrusters),
+        capacity_(capacity_of(vessel.thrusters, failed)),
+        from_(from_rel_rad),
+        options_(options) {}
+  bool holds(double wind_mps) const override {
+    return allocator_.attainable(demand(wind_mps), capacity_);
+  }
+  std::string limiting(double wind_mps) const override {
+    const model::LayoutAllocation a = allocator_.allocate(demand(wind_mps), capacity_);
+    std::vector<std::string> names;
+    for (std::size_t k = 0; k < a.units.size(); ++k) {
+      if (a.units[k].at_limit) names.push_back(vessel_.thrusters[k].name);
+    }
+    return joined_or_none(names);
+  }
+
+ private:
+  Eigen::Vector3d demand(double wind_mps) const {
+    return demand_b(vessel_, options_, options_.environment.at(wind_mps), from_);
+  }
+  const scenario::VesselConfig& vessel_;
+  model::LayoutAllocator allocator_;
+  std::vector<double> capacity_;
+  double from_;
+  const QuasiStaticOptions& options_;
+};
+
+std::unique_ptr<WindCheck> wind_check(const scenario::VesselConfig& vessel,
+                                      const std::vector<std::string>& failed, double from_rel_rad,
+                                      const QuasiStaticOptions& options) {
+  if (vessel.thrusters.empty()) {
+    return std::make_unique<ModelCheck>(vessel, failed, from_rel_rad, options);
+  }
+  return std::make_unique<LayoutCheck>(vessel, failed, from_rel_rad, options);
 }
 
 }  // namespace
@@ -90,7 +158,7 @@ double current_inflow_mps(double current_mps, double from_rel_rad) {
 CapabilityPoint quasi_static_point(const scenario::VesselConfig& vessel,
                                    const std::vector<std::string>& failed, double from_rel_rad,
                                    const QuasiStaticOptions& options) {
-  const Evaluator evaluate(vessel, failed, from_rel_rad, options);
+  const std::unique_ptr<WindCheck> check = wind_check(vessel, failed, from_rel_rad, options);
   const auto& rows = options.environment.rows;
   CapabilityPoint p;
   p.direction_deg = from_rel_rad * 180.0 / kPi;
@@ -98,17 +166,11 @@ CapabilityPoint quasi_static_point(const scenario::VesselConfig& vessel,
   // Step up the rows (DNV: every number below must hold too), then bisect between the last
   // row held and the first that is not.
   std::size_t held = 0;
-  Check last = evaluate.at(rows[0].wind_mps);
-  if (!last.holds) {  // even the first row (e.g. a site's fixed current) is too much
+  if (!check->holds(rows[0].wind_mps)) {  // even the first row (e.g. a site's current) is too much
     p.limiting = kNoThrustLeft;
     return p;
   }
-  while (held + 1 < rows.size()) {
-    const Check next = evaluate.at(rows[held + 1].wind_mps);
-    if (!next.holds) break;
-    last = next;
-    ++held;
-  }
+  while (held + 1 < rows.size() && check->holds(rows[held + 1].wind_mps)) ++held;
   p.dp_number = static_cast<int>(held);
   if (held + 1 == rows.size()) {
     p.max_wind_mps = rows.back().wind_mps;
@@ -120,12 +182,10 @@ CapabilityPoint quasi_static_point(const scenario::VesselConfig& vessel,
   double hi = rows[held + 1].wind_mps;
   for (int k = 0; bisect_further(lo, hi, options.wind_tolerance_mps, k); ++k) {
     const double mid = 0.5 * (lo + hi);
-    const Check c = evaluate.at(mid);
-    (c.holds ? lo : hi) = mid;
-    if (c.holds) last = c;
+    (check->holds(mid) ? lo : hi) = mid;
   }
   p.max_wind_mps = lo;
-  p.limiting = lo > 0.0 ? limiting_names(last.at_limit) : kNoThrustLeft;
+  p.limiting = lo > 0.0 ? check->limiting(lo) : kNoThrustLeft;
   return p;
 }
 
@@ -183,9 +243,26 @@ std::vector<CapabilityPoint> quasi_static_rose(const scenario::VesselConfig& ves
   return rose;
 }
 
-std::vector<std::string> single_failures() {
-  const auto& names = actuator_names();
-  return {names.begin(), names.end()};
+std::vector<std::string> single_failures(const scenario::VesselConfig& vessel) {
+  if (vessel.thrusters.empty()) {
+    const auto& names = actuator_names();
+    return {names.begin(), names.end()};
+  }
+  std::vector<std::string> out;
+  for (const FailureCase& c : failure_cases(vessel.thrusters)) {
+    if (c.name != "none") out.push_back(c.name);
+  }
+  return out;
+}
+
+void check_failure(const scenario::VesselConfig& vessel, const std::string& name, const char* key) {
+  const std::vector<std::string> names = single_failures(vessel);
+  if (std::find(names.begin(), names.end(), name) != names.end()) return;
+  const std::string what =
+      vessel.thrusters.empty()
+          ? fmt::format("unknown actuator '{}'", name)
+          : fmt::format("no unit or group '{}' in the layout of {}", name, vessel.source);
+  throw core::InputError::for_option(key, what, fmt::format("one of {}", fmt::join(names, ", ")));
 }
 
 std::vector<CapabilityPoint> worst_case(const std::vector<std::vector<CapabilityPoint>>& roses) {

@@ -487,4 +487,38 @@ LayoutAllocation LayoutAllocator::allocate(const Eigen::Vector3d& tau_d_b,
   return best;
 }
 
+bool LayoutAllocator::attainable(const Eigen::Vector3d& tau_d_b,
+                                 const std::vector<double>& capacity) const {
+  const double size = std::max({std::abs(tau_d_b(0)) / options_.force_scale,
+                                std::abs(tau_d_b(1)) / options_.force_scale,
+                                std::abs(tau_d_b(2)) / options_.moment_scale});
+  if (!std::isfinite(size) || size > kLargestDemand) return allocate(tau_d_b, capacity).met;
+  const bool capacity_ok =
+      (capacity.empty() || capacity.size() == units_.size()) &&
+      std::all_of(capacity.begin(), capacity.end(), [](double c) { return c >= 0.0 && c <= 1.0; });
+  if (!capacity_ok) return false;
+  // The relaxation's regions hold the true ones: what it misses, they miss too.
+  const LayoutAllocation relaxed =
+      solve(setup(tau_d_b, capacity, std::vector<int>(units_.size(), kRelaxed)), tau_d_b);
+  if (!relaxed.met) return false;
+  bool feasible = true;
+  for (std::size_t k = 0; k < units_.size() && feasible; ++k) {
+    feasible = in_region(units_[k], relaxed.units[k]);
+  }
+  if (feasible) return true;
+  const std::vector<int> guess = nearest_regions(relaxed);
+  if (solve(setup(tau_d_b, capacity, guess), tau_d_b).met) return true;
+  std::vector<int> regions(units_.size(), 0);  // then every combination, as allocate() does
+  for (int tried = 0; tried < options_.max_region_combinations; ++tried) {
+    if (regions != guess && solve(setup(tau_d_b, capacity, regions), tau_d_b).met) return true;
+    std::size_t k = 0;
+    for (; k < units_.size(); ++k) {
+      if (++regions[k] < region_count(k)) break;
+      regions[k] = 0;
+    }
+    if (k == units_.size()) break;
+  }
+  return false;
+}
+
 }  // namespace dynpos::model

@@ -1,15 +1,32 @@
 #include "dynpos/scenario/vessel_plant.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 
+#include "dynpos/core/error.hpp"
+
 namespace dynpos::scenario {
+
+void check_simulated(const VesselConfig& vessel, const char* key) {
+  if (vessel.thrusters.empty()) return;
+  throw core::InputError::for_option(
+      key,
+      fmt::format("{} has a [[thruster]] layout of {} units, and the simulator runs only the "
+                  "model's own propellers, rudders and tunnel in this version",
+                  vessel.source.empty() ? vessel.name : vessel.source, vessel.thrusters.size()),
+      "a layout is for capability levels 1 and 2 and capability --loads; simulate a vessel "
+      "file without [[thruster]] tables");
+}
 
 VesselPlant::VesselPlant(const VesselConfig& config)
     : hull_(config.hull),
       propeller_(config.propeller),
       rudder_(config.rudder),
       tunnel_(config.tunnel),
-      layout_(config.layout) {}
+      layout_(config.layout) {
+  check_simulated(config);
+}
 
 ActuatorState VesselPlant::actuators(const sim::ConstVectorRef& x,
                                      const Eigen::Vector2d& current_n) const {

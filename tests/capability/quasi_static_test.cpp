@@ -12,6 +12,8 @@
 #include <string>
 
 #include "dynpos/capability/thrust_region.hpp"
+#include "dynpos/capability/vessel_units.hpp"
+#include "dynpos/core/error.hpp"
 #include "dynpos/model/thrust_allocation.hpp"
 #include "gunnerus_allocator.hpp"
 
@@ -55,7 +57,7 @@ TEST(QuasiStatic, NoFailureIsMoreCapableThanTheIntactVessel) {
   const scenario::VesselConfig v;
   const auto intact = quasi_static_rose(v, {}, fast_options());
   std::vector<std::vector<CapabilityPoint>> cases = {intact};
-  for (const std::string& f : single_failures()) {
+  for (const std::string& f : single_failures(v)) {
     const auto rose = quasi_static_rose(v, {f}, fast_options());
     for (std::size_t i = 0; i < rose.size(); ++i) {
       EXPECT_LE(rose[i].max_wind_mps, intact[i].max_wind_mps + 1e-9) << f;
@@ -153,6 +155,91 @@ TEST(QuasiStatic, TheMeanLoadOpposesTheWeather) {
   EXPECT_LT(mean_environment_load_b(v, e, 0.0).x(), 0.0);         // from ahead: pushed astern
   EXPECT_LT(mean_environment_load_b(v, e, 90 * kDeg).y(), 0.0);   // from starboard: to port
   EXPECT_GT(mean_environment_load_b(v, e, 270 * kDeg).y(), 0.0);  // from port: to starboard
+}
+
+// The virtual Gunnerus's hull and weather with a layout like its 2015 retrofit: two azimuths
+// aft, each barred from pushing into the other's propeller, and the bow tunnel (as strong both
+// ways, so the layout is port/starboard symmetric); a switchboard per side.
+scenario::VesselConfig azimuth_vessel() {
+  using model::UnitType;
+  scenario::VesselConfig v = symmetric_vessel();
+  v.thrusters = {
+      model::thruster_unit("az_port", UnitType::kAzimuth, -13.0, -2.7, 60e3, 0.0, {{75, 105}}),
+      model::thruster_unit("az_stb", UnitType::kAzimuth, -13.0, 2.7, 60e3, 0.0, {{255, 285}}),
+      model::thruster_unit("tunnel", UnitType::kTunnel, 12.5, 0.0, 25e3, 25e3)};
+  v.thrusters[0].group = "port";
+  v.thrusters[1].group = "stb";
+  return v;
+}
+
+TEST(QuasiStaticLayout, ASymmetricLayoutHasASymmetricRose) {
+  const scenario::VesselConfig v = azimuth_vessel();
+  for (int level : {1, 2}) {
+    const auto rose = quasi_static_rose(v, {}, fast_options(level));
+    for (std::size_t i = 1; i < rose.size(); ++i) {
+      const auto& mirror = rose[rose.size() - i];
+      EXPECT_EQ(rose[i].dp_number, mirror.dp_number) << rose[i].direction_deg;
+      EXPECT_NEAR(rose[i].max_wind_mps, mirror.max_wind_mps, 0.011) << rose[i].direction_deg;
+    }
+  }
+}
+
+// Every unit and group lost, and both sides' groups (a case of two failures): never more
+// capable than intact, and a unit lost never more than the group holding it.
+TEST(QuasiStaticLayout, NoFailureIsMoreCapableThanTheIntactLayout) {
+  const scenario::VesselConfig v = azimuth_vessel();
+  EXPECT_EQ(single_failures(v),
+            (std::vector<std::string>{"az_port", "az_stb", "tunnel", "group:port", "group:stb"}));
+  const auto intact = quasi_static_rose(v, {}, fast_options());
+  const auto port = quasi_static_rose(v, {"az_port"}, fast_options());
+  for (const std::string& f : single_failures(v)) {
+    const auto rose = quasi_static_rose(v, {f}, fast_options());
+    for (std::size_t i = 0; i < rose.size(); ++i) {
+      EXPECT_LE(rose[i].max_wind_mps, intact[i].max_wind_mps + 1e-9) << f;
+      EXPECT_LE(rose[i].dp_number, intact[i].dp_number) << f;
+      EXPECT_EQ(rose[i].failure, f);
+      if (f == "group:port") {
+        EXPECT_LE(rose[i].max_wind_mps, port[i].max_wind_mps + 1e-9);
+      }
+    }
+  }
+  const auto both = quasi_static_rose(v, {"group:port", "az_stb"}, fast_options());
+  for (const CapabilityPoint& p : both) EXPECT_EQ(p.limiting, "no thrust left for the weather");
+}
+
+// The model's own units written as a layout (vessel_units.hpp: the propellers with their
+// rudders' cones, the tunnel) give the model's rose: the layout's rudder cone is the model's
+// lift at the allocation's largest angle, a line through the origin where the model's exact
+// region bends, so the layout can hold less, never more; the load grows as the wind squared,
+// so 0.5 % of force (capability::feasibility's agreement) is 0.25 % of wind, and the
+// bisections' 0.01 m/s comes on top.
+TEST(QuasiStaticLayout, TheModelsUnitsAsALayoutGiveTheModelsRose) {
+  const scenario::VesselConfig model;
+  scenario::VesselConfig layout = model;
+  layout.thrusters = gunnerus_units(gunnerus_allocator());
+  const auto exact = quasi_static_rose(model, {}, fast_options());
+  const auto units = quasi_static_rose(layout, {}, fast_options());
+  for (std::size_t i = 0; i < exact.size(); ++i) {
+    SCOPED_TRACE(exact[i].direction_deg);
+    EXPECT_LE(units[i].max_wind_mps, exact[i].max_wind_mps + 0.011);
+    EXPECT_GE(units[i].max_wind_mps, exact[i].max_wind_mps * (1.0 - 0.0025) - 0.011);
+  }
+}
+
+TEST(QuasiStaticLayout, TheLimitingUnitsAreTheLayoutsAndUnknownCasesAreNamed) {
+  const scenario::VesselConfig v = azimuth_vessel();
+  const CapabilityPoint beam = quasi_static_point(v, {}, 90 * kDeg, fast_options());
+  ASSERT_FALSE(beam.beyond_table);
+  EXPECT_NE(beam.limiting.find("tunnel"), std::string::npos) << beam.limiting;
+  for (const char* name : {"az_port", "group:stb"})
+    EXPECT_NO_THROW(check_failure(v, name, "failure"));
+  try {
+    check_failure(v, "port", "worst_of");
+    ADD_FAILURE() << "no error";
+  } catch (const core::InputError& e) {
+    EXPECT_EQ(e.option(), "worst_of");
+    EXPECT_NE(std::string(e.what()).find("group:port"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -21,3 +21,23 @@ dynpos_cli_test(capability_loads_not_with_level
 dynpos_cli_test(capability_loads_bad_cell
   COMMAND bash ${EXPECT_EXIT} 2 "bad_loads\\.csv:3:1 \\(direction_deg\\): 'north' is not a finite number"
           ${DYNPOS_EXE} capability --loads ${CMAKE_CURRENT_SOURCE_DIR}/bad_loads.csv)
+
+# The DNV levels on a layout: its units, unit and group failures, the worst case naming them.
+dynpos_cli_test(capability_layout_rose
+  COMMAND ${DYNPOS_EXE} capability --vessel ${LOADS_DATA}/azimuth_layout.toml --direction-step 90
+  PASS "vessel Gunnerus hull, azimuth test layout: DP capability-L1\\(10,5,8,0\\).*\n0 +10 +31\\.[0-9] +az_port\\+az_stb +8 +23\\.9 +az_stb +az_port")
+dynpos_cli_test(capability_layout_group
+  COMMAND ${DYNPOS_EXE} capability --vessel ${LOADS_DATA}/azimuth_layout.toml --direction-step 90
+          --failure group:stb --json -
+  PASS "\"layout\": \"\\[\\[thruster\\]\\]\".*\"failure\": \"group:stb\"")
+dynpos_cli_test(capability_layout_unknown_case
+  COMMAND bash ${EXPECT_EXIT} 2 "\\(--failure\\): no unit or group 'port' in the layout of .*azimuth_layout\\.toml. one of az_port, az_stb, tunnel, group:port, group:stb"
+          ${DYNPOS_EXE} capability --vessel ${LOADS_DATA}/azimuth_layout.toml --failure port)
+# The simulator runs the model's own units: a layout is refused, not run as another vessel.
+dynpos_cli_test(capability_layout_not_level_3
+  COMMAND bash ${EXPECT_EXIT} 2 "\\(--level\\): .*azimuth_layout\\.toml has a \\[\\[thruster\\]\\] layout of 3 units"
+          ${DYNPOS_EXE} capability --vessel ${LOADS_DATA}/azimuth_layout.toml --level 3)
+dynpos_cli_test(simulate_layout_refused
+  COMMAND bash ${EXPECT_EXIT} 2 "\\(--vessel\\): .*the simulator runs only the model's own"
+          ${DYNPOS_EXE} simulate pure-dp --vessel ${LOADS_DATA}/azimuth_layout.toml
+          --out ${CMAKE_CURRENT_BINARY_DIR}/simulate_layout_refused)

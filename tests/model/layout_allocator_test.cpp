@@ -194,6 +194,31 @@ TEST(LayoutAllocator, MeetsEveryAttainableDemandOfRandomLayouts) {
   RecordProperty("programmes_per_demand", std::to_string(double(programmes) / demands));
 }
 
+// attainable() is allocate().met, sooner: on random layouts with random failed units, demands
+// inside the regions, scaled 1.5 and 3 times (mostly out of reach) and random ones agree, and
+// both kinds of answer occur.
+TEST(LayoutAllocator, AttainableAgreesWithTheAllocation) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  int yes = 0, no = 0;
+  for (int trial = 0; trial < 150; ++trial) {
+    const std::vector<ThrusterUnit> layout = random_layout(rng);
+    const LayoutAllocator allocator(layout);
+    std::vector<double> capacity(layout.size(), 1.0);
+    if (u01(rng) < 0.5) capacity[static_cast<std::size_t>(u01(rng) * layout.size())] = 0.0;
+    for (const double scale : {1.0, 1.5, 3.0}) {
+      SCOPED_TRACE(::testing::Message() << "layout " << trial << ", scale " << scale);
+      const Eigen::Vector3d tau =
+          scale * tau_of(layout, random_commands(layout, allocator.options().polygon_sides, rng));
+      const bool met = allocator.allocate(tau, capacity).met;
+      EXPECT_EQ(allocator.attainable(tau, capacity), met);
+      (met ? yes : no) += 1;
+    }
+  }
+  EXPECT_GT(yes, 50);
+  EXPECT_GT(no, 50);
+}
+
 // A demand beyond the layout's reach leaves the least priority-weighted unmet part: no random
 // command inside the regions leaves less.
 TEST(LayoutAllocator, AnUnattainableDemandLeavesTheLeastWeightedUnmetPart) {

@@ -28,11 +28,12 @@ struct CapabilityRequest {
   int level = 1;                 ///< 1, 2 or 3 (level)
   std::filesystem::path vessel;  ///< vessel file; empty: the data folder's gunnerus.toml
   /// "none" (intact only), "worst" (intact and every single failure, the worst per direction)
-  /// or an actuator lost (capability::actuator_names()).
+  /// or one failure: an actuator of the model (capability::actuator_names()), or a unit or
+  /// "group:NAME" of a [[thruster]] layout (capability::single_failures(vessel)).
   std::string failure = "worst";
-  /// With failure "worst": the single failures it is the worst of (actuator names, computed in
-  /// this order); empty: every one (capability::single_failures()). The demo takes level 3's
-  /// worst case over the failures worst somewhere at level 1.
+  /// With failure "worst": the single failures it is the worst of (computed in this order);
+  /// empty: every one (capability::single_failures(vessel)). The demo takes level 3's worst case
+  /// over the failures worst somewhere at level 1.
   std::vector<std::string> worst_of;
   std::filesystem::path site;            ///< level 2: a site table (TOML [[environment]] rows)
   std::optional<double> hs;              ///< level 2: fixed H_s [m] instead of the table's
@@ -59,8 +60,11 @@ struct CapabilityCase {
 /// The result and what it was computed with.
 struct CapabilityReport {
   int level = 1;
-  std::string vessel;              ///< the vessel's name
-  std::string vessel_source;       ///< its file
+  std::string vessel;         ///< the vessel's name
+  std::string vessel_source;  ///< its file
+  /// "model" (the model's propellers, rudders and tunnel) or "[[thruster]]" (the file's layout;
+  /// levels 1 and 2 only).
+  std::string layout = "model";
   std::string environment;         ///< the environment table's name
   std::string failure;             ///< as asked
   double dynamic_allowance = 1.0;  ///< factor on the load (levels 1 and 2), 1 at level 3
@@ -81,7 +85,7 @@ CapabilityReport run_capability(const CapabilityRequest& request);
 /// asked; absent without failures).
 std::array<std::optional<int>, 4> capability_notation(const CapabilityReport& report);
 
-/// {analysis: "capability", level, vessel, vessel_file?, environment, failure,
+/// {analysis: "capability", level, vessel, vessel_file?, layout, environment, failure,
 /// dynamic_allowance, notation: [A, B, C, D], points: [{direction_deg, dp_number, max_wind_mps,
 /// limiting, failure, beyond_table}], intact: [...], cases: {name: [...]}, time_domain?: {...}}.
 nlohmann::json to_json(const CapabilityReport& report);

@@ -78,7 +78,9 @@ struct CapabilityPoint {
 };
 
 /// The capability at one direction [rad off the bow] with the actuators in `failed` lost (on
-/// top of the capacities of vessel.allocation).
+/// top of the capacities of vessel.allocation). A vessel with a [[thruster]] layout is balanced
+/// by its units (model/layout_allocator.hpp; an azimuth's disc as its 32-sided polygon, up to
+/// 0.48 % short) at their ratings at both levels, `failed` naming units and "group:NAME"s.
 CapabilityPoint quasi_static_point(const scenario::VesselConfig& vessel,
                                    const std::vector<std::string>& failed, double from_rel_rad,
                                    const QuasiStaticOptions& options);
@@ -88,8 +90,13 @@ std::vector<CapabilityPoint> quasi_static_rose(const scenario::VesselConfig& ves
                                                const std::vector<std::string>& failed,
                                                const QuasiStaticOptions& options);
 
-/// The single failures of the vessel: each actuator lost alone (actuator_names()).
-std::vector<std::string> single_failures();
+/// The single failures of the vessel: each actuator of the model lost alone (actuator_names()),
+/// or each unit and each redundancy group ("group:NAME") of a [[thruster]] layout.
+std::vector<std::string> single_failures(const scenario::VesselConfig& vessel);
+
+/// Throws core::InputError (option `key`) naming the cases unless `name` is one of
+/// single_failures(vessel).
+void check_failure(const scenario::VesselConfig& vessel, const std::string& name, const char* key);
 
 /// Per direction the smallest capability over `roses` (each a rose of one failure case, same
 /// directions): DNV's worst-case failure; `failure` says which case it is there.

@@ -96,6 +96,11 @@ class LayoutAllocator {
   LayoutAllocation allocate(const Eigen::Vector3d& tau_d_b,
                             const std::vector<double>& capacity = {}) const;
 
+  /// allocate(τ_d, capacity).met, sooner: a demand the convex relaxation misses is not solved
+  /// again, and the search over region combinations stops at the first that meets it. For the
+  /// many yes-or-no questions of a capability rose.
+  bool attainable(const Eigen::Vector3d& tau_d_b, const std::vector<double>& capacity = {}) const;
+
   const std::vector<ThrusterUnit>& units() const noexcept { return units_; }
   const LayoutAllocationOptions& options() const noexcept { return options_; }
 

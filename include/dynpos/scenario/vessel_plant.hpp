@@ -32,8 +32,14 @@ struct ActuatorState {
   Eigen::Vector3d tau_b = Eigen::Vector3d::Zero();  ///< actuator force and moment in BODY
 };
 
+/// Throws core::InputError (option `key`) for a vessel with a [[thruster]] layout: the plant
+/// runs the model's own units (the two propellers with rudders and the tunnel), and a run of
+/// another layout with them would be a run of another vessel.
+void check_simulated(const VesselConfig& vessel, const char* key = "vessel");
+
 class VesselPlant final : public sim::HybridSystem {
  public:
+  /// Throws core::InputError for a vessel the plant cannot run (check_simulated).
   static constexpr int kHull = 0, kPort = 10, kStb = 14, kRudderPort = 18, kRudderStb = 19,
                        kTunnel = 20, kStateSize = 21;
   static constexpr int kCmdPort = 0, kCmdStb = 1, kCmdRudderPort = 2, kCmdRudderStb = 3,
