@@ -53,9 +53,9 @@ void register_capability(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--vessel", r.vessel, "Vessel file (default: data/vessels/gunnerus.toml)");
   sub->add_option("--failure", r.failure,
-                  "none, worst (every single failure, the worst per direction) or an actuator "
-                  "lost: port, stb, rudder.port, rudder.stb, tunnel; with --loads a unit of "
-                  "the layout or group:NAME")
+                  "none, worst (every single failure, the worst per direction) or one case: "
+                  "an actuator of the model (port, stb, rudder.port, rudder.stb, tunnel), or a "
+                  "unit or group:NAME of a [[thruster]] layout")
       ->capture_default_str();
   sub->add_option("--loads", o->loads,
                   "Load table (CSV: direction_deg,X_N,Y_N,N_Nm, the environment's load in "

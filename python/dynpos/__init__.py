@@ -402,8 +402,8 @@ def capability(*, json=None, out=None, **options) -> Result:
     the DP capability number and the strongest wind held [m/s], intact and after single
     failures. Options as ``dynpos capability``: ``level`` (1 the standard's table at rated
     thrust, 2 the model's thrust losses and a ``site`` table or fixed ``hs`` [m], ``tp`` [s],
-    ``current`` [m/s], 3 time-domain runs), ``vessel`` (file), ``failure`` ("worst", "none" or
-    an actuator), ``direction_step`` [deg], ``wind_tolerance`` [m/s]; level 3: ``duration``,
+    ``current`` [m/s], 3 time-domain runs), ``vessel`` (file), ``failure`` ("worst", "none", an
+    actuator of the model, or a unit or "group:NAME" of a ``[[thruster]]`` layout), ``direction_step`` [deg], ``wind_tolerance`` [m/s]; level 3: ``duration``,
     ``settle`` [s], ``footprint`` [m], ``footprint_deg`` [deg], ``seed``, ``jobs``; ``out``
     (folder for rose.svg). Table: ``points``."""
     q = _options(_dynpos.CapabilityRequest, options)

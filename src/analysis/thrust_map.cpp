@@ -11,6 +11,7 @@
 #include "dynpos/model/thruster.hpp"
 #include "dynpos/model/tunnel_thruster.hpp"
 #include "dynpos/scenario/vessel_config.hpp"
+#include "dynpos/scenario/vessel_plant.hpp"
 
 namespace dynpos::analysis {
 namespace {
@@ -60,6 +61,8 @@ std::vector<ThrusterMapFit> fit_maps(const ThrustMapRequest& request, const core
 AppliedThrust apply_maps(const ThrustMapRequest& request, const core::Log& log) {
   const scenario::VesselConfig vessel =
       scenario::load_vessel_config(vessel_file_or_default(request.vessel));
+  // The maps are the model's propellers' and tunnel's; a layout's units have none of their own.
+  scenario::check_simulated(vessel);
   const auto maps = vessel_maps(vessel);
   AppliedThrust out{core::Log(log.time()), 0, vessel.source, request.abs_speed, request.out};
   for (const std::string& name : thruster_names(log, "rpm")) {

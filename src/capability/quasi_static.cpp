@@ -248,10 +248,9 @@ std::vector<std::string> single_failures(const scenario::VesselConfig& vessel) {
     const auto& names = actuator_names();
     return {names.begin(), names.end()};
   }
+  const std::vector<FailureCase> cases = failure_cases(vessel.thrusters);
   std::vector<std::string> out;
-  for (const FailureCase& c : failure_cases(vessel.thrusters)) {
-    if (c.name != "none") out.push_back(c.name);
-  }
+  for (auto c = cases.begin() + 1; c != cases.end(); ++c) out.push_back(c->name);  // not intact
   return out;
 }
 

@@ -496,7 +496,7 @@ bool LayoutAllocator::attainable(const Eigen::Vector3d& tau_d_b,
   const bool capacity_ok =
       (capacity.empty() || capacity.size() == units_.size()) &&
       std::all_of(capacity.begin(), capacity.end(), [](double c) { return c >= 0.0 && c <= 1.0; });
-  if (!capacity_ok) return false;
+  if (!tau_d_b.allFinite() || !capacity_ok) return false;
   // The relaxation's regions hold the true ones: what it misses, they miss too.
   const LayoutAllocation relaxed =
       solve(setup(tau_d_b, capacity, std::vector<int>(units_.size(), kRelaxed)), tau_d_b);

@@ -12,11 +12,11 @@ void check_simulated(const VesselConfig& vessel, const char* key) {
   if (vessel.thrusters.empty()) return;
   throw core::InputError::for_option(
       key,
-      fmt::format("{} has a [[thruster]] layout of {} units, and the simulator runs only the "
-                  "model's own propellers, rudders and tunnel in this version",
+      fmt::format("{} has a [[thruster]] layout of {} units; the simulator and the thrust maps "
+                  "know only the model's own propellers, rudders and tunnel in this version",
                   vessel.source.empty() ? vessel.name : vessel.source, vessel.thrusters.size()),
-      "a layout is for capability levels 1 and 2 and capability --loads; simulate a vessel "
-      "file without [[thruster]] tables");
+      "a layout is for capability levels 1 and 2 and capability --loads; give a vessel file "
+      "without [[thruster]] tables");
 }
 
 VesselPlant::VesselPlant(const VesselConfig& config)

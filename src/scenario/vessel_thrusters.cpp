@@ -62,6 +62,11 @@ model::ThrusterUnit read_unit(const TomlTable& t) {
   model::ThrusterUnit u;
   u.name = t.string("name");
   if (u.name.empty()) throw core::InputError(t.where("name"), "a unit's name is empty");
+  if (u.name == "none" || u.name == "worst" || u.name.rfind("group:", 0) == 0) {
+    throw core::InputError(t.where("name"),
+                           fmt::format("'{}' is a failure case's name, not a unit's", u.name),
+                           "none, worst and group:… name the cases of --failure");
+  }
   const std::string type = t.string("type");
   const std::optional<model::UnitType> parsed = unit_type(type);
   if (!parsed) {

@@ -38,6 +38,11 @@ dynpos_cli_test(capability_layout_not_level_3
   COMMAND bash ${EXPECT_EXIT} 2 "\\(--level\\): .*azimuth_layout\\.toml has a \\[\\[thruster\\]\\] layout of 3 units"
           ${DYNPOS_EXE} capability --vessel ${LOADS_DATA}/azimuth_layout.toml --level 3)
 dynpos_cli_test(simulate_layout_refused
-  COMMAND bash ${EXPECT_EXIT} 2 "\\(--vessel\\): .*the simulator runs only the model's own"
+  COMMAND bash ${EXPECT_EXIT} 2 "\\(--vessel\\): .*the simulator and the thrust maps know only the model's own"
           ${DYNPOS_EXE} simulate pure-dp --vessel ${LOADS_DATA}/azimuth_layout.toml
           --out ${CMAKE_CURRENT_BINARY_DIR}/simulate_layout_refused)
+dynpos_cli_test(thrust_map_apply_layout_refused
+  COMMAND bash ${EXPECT_EXIT} 2 "\\(--vessel\\): .*azimuth_layout\\.toml has a \\[\\[thruster\\]\\] layout"
+          ${DYNPOS_EXE} identify thrust-map ${CMAKE_CURRENT_SOURCE_DIR}/short_steps.csv --apply
+          --out ${CMAKE_CURRENT_BINARY_DIR}/thrust_map_apply_layout.csv
+          --vessel ${LOADS_DATA}/azimuth_layout.toml)

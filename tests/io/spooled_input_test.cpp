@@ -64,24 +64,29 @@ TEST(SpooledInput, AFifoIsCopiedWholeAndTheCopyRemoved) {
   EXPECT_FALSE(std::filesystem::exists(copy));
 }
 
-// Writes `head`, then `text` `times` times, to a FIFO on a thread; stops when the reader
-// closes it. Paced, it waits until the reader has taken each write before the next, so that
-// each read gets one write (of at most the pipe's 64 KiB): the test sets where reads end.
+// Writes `head`, then `text` `times` times, to a FIFO on a thread, the head in writes of at
+// most `piece` bytes; stops when the reader closes it. Paced, it waits until the reader has
+// taken each write before the next, so that each read gets one write (of at most the pipe's
+// 64 KiB): the test sets where reads end. A reader that neither reads nor closes for 20 s
+// fails the test instead of hanging it.
 class FifoWriter {
  public:
   enum class Pace { kFree, kOneWriteARead };
   FifoWriter(const std::filesystem::path& fifo, std::string head, std::string text, int times,
-             Pace pace = Pace::kFree)
-      : thread_([fifo, head = std::move(head), text = std::move(text), times, pace] {
+             Pace pace = Pace::kFree, std::size_t piece = std::string::npos)
+      : thread_([fifo, head = std::move(head), text = std::move(text), times, pace, piece] {
           const int fd = ::open(fifo.c_str(), O_WRONLY | O_CLOEXEC);
           if (fd < 0) return;
-          const auto put = [&](const std::string& bytes) {
+          const auto put = [&](std::string_view bytes) {
             if (::write(fd, bytes.data(), bytes.size()) != static_cast<ssize_t>(bytes.size())) {
               return false;
             }
             return pace == Pace::kFree || taken(fd);
           };
-          bool ok = put(head);
+          bool ok = true;
+          for (std::size_t at = 0; ok && at < head.size(); at += piece) {
+            ok = put(std::string_view(head).substr(at, piece));
+          }
           for (int i = 0; ok && i < times; ++i) ok = put(text);
           ::close(fd);
         }) {}
@@ -90,14 +95,19 @@ class FifoWriter {
   FifoWriter& operator=(const FifoWriter&) = delete;
 
  private:
-  // Waits until the pipe is empty; false when the reader has closed it.
+  // Waits until the pipe is empty; false when the reader has closed it or 20 s have passed.
   static bool taken(int fd) {
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(20);
     for (;;) {
       int unread = 0;
       if (::ioctl(fd, FIONREAD, &unread) != 0) return false;
       if (unread == 0) return true;
       pollfd p{.fd = fd, .events = 0, .revents = 0};
       if (::poll(&p, 1, 0) < 0 || (p.revents & POLLERR) != 0) return false;
+      if (std::chrono::steady_clock::now() > give_up) {
+        ADD_FAILURE() << "the reader took nothing for 20 s";
+        return false;
+      }
       std::this_thread::sleep_for(std::chrono::microseconds(20));
     }
   }
@@ -134,7 +144,8 @@ TEST(SpooledInput, ACopyStopsAtALineWithoutEnd) {
 // line-without-end error (line 3 here) must not turn into the binary-data error when a read
 // ends just past the 16 MiB mark (11 + 256 × 64 KiB = the mark + 11 bytes, where line 3 is
 // exactly 16 MiB long and not yet too long). Lines of control bytes up to the mark, then a line
-// that ends after it, are binary data, however split.
+// that ends after it, are binary data, however split. (Where the system has shrunk pipes to
+// 4 KiB, reads end at other places: the test then covers less, and still holds.)
 TEST(SpooledInput, TheVerdictDoesNotDependOnHowTheBytesAreSplit) {
   std::signal(SIGPIPE, SIG_IGN);
   TempDir dir;
@@ -155,7 +166,8 @@ TEST(SpooledInput, TheVerdictDoesNotDependOnHowTheBytesAreSplit) {
         EXPECT_THAT(input_error_message([&] { SpooledInput(fifo, dir.path()); }),
                     HasSubstr("fifo:3: no line end within 16 MiB: not a text log"));
       }
-      const FifoWriter writer(fifo, binary_head, std::string(piece, '\n'), kMiB / piece);
+      const FifoWriter writer(fifo, binary_head, std::string(piece, '\n'), kMiB / piece, pace,
+                              static_cast<std::size_t>(piece));
       EXPECT_THAT(input_error_message([&] { SpooledInput(fifo, dir.path()); }),
                   HasSubstr("fifo: not a text log: its first 16 MiB hold neither"));
     }

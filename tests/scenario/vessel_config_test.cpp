@@ -99,6 +99,13 @@ TEST(VesselConfig, ThrusterLayoutUnits) {
               testing::ContainsRegex("t6.toml:7:.*forbid every direction"));
   EXPECT_THAT(error_of("dynpos_t7.toml", unit + "max_thrust_N = 1e5\nloss = [[0, 1]]\n"),
               testing::ContainsRegex("t7.toml:7:.*not modelled"));
+  // The names of failure cases are not units' names: a unit "none" would vanish from them.
+  for (const char* name : {"none", "worst", "group:A"}) {
+    EXPECT_THAT(error_of("dynpos_t8.toml",
+                         "[[thruster]]\nname = \"" + std::string(name) + "\"\ntype = \"tunnel\"\n"),
+                testing::ContainsRegex("t8.toml:2:.*is a failure case's name"))
+        << name;
+  }
 }
 
 TEST(VesselConfig, AFolderOrAMissingFileIsNotTheBuiltInVessel) {

@@ -96,9 +96,12 @@ class LayoutAllocator {
   LayoutAllocation allocate(const Eigen::Vector3d& tau_d_b,
                             const std::vector<double>& capacity = {}) const;
 
-  /// allocate(τ_d, capacity).met, sooner: a demand the convex relaxation misses is not solved
-  /// again, and the search over region combinations stops at the first that meets it. For the
-  /// many yes-or-no questions of a capability rose.
+  /// Whether some combination of regions meets τ_d (every residual within 10⁻⁶ of its scale),
+  /// sooner than allocate(): a demand the convex relaxation misses is not solved again, and the
+  /// search stops at the first combination that meets it. For the many yes-or-no questions of
+  /// a capability rose. It answers as allocate(τ_d, capacity).met does except within the 10⁻⁶
+  /// tolerance: allocate() keeps the combination of the least priority-weighted unmet part,
+  /// which may miss a component by a hair where another combination meets them all.
   bool attainable(const Eigen::Vector3d& tau_d_b, const std::vector<double>& capacity = {}) const;
 
   const std::vector<ThrusterUnit>& units() const noexcept { return units_; }

@@ -39,13 +39,13 @@ void check_simulated(const VesselConfig& vessel, const char* key = "vessel");
 
 class VesselPlant final : public sim::HybridSystem {
  public:
-  /// Throws core::InputError for a vessel the plant cannot run (check_simulated).
   static constexpr int kHull = 0, kPort = 10, kStb = 14, kRudderPort = 18, kRudderStb = 19,
                        kTunnel = 20, kStateSize = 21;
   static constexpr int kCmdPort = 0, kCmdStb = 1, kCmdRudderPort = 2, kCmdRudderStb = 3,
                        kCmdTunnel = 4, kTauEnvBody = 5, kForceNed = 8, kCurrentNed = 11,
                        kInputSize = 13;
 
+  /// Throws core::InputError for a vessel the plant cannot run (check_simulated).
   explicit VesselPlant(const VesselConfig& config);
 
   Eigen::Index state_size() const override { return kStateSize; }
