@@ -104,7 +104,7 @@ class LayoutCheck final : public WindCheck {
         from_(from_rel_rad),
         options_(options) {}
   bool holds(double wind_mps) const override {
-    return allocator_.attainable(demand(wind_mps), capacity_);
+    return allocator_.attainable(demand(wind_mps), capacity_, &warm_);
   }
   std::string limiting(double wind_mps) const override {
     const model::LayoutAllocation a = allocator_.allocate(demand(wind_mps), capacity_);
@@ -122,6 +122,7 @@ class LayoutCheck final : public WindCheck {
   const scenario::VesselConfig& vessel_;
   model::LayoutAllocator allocator_;
   std::vector<double> capacity_;
+  mutable model::AllocationWarmStart warm_;  // the bisection's questions are close together
   double from_;
   const QuasiStaticOptions& options_;
 };

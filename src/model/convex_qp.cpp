@@ -40,15 +40,37 @@ Step working_set_step(const ConvexQp& qp, const std::vector<Eigen::Index>& worki
   return out;
 }
 
+// The constraints of `candidates` that x holds with equality and that are independent of those
+// taken before them (Gram–Schmidt on their rows: what is left of a row after its projection on
+// the rows taken is more than 10⁻⁸ of it).
+std::vector<Eigen::Index> starting_set(const ConvexQp& qp, const Eigen::VectorXd& x,
+                                       const std::vector<Eigen::Index>& candidates) {
+  std::vector<Eigen::Index> out;
+  std::vector<Eigen::VectorXd> basis;
+  for (const Eigen::Index i : candidates) {
+    if (i < 0 || i >= qp.G.rows() || basis.size() >= static_cast<std::size_t>(x.size())) continue;
+    if (std::abs(qp.G.row(i).dot(x) - qp.h(i)) > 1e-9 * (1.0 + std::abs(qp.h(i)))) continue;
+    Eigen::VectorXd r = qp.G.row(i).transpose();
+    const double size = r.norm();
+    for (const Eigen::VectorXd& b : basis) r -= b.dot(r) * b;
+    if (r.norm() <= 1e-8 * size) continue;
+    basis.push_back(r / r.norm());
+    out.push_back(i);
+  }
+  return out;
+}
+
 }  // namespace
 
-QpSolution solve_convex_qp(const ConvexQp& qp, const Eigen::VectorXd& x0) {
+QpSolution solve_convex_qp(const ConvexQp& qp, const Eigen::VectorXd& x0,
+                           const std::vector<Eigen::Index>& working0) {
   const Eigen::Index n = qp.H.rows();
   const Eigen::Index m = qp.G.rows();
   QpSolution out;
   out.x = x0;
-  std::vector<Eigen::Index> working;
+  std::vector<Eigen::Index> working = working0.empty() ? working0 : starting_set(qp, x0, working0);
   std::vector<bool> in_working(static_cast<std::size_t>(m), false);
+  for (const Eigen::Index i : working) in_working[static_cast<std::size_t>(i)] = true;
   const int max_iterations = static_cast<int>(4 * (n + m)) + 20;
   bool at_optimum = false;  // at the working set's optimum after a full step (p = 0 then)
   for (out.iterations = 0; out.iterations < max_iterations; ++out.iterations) {
@@ -69,6 +91,7 @@ QpSolution solve_convex_qp(const ConvexQp& qp, const Eigen::VectorXd& x0) {
       }
       if (worst < 0) {
         out.converged = true;
+        out.working = std::move(working);
         return out;
       }
       in_working[static_cast<std::size_t>(working[static_cast<std::size_t>(worst)])] = false;
@@ -96,6 +119,7 @@ QpSolution solve_convex_qp(const ConvexQp& qp, const Eigen::VectorXd& x0) {
       in_working[static_cast<std::size_t>(blocking)] = true;
     }
   }
+  out.working = std::move(working);
   return out;
 }
 

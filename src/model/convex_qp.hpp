@@ -26,9 +26,16 @@ struct QpSolution {
   Eigen::VectorXd x;
   bool converged = false;  // false: the iteration cap ended it; x is feasible all the same
   int iterations = 0;
+  std::vector<Eigen::Index> working;  // the working set at the end (the active constraints)
 };
 
-// Solves `qp` from x0, which must satisfy Gx0 ≤ h (within 1e-9 of each |h_i| + 1).
-QpSolution solve_convex_qp(const ConvexQp& qp, const Eigen::VectorXd& x0);
+// Solves `qp` from x0, which must satisfy Gx0 ≤ h (within 1e-9 of each |h_i| + 1). The working
+// set starts with those of `working0` that x0 holds with equality (to 1e-9 of |h_i| + 1) and
+// that are independent of the ones taken before them: a warm start from the solution of an
+// earlier programme with the same constraints (a nearby demand), which then needs a step or two
+// instead of one per active constraint. H being positive definite, the optimum is the same from
+// any start, up to round-off.
+QpSolution solve_convex_qp(const ConvexQp& qp, const Eigen::VectorXd& x0,
+                           const std::vector<Eigen::Index>& working0 = {});
 
 }  // namespace dynpos::model::detail

@@ -269,8 +269,18 @@ void LayoutAllocator::project(const Setup& s, Eigen::VectorXd& x) const {
 }
 
 LayoutAllocation LayoutAllocator::solve(const Setup& s, const Eigen::Vector3d& tau_d_b,
-                                        bool least_effort) const {
-  detail::QpSolution q = detail::solve_convex_qp(s.qp, Eigen::VectorXd::Zero(s.qp.c.size()));
+                                        bool least_effort, AllocationWarmStart* warm) const {
+  const AllocationWarmStart::Solution* start = nullptr;
+  if (warm) {
+    const auto it = warm->by_regions_.find(s.regions);
+    if (it != warm->by_regions_.end() && it->second.x.size() == s.qp.c.size()) {
+      start = &it->second;  // the same regions and capacity: the same constraints, so feasible
+    }
+  }
+  detail::QpSolution q = start
+                             ? detail::solve_convex_qp(s.qp, start->x, start->working)
+                             : detail::solve_convex_qp(s.qp, Eigen::VectorXd::Zero(s.qp.c.size()));
+  if (warm) warm->by_regions_[s.regions] = {q.x, q.working};
   // The active-set iterates hold the constraints to round-off, which an ill-conditioned
   // demand term can grow to 10⁻⁵ of a rating: each unit is put back into its region exactly.
   project(s, q.x);
@@ -488,7 +498,8 @@ LayoutAllocation LayoutAllocator::allocate(const Eigen::Vector3d& tau_d_b,
 }
 
 bool LayoutAllocator::attainable(const Eigen::Vector3d& tau_d_b,
-                                 const std::vector<double>& capacity) const {
+                                 const std::vector<double>& capacity,
+                                 AllocationWarmStart* warm) const {
   const double size = std::max({std::abs(tau_d_b(0)) / options_.force_scale,
                                 std::abs(tau_d_b(1)) / options_.force_scale,
                                 std::abs(tau_d_b(2)) / options_.moment_scale});
@@ -497,9 +508,13 @@ bool LayoutAllocator::attainable(const Eigen::Vector3d& tau_d_b,
       (capacity.empty() || capacity.size() == units_.size()) &&
       std::all_of(capacity.begin(), capacity.end(), [](double c) { return c >= 0.0 && c <= 1.0; });
   if (!tau_d_b.allFinite() || !capacity_ok) return false;
+  if (warm && warm->capacity_ != capacity) {
+    warm->capacity_ = capacity;
+    warm->by_regions_.clear();
+  }
   // The relaxation's regions hold the true ones: what it misses, they miss too.
-  const LayoutAllocation relaxed =
-      solve(setup(tau_d_b, capacity, std::vector<int>(units_.size(), kRelaxed)), tau_d_b);
+  const LayoutAllocation relaxed = solve(
+      setup(tau_d_b, capacity, std::vector<int>(units_.size(), kRelaxed)), tau_d_b, false, warm);
   if (!relaxed.met) return false;
   bool feasible = true;
   for (std::size_t k = 0; k < units_.size() && feasible; ++k) {
@@ -507,10 +522,12 @@ bool LayoutAllocator::attainable(const Eigen::Vector3d& tau_d_b,
   }
   if (feasible) return true;
   const std::vector<int> guess = nearest_regions(relaxed);
-  if (solve(setup(tau_d_b, capacity, guess), tau_d_b).met) return true;
+  if (solve(setup(tau_d_b, capacity, guess), tau_d_b, false, warm).met) return true;
   std::vector<int> regions(units_.size(), 0);  // then every combination, as allocate() does
   for (int tried = 0; tried < options_.max_region_combinations; ++tried) {
-    if (regions != guess && solve(setup(tau_d_b, capacity, regions), tau_d_b).met) return true;
+    if (regions != guess && solve(setup(tau_d_b, capacity, regions), tau_d_b, false, warm).met) {
+      return true;
+    }
     std::size_t k = 0;
     for (; k < units_.size(); ++k) {
       if (++regions[k] < region_count(k)) break;

@@ -219,6 +219,38 @@ TEST(LayoutAllocator, AttainableAgreesWithTheAllocation) {
   EXPECT_GT(no, 50);
 }
 
+// A warm start changes where each programme starts, not the answer: along random walks of
+// demands across the edge of the reach (a bisection's questions, one warm start per walk and
+// capacity), attainable() with and without it agree.
+TEST(LayoutAllocator, AWarmStartGivesTheSameAnswers) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  int questions = 0, yes = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const std::vector<ThrusterUnit> layout = random_layout(rng);
+    const LayoutAllocator allocator(layout);
+    AllocationWarmStart warm;
+    for (const bool failed : {false, true}) {
+      std::vector<double> capacity(layout.size(), 1.0);
+      if (failed) capacity.front() = 0.0;
+      const Eigen::Vector3d edge =
+          tau_of(layout, random_commands(layout, allocator.options().polygon_sides, rng));
+      double lo = 0.5, hi = 2.0;  // bisect the factor on the demand, as a rose does the wind
+      for (int k = 0; k < 12; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        const bool cold = allocator.attainable(mid * edge, capacity);
+        EXPECT_EQ(allocator.attainable(mid * edge, capacity, &warm), cold)
+            << "layout " << trial << ", factor " << mid;
+        (cold ? lo : hi) = mid;
+        ++questions;
+        yes += cold ? 1 : 0;
+      }
+    }
+  }
+  EXPECT_GT(yes, questions / 5);
+  EXPECT_LT(yes, questions * 4 / 5);
+}
+
 // A demand beyond the layout's reach leaves the least priority-weighted unmet part: no random
 // command inside the regions leaves less.
 TEST(LayoutAllocator, AnUnattainableDemandLeavesTheLeastWeightedUnmetPart) {

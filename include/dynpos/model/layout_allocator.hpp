@@ -30,6 +30,7 @@
 /// forbidden sector. Each convex programme is solved by the primal active-set method from the
 /// origin, which every region contains.
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -84,6 +85,22 @@ struct LayoutAllocation {
   int iterations = 0;  ///< active-set iterations over all of them
 };
 
+/// The last solution of each combination of regions an allocator solved, for the next demand to
+/// start from (LayoutAllocator::attainable): a bisection's next question, close to the last,
+/// then takes a step or two per programme instead of one per active constraint. The optimum is
+/// the same from any start, up to round-off. Bound to the allocator and the capacity it was
+/// filled with; another capacity empties it. Not shared between threads.
+class AllocationWarmStart {
+ private:
+  friend class LayoutAllocator;
+  struct Solution {
+    Eigen::VectorXd x;                  // the variables, each over its unit's rating
+    std::vector<Eigen::Index> working;  // the constraints active there
+  };
+  std::vector<double> capacity_;
+  std::map<std::vector<int>, Solution> by_regions_;
+};
+
 /// The allocator of one layout: const, deterministic, never throws after construction.
 class LayoutAllocator {
  public:
@@ -102,7 +119,10 @@ class LayoutAllocator {
   /// a capability rose. It answers as allocate(τ_d, capacity).met does except within the 10⁻⁶
   /// tolerance: allocate() keeps the combination of the least priority-weighted unmet part,
   /// which may miss a component by a hair where another combination meets them all.
-  bool attainable(const Eigen::Vector3d& tau_d_b, const std::vector<double>& capacity = {}) const;
+  /// `warm`, when given, starts each programme from the last solution of its combination of
+  /// regions and keeps the new one.
+  bool attainable(const Eigen::Vector3d& tau_d_b, const std::vector<double>& capacity = {},
+                  AllocationWarmStart* warm = nullptr) const;
 
   const std::vector<ThrusterUnit>& units() const noexcept { return units_; }
   const LayoutAllocationOptions& options() const noexcept { return options_; }
@@ -112,8 +132,8 @@ class LayoutAllocator {
   Setup setup(const Eigen::Vector3d& tau_d_b, const std::vector<double>& capacity,
               const std::vector<int>& regions) const;
   // One region combination; least_effort: when unmet, the least effort for what is achieved.
-  LayoutAllocation solve(const Setup& s, const Eigen::Vector3d& tau_d_b,
-                         bool least_effort = false) const;
+  LayoutAllocation solve(const Setup& s, const Eigen::Vector3d& tau_d_b, bool least_effort = false,
+                         AllocationWarmStart* warm = nullptr) const;
   void project(const Setup& s, Eigen::VectorXd& x) const;  // each unit into its region
   std::vector<int> nearest_regions(const LayoutAllocation& relaxed) const;
   int region_count(std::size_t unit) const;
