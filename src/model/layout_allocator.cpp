@@ -523,18 +523,28 @@ bool LayoutAllocator::attainable(const Eigen::Vector3d& tau_d_b,
   if (feasible) return true;
   const std::vector<int> guess = nearest_regions(relaxed);
   if (solve(setup(tau_d_b, capacity, guess), tau_d_b, false, warm).met) return true;
-  std::vector<int> regions(units_.size(), 0);  // then every combination, as allocate() does
-  for (int tried = 0; tried < options_.max_region_combinations; ++tried) {
-    if (regions != guess && solve(setup(tau_d_b, capacity, regions), tau_d_b, false, warm).met) {
-      return true;
+  std::vector<int> regions(units_.size(), kRelaxed);
+  int budget = 2 * options_.max_region_combinations;
+  return search_regions({tau_d_b, capacity, warm}, regions, 0, budget);
+}
+
+bool LayoutAllocator::search_regions(const Question& q, std::vector<int>& regions, std::size_t from,
+                                     int& budget) const {
+  std::size_t k = from;  // the next unit with more than one region
+  while (k < units_.size() && region_count(k) <= 1) ++k;
+  if (k == units_.size()) return false;
+  for (int r = 0; r < region_count(k) && budget > 0; ++r, --budget) {
+    regions[k] = r;
+    const LayoutAllocation a =
+        solve(setup(q.tau_d_b, q.capacity, regions), q.tau_d_b, false, q.warm);
+    if (!a.met) continue;  // the units after k relaxed miss it: so does every choice of theirs
+    bool feasible = true;
+    for (std::size_t j = k + 1; j < units_.size() && feasible; ++j) {
+      feasible = in_region(units_[j], a.units[j]);
     }
-    std::size_t k = 0;
-    for (; k < units_.size(); ++k) {
-      if (++regions[k] < region_count(k)) break;
-      regions[k] = 0;
-    }
-    if (k == units_.size()) break;
+    if (feasible || search_regions(q, regions, k + 1, budget)) return true;
   }
+  regions[k] = kRelaxed;
   return false;
 }
 

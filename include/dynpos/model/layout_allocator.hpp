@@ -115,12 +115,14 @@ class LayoutAllocator {
 
   /// Whether some combination of regions meets τ_d (every residual within 10⁻⁶ of its scale),
   /// sooner than allocate(): a demand the convex relaxation misses is not solved again, and the
-  /// search stops at the first combination that meets it. For the many yes-or-no questions of
-  /// a capability rose. It answers as allocate(τ_d, capacity).met does except within the 10⁻⁶
-  /// tolerance: allocate() keeps the combination of the least priority-weighted unmet part,
-  /// which may miss a component by a hair where another combination meets them all.
-  /// `warm`, when given, starts each programme from the last solution of its combination of
-  /// regions and keeps the new one.
+  /// combinations are searched by branch and bound (a unit's region fixed at a time, the units
+  /// after it relaxed: a programme that misses the demand cuts all below it; at most twice
+  /// max_region_combinations programmes), stopping at the first combination that meets it. For the
+  /// many yes-or-no questions of a capability rose. It answers as allocate(τ_d, capacity).met does
+  /// except within the 10⁻⁶ tolerance: allocate() keeps the combination of the least
+  /// priority-weighted unmet part, which may miss a component by a hair where another combination
+  /// meets them all. `warm`, when given, starts each programme from the last solution of its
+  /// combination of regions and keeps the new one.
   bool attainable(const Eigen::Vector3d& tau_d_b, const std::vector<double>& capacity = {},
                   AllocationWarmStart* warm = nullptr) const;
 
@@ -135,6 +137,17 @@ class LayoutAllocator {
   LayoutAllocation solve(const Setup& s, const Eigen::Vector3d& tau_d_b, bool least_effort = false,
                          AllocationWarmStart* warm = nullptr) const;
   void project(const Setup& s, Eigen::VectorXd& x) const;  // each unit into its region
+  // attainable()'s question.
+  struct Question {
+    const Eigen::Vector3d& tau_d_b;
+    const std::vector<double>& capacity;
+    AllocationWarmStart* warm;
+  };
+  // Branch and bound over the regions of the units from `from` on (those before it fixed in
+  // `regions`, those after it relaxed): true when a combination meets the demand. A node whose
+  // programme misses the demand cuts every combination below it; at most `budget` programmes.
+  bool search_regions(const Question& q, std::vector<int>& regions, std::size_t from,
+                      int& budget) const;
   std::vector<int> nearest_regions(const LayoutAllocation& relaxed) const;
   int region_count(std::size_t unit) const;
 
