@@ -36,8 +36,10 @@ class WindCheck {
  public:
   virtual ~WindCheck() = default;
   virtual bool holds(double wind_mps) const = 0;
-  /// The actuators at a limit at a wind held, joined by '+'; "none" if none is.
-  virtual std::string limiting(double wind_mps) const = 0;
+  /// The actuators that limit the wind held, joined by '+'; "none" if none is at a limit.
+  /// `held_mps` is the strongest wind held, `not_held_mps` the first not held above it, within
+  /// the bisection's tolerance.
+  virtual std::string limiting(double held_mps, double not_held_mps) const = 0;
 };
 
 std::string joined_or_none(const std::vector<std::string>& names) {
@@ -59,8 +61,9 @@ class ModelCheck final : public WindCheck {
         from_(from_rel_rad),
         options_(options) {}
   bool holds(double wind_mps) const override { return attained(wind_mps).has_value(); }
-  std::string limiting(double wind_mps) const override {
-    const auto a = attained(wind_mps);
+  // The exact region's vertex at the wind held touches the limits that bind.
+  std::string limiting(double held_mps, double /*not_held_mps*/) const override {
+    const auto a = attained(held_mps);
     std::vector<std::string> names;
     for (std::size_t k = 0; a && k < a->at_limit.size(); ++k) {
       if (a->at_limit[k]) names.emplace_back(actuator_names()[k]);
@@ -106,8 +109,11 @@ class LayoutCheck final : public WindCheck {
   bool holds(double wind_mps) const override {
     return allocator_.attainable(demand(wind_mps), capacity_, &warm_);
   }
-  std::string limiting(double wind_mps) const override {
-    const model::LayoutAllocation a = allocator_.allocate(demand(wind_mps), capacity_);
+  // The allocation of the first wind not held, which leaves a part unmet: the units at a limit
+  // there bind. At the wind held they can still be a tolerance's load short of their limits
+  // (0.01 m/s of wind can be more than the allocator's 0.2 % band of a rating).
+  std::string limiting(double /*held_mps*/, double not_held_mps) const override {
+    const model::LayoutAllocation a = allocator_.allocate(demand(not_held_mps), capacity_);
     std::vector<std::string> names;
     for (std::size_t k = 0; k < a.units.size(); ++k) {
       if (a.units[k].at_limit) names.push_back(vessel_.thrusters[k].name);
@@ -186,7 +192,7 @@ CapabilityPoint quasi_static_point(const scenario::VesselConfig& vessel,
     (check->holds(mid) ? lo : hi) = mid;
   }
   p.max_wind_mps = lo;
-  p.limiting = lo > 0.0 ? check->limiting(lo) : kNoThrustLeft;
+  p.limiting = lo > 0.0 ? check->limiting(lo, hi) : kNoThrustLeft;
   return p;
 }
 

@@ -6,14 +6,19 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <functional>
 #include <numbers>
+#include <sstream>
 #include <string>
 
+#include "../source_dir.hpp"
 #include "dynpos/capability/thrust_region.hpp"
 #include "dynpos/capability/vessel_units.hpp"
 #include "dynpos/core/error.hpp"
+#include "dynpos/model/hull.hpp"
 #include "dynpos/model/thrust_allocation.hpp"
 #include "gunnerus_allocator.hpp"
 
@@ -239,6 +244,61 @@ TEST(QuasiStaticLayout, TheLimitingUnitsAreTheLayoutsAndUnknownCasesAreNamed) {
   } catch (const core::InputError& e) {
     EXPECT_EQ(e.option(), "worst_of");
     EXPECT_NE(std::string(e.what()).find("group:port"), std::string::npos) << e.what();
+  }
+}
+
+scenario::VesselConfig shipped(const char* file) {
+  return scenario::load_vessel_config(std::filesystem::path(DYNPOS_SOURCE_DIR) / "data" /
+                                      "vessels" / file);
+}
+
+// The supply vessel's hull is its source's (Fossen, Sagatun and Sørensen 1996, the bis-system
+// matrices M'' and D'' with m = 6000 t, L = 76.2 m): its inertia matrix and linear damping at
+// rest, to the file's 7 significant digits.
+TEST(ShippedVessels, TheSupplyVesselsHullIsItsSources) {
+  const scenario::VesselConfig v = shipped("osv-80m.toml");
+  const double m = 6.0e6, L = 76.2, root_g_over_L = std::sqrt(9.8 / L);
+  const model::Hull hull(v.hull);
+  const Eigen::Matrix3d& M = hull.mass_matrix();
+  EXPECT_NEAR(M(0, 0), 1.1274 * m, 1e-7 * M(0, 0));
+  EXPECT_NEAR(M(1, 1), 1.8902 * m, 1e-7 * M(1, 1));
+  EXPECT_NEAR(M(1, 2), -0.0744 * m * L, 1e-7 * std::abs(M(1, 2)));
+  EXPECT_NEAR(M(2, 1), M(1, 2), 0.0);
+  EXPECT_NEAR(M(2, 2), 0.1278 * m * L * L, 1e-7 * M(2, 2));
+  EXPECT_NEAR(v.hull.x_u_Ns_m, 0.0358 * m * root_g_over_L, 1e-6 * v.hull.x_u_Ns_m);
+  EXPECT_NEAR(v.hull.y_v_Ns_m, 0.1183 * m * root_g_over_L, 1e-6 * v.hull.y_v_Ns_m);
+  EXPECT_NEAR(v.hull.n_r_Nms, 0.0308 * m * L * L * root_g_over_L, 1e-6 * v.hull.n_r_Nms);
+}
+
+// Both shipped azimuth vessels are graded with their own units: no failure above intact, the
+// worst case names one of the vessel's cases, and every direction between the calm and the
+// table's end names the units that limit it.
+TEST(ShippedVessels, TheAzimuthVesselsAreGradedWithTheirUnits) {
+  for (const char* file : {"gunnerus-2015.toml", "osv-80m.toml"}) {
+    SCOPED_TRACE(file);
+    const scenario::VesselConfig v = shipped(file);
+    ASSERT_FALSE(v.thrusters.empty());
+    QuasiStaticOptions o = fast_options();
+    o.direction_step_deg = 20.0;
+    const auto intact = quasi_static_rose(v, {}, o);
+    std::vector<std::vector<CapabilityPoint>> cases;
+    for (const std::string& f : single_failures(v)) cases.push_back(quasi_static_rose(v, {f}, o));
+    const auto worst = worst_case(cases);
+    const std::vector<std::string> names = single_failures(v);
+    for (std::size_t i = 0; i < intact.size(); ++i) {
+      EXPECT_LE(worst[i].max_wind_mps, intact[i].max_wind_mps + 1e-9);
+      EXPECT_NE(std::find(names.begin(), names.end(), worst[i].failure), names.end());
+      for (const CapabilityPoint& p : {intact[i], worst[i]}) {
+        if (p.beyond_table || p.max_wind_mps == 0.0) continue;
+        ASSERT_NE(p.limiting, "none") << p.direction_deg << " deg, " << p.failure;
+        std::stringstream parts(p.limiting);
+        for (std::string unit; std::getline(parts, unit, '+');) {
+          EXPECT_TRUE(std::any_of(v.thrusters.begin(), v.thrusters.end(),
+                                  [&](const model::ThrusterUnit& u) { return u.name == unit; }))
+              << unit;
+        }
+      }
+    }
   }
 }
 

@@ -72,7 +72,9 @@ struct CapabilityPoint {
   /// The table's last row (at level 3: the last the simulator takes, H_s ≤ 8 m) is held:
   /// max_wind_mps is a floor.
   bool beyond_table = false;
-  /// The actuators at a limit at max_wind_mps, joined by '+'; "none" beyond the table.
+  /// The actuators at a limit at max_wind_mps, joined by '+' (a layout's units: at a limit in
+  /// the allocation of the first wind not held, the bisection's other end); "none" beyond the
+  /// table.
   std::string limiting;
   std::string failure;  ///< the case: "none" (intact) or the actuator lost
 };
