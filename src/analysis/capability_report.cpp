@@ -41,6 +41,8 @@ report::PolarSeries series(const CapabilityCase& c, bool numbers, const std::str
 
 }  // namespace
 
+bool thrust_losses(const CapabilityReport& r) { return r.level >= 2 && r.layout == "model"; }
+
 std::string notation_text(const CapabilityReport& r) {
   const auto n = capability_notation(r);
   const auto cell = [](const std::optional<int>& v) {
@@ -57,6 +59,7 @@ nlohmann::json to_json(const CapabilityReport& report) {
   j["vessel"] = report.vessel;
   if (!report.vessel_source.empty()) j["vessel_file"] = report.vessel_source;
   j["layout"] = report.layout;
+  j["thrust_losses"] = thrust_losses(report);
   j["environment"] = report.environment;
   j["failure"] = report.failure;
   j["dynamic_allowance"] = report.dynamic_allowance;
@@ -106,6 +109,11 @@ std::string to_text(const CapabilityReport& r) {
       row.insert(row.end(), {std::to_string(f.dp_number), wind_cell(f), f.limiting, f.failure});
     }
     t.rows.push_back(row);
+  }
+  if (r.level == 2 && !thrust_losses(r)) {
+    out +=
+        "no thrust losses: a [[thruster]] layout's units keep their ratings at level 2 (give "
+        "the ratings the site's current leaves them)\n";
   }
   return out + report::render_text(t);
 }

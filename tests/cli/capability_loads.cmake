@@ -46,3 +46,12 @@ dynpos_cli_test(thrust_map_apply_layout_refused
           ${DYNPOS_EXE} identify thrust-map ${CMAKE_CURRENT_SOURCE_DIR}/short_steps.csv --apply
           --out ${CMAKE_CURRENT_BINARY_DIR}/thrust_map_apply_layout.csv
           --vessel ${LOADS_DATA}/azimuth_layout.toml)
+# Level 2 on a layout keeps the units' ratings, and says so in the table and the JSON.
+dynpos_cli_test(capability_layout_level_2_says_no_losses
+  COMMAND ${DYNPOS_EXE} capability --vessel ${LOADS_DATA}/azimuth_layout.toml --level 2
+          --direction-step 90
+  PASS "\nno thrust losses: a \\[\\[thruster\\]\\] layout's units keep their ratings at level 2")
+dynpos_cli_test(capability_layout_level_2_json
+  COMMAND ${DYNPOS_EXE} capability --vessel ${LOADS_DATA}/azimuth_layout.toml --level 2
+          --direction-step 90 --json -
+  PASS "\"thrust_losses\": false")

@@ -85,10 +85,16 @@ CapabilityReport run_capability(const CapabilityRequest& request);
 /// asked; absent without failures).
 std::array<std::optional<int>, 4> capability_notation(const CapabilityReport& report);
 
-/// {analysis: "capability", level, vessel, vessel_file?, layout, environment, failure,
-/// dynamic_allowance, notation: [A, B, C, D], points: [{direction_deg, dp_number, max_wind_mps,
-/// limiting, failure, beyond_table}], intact: [...], cases: {name: [...]}, time_domain?: {...}}.
+/// {analysis: "capability", level, vessel, vessel_file?, layout, thrust_losses, environment,
+/// failure, dynamic_allowance, notation: [A, B, C, D], points: [{direction_deg, dp_number,
+/// max_wind_mps, limiting, failure, beyond_table}], intact: [...], cases: {name: [...]},
+/// time_domain?: {...}}.
 nlohmann::json to_json(const CapabilityReport& report);
+
+/// Whether the thrusters' losses are modelled: levels 2 and 3 of the model's units (the
+/// propellers', tunnel's and rudders' thrust at the current's inflow, or the simulator's
+/// thrusters). Level 1 is rated thrust at rest; a [[thruster]] layout keeps its ratings.
+bool thrust_losses(const CapabilityReport& report);
 
 /// "DP capability-L1(A,B,C,D)", NA for a number not computed.
 std::string notation_text(const CapabilityReport& report);
