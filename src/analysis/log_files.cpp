@@ -41,13 +41,23 @@ void check_overlap(const core::Log& main, io::FileLog& part, double offset_s) {
   }
 }
 
+// A GPS receiver whose firmware predates a week-number rollover dates its fixes 1024 weeks
+// (7168 days, 19.6 years) early; the last rollover was on 2019-04-06.
+constexpr std::int64_t kGpsWeekCycleNs = std::int64_t{1024} * 7 * 86400 * 1'000'000'000;
+
+// The difference of two absolute origins [s], `cycles` GPS week cycles added to the part's.
+double origin_offset_s(std::int64_t main_ns, std::int64_t part_ns, int cycles) {
+  return static_cast<double>(part_ns + cycles * kGpsWeekCycleNs - main_ns) * 1e-9;
+}
+
 // The offset [s] that puts `part`'s times on the main log's clock: the difference of their
-// absolute origins when both files have absolute time stamps, plus the user's clock offset.
+// absolute origins when both files have absolute time stamps (`cycles` GPS week cycles added to
+// the part's), plus the user's clock offset.
 double clock_offset_s(std::optional<std::int64_t> main_origin_ns, io::FileLog& part,
-                      double user_offset_s) {
+                      double user_offset_s, int cycles) {
   if (main_origin_ns && part.origin_ns) {
     part.report.notes.push_back("aligned on the main log by its absolute time stamps");
-    return static_cast<double>(*part.origin_ns - *main_origin_ns) * 1e-9 + user_offset_s;
+    return origin_offset_s(*main_origin_ns, *part.origin_ns, cycles) + user_offset_s;
   }
   if (main_origin_ns.has_value() != part.origin_ns.has_value()) {
     part.report.notes.push_back(fmt::format(
@@ -56,6 +66,45 @@ double clock_offset_s(std::optional<std::int64_t> main_origin_ns, io::FileLog& p
         part.origin ? fmt::format(" (this file's t = 0 s is {})", *part.origin) : ""));
   }
   return user_offset_s;
+}
+
+bool overlaps(const core::Log& main, const core::Log& part, double offset_s) {
+  return part.time().back() + offset_s >= main.time().front() &&
+         part.time().front() + offset_s <= main.time().back();
+}
+
+// Two files with absolute stamps that overlap only when one is moved by whole GPS week cycles
+// (1 to 3): a receiver's week-number rollover, which makes its dates early. Returns the cycles
+// to add to the part's stamps (positive: the part's dates are early; negative: the main log's),
+// noted in the part's report, or 0. With `strict` it is an error naming the part.
+int rollover_cycles(const core::Log& main, io::FileLog& part, std::optional<std::int64_t> main_ns,
+                    double user_offset_s, bool strict) {
+  if (!main_ns || !part.origin_ns) return 0;
+  const auto fits = [&](int cycles) {
+    return overlaps(main, part.log,
+                    origin_offset_s(*main_ns, *part.origin_ns, cycles) + user_offset_s);
+  };
+  if (fits(0)) return 0;
+  for (const int cycles : {1, -1, 2, -2, 3, -3}) {
+    if (!fits(cycles)) continue;
+    const int weeks = 1024 * std::abs(cycles);
+    const std::string what = fmt::format(
+        "its absolute time stamps are {} weeks ({:.1f} years) {} the main log's: {} those of a "
+        "GPS receiver after a week-number rollover",
+        weeks, weeks * 7 / 365.25, cycles > 0 ? "before" : "after",
+        cycles > 0 ? "its dates are" : "the main log's dates are");
+    if (strict) {
+      core::InputLocation where;
+      where.file = part.report.path;
+      throw core::InputError(where, what + "; refused with --strict",
+                             "correct the receiver's dates, or read without --strict to align "
+                             "the files by the whole weeks");
+    }
+    part.report.notes.push_back(
+        fmt::format("{}; aligned {} weeks {}", what, weeks, cycles > 0 ? "later" : "earlier"));
+    return cycles;
+  }
+  return 0;
 }
 
 // How a file other than the main log is read: detected by content, whole (a window is the
@@ -88,7 +137,10 @@ void add_log_files(LoadedLog& out, std::optional<std::int64_t> main_origin_ns,
   for (const std::string& file : map.other_files()) {
     const io::LogFileOptions file_options = map.file_options(file);
     io::FileLog part = io::read_log_file(file, map.for_file(file), other_file(how));
-    const double offset_s = clock_offset_s(main_origin_ns, part, file_options.clock_offset_s);
+    const int cycles =
+        rollover_cycles(out.log, part, main_origin_ns, file_options.clock_offset_s, how.strict);
+    const double offset_s =
+        clock_offset_s(main_origin_ns, part, file_options.clock_offset_s, cycles);
     part.report.clock_offset_s = offset_s;
     check_overlap(out.log, part, offset_s);
     const std::size_t first_channel = out.log.channels().size();

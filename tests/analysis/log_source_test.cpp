@@ -211,5 +211,46 @@ TEST_F(LogFiles, ErrorsNameTheFile) {
               ContainsRegex("\\(clock_offset\\): malformed argument .gps.csv=abc."));
 }
 
+// A GNSS logger whose receiver missed a week-number rollover dates its fixes 1024 weeks early
+// (2005-09-12 for 2025-04-28). Aligned by absolute stamps, that file would fall 19.6 years
+// before the main log: it is aligned 1024 weeks later, with a note saying so, and the values
+// land where they belong; either way round; with --strict it is an error naming the file.
+TEST_F(LogFiles, AGpsWeekRolloverIsFoundAndNoted) {
+  std::string main = "time,v\n";
+  std::string early = "time,N\n";
+  for (int k = 0; k <= 10; ++k) {
+    main += fmt::format("2025-04-28T11:39:{:02d}Z,{}\n", 10 + k, k);
+    early += fmt::format("2005-09-12T11:39:{:02d}.5Z,{}\n", 10 + k, 100 + k);
+  }
+  write("main_utc.csv", main);
+  write("gnss_early.csv", early);
+  LogSource s;
+  s.log = dir_ / "main_utc.csv";
+  s.columns = {"time=time", "v=v", "north=N@" + path("gnss_early.csv")};
+  const LoadedLog loaded = load(s);
+  const core::Channel& north = loaded.log.channel("north");
+  EXPECT_NEAR(north.values[3], 102.5, 1e-9);  // 11:39:13 is halfway from 11:39:12.5 to 13.5
+  EXPECT_THAT(loaded.input.files.back().notes,
+              ::testing::Contains(HasSubstr("its absolute time stamps are 1024 weeks (19.6 years) "
+                                            "before the main log's: its dates are those of a GPS "
+                                            "receiver after a week-number rollover; aligned 1024 "
+                                            "weeks later")));
+
+  // The main log's receiver rolled over: the other file is aligned 1024 weeks earlier.
+  write("main_early.csv", early);
+  write("gnss_right.csv", main);
+  s.log = dir_ / "main_early.csv";
+  s.columns = {"time=time", "north=N", "v=v@" + path("gnss_right.csv")};
+  const LoadedLog other = load(s);
+  EXPECT_NEAR(other.log.channel("v").values[2], 2.5, 1e-9);
+  EXPECT_THAT(other.input.files.back().notes,
+              ::testing::Contains(HasSubstr("after the main log's: the main log's dates are")));
+
+  s.strict = true;
+  EXPECT_THAT(input_error([&] { load(s); }).what(),
+              ContainsRegex("gnss_right\\.csv: its absolute time stamps are 1024 weeks .*"
+                            "refused with --strict"));
+}
+
 }  // namespace
 }  // namespace dynpos::analysis

@@ -50,8 +50,10 @@ struct LogSource {
   /// Largest gap [s] between two samples of a role from another file that is bridged when it
   /// is put on the main log's time axis; 0 = automatic (2.5 × that role's median spacing).
   double max_gap_s = 0.0;
-  std::string format = "auto";   ///< "auto" (by content), "csv" or "nmea" (NMEA 0183 capture)
-  bool strict = false;           ///< an NMEA line that cannot be used is an error
+  std::string format = "auto";  ///< "auto" (by content), "csv" or "nmea" (NMEA 0183 capture)
+  /// An NMEA line that cannot be used is an error, and so are files whose absolute stamps are
+  /// whole GPS week cycles apart (a receiver's week-number rollover; else aligned and noted).
+  bool strict = false;
   std::string time_format = {};  ///< --time-format; empty = the map's (auto)
   std::string date = {};         ///< --date YYYY-MM-DD; empty = the map's (none)
   std::string time_order = {};   ///< --time-order; empty = the map's (error)
