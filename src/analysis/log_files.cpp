@@ -45,9 +45,17 @@ void check_overlap(const core::Log& main, io::FileLog& part, double offset_s) {
 // (7168 days, 19.6 years) early; the last rollover was on 2019-04-06.
 constexpr std::int64_t kGpsWeekCycleNs = std::int64_t{1024} * 7 * 86400 * 1'000'000'000;
 
-// The difference of two absolute origins [s], `cycles` GPS week cycles added to the part's.
+// The difference of two absolute origins [s], `cycles` GPS week cycles (at most 3) added to
+// the part's: exact in integer nanoseconds, in floating point where that would overflow
+// (origins centuries apart, which no overlap check then accepts).
 double origin_offset_s(std::int64_t main_ns, std::int64_t part_ns, int cycles) {
-  return static_cast<double>(part_ns + cycles * kGpsWeekCycleNs - main_ns) * 1e-9;
+  std::int64_t ns = 0;
+  if (__builtin_sub_overflow(part_ns, main_ns, &ns) ||
+      __builtin_add_overflow(ns, cycles * kGpsWeekCycleNs, &ns)) {
+    return (static_cast<double>(part_ns) - static_cast<double>(main_ns)) * 1e-9 +
+           cycles * static_cast<double>(kGpsWeekCycleNs) * 1e-9;
+  }
+  return static_cast<double>(ns) * 1e-9;
 }
 
 // The offset [s] that puts `part`'s times on the main log's clock: the difference of their

@@ -508,7 +508,8 @@ bool LayoutAllocator::attainable(const Eigen::Vector3d& tau_d_b,
       (capacity.empty() || capacity.size() == units_.size()) &&
       std::all_of(capacity.begin(), capacity.end(), [](double c) { return c >= 0.0 && c <= 1.0; });
   if (!tau_d_b.allFinite() || !capacity_ok) return false;
-  if (warm && warm->capacity_ != capacity) {
+  if (warm && (warm->owner_ != this || warm->capacity_ != capacity)) {
+    warm->owner_ = this;
     warm->capacity_ = capacity;
     warm->by_regions_.clear();
   }
@@ -523,7 +524,12 @@ bool LayoutAllocator::attainable(const Eigen::Vector3d& tau_d_b,
   if (feasible) return true;
   const std::vector<int> guess = nearest_regions(relaxed);
   if (solve(setup(tau_d_b, capacity, guess), tau_d_b, false, warm).met) return true;
+  // The units of one region are in it from the start: an azimuth with one allowed arc has its
+  // arc there, its relaxation being the whole polygon.
   std::vector<int> regions(units_.size(), kRelaxed);
+  for (std::size_t k = 0; k < units_.size(); ++k) {
+    if (region_count(k) == 1) regions[k] = 0;
+  }
   int budget = 2 * options_.max_region_combinations;
   return search_regions({tau_d_b, capacity, warm}, regions, 0, budget);
 }

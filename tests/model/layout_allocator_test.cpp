@@ -219,6 +219,34 @@ TEST(LayoutAllocator, AttainableAgreesWithTheAllocation) {
   EXPECT_GT(no, 50);
 }
 
+// An azimuth barred from more than half the circle has one allowed arc (one region) and its
+// relaxation is the whole polygon: the search must hold it to its arc all the same. Random
+// layouts whose azimuths each have one sector of 190–250°, demands inside the regions and
+// scaled out of reach: attainable() and allocate().met agree.
+TEST(LayoutAllocator, AnAzimuthWithOneAllowedArcIsHeldToIt) {
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  int no = 0, questions = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<ThrusterUnit> layout = random_layout(rng);
+    for (ThrusterUnit& t : layout) {
+      if (t.type != UnitType::kAzimuth) continue;
+      const double from = std::floor(360.0 * u01(rng));
+      t.forbidden_deg = {{from, std::fmod(from + 190.0 + 60.0 * u01(rng), 360.0)}};
+    }
+    const LayoutAllocator allocator(layout);
+    for (const double scale : {1.0, 1.3, 2.0, 4.0}) {
+      const Eigen::Vector3d tau =
+          scale * tau_of(layout, random_commands(layout, allocator.options().polygon_sides, rng));
+      const bool met = allocator.allocate(tau).met;
+      EXPECT_EQ(allocator.attainable(tau), met) << "layout " << trial << ", scale " << scale;
+      no += met ? 0 : 1;
+      ++questions;
+    }
+  }
+  EXPECT_GT(no, questions / 5);
+}
+
 // A warm start changes where each programme starts, not the answer: along random walks of
 // demands across the edge of the reach (a bisection's questions, one warm start per walk and
 // capacity), attainable() with and without it agree.

@@ -28,7 +28,8 @@
 /// `max_region_combinations`), keeping the least priority-weighted unmet part. An
 /// attainable demand is therefore met (up to the polygon), and no azimuth ever points into a
 /// forbidden sector. Each convex programme is solved by the primal active-set method from the
-/// origin, which every region contains.
+/// origin, which every region contains (attainable() with a warm start: from the last solution
+/// of the same combination of regions).
 
 #include <map>
 #include <string>
@@ -89,7 +90,7 @@ struct LayoutAllocation {
 /// start from (LayoutAllocator::attainable): a bisection's next question, close to the last,
 /// then takes a step or two per programme instead of one per active constraint. The optimum is
 /// the same from any start, up to round-off. Bound to the allocator and the capacity it was
-/// filled with; another capacity empties it. Not shared between threads.
+/// filled with; another allocator or capacity empties it. Not shared between threads.
 class AllocationWarmStart {
  private:
   friend class LayoutAllocator;
@@ -97,6 +98,7 @@ class AllocationWarmStart {
     Eigen::VectorXd x;                  // the variables, each over its unit's rating
     std::vector<Eigen::Index> working;  // the constraints active there
   };
+  const void* owner_ = nullptr;  // the allocator it was filled by
   std::vector<double> capacity_;
   std::map<std::vector<int>, Solution> by_regions_;
 };
@@ -116,13 +118,14 @@ class LayoutAllocator {
   /// Whether some combination of regions meets τ_d (every residual within 10⁻⁶ of its scale),
   /// sooner than allocate(): a demand the convex relaxation misses is not solved again, and the
   /// combinations are searched by branch and bound (a unit's region fixed at a time, the units
-  /// after it relaxed: a programme that misses the demand cuts all below it; at most twice
-  /// max_region_combinations programmes), stopping at the first combination that meets it. For the
-  /// many yes-or-no questions of a capability rose. It answers as allocate(τ_d, capacity).met does
-  /// except within the 10⁻⁶ tolerance: allocate() keeps the combination of the least
-  /// priority-weighted unmet part, which may miss a component by a hair where another combination
-  /// meets them all. `warm`, when given, starts each programme from the last solution of its
-  /// combination of regions and keeps the new one.
+  /// after it relaxed: a programme that misses the demand cuts all below it; after the
+  /// relaxation and the first guess, at most twice max_region_combinations programmes),
+  /// stopping at the first combination that meets it. For the many yes-or-no questions of a
+  /// capability rose. It answers as allocate(τ_d, capacity).met does except within the 10⁻⁶
+  /// tolerance (allocate() keeps the combination of the least priority-weighted unmet part,
+  /// which may miss a component by a hair where another combination meets them all) and for
+  /// layouts with more combinations than either search's cap. `warm`, when given, starts each
+  /// programme from the last solution of its combination of regions and keeps the new one.
   bool attainable(const Eigen::Vector3d& tau_d_b, const std::vector<double>& capacity = {},
                   AllocationWarmStart* warm = nullptr) const;
 
