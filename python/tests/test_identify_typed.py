@@ -80,3 +80,15 @@ def test_thrust_map_out_is_checked_before_the_run(tmp_path):
     with pytest.raises(dynpos.InputError, match=r"\(out=\): folder '.*no' does not exist"):
         dynpos.identify_thrust_map(STEPS, col={"rpm.port": "cmd"}, unit={"rpm.port": "rpm"},
                                    apply=True, out=tmp_path / "no" / "x.csv")
+
+
+def test_a_unit_or_clock_offset_found_unused_later_names_the_keyword():
+    """Checked once the whole map is known (a unit without its column, an offset for a file no
+    role reads): the error is still the option's, spelled as Python spells it."""
+    with pytest.raises(dynpos.InputError, match=r"\(unit=\): 'u=kn': role 'u' has a unit") as e:
+        dynpos.identify_step(STEPS, col=STEP_COL, unit={"u": "kn"})
+    assert e.value.option == "unit"
+    with pytest.raises(dynpos.InputError,
+                       match=r"\(clock_offset=\): 'nva.csv=1(\.0)?': no role is read from") as e:
+        dynpos.identify_step(STEPS, col=STEP_COL, clock_offset={"nva.csv": 1.0})
+    assert e.value.option == "clock_offset"

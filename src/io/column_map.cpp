@@ -419,11 +419,33 @@ const RoleColumn* ColumnMap::find(std::string_view role) const {
   return it == roles_.end() ? nullptr : &it->second;
 }
 
+namespace {
+
+// A problem found by validate() at `where`: an error of the option it was given with when it
+// came from the command line ("--unit u=kn": option key unit, as the override's own errors), so
+// each front end spells it its own way; else of the map file.
+InputError deferred_error(const InputLocation& where, const std::string& problem,
+                          const std::string& hint) {
+  static constexpr std::pair<std::string_view, std::string_view> kKeys[] = {
+      {"--col ", "col"}, {"--unit ", "unit"}, {"--clock-offset ", "clock_offset"}};
+  if (where.file.empty()) {
+    for (const auto& [flag, key] : kKeys) {
+      if (where.column_name.rfind(flag, 0) != 0) continue;
+      const std::string argument = where.column_name.substr(flag.size());
+      return InputError::for_option(std::string(key), fmt::format("'{}': {}", argument, problem),
+                                    hint);
+    }
+  }
+  return InputError(where, problem, hint);
+}
+
+}  // namespace
+
 void ColumnMap::validate() const {
   format_.validate();
   for (const auto& [role, e] : roles_) {
     if (e.column.empty()) {
-      throw InputError(
+      throw deferred_error(
           e.source, fmt::format("role '{}' has a unit or scale but no column", role),
           fmt::format("map it with --col {}=COLUMN or in [roles] of the map file", role));
     }
@@ -433,10 +455,10 @@ void ColumnMap::validate() const {
       return role.second.file == file;
     });
     if (!used) {
-      throw InputError(options.source, fmt::format("no role is read from '{}'", file),
-                       fmt::format("map a role with --col ROLE=COLUMN@{} or file = \"...\" in "
-                                   "[roles], or check the file name",
-                                   file));
+      throw deferred_error(options.source, fmt::format("no role is read from '{}'", file),
+                           fmt::format("map a role with --col ROLE=COLUMN@{} or file = \"...\" in "
+                                       "[roles], or check the file name",
+                                       file));
     }
   }
   // Each file has one time axis: the main log its `time` column or time.sec with time.nsec;

@@ -12,6 +12,7 @@ namespace {
 
 using ::testing::ContainsRegex;
 using testing::input_error_message;
+using testing::input_error_option;
 
 TEST(ColumnMapFiles, CommandLineColumnAtFile) {
   ColumnMap map;
@@ -67,7 +68,8 @@ TEST(ColumnMapFiles, CommandLineErrorsNameTheOption) {
   apply_column_override(map, "heading=HDG@nav.csv");
   apply_clock_offset_override(map, "nva.csv=1");
   EXPECT_THAT(input_error_message([&] { map.validate(); }),
-              ContainsRegex("\\(--clock-offset nva.csv=1\\): no role is read from 'nva.csv'"));
+              ContainsRegex("\\(clock_offset\\): 'nva.csv=1': no role is read from 'nva.csv'"));
+  EXPECT_EQ(input_error_option([&] { map.validate(); }), "clock_offset");
 }
 
 TEST(ColumnMapFiles, TomlFileKeysAreRelativeToTheMapFolder) {

@@ -61,6 +61,19 @@ std::string input_error_message(F&& f) {
   return {};
 }
 
+/// The option key of the core::InputError `f` throws ("" for an error of a file); a test
+/// failure (and "(no error)") if it throws none.
+template <class F>
+std::string input_error_option(F&& f) {
+  try {
+    f();
+  } catch (const core::InputError& e) {
+    return e.option();
+  }
+  ADD_FAILURE() << "expected a core::InputError";
+  return "(no error)";
+}
+
 /// Path of a fixture under tests/data/io.
 inline std::filesystem::path fixture(std::string_view name) {
   return std::filesystem::path(DYNPOS_SOURCE_DIR) / "tests" / "data" / "io" / name;
