@@ -333,6 +333,12 @@ TEST(NmeaLog, NoValidSentenceInTheFirstLinesIsNotACapture) {
   EXPECT_THAT(input_error_message([&] { read_nmea_log(dir.write("log.csv", csv)); }),
               HasSubstr("log.csv:100000: not an NMEA capture: no valid NMEA sentence in the "
                         "first 100000 lines"));
+  // A sentence of an unknown type without a checksum is no sign of a capture: random bytes
+  // make one ("$P,…" is proprietary) about once in 2·10⁷ lines, and /dev/urandom was then read
+  // until killed.
+  EXPECT_THAT(input_error_message(
+                  [&] { read_nmea_log(dir.write("junk.nmea", "$P,1\n$QWERT,1,2\n" + csv)); }),
+              HasSubstr("junk.nmea:100000: not an NMEA capture"));
   // One valid sentence early enough, even of a type not read, and the rest is read.
   const auto late = dir.write(
       "late.nmea", framed("GPGSV,3,1,11,03,03,111,00,04,15,270,00") + "\n" + csv +
