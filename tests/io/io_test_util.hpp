@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <random>
 #include <string>
 #include <string_view>
@@ -49,29 +50,31 @@ class TempDir {
   std::filesystem::path path_;
 };
 
-/// The what() of the core::InputError `f` throws; a test failure (and "") if it throws none.
+/// The core::InputError `f` throws; a test failure (and none) if it throws none.
 template <class F>
-std::string input_error_message(F&& f) {
+std::optional<core::InputError> caught_input_error(F&& f) {
   try {
     f();
   } catch (const core::InputError& e) {
-    return e.what();
+    return e;
   }
   ADD_FAILURE() << "expected a core::InputError";
-  return {};
+  return std::nullopt;
 }
 
-/// The option key of the core::InputError `f` throws ("" for an error of a file); a test
-/// failure (and "(no error)") if it throws none.
+/// The what() of the core::InputError `f` throws; "" (and a test failure) if it throws none.
+template <class F>
+std::string input_error_message(F&& f) {
+  const auto e = caught_input_error(std::forward<F>(f));
+  return e ? e->what() : std::string();
+}
+
+/// The option key of the core::InputError `f` throws ("" for an error of a file); "(no error)"
+/// (and a test failure) if it throws none.
 template <class F>
 std::string input_error_option(F&& f) {
-  try {
-    f();
-  } catch (const core::InputError& e) {
-    return e.option();
-  }
-  ADD_FAILURE() << "expected a core::InputError";
-  return "(no error)";
+  const auto e = caught_input_error(std::forward<F>(f));
+  return e ? e->option() : std::string("(no error)");
 }
 
 /// Path of a fixture under tests/data/io.

@@ -135,6 +135,12 @@ Eigen::Vector3d tau_of(const std::vector<ThrusterUnit>& layout,
   return tau;
 }
 
+// A demand the layout can meet: the sum of random commands inside the regions.
+Eigen::Vector3d random_demand(const LayoutAllocator& allocator, std::mt19937& rng) {
+  return tau_of(allocator.units(),
+                random_commands(allocator.units(), allocator.options().polygon_sides, rng));
+}
+
 // Every command inside its unit's true region (to 10⁻⁹ of its rating).
 void expect_in_regions(const std::vector<ThrusterUnit>& layout, const LayoutAllocation& a) {
   for (std::size_t k = 0; k < layout.size(); ++k) {
@@ -208,8 +214,7 @@ TEST(LayoutAllocator, AttainableAgreesWithTheAllocation) {
     if (u01(rng) < 0.5) capacity[static_cast<std::size_t>(u01(rng) * layout.size())] = 0.0;
     for (const double scale : {1.0, 1.5, 3.0}) {
       SCOPED_TRACE(::testing::Message() << "layout " << trial << ", scale " << scale);
-      const Eigen::Vector3d tau =
-          scale * tau_of(layout, random_commands(layout, allocator.options().polygon_sides, rng));
+      const Eigen::Vector3d tau = scale * random_demand(allocator, rng);
       const bool met = allocator.allocate(tau, capacity).met;
       EXPECT_EQ(allocator.attainable(tau, capacity), met);
       (met ? yes : no) += 1;
@@ -236,8 +241,7 @@ TEST(LayoutAllocator, AnAzimuthWithOneAllowedArcIsHeldToIt) {
     }
     const LayoutAllocator allocator(layout);
     for (const double scale : {1.0, 1.3, 2.0, 4.0}) {
-      const Eigen::Vector3d tau =
-          scale * tau_of(layout, random_commands(layout, allocator.options().polygon_sides, rng));
+      const Eigen::Vector3d tau = scale * random_demand(allocator, rng);
       const bool met = allocator.allocate(tau).met;
       EXPECT_EQ(allocator.attainable(tau), met) << "layout " << trial << ", scale " << scale;
       no += met ? 0 : 1;
@@ -261,8 +265,7 @@ TEST(LayoutAllocator, AWarmStartGivesTheSameAnswers) {
     for (const bool failed : {false, true}) {
       std::vector<double> capacity(layout.size(), 1.0);
       if (failed) capacity.front() = 0.0;
-      const Eigen::Vector3d edge =
-          tau_of(layout, random_commands(layout, allocator.options().polygon_sides, rng));
+      const Eigen::Vector3d edge = random_demand(allocator, rng);
       double lo = 0.5, hi = 2.0;  // bisect the factor on the demand, as a rose does the wind
       for (int k = 0; k < 12; ++k) {
         const double mid = 0.5 * (lo + hi);
