@@ -108,7 +108,6 @@ CapabilityReport run_capability(const CapabilityRequest& q) {
   q.validate();
   const std::filesystem::path file = vessel_file_or_default(q.vessel);
   const scenario::VesselConfig vessel = scenario::load_vessel_config(file);
-  if (q.level == 3) scenario::check_simulated(vessel, "level");
   // The cases are the vessel's: the model's actuators, or a layout's units and groups.
   if (q.failure != "none" && q.failure != "worst") {
     capability::check_failure(vessel, q.failure, "failure");

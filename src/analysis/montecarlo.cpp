@@ -356,7 +356,7 @@ MonteCarloReport run_montecarlo(const MonteCarloRequest& request) {
   spec.validate();
   const std::filesystem::path vessel_file = vessel_file_or_default(request.vessel_file);
   const scenario::VesselConfig vessel = scenario::load_vessel_config(vessel_file);
-  scenario::check_simulated(vessel);
+  scenario::check_simulated(vessel, spec);
   MonteCarloReport report;
   report.scenario = spec.name;
   report.run = {fnv1a64_of_file(scenario_file), fnv1a64_of_file(vessel_file), spec.duration_s,

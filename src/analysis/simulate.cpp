@@ -59,7 +59,7 @@ std::vector<scenario::RunSummary> simulate_campaign(const SimulateRequest& reque
   std::vector<scenario::ScenarioSpec> specs = scenario::load_campaign(scenario_dir);
   for (scenario::ScenarioSpec& spec : specs) apply_overrides(request, spec);
   const scenario::VesselConfig vessel = scenario::load_vessel_config(vessel_file);
-  scenario::check_simulated(vessel);
+  for (const scenario::ScenarioSpec& spec : specs) scenario::check_simulated(vessel, spec);
   check_simulation_resources(specs, core::job_count(request.jobs, specs.size()), request.out_dir);
   std::vector<scenario::RunSummary> runs =
       scenario::run_campaign(specs, vessel, request.seed, request.out_dir, request.jobs);
@@ -73,7 +73,7 @@ SimulatedRun simulate_one(const SimulateRequest& request, const std::filesystem:
       scenario::load_scenario(scenario::resolve_scenario(request.scenario, scenario_dir));
   apply_overrides(request, spec);
   const scenario::VesselConfig vessel = scenario::load_vessel_config(vessel_file);
-  scenario::check_simulated(vessel);
+  scenario::check_simulated(vessel, spec);
   check_simulation_resources({spec}, 1, request.out_dir);
   std::size_t rows = 0;
   const scenario::ScenarioRun run = scenario::run_scenario_into(

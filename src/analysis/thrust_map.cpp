@@ -62,7 +62,14 @@ AppliedThrust apply_maps(const ThrustMapRequest& request, const core::Log& log) 
   const scenario::VesselConfig vessel =
       scenario::load_vessel_config(vessel_file_or_default(request.vessel));
   // The maps are the model's propellers' and tunnel's; a layout's units have none of their own.
-  scenario::check_simulated(vessel);
+  if (!vessel.thrusters.empty()) {
+    throw core::InputError::for_option(
+        "vessel",
+        fmt::format("{} has a [[thruster]] layout of {} units; --apply knows only the thrust "
+                    "maps of the model's own propellers and tunnel",
+                    vessel.source, vessel.thrusters.size()),
+        "give a vessel file without [[thruster]] tables, or fit the units' maps without --apply");
+  }
   const auto maps = vessel_maps(vessel);
   AppliedThrust out{core::Log(log.time()), 0, vessel.source, request.abs_speed, request.out};
   for (const std::string& name : thruster_names(log, "rpm")) {

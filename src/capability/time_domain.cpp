@@ -11,6 +11,7 @@
 #include <thread>
 #include <utility>
 
+#include "dynpos/capability/feasibility.hpp"
 #include "dynpos/capability/thrust_region.hpp"
 #include "dynpos/core/error.hpp"
 #include "dynpos/core/parallel_for.hpp"
@@ -145,7 +146,15 @@ RunVerdict time_domain_run(const scenario::VesselConfig& vessel,
                            const std::vector<std::string>& failed, const Environment& environment,
                            double from_rel_deg, const TimeDomainOptions& options) {
   scenario::VesselConfig v = vessel;
-  v.allocation = with_failures(vessel.allocation, failed);
+  if (vessel.thrusters.empty()) {
+    v.allocation = with_failures(vessel.allocation, failed);
+  } else {  // a layout's units and groups
+    v.thruster_capacity.assign(vessel.thrusters.size(), 1.0);
+    for (const std::string& name : failed) {
+      const FailureCase c = failure_case(vessel.thrusters, name);
+      for (std::size_t k = 0; k < c.capacity.size(); ++k) v.thruster_capacity[k] *= c.capacity[k];
+    }
+  }
   const scenario::ScenarioRun run =
       scenario::run_scenario(hold_spec(environment, from_rel_deg, options), v, options.seed);
   const core::Log& truth = run.truth_log;

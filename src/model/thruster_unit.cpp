@@ -90,6 +90,13 @@ void ThrusterUnit::validate() const {
   if (!finite(rate_deg_per_s) || rate_deg_per_s <= 0.0) {
     bad_field(*this, "rate_deg_per_s", fmt::format("{}°/s is not a positive rate", rate_deg_per_s));
   }
+  if (time_constant_s && (!finite(*time_constant_s) || *time_constant_s <= 0.0)) {
+    bad_field(*this, "time_constant_s",
+              fmt::format("{} s is not a positive time constant", *time_constant_s));
+  }
+  if (!finite(dead_time_s) || dead_time_s < 0.0) {
+    bad_field(*this, "dead_time_s", fmt::format("{} s is not a dead time ≥ 0", dead_time_s));
+  }
   if (!finite(weight) || weight <= 0.0) {
     bad_field(*this, "weight", fmt::format("{} is not a positive weight", weight));
   }

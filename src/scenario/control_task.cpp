@@ -1,6 +1,8 @@
 #include "dynpos/scenario/control_task.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <tuple>
 
 #include "dynpos/core/angle.hpp"
@@ -32,19 +34,123 @@ control::HeadingHoldParams heading_hold_params(const ScenarioSpec& spec,
 const Eigen::Vector3d kNoSetpoint = Eigen::Vector3d::Constant(core::kMissing);
 const Eigen::Vector3d kNoBias = Eigen::Vector3d::Zero();
 
+// An azimuth below this fraction of its rating keeps its direction (the file comment).
+constexpr double kIdleThrustFraction = 0.01;
+
+// The direction an azimuth rests in: ahead, or the middle of its first allowed arc when ahead
+// is forbidden.
+double rest_angle_rad(const model::ThrusterUnit& unit) {
+  if (unit.type != model::UnitType::kAzimuth ||
+      !model::in_forbidden_sector(0.0, unit.forbidden_deg))
+    return 0.0;
+  const model::AllowedArc arc = model::allowed_arcs(unit.forbidden_deg).front();
+  return arc.from_rad + 0.5 * arc.span_rad;
+}
+
+// The orders that make a unit's allocated command, its steering held at `angle_before` [rad]
+// while an azimuth idles; `angle_now` is where its steering is [rad] (the thrust cut).
+ActuatorCommands::Unit unit_order(const model::UnitDrive& drive, const model::UnitCommand& c,
+                                  double angle_before, double angle_now) {
+  const model::ThrusterUnit& unit = drive.unit();
+  ActuatorCommands::Unit order;
+  order.thrust_N = c.thrust_N;
+  double thrust = c.thrust_N;
+  switch (unit.type) {
+    case model::UnitType::kAzimuth: {
+      const bool idle = c.thrust_N < kIdleThrustFraction * unit.max_thrust_N;
+      // The command's direction, unwrapped next to the order before (no needless turn).
+      order.angle_rad =
+          idle ? angle_before
+               : angle_before + std::remainder(c.angle_rad - angle_before, 2.0 * std::numbers::pi);
+      thrust *= std::max(0.0, std::cos(order.angle_rad - angle_now));
+      break;
+    }
+    case model::UnitType::kPropellerRudder:
+      order.angle_rad = drive.rudder_angle_for(c.rudder_force_N, c.thrust_N);
+      break;
+    default:
+      break;
+  }
+  order.n_rps = drive.shaft_speed_for(thrust);
+  return order;
+}
+
+// The allocation of one control step (the file comment). An azimuth the optimum sends the long
+// way round a forbidden sector (more than half a turn) is first held within a quarter turn of
+// where it points, clear of the sector; that allocation is taken when it meets the demand.
+// Without it an azimuth beside a forbidden sector is sent from one edge of the sector to the
+// other whenever the demand's surge changes sign: round the far side, at no thrust, again and
+// again (seen on the supply vessel with a main azimuth lost in a beam sea).
+model::LayoutAllocation steered_allocation(const std::vector<model::UnitDrive>& drives,
+                                           const std::vector<double>& capacity,
+                                           const Eigen::Vector3d& tau_d_b,
+                                           const sim::ConstVectorRef& x) {
+  std::vector<model::ThrusterUnit> units;
+  for (const model::UnitDrive& d : drives) units.push_back(d.unit());
+  model::LayoutAllocation a = model::LayoutAllocator(units).allocate(tau_d_b, capacity);
+  bool held = false;
+  for (std::size_t k = 0; k < drives.size(); ++k) {
+    const double angle = x[VesselPlant::kUnits + 2 * static_cast<Eigen::Index>(k) + 1];
+    const model::UnitCommand& c = a.units[k];
+    if (c.thrust_N < kIdleThrustFraction * units[k].max_thrust_N ||
+        std::abs(drives[k].turn_rad(angle, c.angle_rad)) <= std::numbers::pi) {
+      continue;
+    }
+    const auto reach = drives[k].reachable(angle, 0.5 * std::numbers::pi);
+    if (!reach || reach->span_rad < 1e-6) continue;
+    // The rest of the circle forbidden: from the window's end round to its start [deg].
+    const auto deg = [](double rad) {
+      const double d = core::rad_to_deg(core::wrap_2pi(rad));
+      return d >= 360.0 ? 0.0 : d;
+    };
+    units[k].forbidden_deg = {{deg(reach->from_rad + reach->span_rad), deg(reach->from_rad)}};
+    held = true;
+  }
+  if (!held) return a;
+  model::LayoutAllocation b = model::LayoutAllocator(std::move(units)).allocate(tau_d_b, capacity);
+  return b.met ? b : a;
+}
+
+// The trim of a layout: steering at rest, or each unit at the steady state of the allocation of
+// the surge force x_needed_N.
+void trim_units(const VesselConfig& vessel, const VesselPlant& plant, double x_needed_N,
+                InitialTrim& trim) {
+  const auto& drives = plant.drives();
+  model::LayoutAllocation a;
+  if (x_needed_N != 0.0) {
+    a = model::LayoutAllocator(vessel.thrusters).allocate({x_needed_N, 0.0, 0.0}, plant.capacity());
+  }
+  for (std::size_t k = 0; k < drives.size(); ++k) {
+    const double rest = rest_angle_rad(drives[k].unit());
+    ActuatorCommands::Unit order{0.0, rest, 0.0};
+    if (!a.units.empty()) order = unit_order(drives[k], a.units[k], rest, rest);
+    if (!a.units.empty() && drives[k].unit().type == model::UnitType::kAzimuth) {
+      order.angle_rad = a.units[k].thrust_N > 0.0 ? a.units[k].angle_rad : rest;
+      order.n_rps = drives[k].shaft_speed_for(a.units[k].thrust_N);
+    }
+    const Eigen::Index i = Plant::kUnits + 2 * static_cast<Eigen::Index>(k);
+    trim.x0[i] = order.n_rps;
+    trim.x0[i + 1] = order.angle_rad;
+    trim.commands.units.push_back(order);
+  }
+}
+
 }  // namespace
 
 InitialTrim initial_trim(const ScenarioSpec& spec, const VesselConfig& vessel,
                          const VesselPlant& plant) {
   InitialTrim trim;
   trim.x0 = plant.initial_state(core::deg_to_rad(spec.initial_heading_deg));
-  if (spec.initial_surge_mps == 0.0) return trim;
   const JoystickParams& js = vessel.joystick;
   const double u0 = spec.initial_surge_mps;
+  const double x_needed =
+      u0 == 0.0 ? 0.0 : -plant.hull().hydrodynamic_forces({u0, 0, 0}, {u0, 0, 0}).x();
+  if (!plant.drives().empty()) trim_units(vessel, plant, x_needed, trim);
+  if (u0 == 0.0) return trim;
   trim.x0[Plant::kHull + Hull::kSurge] = u0;
-  const double x_needed = -plant.hull().hydrodynamic_forces({u0, 0, 0}, {u0, 0, 0}).x();
   trim.demand_pct.x() = 100.0 * x_needed / js.max_surge_N;
   trim.lever_pct.x() = lever_pct_for_fraction(x_needed / js.max_surge_N, js.lever_exponent);
+  if (!plant.drives().empty()) return trim;
   const double n = plant.propeller().shaft_speed_for_thrust(0.5 * x_needed);
   trim.x0.segment<4>(Plant::kPort) = plant.propeller().steady_state(n, u0);
   trim.x0.segment<4>(Plant::kStb) = plant.propeller().steady_state(n, u0);
@@ -60,6 +166,7 @@ ControlTask::ControlTask(const ScenarioSpec& spec, const VesselConfig& vessel,
       propeller_(plant.propeller()),
       allocator_(plant.propeller(), plant.rudder(), plant.tunnel(), plant.layout(),
                  vessel.allocation),
+      plant_(plant),
       joystick_(spec.joystick, trim.lever_pct),
       rudder_(spec.rudder, plant.rudder(), plant.hull(), vessel.layout.p_port_rudder_b.x(),
               spec.dt_s),
@@ -103,19 +210,38 @@ void ControlTask::step(double t, const sim::ConstVectorRef& x) {
       if (demand->hold_split) in.hold_forces = forces_N_;
     }
   }
+  if (!plant_.drives().empty()) {
+    const ActuatorCommands before = commands_;
+    const model::LayoutAllocation a = allocate_units(in.tau_d_b, x);
+    if (dp_) dp_->integrate_bias(x[Plant::kHull + Hull::kYaw], a.met);
+    unmet_max_ = unmet_max_.cwiseMax(a.tau_unmet_b.cwiseAbs());
+    if (changed) record_command(t, before, joystick_tau_b, a.tau_unmet_b);
+    return;
+  }
   in.surge_speed = x[Plant::kHull + Hull::kSurge];
   const model::ThrustAllocationResult a = allocator_.allocate(in);
   if (dp_) {
     dp_->integrate_bias(x[Plant::kHull + Hull::kYaw], a.status == model::AllocationStatus::kOk);
   }
   const ActuatorCommands before = commands_;
-  commands_ = {a.n_port, a.n_stb, a.rudder_port, a.rudder_stb, a.n_tunnel};
+  commands_ = {a.n_port, a.n_stb, a.rudder_port, a.rudder_stb, a.n_tunnel, {}};
   forces_N_ = a.forces;
   const std::optional<double>& rudder_rad =
       rudder_.advance(t, before.rudder_stb_rad, x[Plant::kHull + Hull::kSurge]);
   if (rudder_rad) commands_.rudder_port_rad = commands_.rudder_stb_rad = *rudder_rad;
   unmet_max_ = unmet_max_.cwiseMax(a.tau_unmet_b.cwiseAbs());
   if (changed) record_command(t, before, joystick_tau_b, a.tau_unmet_b);
+}
+
+model::LayoutAllocation ControlTask::allocate_units(const Eigen::Vector3d& tau_d_b,
+                                                    const sim::ConstVectorRef& x) {
+  model::LayoutAllocation a = steered_allocation(plant_.drives(), plant_.capacity(), tau_d_b, x);
+  const auto& drives = plant_.drives();
+  for (std::size_t k = 0; k < drives.size(); ++k) {
+    const double angle_now = x[Plant::kUnits + 2 * static_cast<Eigen::Index>(k) + 1];
+    commands_.units[k] = unit_order(drives[k], a.units[k], commands_.units[k].angle_rad, angle_now);
+  }
+  return a;
 }
 
 void ControlTask::record_command(double t, const ActuatorCommands& before,
@@ -130,12 +256,18 @@ void ControlTask::record_command(double t, const ActuatorCommands& before,
   c.demand_surge_N = demand_b.x();
   c.demand_sway_N = demand_b.y();
   c.demand_yaw_Nm = demand_b.z();
+  c.tau_unmet = tau_unmet_b;
+  if (!plant_.drives().empty()) {  // the model's actuators are not there
+    c.n_port_rps = c.n_stb_rps = c.n_tunnel_rps = core::kMissing;
+    c.rudder_port_deg = c.rudder_stb_deg = core::kMissing;
+    command_truth_.push_back(c);
+    return;
+  }
   c.n_port_rps = commands_.n_port_rps;
   c.n_stb_rps = commands_.n_stb_rps;
   c.rudder_port_deg = core::rad_to_deg(commands_.rudder_port_rad);
   c.rudder_stb_deg = core::rad_to_deg(commands_.rudder_stb_rad);
   c.n_tunnel_rps = commands_.n_tunnel_rps;
-  c.tau_unmet = tau_unmet_b;
   command_truth_.push_back(c);
   // Both main propellers (one model): the sway tables 3.27 and 3.29 use the starboard and the
   // port propeller respectively.

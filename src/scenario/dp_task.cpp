@@ -9,6 +9,19 @@ control::DpControllerParams dp_controller_params(const VesselConfig& vessel,
   p.M(1, 2) = p.M(2, 1) = 0.5 * (p.M(1, 2) + p.M(2, 1));
   p.D =
       Eigen::Vector3d(vessel.hull.x_u_Ns_m, vessel.hull.y_v_Ns_m, vessel.hull.n_r_Nms).asDiagonal();
+  // The gains are the virtual Gunnerus's; another hull keeps their bandwidths (K_p) and damping
+  // ratios with K_d and K_i scaled by its inertia in each axis, and the anti-windup bound by its
+  // joystick's force and moment (what its thrusters give there). 1 for the Gunnerus itself.
+  const VesselConfig gunnerus;
+  const Eigen::Vector3d inertia =
+      p.M.diagonal().cwiseQuotient(model::Hull(gunnerus.hull).mass_matrix().diagonal());
+  p.Kd.diagonal() = p.Kd.diagonal().cwiseProduct(inertia);
+  p.Ki.diagonal() = p.Ki.diagonal().cwiseProduct(inertia);
+  const JoystickParams& js = vessel.joystick;
+  const JoystickParams& gjs = gunnerus.joystick;
+  p.bias_limit = p.bias_limit.cwiseProduct(Eigen::Vector3d(js.max_surge_N / gjs.max_surge_N,
+                                                           js.max_sway_N / gjs.max_sway_N,
+                                                           js.max_yaw_Nm / gjs.max_yaw_Nm));
   return p;
 }
 

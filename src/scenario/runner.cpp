@@ -42,13 +42,21 @@ void check_control_rate(const ScenarioSpec& spec, const VesselConfig& vessel) {
 // True time constants the model defines (thesis tables 3.23–3.36 are what they compare to).
 TimeConstantsTruth time_constants(const VesselConfig& vessel, const VesselPlant& plant,
                                   double dt_s) {
-  const double x_rudder = vessel.layout.p_port_rudder_b.x();
+  // The rudder's lever of the Nomoto gain; a layout's aftmost unit stands for it.
+  double x_rudder = vessel.layout.p_port_rudder_b.x();
+  for (std::size_t k = 0; k < vessel.thrusters.size(); ++k) {
+    x_rudder = k == 0 ? vessel.thrusters[k].x_m : std::min(x_rudder, vessel.thrusters[k].x_m);
+  }
   const auto nomoto_at = [&](double knots) {
     return nomoto_truth(plant.hull().nomoto(knots * 1852.0 / 3600.0, x_rudder));
   };
   TimeConstantsTruth tc;
   tc.nomoto_3kn = nomoto_at(3.0);
   tc.nomoto_6kn = nomoto_at(6.0);
+  if (!plant.drives().empty()) {  // the model's rudder is not on board
+    tc.rudder_0_to_20deg = {core::kMissing, core::kMissing};
+    return tc;
+  }
   tc.rudder_0_to_20deg =
       model::rudder_step_truth(plant.rudder(), 0.0, core::deg_to_rad(20.0), dt_s);
   return tc;
@@ -75,6 +83,7 @@ ScenarioRun simulate(const ScenarioSpec& spec, const VesselConfig& vessel, std::
                      const RunBlockSink& sink, std::size_t block_rows) {
   spec.validate();
   vessel.validate();
+  check_simulated(vessel, spec);
   const VesselPlant plant(vessel);
   const TrialClock clock(spec);
   TrialEnvironment environment(spec, vessel, seed, clock);

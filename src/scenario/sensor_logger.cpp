@@ -22,10 +22,20 @@ double wrap_deg(double angle_deg, double resolution) {
 
 }  // namespace
 
-SensorLogger::SensorLogger(const VesselConfig& vessel, const model::Thruster& propeller,
-                           const model::TunnelThruster& tunnel, double log_rate_hz,
-                           std::uint64_t seed)
-    : propeller_(propeller), tunnel_(tunnel) {
+SensorLogger::Channel SensorLogger::channel(const sensors::ChannelSensorParams& p,
+                                            const std::string& stream, double scale,
+                                            double log_rate_hz, std::uint64_t seed) {
+  Channel c;
+  c.schedule = make_schedule(p.timing, log_rate_hz, stream.c_str());
+  max_delay_ = std::max(max_delay_, c.schedule.delay);
+  c.sensor.emplace(p.noise, c.schedule.period_s, sim::Rng(seed, stream));
+  c.scale = scale;
+  c.resolution = p.noise.resolution * scale;
+  return c;
+}
+
+void SensorLogger::add_motion_sensors(const VesselConfig& vessel, double log_rate_hz,
+                                      std::uint64_t seed) {
   const sensors::SensorSuiteParams& s = vessel.sensors;
   s.validate();
   const auto track = [&](const sensors::SampleSchedule& sch) {
@@ -47,53 +57,85 @@ SensorLogger::SensorLogger(const VesselConfig& vessel, const model::Thruster& pr
     for (const char* c : {"p", "q", "r"}) add_name(m.name + "." + c, "deg/s");
     for (const char* c : {"ax", "ay", "az"}) add_name(m.name + "." + c, "m/s^2");
   }
-  // A scalar channel named `stream` (its noise stream) with SI → logged `scale`.
-  const auto channel = [&](const sensors::ChannelSensorParams& p, const std::string& stream,
-                           double scale) {
-    Channel c;
-    c.schedule = track(make_schedule(p.timing, log_rate_hz, stream.c_str()));
-    c.sensor.emplace(p.noise, c.schedule.period_s, sim::Rng(seed, stream));
-    c.scale = scale;
-    c.resolution = p.noise.resolution * scale;
-    return c;
-  };
   const double deg = core::kDegPerRad;
   if (s.gyro.timing.enabled()) {
-    gyro_ = channel(s.gyro, "gyro", deg);
+    gyro_ = channel(s.gyro, "gyro", deg, log_rate_hz, seed);
     add_name("heading", "deg");
   }
   if (s.speed_log.timing.enabled()) {
-    speed_ = {channel(s.speed_log, "speed_log.u", 1.0), channel(s.speed_log, "speed_log.v", 1.0)};
+    speed_ = {channel(s.speed_log, "speed_log.u", 1.0, log_rate_hz, seed),
+              channel(s.speed_log, "speed_log.v", 1.0, log_rate_hz, seed)};
     add_name("u", "m/s");
     add_name("v", "m/s");
   }
   if (s.wind_speed.timing.enabled()) {
     sensors::ChannelSensorParams dir = s.wind_dir;
     dir.timing = s.wind_speed.timing;  // one instrument, one timing
-    wind_ = {channel(s.wind_speed, "wind.speed", 1.0), channel(dir, "wind.dir", deg)};
+    wind_ = {channel(s.wind_speed, "wind.speed", 1.0, log_rate_hz, seed),
+             channel(dir, "wind.dir", deg, log_rate_hz, seed)};
     add_name("wind_speed", "m/s");
     add_name("wind_dir", "deg");
   }
+}
+
+SensorLogger::SensorLogger(const VesselConfig& vessel, const model::Thruster& propeller,
+                           const model::TunnelThruster& tunnel, double log_rate_hz,
+                           std::uint64_t seed)
+    : propeller_(propeller), tunnel_(tunnel) {
+  add_motion_sensors(vessel, log_rate_hz, seed);
+  const sensors::SensorSuiteParams& s = vessel.sensors;
   for (int i = 0; i < 3; ++i) {
     const bool main = i < 2;
     const auto& rpm = main ? s.propeller_rpm : s.tunnel_rpm;
     const auto& power = main ? s.propeller_power : s.tunnel_power;
     const std::string side = kSide[i];
     if (rpm.timing.enabled()) {
-      rpm_[i] = channel(rpm, "rpm." + side, kRpsToRpm);
+      rpm_[i] = channel(rpm, "rpm." + side, kRpsToRpm, log_rate_hz, seed);
       add_name("rpm." + side, "rpm");
       add_name("thrust." + side, "kN");  // the DP system's thrust from the measured rpm
     }
     if (power.timing.enabled()) {
-      power_[i] = channel(power, "power." + side, 1e-3);
+      power_[i] = channel(power, "power." + side, 1e-3, log_rate_hz, seed);
       add_name("power." + side, "kW");
     }
   }
   if (s.rudder_angle.timing.enabled()) {
     for (int i = 0; i < 2; ++i) {
-      rudder_[i] = channel(s.rudder_angle, std::string("rudder.") + kSide[i], deg);
+      rudder_[i] = channel(s.rudder_angle, std::string("rudder.") + kSide[i], core::kDegPerRad,
+                           log_rate_hz, seed);
       add_name(std::string("rudder.") + kSide[i], "deg");
     }
+  }
+}
+
+SensorLogger::SensorLogger(const VesselConfig& vessel, const std::vector<model::UnitDrive>& drives,
+                           double log_rate_hz, std::uint64_t seed) {
+  add_motion_sensors(vessel, log_rate_hz, seed);
+  const sensors::SensorSuiteParams& s = vessel.sensors;
+  for (const model::UnitDrive& drive : drives) {
+    const model::ThrusterUnit& unit = drive.unit();
+    const bool tunnel = unit.type == model::UnitType::kTunnel;
+    const auto& rpm = tunnel ? s.tunnel_rpm : s.propeller_rpm;
+    const auto& power = tunnel ? s.tunnel_power : s.propeller_power;
+    UnitChannels u;
+    u.drive = &drive;
+    if (rpm.timing.enabled()) {
+      u.rpm = channel(rpm, "rpm." + unit.name, kRpsToRpm, log_rate_hz, seed);
+      add_name("rpm." + unit.name, "rpm");
+      add_name("thrust." + unit.name, "kN");  // the DP system's thrust from the measured rpm
+    }
+    if (power.timing.enabled()) {
+      u.power = channel(power, "power." + unit.name, 1e-3, log_rate_hz, seed);
+      add_name("power." + unit.name, "kW");
+    }
+    const char* angle = unit.type == model::UnitType::kAzimuth           ? "azimuth."
+                        : unit.type == model::UnitType::kPropellerRudder ? "rudder."
+                                                                         : nullptr;
+    if (angle != nullptr && s.rudder_angle.timing.enabled()) {
+      u.angle = channel(s.rudder_angle, angle + unit.name, core::kDegPerRad, log_rate_hz, seed);
+      add_name(angle + unit.name, "deg");
+    }
+    units_.push_back(std::move(u));
   }
 }
 
@@ -167,6 +209,10 @@ void SensorLogger::record(std::size_t tick, const VesselSample& now, std::span<d
     scalar((*wind_)[1], [](const VesselSample& t) { return t.wind_from_rad; });
     if (!core::is_missing(row[at])) row[at] = wrap_deg(row[at], (*wind_)[1].resolution);
   }
+  if (!units_.empty()) {
+    record_units(tick, row, i);
+    return;
+  }
   for (int k = 0; k < 3; ++k) {
     if (rpm_[k]) {
       const std::size_t at = i;
@@ -181,6 +227,31 @@ void SensorLogger::record(std::size_t tick, const VesselSample& now, std::span<d
   }
   for (int k = 0; k < 2; ++k) {
     if (rudder_[k]) scalar(*rudder_[k], [k](const VesselSample& t) { return t.rudder_rad[k]; });
+  }
+}
+
+void SensorLogger::record_units(std::size_t tick, std::span<double> row, std::size_t& i) {
+  const auto scalar = [&](Channel& c, auto truth_of) {
+    row[i++] =
+        c.schedule.fires(tick) ? measure(c, truth_of(delayed(c.schedule.delay))) : core::kMissing;
+  };
+  for (std::size_t k = 0; k < units_.size(); ++k) {
+    UnitChannels& u = units_[k];
+    if (u.rpm) {
+      const std::size_t at = i;
+      scalar(*u.rpm, [k](const VesselSample& t) { return t.units[k].shaft_speed_rps; });
+      const double n_rps = row[at] / kRpsToRpm;
+      row[i++] = core::is_missing(n_rps) ? core::kMissing : u.drive->thrust_N(n_rps) * 1e-3;
+    }
+    if (u.power) scalar(*u.power, [k](const VesselSample& t) { return t.units[k].power_W; });
+    if (u.angle) {
+      const std::size_t at = i;
+      const bool azimuth = u.drive->unit().type == model::UnitType::kAzimuth;
+      scalar(*u.angle, [k, azimuth](const VesselSample& t) {
+        return azimuth ? core::wrap_2pi(t.units[k].angle_rad) : t.units[k].angle_rad;
+      });
+      if (azimuth && !core::is_missing(row[at])) row[at] = wrap_deg(row[at], u.angle->resolution);
+    }
   }
 }
 

@@ -57,8 +57,34 @@ std::vector<sim::RecordedSignal> TruthRecorder::motion_signals() {
   };
 }
 
+// A [[thruster]] layout's units: shaft speed, thrust, power and steering angle of each.
+std::vector<sim::RecordedSignal> TruthRecorder::unit_signals() {
+  std::vector<sim::RecordedSignal> out;
+  const auto& drives = control_.plant().drives();
+  for (std::size_t k = 0; k < drives.size(); ++k) {
+    const std::string& name = drives[k].unit().name;
+    const auto unit = [this, k]() -> const model::UnitOutput& { return sample_->units[k]; };
+    out.push_back(truth_channel("rpm." + name, "rps", [unit] { return unit().shaft_speed_rps; }));
+    out.push_back(truth_channel("thrust." + name, "N", [unit] { return unit().thrust_N; }));
+    out.push_back(truth_channel("power." + name, "W", [unit] { return unit().power_W; }));
+    switch (drives[k].unit().type) {
+      case model::UnitType::kAzimuth:
+        out.push_back(truth_channel("azimuth." + name, "rad",
+                                    [unit] { return core::wrap_2pi(unit().angle_rad); }));
+        break;
+      case model::UnitType::kPropellerRudder:
+        out.push_back(truth_channel("rudder." + name, "rad", [unit] { return unit().angle_rad; }));
+        break;
+      default:
+        break;
+    }
+  }
+  return out;
+}
+
 // Shaft speeds, thrusts, powers and rudder angles of the actuators.
 std::vector<sim::RecordedSignal> TruthRecorder::actuator_signals() {
+  if (!control_.plant().drives().empty()) return unit_signals();
   std::vector<sim::RecordedSignal> out;
   const char* const thrusters[] = {"port", "stb", "tunnel"};
   for (int k = 0; k < 3; ++k) {

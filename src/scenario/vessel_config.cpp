@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "dynpos/core/error.hpp"
+#include "dynpos/model/unit_drive.hpp"
 #include "param_fields.hpp"
 #include "toml_fields.hpp"
 #include "vessel_thrusters.hpp"
@@ -79,7 +80,57 @@ void VesselConfig::validate() const {
   if (sensors.gnss.size() != 3 || sensors.mru.size() != 2) {
     throw core::InputError({}, "VesselConfig: the vessel file has 3 antennas and 2 MRUs");
   }
+  for (const model::ThrusterUnit& unit : thrusters) unit.validate();
+  if (!thruster_capacity.empty() && thruster_capacity.size() != thrusters.size()) {
+    throw core::InputError::for_option(
+        "thruster_capacity",
+        fmt::format("{} capacities for {} units", thruster_capacity.size(), thrusters.size()));
+  }
+  for (const double c : thruster_capacity) {
+    if (!(c >= 0.0 && c <= 1.0)) {
+      throw core::InputError::for_option("thruster_capacity",
+                                         fmt::format("{} is not a capacity in [0, 1]", c));
+    }
+  }
 }
+
+namespace {
+
+// A [[thruster]] unit as the vessel file gives it, with the drive the simulator makes of it.
+nlohmann::json unit_json(const model::ThrusterUnit& u) {
+  nlohmann::json j = {{"name", u.name},
+                      {"type", model::unit_type_name(u.type)},
+                      {"x_m", u.x_m},
+                      {"y_m", u.y_m},
+                      {"max_thrust_N", u.max_thrust_N},
+                      {"max_reverse_thrust_N", u.max_reverse_thrust_N},
+                      {"weight", u.weight},
+                      {"dead_time_s", u.dead_time_s}};
+  if (!u.group.empty()) j["group"] = u.group;
+  if (u.type == model::UnitType::kAzimuth) {
+    j["rate_deg_per_s"] = u.rate_deg_per_s;
+    nlohmann::json sectors = nlohmann::json::array();
+    for (const model::AngleSector& s : u.forbidden_deg) sectors.push_back({s.from_deg, s.to_deg});
+    j["forbidden_deg"] = sectors;
+  }
+  if (u.type == model::UnitType::kPropellerRudder) {
+    j["rudder_lift_per_thrust"] = u.rudder_lift_per_thrust;
+    j["rudder_lift_at_zero_N"] = u.rudder_lift_at_zero_N;
+    j["rudder_max_force_N"] = u.rudder_max_force_N;
+    j["rudder_x_m"] = u.rudder_x_m.value_or(u.x_m);
+  }
+  const model::UnitDriveParams d = model::drive_params(u);
+  j["time_constant_s"] = d.time_constant_s;
+  j["drive"] = {{"diameter_m", d.diameter_m},
+                {"max_shaft_speed_rps", d.max_shaft_speed_rps},
+                {"kt_ahead", d.kt_ahead},
+                {"kt_astern", d.kt_astern},
+                {"kq", d.kq},
+                {"rate_limit_rps2", d.rate_limit_rps2}};
+  return j;
+}
+
+}  // namespace
 
 nlohmann::json VesselConfig::to_json() const {
   VesselConfig copy = *this;  // the field tables bind mutable pointers
@@ -89,6 +140,10 @@ nlohmann::json VesselConfig::to_json() const {
     out[s.name] = detail::fields_to_json(s.fields);
   }
   out["sensors"][kMruAccelerationKey] = sensors::to_string(sensors.mru_acceleration);
+  if (!thrusters.empty()) {
+    out["thruster"] = nlohmann::json::array();
+    for (const model::ThrusterUnit& u : thrusters) out["thruster"].push_back(unit_json(u));
+  }
   return out;
 }
 

@@ -6,7 +6,7 @@
 namespace dynpos::scenario {
 
 VesselSampler::VesselSampler(const VesselPlant& plant, const TrialEnvironment& environment)
-    : plant_(plant), environment_(environment), dxdt_(VesselPlant::kStateSize) {}
+    : plant_(plant), environment_(environment), dxdt_(plant.state_size()) {}
 
 const VesselSample& VesselSampler::sample(double t, const sim::ConstVectorRef& x,
                                           const sim::ConstVectorRef& u) {
@@ -24,7 +24,12 @@ const VesselSample& VesselSampler::sample(double t, const sim::ConstVectorRef& x
   s.shaft_speed_rps = {a.port.shaft_speed, a.stb.shaft_speed, a.tunnel.shaft_speed};
   s.thrust_N = {a.port.thrust, a.stb.thrust, a.tunnel.thrust};
   s.power_W = {a.port.power, a.stb.power, a.tunnel.power};
-  s.rudder_rad = {x[Plant::kRudderPort], x[Plant::kRudderStb]};
+  s.units = a.units;
+  if (!s.units.empty()) {
+    s.rudder_rad = {0.0, 0.0};
+  } else {
+    s.rudder_rad = {x[Plant::kRudderPort], x[Plant::kRudderStb]};
+  }
   s.wind_speed_mps = environment_.wind().speed_mps();
   s.wind_from_rad = core::wrap_2pi(environment_.wind().from_rad());
   s.load_n = environment_.load_n(t);

@@ -6,6 +6,11 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
+#include "dynpos/core/error.hpp"
+
+#include "../source_dir.hpp"
 #include "dynpos/capability/quasi_static.hpp"
 
 namespace dynpos::capability {
@@ -33,6 +38,33 @@ TEST(TimeDomain, CalmIsHeldAndAGaleOnTheBeamIsNot) {
   EXPECT_FALSE(gale.holds);
   EXPECT_FALSE(gale.axis.empty());
   EXPECT_TRUE(gale.max_excursion_m > o.footprint_m || gale.max_heading_deg > o.footprint_deg);
+}
+
+scenario::VesselConfig shipped(const char* stem) {
+  return scenario::load_vessel_config(std::filesystem::path(DYNPOS_SOURCE_DIR) / "data" /
+                                      "vessels" / (std::string(stem) + ".toml"));
+}
+
+TEST(TimeDomain, TheShippedAzimuthVesselsHoldAFiveMetreFootprintAtDpNumberFourFromTheBow) {
+  // DNV-ST-0111's row 4 (wind 7.9 m/s, Hs 1.3 m, Tp 6.5 s, current 0.75 m/s), all from ahead, the
+  // standard's 5 m and 3° footprint over the judged 1200 s after 300 s of settling.
+  for (const char* stem : {"gunnerus-2015", "osv-80m"}) {
+    const scenario::VesselConfig v = shipped(stem);
+    const TimeDomainOptions o;  // the defaults: the standard's run
+    const RunVerdict r = time_domain_run(v, {}, dnv_level1_table().rows[4], 0.0, o);
+    EXPECT_TRUE(r.holds) << stem << ": " << r.max_excursion_m << " m, " << r.max_heading_deg << "°";
+  }
+}
+
+TEST(TimeDomain, ALayoutsFailureCaseIsNeverBetterThanIntact) {
+  // Level 3 on a layout: a unit or a group lost is a run with its units at no thrust.
+  const scenario::VesselConfig v = shipped("osv-80m");
+  TimeDomainOptions o = short_runs();
+  const Environment beam = dnv_level1_table().rows[6];
+  const RunVerdict intact = time_domain_run(v, {}, beam, 90.0, o);
+  const RunVerdict group = time_domain_run(v, {"group:A"}, beam, 90.0, o);
+  EXPECT_GE(group.max_excursion_m, intact.max_excursion_m);
+  EXPECT_THROW((void)time_domain_run(v, {"port"}, beam, 90.0, o), core::InputError);
 }
 
 TEST(TimeDomain, TheRoseDoesNotDependOnTheNumberOfJobs) {

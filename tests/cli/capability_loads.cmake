@@ -33,13 +33,19 @@ dynpos_cli_test(capability_layout_group
 dynpos_cli_test(capability_layout_unknown_case
   COMMAND bash ${EXPECT_EXIT} 2 "\\(--failure\\): no unit or group 'port' in the layout of .*azimuth_layout\\.toml. one of az_port, az_stb, tunnel, group:port, group:stb"
           ${DYNPOS_EXE} capability --vessel ${LOADS_DATA}/azimuth_layout.toml --failure port)
-# The simulator runs the model's own units: a layout is refused, not run as another vessel.
-dynpos_cli_test(capability_layout_not_level_3
-  COMMAND bash ${EXPECT_EXIT} 2 "\\(--level\\): .*azimuth_layout\\.toml has a \\[\\[thruster\\]\\] layout of 3 units"
-          ${DYNPOS_EXE} capability --vessel ${LOADS_DATA}/azimuth_layout.toml --level 3)
-dynpos_cli_test(simulate_layout_refused
-  COMMAND bash ${EXPECT_EXIT} 2 "\\(--vessel\\): .*the simulator and the thrust maps know only the model's own"
-          ${DYNPOS_EXE} simulate pure-dp --vessel ${LOADS_DATA}/azimuth_layout.toml
+# The simulator runs a layout's own units: level 3 and simulate take it; manual rudder steps,
+# which name the model's two rudders, are refused.
+dynpos_cli_test(capability_layout_level_3
+  COMMAND ${DYNPOS_EXE} capability --vessel ${LOADS_DATA}/azimuth_layout.toml --level 3
+          --direction-step 180 --duration 120 --settle 60 --json -
+  PASS "\"layout\": \"\\[\\[thruster\\]\\]\".*\"level\": 3")
+dynpos_cli_test(simulate_layout
+  COMMAND ${DYNPOS_EXE} simulate pure-dp --vessel ${LOADS_DATA}/azimuth_layout.toml --duration 30
+          --out ${CMAKE_CURRENT_BINARY_DIR}/simulate_layout
+  PASS "simulated 'pure-dp' \\(30 s, seed 1\\): 301 rows")
+dynpos_cli_test(simulate_layout_rudder_steps_refused
+  COMMAND bash ${EXPECT_EXIT} 2 "\\(--vessel\\): the scenario 'yaw-steps' steps the model's two rudders by hand, and .*azimuth_layout\\.toml has a \\[\\[thruster\\]\\] layout of 3 units"
+          ${DYNPOS_EXE} simulate yaw-steps --vessel ${LOADS_DATA}/azimuth_layout.toml
           --out ${CMAKE_CURRENT_BINARY_DIR}/simulate_layout_refused)
 dynpos_cli_test(thrust_map_apply_layout_refused
   COMMAND bash ${EXPECT_EXIT} 2 "\\(--vessel\\): .*azimuth_layout\\.toml has a \\[\\[thruster\\]\\] layout"

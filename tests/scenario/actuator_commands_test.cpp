@@ -20,7 +20,7 @@ TEST(ActuatorDelays, EachCommandArrivesAfterItsDeadTime) {
   initial.n_stb_rps = 1.5;
   ActuatorDelays delays(vessel, dt, initial);
   Eigen::VectorXd u = Eigen::VectorXd::Constant(VesselPlant::kInputSize, -7.0);
-  const ActuatorCommands commands{2.0, 2.5, 0.1, 0.2, 3.0};
+  const ActuatorCommands commands{2.0, 2.5, 0.1, 0.2, 3.0, {}};
   // Tick k: a command given from tick 0 on arrives at the tick of its dead time; before, the
   // line holds what was commanded before the run.
   for (int k = 0; k <= 6; ++k) {

@@ -57,6 +57,11 @@ struct ThrusterUnit {
   /// Azimuth only: the slew rate limit [deg/s], > 0, for a simulator's azimuth model. Source:
   /// reasoned — 10°/s, a half turn in 18 s, typical of DP azimuth thrusters.
   double rate_deg_per_s = 10.0;
+  /// The simulator's drive (unit_drive.hpp): the shaft speed's time constant [s], > 0 (unset:
+  /// scaled from the rated thrust), and the command dead time [s], ≥ 0. Source of 1 s: the
+  /// Gunnerus tunnel thruster's (tunnel_thruster.hpp), inside the 1–3 s of tables 3.23–3.36.
+  std::optional<double> time_constant_s;
+  double dead_time_s = 1.0;
   /// Cost of a fraction of the unit's capacity, relative to the others [-], > 0.
   double weight = 1.0;
   /// Redundancy group (switchboard, engine room); empty: none.

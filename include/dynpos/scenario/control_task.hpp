@@ -7,6 +7,15 @@
 /// the actuators' dead times and the loggers read) and the truth of what it did: each joystick
 /// command, each propeller step with its Smith truth, the rudder steps and setpoints.
 ///
+/// A vessel with a [[thruster]] layout is allocated by model::LayoutAllocator (an azimuth the
+/// optimum sends more than half a turn round a forbidden sector is held within a quarter turn of
+/// where it points while that meets the demand, so it does not swing from one edge of the sector
+/// to the other), each unit's force turned into its orders (model/unit_drive.hpp): shaft speed for
+/// the thrust, an azimuth's direction (kept while its thrust is below 1 % of its rating, so an idle
+/// unit does not swing about) and a rudder's angle. An azimuth's shaft speed order is cut by cos of
+/// the angle it still has to turn (none beyond 90°), as DP systems do, so that it does not push the
+/// wrong way while it slews.
+///
 /// The run starts from an InitialTrim: at rest, or at the scenario's initial surge speed with
 /// the main propellers at the shaft speed that holds it and the lever that demands it.
 
@@ -15,6 +24,7 @@
 #include <vector>
 
 #include "dynpos/control/heading_hold.hpp"
+#include "dynpos/model/layout_allocator.hpp"
 #include "dynpos/model/thrust_allocation.hpp"
 #include "dynpos/model/thruster.hpp"
 #include "dynpos/scenario/actuator_commands.hpp"
@@ -64,6 +74,8 @@ class ControlTask {
   const ActuatorCommands& commands() const noexcept { return commands_; }
   /// The forces f = (T₁, T₂, Y₁, Y₂, T₃) [N] of the last allocation.
   const Eigen::Matrix<double, 5, 1>& forces_N() const noexcept { return forces_N_; }
+  /// The plant the task commands.
+  const VesselPlant& plant() const noexcept { return plant_; }
   /// True once a DP setpoint is in force.
   bool dp_active() const noexcept { return dp_ && dp_->active(); }
   /// The DP setpoint in force (N, E, ψ) [m, m, rad]; core::kMissing outside DP.
@@ -78,12 +90,16 @@ class ControlTask {
  private:
   void record_command(double t, const ActuatorCommands& before, const Eigen::Vector3d& demand_b,
                       const Eigen::Vector3d& tau_unmet_b);
+  // A layout's allocation of tau_d_b at state x into commands_.units; its unmet part.
+  model::LayoutAllocation allocate_units(const Eigen::Vector3d& tau_d_b,
+                                         const sim::ConstVectorRef& x);
 
   JoystickParams joystick_params_;
   double period_s_;
   double dt_s_;
   model::Thruster propeller_;  // the main propellers' model, for their step truth
   model::ThrustAllocator allocator_;
+  const VesselPlant& plant_;
   JoystickSchedule joystick_;
   RudderSchedule rudder_;
   std::optional<control::HeadingHold> heading_hold_;

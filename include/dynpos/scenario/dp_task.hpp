@@ -25,7 +25,9 @@
 namespace dynpos::scenario {
 
 /// The DP controller's parameters for `vessel`: M = the hull's mass matrix with its sway–yaw
-/// coupling made symmetric, D = diag(X_u, Y_v, N_r), gains the defaults.
+/// coupling made symmetric, D = diag(X_u, Y_v, N_r), gains the defaults (tuned on the virtual
+/// Gunnerus) with K_d and K_i scaled by the hull's inertia over the Gunnerus's in each axis and
+/// the bias bound by the joystick's maxima over the Gunnerus's (all 1 for the Gunnerus).
 control::DpControllerParams dp_controller_params(const VesselConfig& vessel,
                                                  const model::Hull& hull);
 

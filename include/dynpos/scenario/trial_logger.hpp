@@ -40,6 +40,8 @@ class TrialLogger {
   void record(double t, const VesselSample& sample);
 
  private:
+  void record_setpoint(std::size_t i);  // the last three columns, from row_[i]
+
   core::Log& log_;
   const ControlTask& control_;
   std::unique_ptr<detail::SensorLogger> sensors_;

@@ -34,6 +34,7 @@ class TruthRecorder {
   std::vector<sim::RecordedSignal> signals();
   std::vector<sim::RecordedSignal> motion_signals();
   std::vector<sim::RecordedSignal> actuator_signals();
+  std::vector<sim::RecordedSignal> unit_signals();
   std::vector<sim::RecordedSignal> command_and_weather_signals();
 
   const ControlTask& control_;

@@ -64,8 +64,11 @@ struct VesselConfig {
   sensors::SensorSuiteParams sensors;
   /// The thruster layout of [[thruster]] tables (docs/vessel-file.md), for the allocation of
   /// any layout and `capability --loads`; empty: the model's own units (the two propellers with
-  /// rudders and the tunnel above). The simulator runs the model's units.
+  /// rudders and the tunnel above). The simulator runs them when present.
   std::vector<model::ThrusterUnit> thrusters;
+  /// Each [[thruster]] unit's capacity (1 as rated, 0 lost), in layout order; empty: all 1. Not a
+  /// vessel-file key: the failure cases of a capability analysis set it.
+  std::vector<double> thruster_capacity;
 
   /// Throws core::InputError naming the first value outside its range or the rule between
   /// values that does not hold (e.g. a mass matrix that is not positive definite).

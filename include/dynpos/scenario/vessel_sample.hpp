@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <vector>
 
 #include "dynpos/scenario/trial_environment.hpp"
 #include "dynpos/scenario/vessel_plant.hpp"
@@ -16,11 +17,13 @@ namespace dynpos::scenario {
 
 /// The truth at one log tick (SI units).
 struct VesselSample {
-  sensors::RigidBodyMotion motion;                      ///< at the control origin, LF + WF
-  std::array<double, 3> shaft_speed_rps{};              ///< port, stb, tunnel
-  std::array<double, 3> thrust_N{};                     ///< port, stb, tunnel
-  std::array<double, 3> power_W{};                      ///< port, stb, tunnel
-  std::array<double, 2> rudder_rad{};                   ///< port, stb
+  sensors::RigidBodyMotion motion;          ///< at the control origin, LF + WF
+  std::array<double, 3> shaft_speed_rps{};  ///< port, stb, tunnel
+  std::array<double, 3> thrust_N{};         ///< port, stb, tunnel
+  std::array<double, 3> power_W{};          ///< port, stb, tunnel
+  std::array<double, 2> rudder_rad{};       ///< port, stb
+  /// A [[thruster]] layout's units in layout order (the arrays above are then zero).
+  std::vector<model::UnitOutput> units;
   double wind_speed_mps = 0.0;                          ///< the true wind
   double wind_from_rad = 0.0;                           ///< the direction it comes from, [0, 2π)
   Eigen::Vector2d current_n = Eigen::Vector2d::Zero();  ///< current (N, E) [m/s]
