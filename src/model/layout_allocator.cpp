@@ -210,12 +210,17 @@ LayoutAllocator::Setup LayoutAllocator::setup(const Eigen::Vector3d& tau_d_b,
   const auto m = static_cast<Eigen::Index>(rows.rows.size());
   s.qp.G = Eigen::MatrixXd::Zero(m, n);
   s.qp.h.resize(m);
+  for (std::size_t k = 0; k < units_.size(); ++k) {  // each unit's variables a block
+    s.qp.block_start.push_back(s.offset[k]);
+    s.qp.block_size.push_back(variable_count(units_[k].type));
+  }
   for (Eigen::Index i = 0; i < m; ++i) {
     const auto& [a, b] = rows.rows[static_cast<std::size_t>(i)];
     const Eigen::Index o = rows.column[static_cast<std::size_t>(i)];
     s.row_unit.push_back(static_cast<std::size_t>(
         std::upper_bound(s.offset.begin(), s.offset.end(), o) - s.offset.begin() - 1));
     s.row_limit.push_back(rows.limit[static_cast<std::size_t>(i)]);
+    s.qp.row_block.push_back(static_cast<int>(s.row_unit.back()));
     s.qp.G(i, o) = a(0);
     if (rows.width[static_cast<std::size_t>(i)] == 2) s.qp.G(i, o + 1) = a(1);
     // Moved out by 10⁻⁹ of the rating, each by its own amount: the cone and wedge sides all

@@ -39,7 +39,7 @@ bool crosses(const std::vector<AngleSector>& forbidden, double start, double len
     const double from = s.from_deg * kDeg;
     const double span = std::fmod(s.to_deg * kDeg - from + kTwoPi, kTwoPi);
     const double d = std::fmod(from - start + 2.0 * kTwoPi, kTwoPi);  // sector start on the arc
-    if (d + kEdge < length) return true;   // the sector begins inside the arc
+    if (d + kEdge < length) return true;         // the sector begins inside the arc
     if (d + span > kTwoPi + kEdge) return true;  // the arc begins inside the sector
   }
   return false;
@@ -135,15 +135,15 @@ std::optional<AllowedArc> UnitDrive::reachable(double angle, double reach_rad) c
 
 double UnitDrive::rudder_angle_for(double force_N, double thrust_N) const noexcept {
   if (unit_.type != UnitType::kPropellerRudder) return 0.0;
-  const double cone = unit_.rudder_lift_per_thrust * std::max(thrust_N, 0.0) +
-                      unit_.rudder_lift_at_zero_N;
+  const double cone =
+      unit_.rudder_lift_per_thrust * std::max(thrust_N, 0.0) + unit_.rudder_lift_at_zero_N;
   if (cone <= 0.0) return 0.0;
   return std::clamp(force_N / cone, -1.0, 1.0) * p_.max_rudder_rad;
 }
 
 double UnitDrive::rudder_force(double thrust_N, double rudder_rad) const noexcept {
-  const double cone = unit_.rudder_lift_per_thrust * std::max(thrust_N, 0.0) +
-                      unit_.rudder_lift_at_zero_N;
+  const double cone =
+      unit_.rudder_lift_per_thrust * std::max(thrust_N, 0.0) + unit_.rudder_lift_at_zero_N;
   const double y = cone * rudder_rad / p_.max_rudder_rad;
   const double cap = unit_.rudder_max_force_N;
   return cap > 0.0 ? std::clamp(y, -cap, cap) : y;

@@ -50,8 +50,7 @@ TEST(UnitDrive, ShaftFollowsItsCommandWithinTheRateLimit) {
   EXPECT_DOUBLE_EQ(d.shaft_acceleration(0.0, p.max_shaft_speed_rps), p.rate_limit_rps2);
   EXPECT_NEAR(d.shaft_acceleration(1.0, 1.01), 0.01 / p.time_constant_s, 1e-12);
   // A command beyond the rating is held at it.
-  EXPECT_DOUBLE_EQ(d.shaft_acceleration(p.max_shaft_speed_rps, 10.0 * p.max_shaft_speed_rps),
-                   0.0);
+  EXPECT_DOUBLE_EQ(d.shaft_acceleration(p.max_shaft_speed_rps, 10.0 * p.max_shaft_speed_rps), 0.0);
 }
 
 TEST(UnitDrive, AnAzimuthSlewsAtItsRateTheShortWayWhenItIsClear) {

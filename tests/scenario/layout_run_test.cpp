@@ -25,8 +25,8 @@ VesselConfig shipped(const char* stem) {
 }
 
 ScenarioSpec scenario(const char* stem, double duration_s) {
-  ScenarioSpec s = load_scenario(std::filesystem::path(DYNPOS_SOURCE_DIR) / "data" /
-                                 "scenarios" / (std::string(stem) + ".toml"));
+  ScenarioSpec s = load_scenario(std::filesystem::path(DYNPOS_SOURCE_DIR) / "data" / "scenarios" /
+                                 (std::string(stem) + ".toml"));
   s.set_duration(duration_s);
   s.device_files.reset();
   return s;
@@ -97,8 +97,7 @@ TEST(LayoutRun, AzimuthsHoldTheirSlewRateAndStayOutOfTheirForbiddenSectors) {
       std::vector<double> truth_deg = run.truth_log.values("azimuth." + u.name);
       for (double& v : truth_deg) v *= kDeg;
       EXPECT_EQ(rows_in_forbidden(truth_deg, u.forbidden_deg), 0);
-      EXPECT_EQ(rows_in_forbidden(run.log.values("command.azimuth." + u.name), u.forbidden_deg),
-                0);
+      EXPECT_EQ(rows_in_forbidden(run.log.values("command.azimuth." + u.name), u.forbidden_deg), 0);
     }
   }
 }

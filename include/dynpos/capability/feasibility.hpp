@@ -52,7 +52,7 @@ std::vector<FailureCase> failure_cases(const std::vector<model::ThrusterUnit>& u
 FailureCase failure_case(const std::vector<model::ThrusterUnit>& units, const std::string& name);
 
 /// The factor of `load` with the capacities of `failure`. A zero load is held at any factor:
-/// kMaxLoadFactor, capped. A factor whose multiple of the load is below 10⁻⁴ of the
+/// kMaxLoadFactor, capped. A factor whose multiple of the load is below 10⁻³ of the
 /// allocation's force and moment scales is 0: the load cannot be held at all.
 FeasibilityPoint feasibility(const model::LayoutAllocator& allocator, const LoadCase& load,
                              const FailureCase& failure);
