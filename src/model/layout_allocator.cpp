@@ -9,6 +9,7 @@
 
 #include "convex_qp.hpp"
 #include "dynpos/core/error.hpp"
+#include "dynpos/model/unit_drive.hpp"
 
 namespace dynpos::model {
 namespace {
@@ -274,7 +275,8 @@ void LayoutAllocator::project(const Setup& s, Eigen::VectorXd& x) const {
 }
 
 LayoutAllocation LayoutAllocator::solve(const Setup& s, const Eigen::Vector3d& tau_d_b,
-                                        bool least_effort, AllocationWarmStart* warm) const {
+                                        bool least_effort, AllocationWarmStart* warm,
+                                        const Eigen::VectorXd* x0) const {
   const AllocationWarmStart::Solution* start = nullptr;
   if (warm) {
     const auto it = warm->by_regions_.find(s.regions);
@@ -282,9 +284,9 @@ LayoutAllocation LayoutAllocator::solve(const Setup& s, const Eigen::Vector3d& t
       start = &it->second;  // the same regions and capacity: the same constraints, so feasible
     }
   }
-  detail::QpSolution q = start
-                             ? detail::solve_convex_qp(s.qp, start->x, start->working)
-                             : detail::solve_convex_qp(s.qp, Eigen::VectorXd::Zero(s.qp.c.size()));
+  detail::QpSolution q = start ? detail::solve_convex_qp(s.qp, start->x, start->working)
+                         : x0  ? detail::solve_convex_qp(s.qp, *x0)
+                              : detail::solve_convex_qp(s.qp, Eigen::VectorXd::Zero(s.qp.c.size()));
   if (warm) warm->by_regions_[s.regions] = {q.x, q.working};
   // The active-set iterates hold the constraints to round-off, which an ill-conditioned
   // demand term can grow to 10⁻⁵ of a rating: each unit is put back into its region exactly.
@@ -500,6 +502,67 @@ LayoutAllocation LayoutAllocator::allocate(const Eigen::Vector3d& tau_d_b,
   best.programmes = programmes;
   best.iterations = iterations;
   return best;
+}
+
+LayoutAllocation LayoutAllocator::allocate(const Eigen::Vector3d& tau_d_b,
+                                           const std::vector<double>& capacity,
+                                           const AllocationRates& rates) const {
+  LayoutAllocation free = allocate(tau_d_b, capacity);
+  if (rates.previous == nullptr || rates.previous->units.size() != units_.size() ||
+      !(rates.dt_s > 0.0) || !free.units.size()) {
+    return free;
+  }
+  Setup s = setup(tau_d_b, capacity, nearest_regions(free));
+  // The previous forces over this allocation's scales: the start, inside every rate box.
+  const Eigen::Index n = s.qp.c.size();
+  Eigen::VectorXd x0 = Eigen::VectorXd::Zero(n);
+  const auto over = [&](double f, Eigen::Index j) {
+    return s.scale(j) > 0.0 ? f / s.scale(j) : 0.0;
+  };
+  for (std::size_t k = 0; k < units_.size(); ++k) {
+    const UnitCommand& c = rates.previous->units[k];
+    const Eigen::Index o = s.offset[k];
+    if (units_[k].type == UnitType::kAzimuth) {
+      x0(o) = over(c.force_b.x(), o);
+      x0(o + 1) = over(c.force_b.y(), o + 1);
+    } else {
+      x0(o) = over(c.thrust_N, o);
+      if (units_[k].type == UnitType::kPropellerRudder) x0(o + 1) = over(c.rudder_force_N, o + 1);
+    }
+  }
+  const Eigen::VectorXd gx = s.qp.G * x0;
+  for (Eigen::Index i = 0; i < gx.size(); ++i) {
+    if (gx(i) > s.qp.h(i) + 1e-9 * (1.0 + std::abs(s.qp.h(i)))) return free;  // another region
+  }
+  // Two rows per variable: |x_j − x0_j| ≤ rate·dt/s_j, on the variable's block.
+  const Eigen::Index m = s.qp.G.rows();
+  s.qp.G.conservativeResize(m + 2 * n, Eigen::NoChange);
+  s.qp.h.conservativeResize(m + 2 * n);
+  s.qp.G.bottomRows(2 * n).setZero();
+  for (std::size_t k = 0; k < units_.size(); ++k) {
+    const double rate = units_[k].thrust_rate_N_per_s.value_or(
+        std::max(units_[k].max_thrust_N, units_[k].max_reverse_thrust_N) /
+        (4.0 * drive_params(units_[k]).time_constant_s));
+    for (int v = 0; v < s.qp.block_size[k]; ++v) {
+      const Eigen::Index j = s.offset[k] + v;
+      const double step = s.scale(j) > 0.0 ? rate * rates.dt_s / s.scale(j) : 0.0;
+      const Eigen::Index up = m + 2 * j, down = up + 1;
+      s.qp.G(up, j) = 1.0;
+      s.qp.h(up) = x0(j) + step;
+      s.qp.G(down, j) = -1.0;
+      s.qp.h(down) = -x0(j) + step;
+      s.qp.row_block.push_back(static_cast<int>(k));
+      s.qp.row_block.push_back(static_cast<int>(k));
+      s.row_unit.push_back(k);
+      s.row_unit.push_back(k);
+      s.row_limit.push_back(false);
+      s.row_limit.push_back(false);
+    }
+  }
+  LayoutAllocation rated = solve(s, tau_d_b, false, nullptr, &x0);
+  rated.programmes += free.programmes;
+  rated.iterations += free.iterations;
+  return rated;
 }
 
 bool LayoutAllocator::attainable(const Eigen::Vector3d& tau_d_b,

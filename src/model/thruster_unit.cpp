@@ -94,6 +94,10 @@ void ThrusterUnit::validate() const {
     bad_field(*this, "time_constant_s",
               fmt::format("{} s is not a positive time constant", *time_constant_s));
   }
+  if (thrust_rate_N_per_s && (!finite(*thrust_rate_N_per_s) || *thrust_rate_N_per_s <= 0.0)) {
+    bad_field(*this, "thrust_rate_N_per_s",
+              fmt::format("{} N/s is not a positive rate", *thrust_rate_N_per_s));
+  }
   if (!finite(dead_time_s) || dead_time_s < 0.0) {
     bad_field(*this, "dead_time_s", fmt::format("{} s is not a dead time ≥ 0", dead_time_s));
   }

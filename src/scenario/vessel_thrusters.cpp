@@ -58,7 +58,7 @@ model::ThrusterUnit read_unit(const TomlTable& t) {
   t.reject_unknown({"name", "type", "x_m", "y_m", "max_thrust_N", "max_reverse_thrust_N",
                     "forbidden_deg", "rate_deg_per_s", "loss", "group", "weight",
                     "rudder_lift_per_thrust", "rudder_lift_at_zero_N", "rudder_max_force_N",
-                    "rudder_x_m", "time_constant_s", "dead_time_s"});
+                    "rudder_x_m", "time_constant_s", "dead_time_s", "thrust_rate_N_per_s"});
   model::ThrusterUnit u;
   u.name = t.string("name");
   if (u.name.empty()) throw core::InputError(t.where("name"), "a unit's name is empty");
@@ -106,6 +106,9 @@ model::ThrusterUnit read_unit(const TomlTable& t) {
     u.time_constant_s = t.number({"time_constant_s", "s", 0.0, 60.0, true});
   }
   u.dead_time_s = t.number_or(u.dead_time_s, {"dead_time_s", "s", 0.0, 10.0});
+  if (t.has("thrust_rate_N_per_s")) {
+    u.thrust_rate_N_per_s = t.number({"thrust_rate_N_per_s", "N/s", 0.0, 1e9, true});
+  }
   u.group = t.string_or("group", "");
   u.weight = t.number_or(u.weight, {"weight", "1", 0.0, 100.0, true});
   if (u.type == model::UnitType::kPropellerRudder) {

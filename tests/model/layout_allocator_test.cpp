@@ -282,6 +282,61 @@ TEST(LayoutAllocator, AWarmStartGivesTheSameAnswers) {
   EXPECT_LT(yes, questions * 4 / 5);
 }
 
+// Rate limits: along a random walk of demands every force moves at most its rate over the step
+// (within the region's round-off) unless the unit changed region, every command stays in its
+// region, and with a step long enough for any change the rated allocation is the free one.
+TEST(LayoutAllocator, RateLimitsHoldEachForceChangeAndVanishOverALongStep) {
+  std::mt19937 rng(17);
+  int limited = 0, steps = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    std::vector<ThrusterUnit> layout = random_layout(rng);
+    for (ThrusterUnit& u : layout) u.thrust_rate_N_per_s = 0.05 * u.max_thrust_N;  // 20 s ramp
+    const LayoutAllocator allocator(layout);
+    LayoutAllocation last = allocator.allocate(Eigen::Vector3d::Zero());
+    for (int k = 0; k < 30; ++k) {
+      const Eigen::Vector3d tau = random_demand(allocator, rng);
+      const double dt = 0.5;
+      const LayoutAllocation a = allocator.allocate(tau, {}, {&last, dt});
+      expect_in_regions(layout, a);
+      const LayoutAllocation free = allocator.allocate(tau);
+      bool same_regions = true;
+      for (std::size_t j = 0; j < layout.size(); ++j) {
+        const UnitCommand& before = last.units[j];
+        const UnitCommand& now = a.units[j];
+        const double step = *layout[j].thrust_rate_N_per_s * dt * (1.0 + 1e-6) + 1e-6;
+        const double dx = layout[j].type == UnitType::kAzimuth
+                              ? (now.force_b - before.force_b).cwiseAbs().maxCoeff()
+                              : std::abs(now.thrust_N - before.thrust_N);
+        const double dy = layout[j].type == UnitType::kPropellerRudder
+                              ? std::abs(now.rudder_force_N - before.rudder_force_N)
+                              : 0.0;
+        same_regions &= dx <= step && dy <= step;
+      }
+      // A step over a change of region is the free allocation's.
+      if (!same_regions) {
+        for (std::size_t j = 0; j < layout.size(); ++j) {
+          EXPECT_NEAR(a.units[j].thrust_N, free.units[j].thrust_N, 1e-9 * layout[j].max_thrust_N);
+        }
+      }
+      limited += !a.met && free.met ? 1 : 0;
+      ++steps;
+      // Over an hour every box holds the free optimum: the same allocation.
+      const LayoutAllocation slow = allocator.allocate(tau, {}, {&last, 3600.0});
+      EXPECT_NEAR((slow.tau_achieved_b - free.tau_achieved_b).norm(), 0.0, 1e-3 * tau.norm() + 1.0);
+      EXPECT_EQ(slow.met, free.met);
+      last = a;
+    }
+  }
+  // The walk's jumps are far beyond 0.5 s of ramp: most rated steps leave the demand unmet.
+  EXPECT_GT(limited, steps / 4);
+  // No previous allocation, or none of these units: the free allocation.
+  const std::vector<ThrusterUnit> layout = random_layout(rng);
+  const LayoutAllocator allocator(layout);
+  const Eigen::Vector3d tau = random_demand(allocator, rng);
+  EXPECT_EQ(allocator.allocate(tau, {}, {nullptr, 0.1}).tau_achieved_b,
+            allocator.allocate(tau).tau_achieved_b);
+}
+
 // A demand beyond the layout's reach leaves the least priority-weighted unmet part: no random
 // command inside the regions leaves less.
 TEST(LayoutAllocator, AnUnattainableDemandLeavesTheLeastWeightedUnmetPart) {

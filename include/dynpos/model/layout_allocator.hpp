@@ -86,6 +86,14 @@ struct LayoutAllocation {
   int iterations = 0;  ///< active-set iterations over all of them
 };
 
+/// Rate limits of one allocation (LayoutAllocator::allocate): each force within its unit's
+/// thrust_rate_N_per_s × dt_s of the previous allocation's (per variable, as the 2014
+/// Gunnerus's ThrustAllocationOptions::rate_limits).
+struct AllocationRates {
+  const LayoutAllocation* previous = nullptr;  ///< the allocator's last allocation, same capacity
+  double dt_s = 0.0;                           ///< the time since it [s], > 0
+};
+
 /// The last solution of each combination of regions an allocator solved, for the next demand to
 /// start from (LayoutAllocator::attainable): a bisection's next question, close to the last,
 /// then takes a step or two per programme instead of one per active constraint. The optimum is
@@ -115,6 +123,15 @@ class LayoutAllocator {
   LayoutAllocation allocate(const Eigen::Vector3d& tau_d_b,
                             const std::vector<double>& capacity = {}) const;
 
+  /// allocate() with rate limits: the allocation above, then, in the regions it chose, the same
+  /// programme with each variable within rate·dt of `rates.previous` (started from there, which
+  /// every such box holds). The demand may then be unmet (met false) while the units ramp.
+  /// Without a previous allocation of as many units, with dt ≤ 0, or when a unit's previous
+  /// force lies outside the region now chosen (an azimuth that changes arc, a rudder propeller
+  /// that reverses), the allocation above unchanged: a change of region is not rate-limited.
+  LayoutAllocation allocate(const Eigen::Vector3d& tau_d_b, const std::vector<double>& capacity,
+                            const AllocationRates& rates) const;
+
   /// Whether some combination of regions meets τ_d (every residual within 10⁻⁶ of its scale),
   /// sooner than allocate(): a demand the convex relaxation misses is not solved again, and the
   /// combinations are searched by branch and bound (a unit's region fixed at a time, the units
@@ -138,7 +155,8 @@ class LayoutAllocator {
               const std::vector<int>& regions) const;
   // One region combination; least_effort: when unmet, the least effort for what is achieved.
   LayoutAllocation solve(const Setup& s, const Eigen::Vector3d& tau_d_b, bool least_effort = false,
-                         AllocationWarmStart* warm = nullptr) const;
+                         AllocationWarmStart* warm = nullptr,
+                         const Eigen::VectorXd* x0 = nullptr) const;
   void project(const Setup& s, Eigen::VectorXd& x) const;  // each unit into its region
   // attainable()'s question.
   struct Question {

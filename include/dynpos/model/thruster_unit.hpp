@@ -62,6 +62,10 @@ struct ThrusterUnit {
   /// Gunnerus tunnel thruster's (tunnel_thruster.hpp), inside the 1–3 s of tables 3.23–3.36.
   std::optional<double> time_constant_s;
   double dead_time_s = 1.0;
+  /// The allocation's rate limit of each of the unit's forces [N/s], > 0 (unset: the rated
+  /// thrust over 4 shaft time constants, the drive's ramp from rest to full speed,
+  /// unit_drive.hpp), used when an allocation is given the previous one (AllocationRates).
+  std::optional<double> thrust_rate_N_per_s;
   /// Cost of a fraction of the unit's capacity, relative to the others [-], > 0.
   double weight = 1.0;
   /// Redundancy group (switchboard, engine room); empty: none.
