@@ -179,12 +179,40 @@ QpSolution solve_convex_qp(const ConvexQp& qp, const Eigen::VectorXd& x0,
   for (const Eigen::Index i : working) in_working[static_cast<std::size_t>(i)] = true;
   const int max_iterations = static_cast<int>(4 * (n + m)) + 20;
   const bool blocks = !qp.row_block.empty();
+  // With blocks, each row as its first variable and one or two coefficients: G·p in a few
+  // flops a row instead of a dense product.
+  std::vector<Eigen::Index> row_at;
+  std::vector<Eigen::Vector2d> row_a;
+  if (blocks) {
+    row_at.resize(static_cast<std::size_t>(m));
+    row_a.resize(static_cast<std::size_t>(m));
+    for (Eigen::Index i = 0; i < m; ++i) {
+      const auto b = static_cast<std::size_t>(qp.row_block[static_cast<std::size_t>(i)]);
+      const Eigen::Index o = qp.block_start[b];
+      row_at[static_cast<std::size_t>(i)] = o;
+      row_a[static_cast<std::size_t>(i)] =
+          Eigen::Vector2d(qp.G(i, o), qp.block_size[b] == 2 ? qp.G(i, o + 1) : 0.0);
+    }
+  }
+  const auto times_G = [&](const Eigen::VectorXd& v, Eigen::VectorXd& out) {
+    if (!blocks) {
+      out.noalias() = qp.G * v;
+      return;
+    }
+    const Eigen::Index last = v.size() - 1;
+    for (Eigen::Index i = 0; i < m; ++i) {
+      const auto u = static_cast<std::size_t>(i);
+      const Eigen::Index o = row_at[u];
+      out(i) = row_a[u](0) * v(o) + (o < last ? row_a[u](1) * v(o + 1) : 0.0);
+    }
+  };
   BlockWorkspace workspace;
   Step step;
   Eigen::VectorXd g(n);
   Eigen::VectorXd Gp(m);
-  Eigen::VectorXd Gx = qp.G * out.x;  // kept along the steps: G·(x + αp) = Gx + α·Gp
-  bool at_optimum = false;            // at the working set's optimum after a full step (p = 0 then)
+  Eigen::VectorXd Gx(m);  // kept along the steps: G·(x + αp) = Gx + α·Gp
+  times_G(out.x, Gx);
+  bool at_optimum = false;  // at the working set's optimum after a full step (p = 0 then)
   for (out.iterations = 0; out.iterations < max_iterations; ++out.iterations) {
     g.noalias() = qp.H * out.x;
     g += qp.c;
@@ -218,7 +246,7 @@ QpSolution solve_convex_qp(const ConvexQp& qp, const Eigen::VectorXd& x0,
     // The longest step towards the working set's optimum that keeps every constraint.
     double alpha = 1.0;
     Eigen::Index blocking = -1;
-    Gp.noalias() = qp.G * p;
+    times_G(p, Gp);
     const double moving = 1e-14 * p.cwiseAbs().maxCoeff();  // G_i·p below: parallel to it
     for (Eigen::Index i = 0; i < m; ++i) {
       if (in_working[static_cast<std::size_t>(i)] || Gp(i) <= moving) continue;

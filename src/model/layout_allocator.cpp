@@ -85,6 +85,7 @@ struct LayoutAllocator::Setup {
   std::vector<int> regions;           // per unit
   std::vector<std::size_t> row_unit;  // the unit of each row of G
   std::vector<bool> row_limit;        // whether the row is one of the unit's limits
+  Eigen::MatrixXd At_qd2;  // Aᵀ·diag(Q·D²): the demand term c = −2ρ·At_qd2·τ_d
 };
 
 LayoutAllocator::LayoutAllocator(std::vector<ThrusterUnit> units, LayoutAllocationOptions options)
@@ -204,7 +205,8 @@ LayoutAllocator::Setup LayoutAllocator::setup(const Eigen::Vector3d& tau_d_b,
   const Eigen::Vector3d d{1.0 / options_.force_scale, 1.0 / options_.force_scale,
                           1.0 / options_.moment_scale};
   const Eigen::Vector3d qd2 = options_.priority.cwiseProduct(d).cwiseProduct(d);
-  const Eigen::MatrixXd At_qd2 = s.A.transpose() * qd2.asDiagonal();
+  s.At_qd2 = s.A.transpose() * qd2.asDiagonal();
+  const Eigen::MatrixXd& At_qd2 = s.At_qd2;
   s.qp.H = 2.0 * kDemandWeight * At_qd2 * s.A;
   s.qp.H.diagonal() += 2.0 * weight;
   s.qp.c = -2.0 * kDemandWeight * At_qd2 * tau_d_b;
@@ -229,6 +231,20 @@ LayoutAllocator::Setup LayoutAllocator::setup(const Eigen::Vector3d& tau_d_b,
     // solve() projects each unit back into its region exactly.
     s.qp.h(i) = b + 1e-9 * (1.0 + 0.1 * static_cast<double>(i % 10));
   }
+  return s;
+}
+
+std::shared_ptr<const LayoutAllocator::Setup> LayoutAllocator::setup(
+    const Eigen::Vector3d& tau_d_b, const std::vector<double>& capacity,
+    const std::vector<int>& regions, AllocationWarmStart* warm) const {
+  if (warm == nullptr) return std::make_shared<const Setup>(setup(tau_d_b, capacity, regions));
+  std::shared_ptr<void>& cached = warm->setups_[regions];
+  if (!cached) {
+    cached = std::make_shared<Setup>(setup(tau_d_b, capacity, regions));
+    return std::static_pointer_cast<const Setup>(cached);
+  }
+  const auto s = std::static_pointer_cast<Setup>(cached);
+  s->qp.c = -2.0 * kDemandWeight * s->At_qd2 * tau_d_b;  // as setup() does
   return s;
 }
 
@@ -580,10 +596,12 @@ bool LayoutAllocator::attainable(const Eigen::Vector3d& tau_d_b,
     warm->owner_ = this;
     warm->capacity_ = capacity;
     warm->by_regions_.clear();
+    warm->setups_.clear();
   }
   // The relaxation's regions hold the true ones: what it misses, they miss too.
-  const LayoutAllocation relaxed = solve(
-      setup(tau_d_b, capacity, std::vector<int>(units_.size(), kRelaxed)), tau_d_b, false, warm);
+  const LayoutAllocation relaxed =
+      solve(*setup(tau_d_b, capacity, std::vector<int>(units_.size(), kRelaxed), warm), tau_d_b,
+            false, warm);
   if (!relaxed.met) return false;
   bool feasible = true;
   for (std::size_t k = 0; k < units_.size() && feasible; ++k) {
@@ -591,7 +609,7 @@ bool LayoutAllocator::attainable(const Eigen::Vector3d& tau_d_b,
   }
   if (feasible) return true;
   const std::vector<int> guess = nearest_regions(relaxed);
-  if (solve(setup(tau_d_b, capacity, guess), tau_d_b, false, warm).met) return true;
+  if (solve(*setup(tau_d_b, capacity, guess, warm), tau_d_b, false, warm).met) return true;
   // The units of one region are in it from the start: an azimuth with one allowed arc has its
   // arc there, its relaxation being the whole polygon.
   std::vector<int> regions(units_.size(), kRelaxed);
@@ -610,7 +628,7 @@ bool LayoutAllocator::search_regions(const Question& q, std::vector<int>& region
   for (int r = 0; r < region_count(k) && budget > 0; ++r, --budget) {
     regions[k] = r;
     const LayoutAllocation a =
-        solve(setup(q.tau_d_b, q.capacity, regions), q.tau_d_b, false, q.warm);
+        solve(*setup(q.tau_d_b, q.capacity, regions, q.warm), q.tau_d_b, false, q.warm);
     if (!a.met) continue;  // the units after k relaxed miss it: so does every choice of theirs
     bool feasible = true;
     for (std::size_t j = k + 1; j < units_.size() && feasible; ++j) {

@@ -32,6 +32,7 @@
 /// of the same combination of regions).
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -109,6 +110,9 @@ class AllocationWarmStart {
   const void* owner_ = nullptr;  // the allocator it was filled by
   std::vector<double> capacity_;
   std::map<std::vector<int>, Solution> by_regions_;
+  // Each combination's programme but for its demand term (the allocator's Setup, which only
+  // its source file knows): built once, not at every question.
+  std::map<std::vector<int>, std::shared_ptr<void>> setups_;
 };
 
 /// The allocator of one layout: const, deterministic, never throws after construction.
@@ -153,6 +157,11 @@ class LayoutAllocator {
   struct Setup;  // the programme of one region combination
   Setup setup(const Eigen::Vector3d& tau_d_b, const std::vector<double>& capacity,
               const std::vector<int>& regions) const;
+  // setup(), from `warm`'s cache when given (its demand term set to τ_d).
+  std::shared_ptr<const Setup> setup(const Eigen::Vector3d& tau_d_b,
+                                     const std::vector<double>& capacity,
+                                     const std::vector<int>& regions,
+                                     AllocationWarmStart* warm) const;
   // One region combination; least_effort: when unmet, the least effort for what is achieved.
   LayoutAllocation solve(const Setup& s, const Eigen::Vector3d& tau_d_b, bool least_effort = false,
                          AllocationWarmStart* warm = nullptr,
