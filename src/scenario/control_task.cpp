@@ -81,13 +81,13 @@ ActuatorCommands::Unit unit_order(const model::UnitDrive& drive, const model::Un
 // Without it an azimuth beside a forbidden sector is sent from one edge of the sector to the
 // other whenever the demand's surge changes sign: round the far side, at no thrust, again and
 // again (seen on the supply vessel with a main azimuth lost in a beam sea).
-model::LayoutAllocation steered_allocation(const std::vector<model::UnitDrive>& drives,
+model::LayoutAllocation steered_allocation(const model::LayoutAllocator& allocator,
+                                           const std::vector<model::UnitDrive>& drives,
                                            const std::vector<double>& capacity,
                                            const Eigen::Vector3d& tau_d_b,
                                            const sim::ConstVectorRef& x) {
-  std::vector<model::ThrusterUnit> units;
-  for (const model::UnitDrive& d : drives) units.push_back(d.unit());
-  model::LayoutAllocation a = model::LayoutAllocator(units).allocate(tau_d_b, capacity);
+  model::LayoutAllocation a = allocator.allocate(tau_d_b, capacity);
+  std::vector<model::ThrusterUnit> units = allocator.units();
   bool held = false;
   for (std::size_t k = 0; k < drives.size(); ++k) {
     const double angle = x[VesselPlant::kUnits + 2 * static_cast<Eigen::Index>(k) + 1];
@@ -172,6 +172,7 @@ ControlTask::ControlTask(const ScenarioSpec& spec, const VesselConfig& vessel,
               spec.dt_s),
       demand_pct_(trim.demand_pct),
       commands_(trim.commands) {
+  if (!plant.drives().empty()) layout_allocator_.emplace(vessel.thrusters);
   if (spec.heading_hold) heading_hold_.emplace(heading_hold_params(spec, vessel));
   if (!spec.setpoints.empty()) {
     dp_.emplace(spec, vessel, plant.hull(), trim.x0.segment<3>(Plant::kHull + Hull::kNorth),
@@ -235,7 +236,8 @@ void ControlTask::step(double t, const sim::ConstVectorRef& x) {
 
 model::LayoutAllocation ControlTask::allocate_units(const Eigen::Vector3d& tau_d_b,
                                                     const sim::ConstVectorRef& x) {
-  model::LayoutAllocation a = steered_allocation(plant_.drives(), plant_.capacity(), tau_d_b, x);
+  model::LayoutAllocation a =
+      steered_allocation(*layout_allocator_, plant_.drives(), plant_.capacity(), tau_d_b, x);
   const auto& drives = plant_.drives();
   for (std::size_t k = 0; k < drives.size(); ++k) {
     const double angle_now = x[Plant::kUnits + 2 * static_cast<Eigen::Index>(k) + 1];

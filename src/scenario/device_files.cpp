@@ -171,7 +171,7 @@ std::string cell(double value) { return core::is_missing(value) ? "" : fmt::form
 std::string device_column(const std::string& channel) {
   std::string name = channel;
   if (name.rfind("command.", 0) == 0) name = "order." + name.substr(8);
-  for (const char* kind : {"rpm.", "thrust.", "power.", "rudder."}) {
+  for (const char* kind : {"rpm.", "thrust.", "power.", "rudder.", "azimuth."}) {
     const std::string k(kind);
     if (channel.rfind(k, 0) == 0) name = channel.substr(k.size()) + "." + k.substr(0, k.size() - 1);
   }
@@ -306,7 +306,8 @@ struct RateFile {
 class FeedbackWriter {
  public:
   FeedbackWriter(const core::Log& layout, double rate_hz, const std::filesystem::path& path)
-      : out_(layout, rate_hz, {"rpm.", "thrust.", "power.", "rudder."}, "EpochMs", path),
+      : out_(layout, rate_hz, {"rpm.", "thrust.", "power.", "rudder.", "azimuth."}, "EpochMs",
+             path),
         latest_(out_.channels.size(), core::kMissing) {}
   void add(const UtcClock& clock, const core::Log& block) {
     std::ostream& out = out_.file.stream();
@@ -328,10 +329,11 @@ class FeedbackWriter {
   std::vector<double> latest_;
 };
 
-// The half-width of the dither on an order channel, by what it orders.
+// The half-width of the dither on an order channel, by what it orders (by its kind, not by a
+// unit's name, which may be anything).
 double wiggle_of(const core::Channel& c, const DeviceFilesSpec& spec) {
-  if (c.name.find("rpm") != std::string::npos) return spec.order_wiggle_rpm;
-  if (c.name.find("rudder") != std::string::npos) return spec.order_wiggle_deg;
+  if (has_prefix(c.name, {"command.rpm."})) return spec.order_wiggle_rpm;
+  if (has_prefix(c.name, {"command.rudder.", "command.azimuth."})) return spec.order_wiggle_deg;
   if (c.unit == "%") return spec.order_wiggle_pct;
   return 0.0;
 }

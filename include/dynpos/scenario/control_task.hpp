@@ -100,6 +100,7 @@ class ControlTask {
   model::Thruster propeller_;  // the main propellers' model, for their step truth
   model::ThrustAllocator allocator_;
   const VesselPlant& plant_;
+  std::optional<model::LayoutAllocator> layout_allocator_;  // a [[thruster]] layout's
   JoystickSchedule joystick_;
   RudderSchedule rudder_;
   std::optional<control::HeadingHold> heading_hold_;
