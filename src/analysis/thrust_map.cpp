@@ -1,6 +1,7 @@
 #include "dynpos/analysis/thrust_map.hpp"
 
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 
 #include <map>
 
@@ -10,6 +11,7 @@
 #include "dynpos/core/error.hpp"
 #include "dynpos/model/thruster.hpp"
 #include "dynpos/model/tunnel_thruster.hpp"
+#include "dynpos/model/unit_drive.hpp"
 #include "dynpos/scenario/vessel_config.hpp"
 #include "dynpos/scenario/vessel_plant.hpp"
 
@@ -22,7 +24,18 @@ bool is_rpm_or_thrust(const std::string& role) {
 
 // The thrust maps of the vessel file (3.17), tables 3.1/3.2: c₊ and c₋ = −c(n < 0) of each
 // thruster model, c = ρK_T·D⁴ for that sign.
+// The vessel's thrust maps by thruster name: a [[thruster]] layout's units (each drive's
+// ρK_T D⁴ ahead and astern, model/unit_drive.hpp), else the model's propellers and tunnel.
 std::map<std::string, ident::ThrustMap> vessel_maps(const scenario::VesselConfig& v) {
+  if (!v.thrusters.empty()) {
+    std::map<std::string, ident::ThrustMap> maps;
+    for (const model::ThrusterUnit& unit : v.thrusters) {
+      const model::UnitDrive drive(unit);
+      // T = c₊·n² ahead, c₋·n² astern with c₋ = thrust at n = −1 (negative).
+      maps.emplace(unit.name, ident::ThrustMap{drive.thrust_N(1.0), drive.thrust_N(-1.0) + 0.0});
+    }
+    return maps;
+  }
   const model::Thruster main(v.propeller);
   const ident::ThrustMap propeller{main.thrust_coefficient(1.0), -main.thrust_coefficient(-1.0)};
   const model::TunnelThruster bow(v.tunnel);
@@ -61,23 +74,16 @@ std::vector<ThrusterMapFit> fit_maps(const ThrustMapRequest& request, const core
 AppliedThrust apply_maps(const ThrustMapRequest& request, const core::Log& log) {
   const scenario::VesselConfig vessel =
       scenario::load_vessel_config(vessel_file_or_default(request.vessel));
-  // The maps are the model's propellers' and tunnel's; a layout's units have none of their own.
-  if (!vessel.thrusters.empty()) {
-    throw core::InputError::for_option(
-        "vessel",
-        fmt::format("{} has a [[thruster]] layout of {} units; --apply knows only the thrust "
-                    "maps of the model's own propellers and tunnel",
-                    vessel.source, vessel.thrusters.size()),
-        "give a vessel file without [[thruster]] tables, or fit the units' maps without --apply");
-  }
   const auto maps = vessel_maps(vessel);
   AppliedThrust out{core::Log(log.time()), 0, vessel.source, request.abs_speed, request.out};
   for (const std::string& name : thruster_names(log, "rpm")) {
     const auto it = maps.find(name);
     if (it == maps.end()) {
+      std::vector<std::string> names;
+      for (const auto& [known, map] : maps) names.push_back(known);
       throw request.source.error("rpm." + name,
                                  "no thrust map for thruster '" + name + "' in the vessel file",
-                                 "the vessel file has port, stb (main propellers) and tunnel");
+                                 fmt::format("the vessel file has {}", fmt::join(names, ", ")));
     }
     const std::vector<double>& n = log.values("rpm." + name);
     std::vector<double> thrust_kN =

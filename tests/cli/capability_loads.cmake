@@ -47,11 +47,17 @@ dynpos_cli_test(simulate_layout_rudder_steps_refused
   COMMAND bash ${EXPECT_EXIT} 2 "\\(--vessel\\): the scenario 'yaw-steps' steps the model's two rudders by hand, and .*azimuth_layout\\.toml has a \\[\\[thruster\\]\\] layout of 3 units"
           ${DYNPOS_EXE} simulate yaw-steps --vessel ${LOADS_DATA}/azimuth_layout.toml
           --out ${CMAKE_CURRENT_BINARY_DIR}/simulate_layout_refused)
-dynpos_cli_test(thrust_map_apply_layout_refused
-  COMMAND bash ${EXPECT_EXIT} 2 "\\(--vessel\\): .*azimuth_layout\\.toml has a \\[\\[thruster\\]\\] layout"
-          ${DYNPOS_EXE} identify thrust-map ${CMAKE_CURRENT_SOURCE_DIR}/short_steps.csv --apply
+# --apply with a layout: each unit's map is its drive's (ρK_T D⁴ ahead and astern).
+dynpos_cli_test(thrust_map_apply_layout
+  COMMAND ${DYNPOS_EXE} identify thrust-map ${LOADS_DATA}/layout_rpm.csv --apply
           --out ${CMAKE_CURRENT_BINARY_DIR}/thrust_map_apply_layout.csv
-          --vessel ${LOADS_DATA}/azimuth_layout.toml)
+          --vessel ${LOADS_DATA}/azimuth_layout.toml --col rpm.az_port=az_port --col rpm.tunnel=tunnel
+  PASS "thrust of 2 thruster\\(s\\) from .*azimuth_layout\\.toml")
+dynpos_cli_test(thrust_map_apply_layout_unknown_unit
+  COMMAND bash ${EXPECT_EXIT} 2 "\\(rpm\\.port\\): no thrust map for thruster 'port' in the vessel file. the vessel file has az_port, az_stb, tunnel"
+          ${DYNPOS_EXE} identify thrust-map ${LOADS_DATA}/layout_rpm.csv --apply
+          --out ${CMAKE_CURRENT_BINARY_DIR}/thrust_map_apply_layout_unknown.csv
+          --vessel ${LOADS_DATA}/azimuth_layout.toml --col rpm.port=az_port)
 # Level 2 on a layout keeps the units' ratings, and says so in the table and the JSON.
 dynpos_cli_test(capability_layout_level_2_says_no_losses
   COMMAND ${DYNPOS_EXE} capability --vessel ${LOADS_DATA}/azimuth_layout.toml --level 2
