@@ -352,7 +352,7 @@ MonteCarloReport run_montecarlo(const MonteCarloRequest& request) {
   const std::filesystem::path scenario_file =
       scenario::resolve_scenario(request.scenario, data / "scenarios");
   scenario::ScenarioSpec spec = scenario::load_scenario(scenario_file);
-  if (request.duration_s) spec.duration_s = *request.duration_s;
+  if (request.duration_s) spec.set_duration(*request.duration_s);  // commands after it dropped
   spec.validate();
   const std::filesystem::path vessel_file = vessel_file_or_default(request.vessel_file);
   const scenario::VesselConfig vessel = scenario::load_vessel_config(vessel_file);

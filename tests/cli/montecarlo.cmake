@@ -21,3 +21,8 @@ dynpos_cli_test(montecarlo_shards_merge_to_one_run
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/montecarlo_shards.sh ${DYNPOS_EXE}
           ${CLI_OUT}/montecarlo ${PROJECT_SOURCE_DIR}/examples/scaling/montecarlo-shards.sh
   PASS "IDENTICAL")
+# A layout vessel, the run cut short of its later setpoints (they are dropped, as simulate does).
+dynpos_cli_test(montecarlo_layout_short_run
+  COMMAND ${DYNPOS_EXE} montecarlo pure-dp --vessel ${PROJECT_SOURCE_DIR}/data/vessels/osv-80m.toml
+          --seeds 1 --duration 400 --jobs 1
+  PASS "position_std_north_m +1 +[0-9.]+")
