@@ -1,6 +1,7 @@
 #include "convex_qp.hpp"
 
 #include <array>
+#include <cassert>
 #include <cmath>
 
 namespace dynpos::model::detail {
@@ -62,6 +63,9 @@ void block_step(const ConvexQp& qp, const std::vector<Eigen::Index>& working,
   w.of.resize(blocks);
   for (std::size_t k = 0; k < working.size(); ++k) {
     const auto b = static_cast<std::size_t>(qp.row_block[static_cast<std::size_t>(working[k])]);
+    // Independent rows (starting_set, and a blocking row moves off the working ones): at
+    // most the block's size.
+    assert(w.count[b] < 2);
     if (w.count[b] < 2) w.of[b][static_cast<std::size_t>(w.count[b]++)] = k;
   }
   w.z_at.clear();
@@ -119,7 +123,7 @@ void block_step(const ConvexQp& qp, const std::vector<Eigen::Index>& working,
   // G_Wᵀλ = −(H·p + g), block by block.
   w.r.noalias() = qp.H * out.p;
   w.r = -(w.r + g);
-  out.lambda.resize(static_cast<Eigen::Index>(working.size()));
+  out.lambda.setZero(static_cast<Eigen::Index>(working.size()));
   for (std::size_t b = 0; b < blocks; ++b) {
     if (w.count[b] == 0) continue;
     const Eigen::Index o = qp.block_start[b];

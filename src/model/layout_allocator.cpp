@@ -524,8 +524,16 @@ LayoutAllocation LayoutAllocator::allocate(const Eigen::Vector3d& tau_d_b,
                                            const std::vector<double>& capacity,
                                            const AllocationRates& rates) const {
   LayoutAllocation free = allocate(tau_d_b, capacity);
-  if (rates.previous == nullptr || rates.previous->units.size() != units_.size() ||
-      !(rates.dt_s > 0.0) || !free.units.size()) {
+  // allocate()'s own answers to a demand or capacity it does not solve stand as they are.
+  const double size = std::max({std::abs(tau_d_b(0)) / options_.force_scale,
+                                std::abs(tau_d_b(1)) / options_.force_scale,
+                                std::abs(tau_d_b(2)) / options_.moment_scale});
+  const bool capacity_ok =
+      (capacity.empty() || capacity.size() == units_.size()) &&
+      std::all_of(capacity.begin(), capacity.end(), [](double c) { return c >= 0.0 && c <= 1.0; });
+  if (!tau_d_b.allFinite() || !(size <= kLargestDemand) || !capacity_ok ||
+      rates.previous == nullptr || rates.previous->units.size() != units_.size() ||
+      !(rates.dt_s > 0.0)) {
     return free;
   }
   Setup s = setup(tau_d_b, capacity, nearest_regions(free));

@@ -101,15 +101,25 @@ double UnitDrive::angle_rate(double angle, double command) const noexcept {
   return std::clamp(kSteeringGain * turn_rad(angle, command), -rate, rate);
 }
 
+bool UnitDrive::turn_crosses(double angle, double turn) const noexcept {
+  const double start = turn >= 0.0 ? angle : angle + turn;
+  return crosses(unit_.forbidden_deg, std::fmod(std::fmod(start, kTwoPi) + kTwoPi, kTwoPi),
+                 std::abs(turn));
+}
+
+bool UnitDrive::short_way_blocked(double angle, double command) const noexcept {
+  return unit_.type == UnitType::kAzimuth &&
+         turn_crosses(angle, std::remainder(command - angle, kTwoPi));
+}
+
 double UnitDrive::turn_rad(double angle, double command) const noexcept {
   if (unit_.type != UnitType::kAzimuth) return 0.0;
-  double turn = std::remainder(command - angle, kTwoPi);  // the short way, (−π, π]
-  const double start = turn >= 0.0 ? angle : angle + turn;
-  if (crosses(unit_.forbidden_deg, std::fmod(std::fmod(start, kTwoPi) + kTwoPi, kTwoPi),
-              std::abs(turn))) {
-    turn -= std::copysign(kTwoPi, turn);  // the long way round, clear of the sector
-  }
-  return turn;
+  const double turn = std::remainder(command - angle, kTwoPi);  // the short way, (−π, π]
+  if (!turn_crosses(angle, turn)) return turn;
+  const double long_way = turn - std::copysign(kTwoPi, turn);
+  // Both ways blocked (an order in another gap between sectors): the short way, through the
+  // sector, its thrust cut to nothing meanwhile (the control task's order, cos of the turn left).
+  return turn_crosses(angle, long_way) ? turn : long_way;
 }
 
 std::optional<AllowedArc> UnitDrive::reachable(double angle, double reach_rad) const noexcept {

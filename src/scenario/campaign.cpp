@@ -30,20 +30,25 @@ class SummaryBuilder {
     const auto& r = truth.values("r");
     const auto& n = truth.values("north");
     const auto& e = truth.values("east");
-    const auto& pp = truth.values("power.port");
-    const auto& ps = truth.values("power.stb");
-    const auto& pt = truth.values("power.tunnel");
+    // Every shaft's power: the model's port, stb and tunnel, or a layout's units, in log order.
+    std::vector<const std::vector<double>*> powers;
+    for (const core::Channel& c : truth.channels()) {
+      if (c.name.rfind("power.", 0) == 0) powers.push_back(&c.values);
+    }
     for (std::size_t i = 0; i < t.size(); ++i) {
-      const Row row{t[i], n[i], e[i], pp[i], ps[i], pt[i]};
+      Row row{t[i], n[i], e[i], {}};
+      for (const std::vector<double>* p : powers) row.power_W.push_back((*p)[i]);
       s_.max_speed_mps = std::max(s_.max_speed_mps, std::hypot(u[i], v[i]));
       s_.max_yaw_rate_dps = std::max(s_.max_yaw_rate_dps, std::abs(r[i]) * 180.0 / M_PI);
       if (last_) {
         s_.distance_m += std::hypot(row.north - last_->north, row.east - last_->east);
-        // Trapezoidal ∫P dt over the log samples.
-        energy_J_ += 0.5 * (row.t - last_->t) *
-                     (row.pp + row.ps + row.pt + last_->pp + last_->ps + last_->pt);
+        // Trapezoidal ∫P dt over the log samples (summed in this order: the same bits as ever).
+        double sum = 0.0;
+        for (const double p : row.power_W) sum += p;
+        for (const double p : last_->power_W) sum += p;
+        energy_J_ += 0.5 * (row.t - last_->t) * sum;
       }
-      last_ = row;
+      last_ = std::move(row);
     }
     s_.rows += t.size();
     s_.energy_kJ = energy_J_ / 1e3;
@@ -51,7 +56,8 @@ class SummaryBuilder {
 
  private:
   struct Row {
-    double t, north, east, pp, ps, pt;  // [s], [m], [m], powers [W]
+    double t, north, east;        // [s], [m], [m]
+    std::vector<double> power_W;  // each shaft's power [W]
   };
   RunSummary& s_;
   std::optional<Row> last_;

@@ -48,9 +48,10 @@ double rest_angle_rad(const model::ThrusterUnit& unit) {
 }
 
 // The orders that make a unit's allocated command, its steering held at `angle_before` [rad]
-// while an azimuth idles; `angle_now` is where its steering is [rad] (the thrust cut).
+// while an azimuth idles; `angle_now` is where its steering is [rad] (the thrust cut). A unit
+// at capacity c delivers c times its drive's thrust (the plant): its shaft is ordered for T/c.
 ActuatorCommands::Unit unit_order(const model::UnitDrive& drive, const model::UnitCommand& c,
-                                  double angle_before, double angle_now) {
+                                  double angle_before, double angle_now, double capacity) {
   const model::ThrusterUnit& unit = drive.unit();
   ActuatorCommands::Unit order;
   order.thrust_N = c.thrust_N;
@@ -62,7 +63,9 @@ ActuatorCommands::Unit unit_order(const model::UnitDrive& drive, const model::Un
       order.angle_rad =
           idle ? angle_before
                : angle_before + std::remainder(c.angle_rad - angle_before, 2.0 * std::numbers::pi);
-      thrust *= std::max(0.0, std::cos(order.angle_rad - angle_now));
+      // Cut by cos of the turn the servo still makes (it may go the long way round).
+      const double left = std::abs(drive.turn_rad(angle_now, order.angle_rad));
+      thrust *= left >= 0.5 * std::numbers::pi ? 0.0 : std::cos(left);
       break;
     }
     case model::UnitType::kPropellerRudder:
@@ -71,13 +74,14 @@ ActuatorCommands::Unit unit_order(const model::UnitDrive& drive, const model::Un
     default:
       break;
   }
-  order.n_rps = drive.shaft_speed_for(thrust);
+  order.n_rps = capacity > 0.0 ? drive.shaft_speed_for(thrust / capacity) : 0.0;
   return order;
 }
 
-// The allocation of one control step (the file comment). An azimuth the optimum sends the long
-// way round a forbidden sector (more than half a turn) is first held within a quarter turn of
-// where it points, clear of the sector; that allocation is taken when it meets the demand.
+// The allocation of one control step (the file comment). An azimuth the optimum sends across a
+// forbidden sector the short way (so round the far side, or through it) is first held within a
+// quarter turn of where it points, clear of the sector; that allocation is taken when it meets
+// the demand.
 // Without it an azimuth beside a forbidden sector is sent from one edge of the sector to the
 // other whenever the demand's surge changes sign: round the far side, at no thrust, again and
 // again (seen on the supply vessel with a main azimuth lost in a beam sea).
@@ -93,7 +97,7 @@ model::LayoutAllocation steered_allocation(const model::LayoutAllocator& allocat
     const double angle = x[VesselPlant::kUnits + 2 * static_cast<Eigen::Index>(k) + 1];
     const model::UnitCommand& c = a.units[k];
     if (c.thrust_N < kIdleThrustFraction * units[k].max_thrust_N ||
-        std::abs(drives[k].turn_rad(angle, c.angle_rad)) <= std::numbers::pi) {
+        !drives[k].short_way_blocked(angle, c.angle_rad)) {
       continue;
     }
     const auto reach = drives[k].reachable(angle, 0.5 * std::numbers::pi);
@@ -123,10 +127,13 @@ void trim_units(const VesselConfig& vessel, const VesselPlant& plant, double x_n
   for (std::size_t k = 0; k < drives.size(); ++k) {
     const double rest = rest_angle_rad(drives[k].unit());
     ActuatorCommands::Unit order{0.0, rest, 0.0};
-    if (!a.units.empty()) order = unit_order(drives[k], a.units[k], rest, rest);
+    if (!a.units.empty()) {
+      order = unit_order(drives[k], a.units[k], rest, rest, plant.capacity()[k]);
+    }
     if (!a.units.empty() && drives[k].unit().type == model::UnitType::kAzimuth) {
       order.angle_rad = a.units[k].thrust_N > 0.0 ? a.units[k].angle_rad : rest;
-      order.n_rps = drives[k].shaft_speed_for(a.units[k].thrust_N);
+      const double c = plant.capacity()[k];
+      order.n_rps = c > 0.0 ? drives[k].shaft_speed_for(a.units[k].thrust_N / c) : 0.0;
     }
     const Eigen::Index i = Plant::kUnits + 2 * static_cast<Eigen::Index>(k);
     trim.x0[i] = order.n_rps;
@@ -241,7 +248,8 @@ model::LayoutAllocation ControlTask::allocate_units(const Eigen::Vector3d& tau_d
   const auto& drives = plant_.drives();
   for (std::size_t k = 0; k < drives.size(); ++k) {
     const double angle_now = x[Plant::kUnits + 2 * static_cast<Eigen::Index>(k) + 1];
-    commands_.units[k] = unit_order(drives[k], a.units[k], commands_.units[k].angle_rad, angle_now);
+    commands_.units[k] = unit_order(drives[k], a.units[k], commands_.units[k].angle_rad, angle_now,
+                                    plant_.capacity()[k]);
   }
   return a;
 }

@@ -121,6 +121,8 @@ nlohmann::json unit_json(const model::ThrusterUnit& u) {
   }
   const model::UnitDriveParams d = model::drive_params(u);
   j["time_constant_s"] = d.time_constant_s;
+  j["thrust_rate_N_per_s"] = u.thrust_rate_N_per_s.value_or(
+      std::max(u.max_thrust_N, u.max_reverse_thrust_N) / (4.0 * d.time_constant_s));
   j["drive"] = {{"diameter_m", d.diameter_m},
                 {"max_shaft_speed_rps", d.max_shaft_speed_rps},
                 {"kt_ahead", d.kt_ahead},

@@ -63,7 +63,9 @@ TEST(TimeDomain, ALayoutsFailureCaseIsNeverBetterThanIntact) {
   const Environment beam = dnv_level1_table().rows[6];
   const RunVerdict intact = time_domain_run(v, {}, beam, 90.0, o);
   const RunVerdict group = time_domain_run(v, {"group:A"}, beam, 90.0, o);
-  EXPECT_GE(group.max_excursion_m, intact.max_excursion_m);
+  // Without the bow tunnel and the port main the beam load moves the vessel further: a case
+  // not applied would give the intact run's very numbers.
+  EXPECT_GT(group.max_excursion_m, intact.max_excursion_m + 0.05);
   EXPECT_THROW((void)time_domain_run(v, {"port"}, beam, 90.0, o), core::InputError);
 }
 

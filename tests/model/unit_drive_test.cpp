@@ -70,7 +70,7 @@ TEST(UnitDrive, AnAzimuthTurnsTheLongWayRoundAForbiddenSector) {
   // From the sector's edge away from it, and past it on the clear side, the short way.
   EXPECT_LT(d.angle_rate(75.0 * kDeg, 40.0 * kDeg), 0.0);
   EXPECT_GT(d.angle_rate(105.0 * kDeg, 140.0 * kDeg), 0.0);
-  // A sector across ahead: 300° → 60° goes round by 180°.
+  // A sector across ahead: 300° → 60° goes the long way round, by 180° (a 240° turn).
   const UnitDrive across(azimuth({{350.0, 10.0}}));
   EXPECT_LT(across.angle_rate(300.0 * kDeg, 60.0 * kDeg), 0.0);
   EXPECT_GT(across.angle_rate(60.0 * kDeg, 300.0 * kDeg), 0.0);
@@ -90,6 +90,21 @@ TEST(UnitDrive, TheReachableDirectionsStopAtAForbiddenSector) {
   // The turn from one edge of the sector to the other is the long way round.
   EXPECT_NEAR(d.turn_rad(75.0 * kDeg, 105.0 * kDeg), -330.0 * kDeg, 1e-12);
   EXPECT_NEAR(d.turn_rad(60.0 * kDeg, 30.0 * kDeg), -30.0 * kDeg, 1e-12);
+}
+
+TEST(UnitDrive, WithBothWaysBlockedTheShortWayIsTaken) {
+  // Sectors on both beams; from ahead to astern both ways cross one: the short way (through
+  // the sector, the thrust cut by the control task meanwhile), and it is reported blocked.
+  const UnitDrive d(azimuth({{80.0, 100.0}, {260.0, 280.0}}));
+  EXPECT_NEAR(std::abs(d.turn_rad(0.0, 170.0 * kDeg)), 170.0 * kDeg, 1e-12);
+  EXPECT_TRUE(d.short_way_blocked(0.0, 170.0 * kDeg));
+  // Within one gap: clear.
+  EXPECT_NEAR(d.turn_rad(10.0 * kDeg, 60.0 * kDeg), 50.0 * kDeg, 1e-12);
+  EXPECT_FALSE(d.short_way_blocked(10.0 * kDeg, 60.0 * kDeg));
+  // One sector: the short way blocked, the long way taken.
+  const UnitDrive one(azimuth({{75.0, 105.0}}));
+  EXPECT_TRUE(one.short_way_blocked(60.0 * kDeg, 120.0 * kDeg));
+  EXPECT_NEAR(one.turn_rad(60.0 * kDeg, 120.0 * kDeg), -300.0 * kDeg, 1e-12);
 }
 
 TEST(UnitDrive, ForceAndMomentFollowTheDirectionAndPosition) {

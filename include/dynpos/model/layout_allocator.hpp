@@ -101,6 +101,19 @@ struct AllocationRates {
 /// the same from any start, up to round-off. Bound to the allocator and the capacity it was
 /// filled with; another allocator or capacity empties it. Not shared between threads.
 class AllocationWarmStart {
+ public:
+  AllocationWarmStart() = default;
+  /// A copy keeps the solutions, not the cached programmes (each copy builds its own, so that
+  /// copies used on two threads share nothing).
+  AllocationWarmStart(const AllocationWarmStart& other)
+      : owner_(other.owner_), capacity_(other.capacity_), by_regions_(other.by_regions_) {}
+  AllocationWarmStart& operator=(const AllocationWarmStart& other) {
+    if (this != &other) *this = AllocationWarmStart(other);
+    return *this;
+  }
+  AllocationWarmStart(AllocationWarmStart&&) = default;
+  AllocationWarmStart& operator=(AllocationWarmStart&&) = default;
+
  private:
   friend class LayoutAllocator;
   struct Solution {

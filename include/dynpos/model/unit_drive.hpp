@@ -71,8 +71,13 @@ class UnitDrive {
   /// others.
   double angle_rate(double angle_rad, double angle_command_rad) const noexcept;
   /// An azimuth's signed turn [rad] from `angle_rad` to `command_rad`: the short way, or the
-  /// long way round (|turn| > π) when the short way crosses a forbidden sector; 0 for the others.
+  /// long way round (|turn| > π) when the short way crosses a forbidden sector and the long way
+  /// does not; the short way when both cross one (an order in another gap between sectors: the
+  /// unit passes the sector with its thrust cut). 0 for the others.
   double turn_rad(double angle_rad, double command_rad) const noexcept;
+  /// Whether the short way from `angle_rad` to `command_rad` crosses a forbidden sector (an
+  /// azimuth only).
+  bool short_way_blocked(double angle_rad, double command_rad) const noexcept;
   /// An azimuth's directions within `reach_rad` (at most π/2) either way of `angle_rad` [rad],
   /// never across a forbidden sector: one arc of at most 180°, a convex wedge. Empty for
   /// another unit, or an azimuth inside a forbidden sector.
@@ -86,6 +91,8 @@ class UnitDrive {
 
  private:
   double rudder_force(double thrust_N, double rudder_rad) const noexcept;
+  // Whether the turn [rad] from `angle` crosses a forbidden sector's interior.
+  bool turn_crosses(double angle, double turn) const noexcept;
 
   ThrusterUnit unit_;
   UnitDriveParams p_;

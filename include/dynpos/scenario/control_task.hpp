@@ -8,9 +8,9 @@
 /// command, each propeller step with its Smith truth, the rudder steps and setpoints.
 ///
 /// A vessel with a [[thruster]] layout is allocated by model::LayoutAllocator (an azimuth the
-/// optimum sends more than half a turn round a forbidden sector is held within a quarter turn of
-/// where it points while that meets the demand, so it does not swing from one edge of the sector
-/// to the other), each unit's force turned into its orders (model/unit_drive.hpp): shaft speed for
+/// optimum sends across a forbidden sector the short way is held within a quarter turn of where
+/// it points while that meets the demand, so it does not swing from one edge of the sector to
+/// the other), each unit's force turned into its orders (model/unit_drive.hpp): shaft speed for
 /// the thrust, an azimuth's direction (kept while its thrust is below 1 % of its rating, so an idle
 /// unit does not swing about) and a rudder's angle. An azimuth's shaft speed order is cut by cos of
 /// the angle it still has to turn (none beyond 90°), as DP systems do, so that it does not push the
