@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <set>
 
@@ -9,6 +10,7 @@
 
 #include "convex_qp.hpp"
 #include "dynpos/core/error.hpp"
+#include "dynpos/model/azimuth_region.hpp"
 #include "dynpos/model/unit_drive.hpp"
 
 namespace dynpos::model {
@@ -104,9 +106,36 @@ LayoutAllocator::LayoutAllocator(std::vector<ThrusterUnit> units, LayoutAllocati
       throw core::InputError::for_option("thruster.name",
                                          fmt::format("two units are named '{}'", u.name));
     }
+    // An azimuth with a loss table: the convex pieces of its star-shaped polygon, whose wedges
+    // stand for its arcs everywhere below; the relaxation is the polygon at its largest factor.
+    pieces_.emplace_back();
+    relaxed_radius_.push_back(1.0);
+    if (u.type == UnitType::kAzimuth && !u.loss.empty()) {
+      pieces_.back() = azimuth_pieces(u.loss, u.forbidden_deg, options_.polygon_sides);
+      std::vector<AllowedArc> wedges;
+      for (const ConvexPiece& p : pieces_.back()) wedges.push_back(p.wedge);
+      arcs_.push_back(std::move(wedges));
+      double largest = 0.0;
+      for (const LossPoint& p : u.loss) largest = std::max(largest, p.factor);
+      relaxed_radius_.back() = largest;
+      continue;
+    }
     arcs_.push_back(u.type == UnitType::kAzimuth ? allowed_arcs(u.forbidden_deg)
                                                  : std::vector<AllowedArc>{});
   }
+}
+
+// The sides of unit k's disc in `region`: the regular polygon (at the relaxation's largest
+// factor for a loss table), or the edges of its convex piece.
+void LayoutAllocator::for_each_side(
+    std::size_t k, int region,
+    const std::function<void(const Eigen::Vector2d&, double)>& side) const {
+  if (pieces_[k].empty() || region == kRelaxed) {
+    for (const Eigen::Vector2d& n : side_normals_) side(n, side_distance_ * relaxed_radius_[k]);
+    return;
+  }
+  const ConvexPiece& p = pieces_[k][static_cast<std::size_t>(region)];
+  for (std::size_t i = 0; i < p.normals.size(); ++i) side(p.normals[i], p.distances[i]);
 }
 
 int LayoutAllocator::region_count(std::size_t unit) const {
@@ -150,7 +179,14 @@ LayoutAllocator::Setup LayoutAllocator::setup(const Eigen::Vector3d& tau_d_b,
         s.A.col(o) = surge * s.scale(o);
         s.A.col(o + 1) = sway * s.scale(o + 1);
         weight.segment(o, 2).setConstant(u.weight);
-        for (const Eigen::Vector2d& normal : side_normals_) rows.add(o, 2, normal, side_distance_);
+        if (pieces_[k].empty()) {
+          for (const Eigen::Vector2d& normal : side_normals_) {
+            rows.add(o, 2, normal, side_distance_);
+          }
+        } else {
+          for_each_side(k, region,
+                        [&](const Eigen::Vector2d& n, double d) { rows.add(o, 2, n, d); });
+        }
         if (region != kRelaxed && arcs_[k][region].span_rad < kTwoPi) {
           const double a = arcs_[k][region].from_rad;
           const double b = a + arcs_[k][region].span_rad;
@@ -281,8 +317,14 @@ void LayoutAllocator::project(const Setup& s, Eigen::VectorXd& x) const {
         }
       }
       double largest = 0.0;  // the polygon's most violated side, as n·v over its distance
-      for (const Eigen::Vector2d& normal : side_normals_) {
-        largest = std::max(largest, normal.dot(v) / side_distance_);
+      if (pieces_[k].empty()) {
+        for (const Eigen::Vector2d& normal : side_normals_) {
+          largest = std::max(largest, normal.dot(v) / side_distance_);
+        }
+      } else {
+        for_each_side(k, region, [&](const Eigen::Vector2d& n, double d) {
+          largest = std::max(largest, n.dot(v) / d);
+        });
       }
       if (largest > 1.0) v /= largest;
       x.segment(o, 2) = v;
@@ -421,8 +463,9 @@ std::vector<int> LayoutAllocator::nearest_regions(const LayoutAllocation& relaxe
 
 namespace {
 
-// Whether a relaxed command lies in the unit's true region (to 10⁻⁹ of its rating).
-bool in_region(const ThrusterUnit& u, const UnitCommand& c) {
+// Whether a relaxed command lies in the unit's true region (to 10⁻⁹ of its rating), a loss
+// table's pieces aside (LayoutAllocator::in_region).
+bool in_basic_region(const ThrusterUnit& u, const UnitCommand& c) {
   const double tol = 1e-9 * std::max(u.max_thrust_N, 1.0);
   if (u.type == UnitType::kAzimuth) {
     return c.thrust_N <= tol || !in_forbidden_sector(c.angle_rad, u.forbidden_deg);
@@ -438,6 +481,26 @@ bool in_region(const ThrusterUnit& u, const UnitCommand& c) {
 }
 
 }  // namespace
+
+bool LayoutAllocator::in_region(std::size_t k, const UnitCommand& c) const {
+  const ThrusterUnit& u = units_[k];
+  if (!in_basic_region(u, c)) return false;
+  if (pieces_[k].empty()) return true;
+  // In some piece: its wedge holds the direction and its edges the force (over the rating).
+  const double tol = 1e-9;
+  const Eigen::Vector2d v = c.force_b / std::max(u.max_thrust_N, 1.0);
+  if (v.norm() <= tol) return true;
+  for (const ConvexPiece& p : pieces_[k]) {
+    const double after = angle_after(c.angle_rad, p.wedge.from_rad);
+    if (p.wedge.span_rad < kTwoPi && after > p.wedge.span_rad + tol) continue;
+    bool inside = true;
+    for (std::size_t i = 0; i < p.normals.size() && inside; ++i) {
+      inside = p.normals[i].dot(v) <= p.distances[i] + tol;
+    }
+    if (inside) return true;
+  }
+  return false;
+}
 
 LayoutAllocation LayoutAllocator::allocate(const Eigen::Vector3d& tau_d_b,
                                            const std::vector<double>& capacity) const {
@@ -466,7 +529,7 @@ LayoutAllocation LayoutAllocator::allocate(const Eigen::Vector3d& tau_d_b,
       solve(setup(tau_d_b, capacity, std::vector<int>(units_.size(), kRelaxed)), tau_d_b);
   bool feasible = true;
   for (std::size_t k = 0; k < units_.size() && feasible; ++k) {
-    feasible = in_region(units_[k], relaxed.units[k]);
+    feasible = in_region(k, relaxed.units[k]);
   }
   if (feasible && relaxed.met) return relaxed;  // the relaxation's optimum is the problem's
   if (feasible) {  // unmet: the least effort in the regions the relaxed commands lie in
@@ -613,7 +676,7 @@ bool LayoutAllocator::attainable(const Eigen::Vector3d& tau_d_b,
   if (!relaxed.met) return false;
   bool feasible = true;
   for (std::size_t k = 0; k < units_.size() && feasible; ++k) {
-    feasible = in_region(units_[k], relaxed.units[k]);
+    feasible = in_region(k, relaxed.units[k]);
   }
   if (feasible) return true;
   const std::vector<int> guess = nearest_regions(relaxed);
@@ -640,7 +703,7 @@ bool LayoutAllocator::search_regions(const Question& q, std::vector<int>& region
     if (!a.met) continue;  // the units after k relaxed miss it: so does every choice of theirs
     bool feasible = true;
     for (std::size_t j = k + 1; j < units_.size() && feasible; ++j) {
-      feasible = in_region(units_[j], a.units[j]);
+      feasible = in_region(j, a.units[j]);
     }
     if (feasible || search_regions(q, regions, k + 1, budget)) return true;
   }

@@ -118,6 +118,26 @@ void ThrusterUnit::validate() const {
                 fmt::format("the sector [{}, {}] is empty", s.from_deg, s.to_deg));
     }
   }
+  if (!loss.empty() && type != UnitType::kAzimuth) {
+    bad_field(*this, "loss", "only an azimuth has a loss table (scale a fixed unit's ratings)");
+  }
+  double largest = 0.0;
+  for (std::size_t i = 0; i < loss.size(); ++i) {
+    const LossPoint& p = loss[i];
+    if (!finite(p.angle_deg) || p.angle_deg < 0.0 || p.angle_deg >= 360.0) {
+      bad_field(*this, "loss", fmt::format("{}° is not in [0, 360)", p.angle_deg));
+    }
+    if (i > 0 && p.angle_deg <= loss[i - 1].angle_deg) {
+      bad_field(*this, "loss",
+                fmt::format("the angles must increase: {}° after {}°", p.angle_deg,
+                            loss[i - 1].angle_deg));
+    }
+    if (!finite(p.factor) || p.factor < 0.0 || p.factor > 1.0) {
+      bad_field(*this, "loss", fmt::format("the factor {} is not in [0, 1]", p.factor));
+    }
+    largest = std::max(largest, p.factor);
+  }
+  if (!loss.empty() && largest <= 0.0) bad_field(*this, "loss", "every factor is 0");
   if (type == UnitType::kAzimuth && allowed_arcs(forbidden_deg).empty()) {
     bad_field(*this, "forbidden_deg", "the sectors forbid every direction");
   }

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "dynpos/model/azimuth_region.hpp"
+
 namespace dynpos::model {
 namespace {
 
@@ -168,6 +170,7 @@ UnitOutput UnitDrive::outputs(double n, double angle, double capacity) const noe
   double fx = 0.0, fy = 0.0, x_side = unit_.x_m;
   switch (unit_.type) {
     case UnitType::kAzimuth:
+      o.thrust_N *= loss_factor(unit_.loss, angle);  // the interaction loss there
       fx = o.thrust_N * std::cos(angle);
       fy = o.thrust_N * std::sin(angle);
       break;

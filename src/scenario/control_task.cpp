@@ -7,6 +7,7 @@
 
 #include "dynpos/core/angle.hpp"
 #include "dynpos/core/log.hpp"
+#include "dynpos/model/azimuth_region.hpp"
 #include "dynpos/model/thruster.hpp"
 #include "dynpos/scenario/joystick_lever.hpp"
 
@@ -74,7 +75,11 @@ ActuatorCommands::Unit unit_order(const model::UnitDrive& drive, const model::Un
     default:
       break;
   }
-  order.n_rps = capacity > 0.0 ? drive.shaft_speed_for(thrust / capacity) : 0.0;
+  // The plant gives capacity × loss factor × the drive's thrust: the shaft is ordered for the rest.
+  const double factor = capacity * (unit.type == model::UnitType::kAzimuth
+                                        ? model::loss_factor(unit.loss, order.angle_rad)
+                                        : 1.0);
+  order.n_rps = factor > 0.0 ? drive.shaft_speed_for(thrust / factor) : 0.0;
   return order;
 }
 
@@ -132,7 +137,8 @@ void trim_units(const VesselConfig& vessel, const VesselPlant& plant, double x_n
     }
     if (!a.units.empty() && drives[k].unit().type == model::UnitType::kAzimuth) {
       order.angle_rad = a.units[k].thrust_N > 0.0 ? a.units[k].angle_rad : rest;
-      const double c = plant.capacity()[k];
+      const double c =
+          plant.capacity()[k] * model::loss_factor(drives[k].unit().loss, order.angle_rad);
       order.n_rps = c > 0.0 ? drives[k].shaft_speed_for(a.units[k].thrust_N / c) : 0.0;
     }
     const Eigen::Index i = Plant::kUnits + 2 * static_cast<Eigen::Index>(k);

@@ -112,6 +112,9 @@ nlohmann::json unit_json(const model::ThrusterUnit& u) {
     nlohmann::json sectors = nlohmann::json::array();
     for (const model::AngleSector& s : u.forbidden_deg) sectors.push_back({s.from_deg, s.to_deg});
     j["forbidden_deg"] = sectors;
+    nlohmann::json loss = nlohmann::json::array();
+    for (const model::LossPoint& p : u.loss) loss.push_back({p.angle_deg, p.factor});
+    j["loss"] = loss;
   }
   if (u.type == model::UnitType::kPropellerRudder) {
     j["rudder_lift_per_thrust"] = u.rudder_lift_per_thrust;

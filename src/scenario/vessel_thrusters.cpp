@@ -27,6 +27,31 @@ std::optional<model::UnitType> unit_type(std::string_view name) {
   return std::nullopt;
 }
 
+// loss = [[angle_deg, factor], …]: angles in [0, 360) increasing, factors in [0, 1]; the
+// unit's validate() checks the rules.
+std::vector<model::LossPoint> read_loss(const TomlTable& t) {
+  std::vector<model::LossPoint> out;
+  const toml::node* node = t.raw().get("loss");
+  if (node == nullptr) return out;
+  const toml::array* points = node->as_array();
+  const auto bad = [&](std::string what) {
+    throw core::InputError(t.where("loss"), std::move(what),
+                           "write loss = [[angle_deg, factor], …], angles in [0, 360) clockwise "
+                           "from ahead in increasing order, factors in [0, 1], e.g. "
+                           "[[0.0, 1.0], [80.0, 1.0], [90.0, 0.6], [100.0, 1.0]]");
+  };
+  if (points == nullptr || points->empty()) bad("expected a non-empty array of [angle, factor]");
+  for (const toml::node& point : *points) {
+    const toml::array* pair = point.as_array();
+    if (pair == nullptr || pair->size() != 2) bad("each point is a pair [angle_deg, factor]");
+    const std::optional<double> angle = (*pair)[0].value<double>();
+    const std::optional<double> factor = (*pair)[1].value<double>();
+    if (!angle || !factor) bad("a point's angle and factor are numbers");
+    out.push_back({*angle, *factor});
+  }
+  return out;
+}
+
 // forbidden_deg = [[from, to], …], each in [0, 360).
 std::vector<model::AngleSector> read_sectors(const TomlTable& t) {
   std::vector<model::AngleSector> out;
@@ -74,18 +99,13 @@ model::ThrusterUnit read_unit(const TomlTable& t) {
                            "use azimuth, tunnel, propeller or propeller_rudder");
   }
   u.type = *parsed;
-  if (t.has("loss")) {
-    throw core::InputError(t.where("loss"),
-                           "direction-dependent thrust loss is not modelled in this version",
-                           "remove the key; give the rating the unit keeps in its worst direction");
-  }
   const auto only_for = [&](std::string_view key, model::UnitType allowed) {
     if (t.has(key) && u.type != allowed) {
       throw core::InputError(t.where(key), fmt::format("the {} unit has no {}", type, key),
                              fmt::format("only a {} takes it", model::unit_type_name(allowed)));
     }
   };
-  for (const char* key : {"forbidden_deg", "rate_deg_per_s"}) {
+  for (const char* key : {"forbidden_deg", "rate_deg_per_s", "loss"}) {
     only_for(key, model::UnitType::kAzimuth);
   }
   for (const char* key :
@@ -101,6 +121,7 @@ model::ThrusterUnit read_unit(const TomlTable& t) {
   u.max_reverse_thrust_N =
       t.number_or(reverse * u.max_thrust_N, {"max_reverse_thrust_N", "N", 0.0, 1e8});
   u.forbidden_deg = read_sectors(t);
+  u.loss = read_loss(t);
   u.rate_deg_per_s = t.number_or(u.rate_deg_per_s, {"rate_deg_per_s", "deg/s", 0.0, 360.0, true});
   if (t.has("time_constant_s")) {
     u.time_constant_s = t.number({"time_constant_s", "s", 0.0, 60.0, true});
@@ -121,7 +142,8 @@ model::ThrusterUnit read_unit(const TomlTable& t) {
   try {
     u.validate();
   } catch (const core::InputError& e) {  // e.g. sectors that forbid every direction
-    throw core::InputError(t.where("forbidden_deg"), e.problem(), e.hint());
+    const bool loss = e.where().column_name.find(".loss") != std::string::npos;
+    throw core::InputError(t.where(loss ? "loss" : "forbidden_deg"), e.problem(), e.hint());
   }
   return u;
 }

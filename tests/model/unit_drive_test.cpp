@@ -121,6 +121,16 @@ TEST(UnitDrive, ForceAndMomentFollowTheDirectionAndPosition) {
   EXPECT_EQ(d.outputs(n, 0.0, 0.0).tau_b, Eigen::Vector3d::Zero());
 }
 
+TEST(UnitDrive, AnAzimuthsThrustIsCutByItsLossFactorThere) {
+  ThrusterUnit u = azimuth();
+  u.loss = {{0.0, 1.0}, {80.0, 1.0}, {90.0, 0.5}, {100.0, 1.0}};
+  const UnitDrive d(u);
+  const double n = d.shaft_speed_for(40e3);
+  EXPECT_NEAR(d.outputs(n, 90.0 * kDeg).thrust_N, 20e3, 1e-6);
+  EXPECT_NEAR(d.outputs(n, 85.0 * kDeg).thrust_N, 30e3, 1e-6);
+  EXPECT_NEAR(d.outputs(n, 180.0 * kDeg).thrust_N, 40e3, 1e-6);
+}
+
 TEST(UnitDrive, ARudderSpansTheAllocationsConeAtHardOver) {
   ThrusterUnit u = thruster_unit("pr", UnitType::kPropellerRudder, -13.0, 2.7, 73e3);
   u.rudder_lift_per_thrust = 0.65;

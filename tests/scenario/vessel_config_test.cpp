@@ -97,8 +97,18 @@ TEST(VesselConfig, ThrusterLayoutUnits) {
   EXPECT_THAT(error_of("dynpos_t6.toml",
                        unit + "max_thrust_N = 1e5\nforbidden_deg = [[0, 180], [180, 0]]\n"),
               testing::ContainsRegex("t6.toml:7:.*forbid every direction"));
-  EXPECT_THAT(error_of("dynpos_t7.toml", unit + "max_thrust_N = 1e5\nloss = [[0, 1]]\n"),
-              testing::ContainsRegex("t7.toml:7:.*not modelled"));
+  // A loss table: its angles increase, its factors are in [0, 1], and it is an azimuth's.
+  EXPECT_THAT(
+      error_of("dynpos_t7.toml", unit + "max_thrust_N = 1e5\nloss = [[90, 0.5], [80, 1.0]]\n"),
+      testing::ContainsRegex("t7.toml:7:.*loss.*the angles must increase"));
+  EXPECT_THAT(error_of("dynpos_t9.toml", unit + "max_thrust_N = 1e5\nloss = [[90, 1.5]]\n"),
+              testing::ContainsRegex("t9.toml:7:.*loss.*factor 1.5 is not in \\[0, 1\\]"));
+  EXPECT_THAT(error_of("dynpos_t10.toml",
+                       "[[thruster]]\nname = \"t\"\ntype = \"tunnel\"\n"
+                       "max_thrust_N = 1e5\nloss = [[90, 0.5]]\n"),
+              testing::ContainsRegex("t10.toml:5:.*the tunnel unit has no loss"));
+  EXPECT_THAT(error_of("dynpos_t11.toml", unit + "max_thrust_N = 1e5\nloss = [90, 0.5]\n"),
+              testing::ContainsRegex("t11.toml:7:.*each point is a pair"));
   // The names of failure cases are not units' names: a unit "none" would vanish from them.
   for (const char* name : {"none", "worst", "group:A"}) {
     EXPECT_THAT(error_of("dynpos_t8.toml",

@@ -31,6 +31,7 @@
 /// origin, which every region contains (attainable() with a warm start: from the last solution
 /// of the same combination of regions).
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -38,6 +39,7 @@
 
 #include <Eigen/Core>
 
+#include "dynpos/model/azimuth_region.hpp"
 #include "dynpos/model/thruster_unit.hpp"
 
 namespace dynpos::model {
@@ -192,11 +194,20 @@ class LayoutAllocator {
   bool search_regions(const Question& q, std::vector<int>& regions, std::size_t from,
                       int& budget) const;
   std::vector<int> nearest_regions(const LayoutAllocation& relaxed) const;
+  // Whether unit k's command lies in its true region (its arcs, cone, and loss table's pieces).
+  bool in_region(std::size_t k, const UnitCommand& c) const;
+  // Each side (outward normal, distance over the rating) of unit k's polygon in `region`.
+  void for_each_side(std::size_t k, int region,
+                     const std::function<void(const Eigen::Vector2d&, double)>& side) const;
   int region_count(std::size_t unit) const;
 
   std::vector<ThrusterUnit> units_;
   LayoutAllocationOptions options_;
   std::vector<std::vector<AllowedArc>> arcs_;  // per unit (azimuths), else empty
+  // An azimuth with a loss table: its convex pieces (arcs_ holds their wedges) and the
+  // relaxation's radius, its largest factor; else empty and 1.
+  std::vector<std::vector<ConvexPiece>> pieces_;
+  std::vector<double> relaxed_radius_;
   // The inscribed polygon of an azimuth's disc over its radius: each side's outward normal and
   // its distance from the centre, cos(π/sides).
   std::vector<Eigen::Vector2d> side_normals_;

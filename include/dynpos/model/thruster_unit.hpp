@@ -34,6 +34,13 @@ struct AngleSector {
   double to_deg = 0.0;
 };
 
+/// A point of a unit's thrust factor by direction (interaction losses): the factor in [0, 1] of
+/// the rating at direction angle_deg in [0, 360) (azimuth_region.hpp).
+struct LossPoint {
+  double angle_deg = 0.0;
+  double factor = 1.0;
+};
+
 /// One unit. Thrusts are rated magnitudes [N] ≥ 0: for a tunnel, max_thrust_N to starboard and
 /// max_reverse_thrust_N to port; for an azimuth the disc's radius is max_thrust_N.
 struct ThrusterUnit {
@@ -68,6 +75,9 @@ struct ThrusterUnit {
   std::optional<double> thrust_rate_N_per_s;
   /// Cost of a fraction of the unit's capacity, relative to the others [-], > 0.
   double weight = 1.0;
+  /// Azimuth only: the thrust factor by direction, points in increasing angle, linear between
+  /// them round the circle; empty: 1 in every direction.
+  std::vector<LossPoint> loss;
   /// Redundancy group (switchboard, engine room); empty: none.
   std::string group;
 

@@ -6,7 +6,8 @@
 /// Propeller: a speed-controlled fixed-pitch propeller as the tunnel thruster's model
 /// (tunnel_thruster.hpp): shaft speed n [rps] of first order towards the delayed command with a
 /// rate limit, thrust T = ρK_T D⁴ n|n| (2.25) with K_T ahead or astern, power P = 2πρK_Q D⁵|n|³
-/// (2.28). Steering: an azimuth turns its thrust direction α at its slew rate, the way round
+/// (2.28), an azimuth's times its loss factor at its direction (azimuth_region.hpp). Steering:
+/// an azimuth turns its thrust direction α at its slew rate, the way round
 /// that does not cross a forbidden sector; a rudder turns at its servo rate and makes the side
 /// force Y = (κ·max(T, 0) + c)·δ/δ_max, capped at its largest force: the allocation's cone
 /// (layout_allocator.hpp) spanned by δ ∈ [−δ_max, δ_max].
