@@ -51,9 +51,46 @@ def allowed_wedges(forbidden):
     return wedges
 
 
+def loss_factor(loss, alpha):
+    """The factor at direction alpha [rad]: linear between the table's points round the circle."""
+    a = math.degrees(alpha) % 360.0
+    before = [p for p in loss if p[0] <= a]
+    p = before[-1] if before else loss[-1]
+    q = loss[(loss.index(p) + 1) % len(loss)]
+    span = (q[0] - p[0]) % 360.0
+    return p[1] if span == 0.0 else p[1] + (q[1] - p[1]) * ((a - p[0]) % 360.0) / span
+
+
+def wedge_rows(a, b):
+    """Directions from a to b [rad] (b − a ≤ π): not before a, not after b."""
+    return [((math.sin(a), -math.cos(a)), 0.0), ((-math.sin(b), math.cos(b)), 0.0)]
+
+
+def loss_regions(unit):
+    """An azimuth with a loss table: the triangles (origin, corner j, corner j+1) of its polygon,
+    each corner at its factor, cut by each allowed wedge: their union is the star polygon."""
+    s, out = unit["max_thrust_N"], []
+    for j in range(SIDES):
+        t0, t1 = j * 2.0 * math.pi / SIDES, (j + 1) * 2.0 * math.pi / SIDES
+        v0 = [s * loss_factor(unit["loss"], t0) * f for f in (math.cos(t0), math.sin(t0))]
+        v1 = [s * loss_factor(unit["loss"], t1) * f for f in (math.cos(t1), math.sin(t1))]
+        d = (v1[0] - v0[0], v1[1] - v0[1])
+        length = math.hypot(*d)
+        chord = ((d[1] / length, -d[0] / length), (d[1] * v0[0] - d[0] * v0[1]) / length)
+        for a, span in allowed_wedges(unit.get("forbidden_deg") or []):
+            # The triangle's directions [t0, t1] within the wedge [a, a + span], if any.
+            for shift in (0.0, 2.0 * math.pi, -2.0 * math.pi):
+                lo, hi = max(t0, a + shift), min(t1, a + span + shift)
+                if hi - lo > 1e-12:
+                    out.append([chord] + wedge_rows(lo, hi))
+    return out
+
+
 def regions(unit):
     """Each convex region of a unit as rows (a, b) of a·f ≤ b over its forces f [N]."""
     s = unit["max_thrust_N"]
+    if unit["type"] == "azimuth" and unit.get("loss"):
+        return loss_regions(unit)
     if unit["type"] == "azimuth":
         polygon = []
         for j in range(SIDES):
@@ -141,7 +178,10 @@ def vessel_file(path, units):
     for u in units:
         lines.append("[[thruster]]")
         for key, value in u.items():
-            if key == "forbidden_deg":
+            if key == "loss":
+                if value:
+                    lines.append("loss = [" + ", ".join(f"[{a!r}, {b!r}]" for a, b in value) + "]")
+            elif key == "forbidden_deg":
                 if value:
                     lines.append("forbidden_deg = [" +
                                  ", ".join(f"[{a!r}, {b!r}]" for a, b in value) + "]")
@@ -183,3 +223,41 @@ def test_the_factor_agrees_with_a_linear_programme(tmp_path):
             assert got == pytest.approx(expected, rel=TOLERANCE), where
             compared += 1
     assert compared >= 60  # most loads have a factor strictly between 0 and 100
+
+
+def test_the_factor_with_a_loss_table_agrees_with_a_linear_programme(tmp_path):
+    """One azimuth of each layout with a dip in its thrust (30–70 % across 20–80°): the star
+    polygon as 32 triangles (the LP's regions) against the tool's convex fans."""
+    rng = random.Random(20261129)
+    compared = 0
+    for layout in range(8):
+        units = [random_unit(rng, k) for k in range(rng.randint(2, 4))]
+        centre, half = rng.uniform(40.0, 320.0), rng.uniform(10.0, 40.0)
+        units[0] = {"name": "u0", "type": "azimuth", "x_m": rng.uniform(-40.0, 40.0),
+                    "y_m": rng.uniform(-8.0, 8.0), "max_thrust_N": rng.uniform(5e4, 3e5),
+                    "forbidden_deg": [], "max_reverse_thrust_N": 0.0,
+                    "loss": [(centre - half, 1.0), (centre, rng.uniform(0.3, 0.7)),
+                             (centre + half, 1.0)]}
+        for u in units[1:]:  # one non-convex region at a time keeps the programmes few
+            u.pop("forbidden_deg", None)
+        vessel = tmp_path / f"loss{layout}.toml"
+        vessel_file(vessel, units)
+        loads = [(float(i), rng.uniform(-2e5, 2e5), rng.uniform(-2e5, 2e5),
+                  rng.uniform(-4e6, 4e6)) for i in range(3)]
+        table = tmp_path / f"lossloads{layout}.csv"
+        table.write_text("direction_deg,X_N,Y_N,N_Nm\n" +
+                         "".join(f"{d},{x!r},{y!r},{n!r}\n" for d, x, y, n in loads))
+        r = dynpos.capability_loads(table, vessel=str(vessel), failure="none")
+        for point, (_, x, y, n) in zip(r.points, loads):
+            expected = lp_factor(units, (x, y, n))
+            where = f"layout {layout} ({vessel.read_text()}), load {(x, y, n)}"
+            if expected >= 100.0:
+                assert point.capped, where
+                continue
+            small = 1e-3 * min(1e5 / max(abs(x), abs(y), 1e-9), 1.3e6 / max(abs(n), 1e-9))
+            if expected <= small:
+                assert point.load_factor <= small, where
+                continue
+            assert point.load_factor == pytest.approx(expected, rel=TOLERANCE), where
+            compared += 1
+    assert compared >= 10
