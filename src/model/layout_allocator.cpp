@@ -419,12 +419,12 @@ LayoutAllocation LayoutAllocator::solve(const Setup& s, const Eigen::Vector3d& t
     }
     out.units.push_back(c);
   }
+  const Eigen::VectorXd gx = s.qp.G * q.x;  // one product, not a strided row at a time
   for (Eigen::Index i = 0; i < s.qp.G.rows(); ++i) {
     const std::size_t k = s.row_unit[static_cast<std::size_t>(i)];
     UnitCommand& c = out.units[k];
     const bool moving = c.force_b.norm() > 1e-9 * std::max(units_[k].max_thrust_N, 1.0);
-    if (moving && s.row_limit[static_cast<std::size_t>(i)] &&
-        s.qp.G.row(i).dot(q.x) >= s.qp.h(i) - 2e-3) {
+    if (moving && s.row_limit[static_cast<std::size_t>(i)] && gx(i) >= s.qp.h(i) - 2e-3) {
       c.at_limit = true;
     }
   }
