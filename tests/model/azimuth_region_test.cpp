@@ -14,9 +14,9 @@ constexpr int kSides = 32;
 
 bool in_piece(const ConvexPiece& p, const Eigen::Vector2d& f, double tol = 1e-9) {
   if (f.norm() > tol && p.wedge.span_rad < 2.0 * std::numbers::pi) {
-    const double after = std::fmod(std::atan2(f.y(), f.x()) - p.wedge.from_rad +
-                                       4.0 * std::numbers::pi,
-                                   2.0 * std::numbers::pi);
+    const double after =
+        std::fmod(std::atan2(f.y(), f.x()) - p.wedge.from_rad + 4.0 * std::numbers::pi,
+                  2.0 * std::numbers::pi);
     if (after > p.wedge.span_rad + tol) return false;
   }
   for (std::size_t k = 0; k < p.normals.size(); ++k) {
@@ -55,7 +55,8 @@ TEST(AzimuthRegion, WithoutLossesThePiecesAreThePolygonOrItsArcs) {
   ASSERT_EQ(whole.size(), 1u);
   EXPECT_NEAR(whole[0].wedge.span_rad, 2.0 * std::numbers::pi, 1e-12);
   ASSERT_EQ(whole[0].distances.size(), static_cast<std::size_t>(kSides));
-  for (const double d : whole[0].distances) EXPECT_NEAR(d, std::cos(std::numbers::pi / kSides), 1e-12);
+  for (const double d : whole[0].distances)
+    EXPECT_NEAR(d, std::cos(std::numbers::pi / kSides), 1e-12);
   const auto cut = azimuth_pieces({}, {{75.0, 105.0}}, kSides);
   const auto arcs = allowed_arcs({{75.0, 105.0}});
   ASSERT_EQ(cut.size(), arcs.size());
@@ -63,7 +64,8 @@ TEST(AzimuthRegion, WithoutLossesThePiecesAreThePolygonOrItsArcs) {
 
 TEST(AzimuthRegion, ADipSplitsThePolygonIntoConvexFansThatCoverIt) {
   const std::vector<LossPoint> loss{{0.0, 1.0}, {60.0, 1.0}, {90.0, 0.4}, {120.0, 1.0}};
-  for (const auto& forbidden : {std::vector<AngleSector>{}, std::vector<AngleSector>{{250.0, 290.0}}}) {
+  for (const auto& forbidden :
+       {std::vector<AngleSector>{}, std::vector<AngleSector>{{250.0, 290.0}}}) {
     const auto pieces = azimuth_pieces(loss, forbidden, kSides);
     EXPECT_GE(pieces.size(), 2u);
     std::mt19937 rng(3);
