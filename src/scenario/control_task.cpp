@@ -96,12 +96,11 @@ model::LayoutAllocation steered_allocation(const model::LayoutAllocator& allocat
                                            const Eigen::Vector3d& tau_d_b,
                                            const sim::ConstVectorRef& x) {
   model::LayoutAllocation a = allocator.allocate(tau_d_b, capacity);
-  std::vector<model::ThrusterUnit> units = allocator.units();
-  bool held = false;
+  std::vector<model::ThrusterUnit> units;  // copied only when an azimuth is held (rare)
   for (std::size_t k = 0; k < drives.size(); ++k) {
     const double angle = x[VesselPlant::kUnits + 2 * static_cast<Eigen::Index>(k) + 1];
     const model::UnitCommand& c = a.units[k];
-    if (c.thrust_N < kIdleThrustFraction * units[k].max_thrust_N ||
+    if (c.thrust_N < kIdleThrustFraction * drives[k].unit().max_thrust_N ||
         !drives[k].short_way_blocked(angle, c.angle_rad)) {
       continue;
     }
@@ -112,10 +111,10 @@ model::LayoutAllocation steered_allocation(const model::LayoutAllocator& allocat
       const double d = core::rad_to_deg(core::wrap_2pi(rad));
       return d >= 360.0 ? 0.0 : d;
     };
+    if (units.empty()) units = allocator.units();
     units[k].forbidden_deg = {{deg(reach->from_rad + reach->span_rad), deg(reach->from_rad)}};
-    held = true;
   }
-  if (!held) return a;
+  if (units.empty()) return a;
   model::LayoutAllocation b = model::LayoutAllocator(std::move(units)).allocate(tau_d_b, capacity);
   return b.met ? b : a;
 }

@@ -27,54 +27,71 @@ std::optional<model::UnitType> unit_type(std::string_view name) {
   return std::nullopt;
 }
 
+// What a key of pairs of numbers says when it is wrong: its hint, and the problems of an
+// array that is not one (or is empty), of an item that is not a pair and of a pair not of
+// numbers.
+struct PairWords {
+  const char* hint;
+  const char* not_an_array;
+  const char* not_a_pair;
+  const char* not_numbers;
+};
+
+// key = [[a, b], …]: the pairs, none when the key is absent; an error at the key otherwise.
+std::vector<std::pair<double, double>> read_pairs(const TomlTable& t, const char* key,
+                                                  const PairWords& words, bool may_be_empty) {
+  std::vector<std::pair<double, double>> out;
+  const toml::node* node = t.raw().get(key);
+  if (node == nullptr) return out;
+  const auto bad = [&](const char* what) {
+    throw core::InputError(t.where(key), what, words.hint);
+  };
+  const toml::array* items = node->as_array();
+  if (items == nullptr || (!may_be_empty && items->empty())) bad(words.not_an_array);
+  for (const toml::node& item : *items) {
+    const toml::array* pair = item.as_array();
+    if (pair == nullptr || pair->size() != 2) bad(words.not_a_pair);
+    const std::optional<double> a = (*pair)[0].value<double>();
+    const std::optional<double> b = (*pair)[1].value<double>();
+    if (!a || !b) bad(words.not_numbers);
+    out.emplace_back(*a, *b);
+  }
+  return out;
+}
+
 // loss = [[angle_deg, factor], …]: angles in [0, 360) increasing, factors in [0, 1]; the
 // unit's validate() checks the rules.
 std::vector<model::LossPoint> read_loss(const TomlTable& t) {
+  const PairWords words{
+      "write loss = [[angle_deg, factor], …], angles in [0, 360) clockwise "
+      "from ahead in increasing order, factors in [0, 1], e.g. "
+      "[[0.0, 1.0], [80.0, 1.0], [90.0, 0.6], [100.0, 1.0]]",
+      "expected a non-empty array of [angle, factor]", "each point is a pair [angle_deg, factor]",
+      "a point's angle and factor are numbers"};
   std::vector<model::LossPoint> out;
-  const toml::node* node = t.raw().get("loss");
-  if (node == nullptr) return out;
-  const toml::array* points = node->as_array();
-  const auto bad = [&](std::string what) {
-    throw core::InputError(t.where("loss"), std::move(what),
-                           "write loss = [[angle_deg, factor], …], angles in [0, 360) clockwise "
-                           "from ahead in increasing order, factors in [0, 1], e.g. "
-                           "[[0.0, 1.0], [80.0, 1.0], [90.0, 0.6], [100.0, 1.0]]");
-  };
-  if (points == nullptr || points->empty()) bad("expected a non-empty array of [angle, factor]");
-  for (const toml::node& point : *points) {
-    const toml::array* pair = point.as_array();
-    if (pair == nullptr || pair->size() != 2) bad("each point is a pair [angle_deg, factor]");
-    const std::optional<double> angle = (*pair)[0].value<double>();
-    const std::optional<double> factor = (*pair)[1].value<double>();
-    if (!angle || !factor) bad("a point's angle and factor are numbers");
-    out.push_back({*angle, *factor});
+  for (const auto& [angle, factor] : read_pairs(t, "loss", words, false)) {
+    out.push_back({angle, factor});
   }
   return out;
 }
 
 // forbidden_deg = [[from, to], …], each in [0, 360).
 std::vector<model::AngleSector> read_sectors(const TomlTable& t) {
+  const PairWords words{
+      "write forbidden_deg = [[from, to], …], degrees in [0, 360) clockwise "
+      "from ahead, e.g. [[250.0, 290.0]]",
+      "expected an array of [from, to] pairs", "each sector is a pair [from, to]",
+      "a sector's ends are numbers"};
   std::vector<model::AngleSector> out;
-  const toml::node* node = t.raw().get("forbidden_deg");
-  if (node == nullptr) return out;
-  const toml::array* sectors = node->as_array();
-  const auto bad = [&](std::string what) {
-    throw core::InputError(t.where("forbidden_deg"), std::move(what),
-                           "write forbidden_deg = [[from, to], …], degrees in [0, 360) clockwise "
-                           "from ahead, e.g. [[250.0, 290.0]]");
-  };
-  if (sectors == nullptr) bad("expected an array of [from, to] pairs");
-  for (const toml::node& sector : *sectors) {
-    const toml::array* pair = sector.as_array();
-    if (pair == nullptr || pair->size() != 2) bad("each sector is a pair [from, to]");
-    const std::optional<double> from = (*pair)[0].value<double>();
-    const std::optional<double> to = (*pair)[1].value<double>();
-    if (!from || !to) bad("a sector's ends are numbers");
-    if (*from < 0.0 || *from >= 360.0 || *to < 0.0 || *to >= 360.0) {
-      bad(fmt::format("the sector [{}, {}] leaves [0, 360)", *from, *to));
+  for (const auto& [from, to] : read_pairs(t, "forbidden_deg", words, true)) {
+    const auto bad = [&](const std::string& what) {
+      throw core::InputError(t.where("forbidden_deg"), what, words.hint);
+    };
+    if (from < 0.0 || from >= 360.0 || to < 0.0 || to >= 360.0) {
+      bad(fmt::format("the sector [{}, {}] leaves [0, 360)", from, to));
     }
-    if (*from == *to) bad(fmt::format("the sector [{}, {}] is empty", *from, *to));
-    out.push_back({*from, *to});
+    if (from == to) bad(fmt::format("the sector [{}, {}] is empty", from, to));
+    out.push_back({from, to});
   }
   return out;
 }
