@@ -1,0 +1,71 @@
+#pragma once
+/// \file
+/// The nonlinear passive observer of Fossen & Strand (1999) (Fossen 2011, sec. 11.4) on the
+/// model of observer.hpp, with ỹ = y − ŷ and ŷ = η̂ + C_w ξ̂:
+///
+///     ξ̂̇ = A_w ξ̂ + K₁ ỹ
+///     η̂̇ = R(ψ) ν̂ + K₂ ỹ
+///     b̂̇ = −T⁻¹ b̂ + K₃ ỹ
+///     M ν̂̇ = −D ν̂ + R(ψ)ᵀ b̂ + τ + R(ψ)ᵀ K₄ ỹ
+///
+/// R is taken at the measured heading (the estimate's while the heading is missing), which makes
+/// the error dynamics passive. The gains follow Fossen's tuning rules from the wave peak
+/// frequency ω₀: per DOF a notch at ω₀ with damping ζ_n over the wave model's λ and a cut-off
+/// ω_c > ω₀,
+///
+///     K₁ = [diag(−2(ζ_n − λ) ω_c/ω₀); diag(2 ω₀ (ζ_n − λ))],   K₂ = diag(ω_c),
+///
+/// and K₃, K₄ placing the LF filter's two slow poles at ω_b with damping ratio 1 (1/T ≪ K₃/K₄ <
+/// ω₀ < ω_c): per DOF s² + K₄/(M K₂) s + K₃/(M K₂), so K₄ = 2 ω_b M K₂ and K₃ = ω_b² M K₂.
+
+#include <Eigen/Core>
+
+#include "dynpos/control/observer.hpp"
+
+namespace dynpos::control {
+
+/// The tuning of the passive observer (see the file comment).
+struct PassiveObserverTuning {
+  double notch_damping = 1.0;  ///< ζ_n [-]. Source: Fossen 2011 (ζ_n = 1.0).
+  double cutoff_ratio = 1.2255;  ///< ω_c/ω₀ [-]. Source: Fossen 2011 (1.2255 ω₀).
+  double lf_bandwidth_ratio = 0.1;  ///< ω_b/ω₀ [-]. Source: reasoned — a decade below the waves.
+};
+
+/// The gains K₁…K₄ (see the file comment).
+struct PassiveObserverGains {
+  Eigen::Matrix<double, 6, 3> K1 = Eigen::Matrix<double, 6, 3>::Zero();
+  Eigen::Matrix3d K2 = Eigen::Matrix3d::Zero();
+  Eigen::Matrix3d K3 = Eigen::Matrix3d::Zero();
+  Eigen::Matrix3d K4 = Eigen::Matrix3d::Zero();
+};
+
+/// The gains of `model` by the tuning rules.
+PassiveObserverGains passive_observer_gains(const ObserverModel& model,
+                                            const PassiveObserverTuning& tuning = {});
+
+/// The observer (see the file comment).
+class PassiveObserver {
+ public:
+  /// Starts at rest at η₀ (N, E, ψ) [m, m, rad] with no bias and no wave motion. Throws
+  /// std::invalid_argument on a bad model.
+  PassiveObserver(const ObserverModel& model, const PassiveObserverGains& gains,
+                  const Eigen::Vector3d& eta0_n);
+
+  /// Advances the estimate by dt [s] (one RK4 step with y and τ held) on the measurement
+  /// y = (N, E, ψ) [m, m, rad] (a component NaN: missing) and the thrust τ (BODY) [N, N, N·m].
+  void step(const Eigen::Vector3d& y_n, const Eigen::Vector3d& tau_b, double dt_s);
+
+  const ObserverEstimate& estimate() const noexcept { return estimate_; }
+
+ private:
+  using State = Eigen::Matrix<double, 15, 1>;  // ξ (6), η (3), ν (3), b (3)
+  State derivative(const State& x, const Eigen::Vector3d& y_n, const Eigen::Vector3d& tau_b) const;
+
+  ObserverModel model_;
+  PassiveObserverGains gains_;
+  Eigen::Matrix3d M_inv_;
+  State x_ = State::Zero();
+  ObserverEstimate estimate_;
+};
+
+}  // namespace dynpos::control

@@ -1,0 +1,78 @@
+#include "dynpos/control/passive_observer.hpp"
+
+#include <Eigen/LU>
+#include <cmath>
+
+namespace dynpos::control {
+namespace {
+
+Eigen::Matrix3d rotation(double psi) {
+  const double c = std::cos(psi), s = std::sin(psi);
+  Eigen::Matrix3d R;
+  R << c, -s, 0.0, s, c, 0.0, 0.0, 0.0, 1.0;
+  return R;
+}
+
+}  // namespace
+
+PassiveObserverGains passive_observer_gains(const ObserverModel& model,
+                                            const PassiveObserverTuning& tuning) {
+  model.validate();
+  const double w0 = model.wave_peak_frequency_rad_s;
+  const double wc = tuning.cutoff_ratio * w0;
+  const double wb = tuning.lf_bandwidth_ratio * w0;
+  const double dz = tuning.notch_damping - model.wave_damping_ratio;
+  PassiveObserverGains g;
+  g.K1.topRows<3>() = Eigen::Matrix3d::Identity() * (-2.0 * dz * wc / w0);
+  g.K1.bottomRows<3>() = Eigen::Matrix3d::Identity() * (2.0 * w0 * dz);
+  g.K2 = Eigen::Matrix3d::Identity() * wc;
+  // The slow pair s² + K₄/(M K₂) s + K₃/(M K₂) at ω_b, critically damped, per DOF (BODY).
+  const Eigen::Vector3d m = model.M.diagonal();
+  g.K4 = (2.0 * wb * wc * m).asDiagonal();
+  g.K3 = (wb * wb * wc * m).asDiagonal();
+  return g;
+}
+
+PassiveObserver::PassiveObserver(const ObserverModel& model, const PassiveObserverGains& gains,
+                                 const Eigen::Vector3d& eta0_n)
+    : model_(model), gains_(gains) {
+  model_.validate();
+  M_inv_ = model_.M.inverse();
+  x_.segment<3>(6) = eta0_n;
+  estimate_.eta_n = eta0_n;
+}
+
+PassiveObserver::State PassiveObserver::derivative(const State& x, const Eigen::Vector3d& y_n,
+                                                   const Eigen::Vector3d& tau_b) const {
+  const Eigen::Vector3d xi1 = x.segment<3>(0), xi2 = x.segment<3>(3);
+  const Eigen::Vector3d eta = x.segment<3>(6), nu = x.segment<3>(9), b = x.segment<3>(12);
+  // R at the measured heading; the estimate's while the heading is missing.
+  const Eigen::Matrix3d R = rotation(std::isnan(y_n.z()) ? eta.z() : y_n.z());
+  const Eigen::Vector3d y_tilde = innovation(y_n, eta + xi2);
+  const Eigen::Vector3d y_tilde_b = R.transpose() * y_tilde;
+  const double w0 = model_.wave_peak_frequency_rad_s;
+  State d;
+  d.segment<3>(0) = xi2 + gains_.K1.topRows<3>() * y_tilde;
+  d.segment<3>(3) = -w0 * w0 * xi1 - 2.0 * model_.wave_damping_ratio * w0 * xi2 +
+                    gains_.K1.bottomRows<3>() * y_tilde;
+  d.segment<3>(6) = R * nu + gains_.K2 * y_tilde;
+  // K₃ and K₄ act in BODY (they scale with M's diagonal), so b̂ takes R K₃ Rᵀ ỹ.
+  d.segment<3>(9) = M_inv_ * (-model_.D * nu + R.transpose() * b + tau_b + gains_.K4 * y_tilde_b);
+  d.segment<3>(12) =
+      -b.cwiseQuotient(model_.bias_time_constant_s) + R * (gains_.K3 * y_tilde_b);
+  return d;
+}
+
+void PassiveObserver::step(const Eigen::Vector3d& y_n, const Eigen::Vector3d& tau_b, double dt_s) {
+  const State k1 = derivative(x_, y_n, tau_b);
+  const State k2 = derivative(x_ + 0.5 * dt_s * k1, y_n, tau_b);
+  const State k3 = derivative(x_ + 0.5 * dt_s * k2, y_n, tau_b);
+  const State k4 = derivative(x_ + dt_s * k3, y_n, tau_b);
+  x_ += dt_s / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+  estimate_.wave_n = x_.segment<3>(3);
+  estimate_.eta_n = x_.segment<3>(6);
+  estimate_.nu_b = x_.segment<3>(9);
+  estimate_.bias_n = x_.segment<3>(12);
+}
+
+}  // namespace dynpos::control
