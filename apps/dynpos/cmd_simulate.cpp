@@ -29,6 +29,10 @@ void register_simulate(CLI::App& app) {
       ->type_name("FLOAT:POSITIVE");
   sub->add_option("--log-rate", request->log_rate_hz, "Override the log rate [Hz]")
       ->type_name("FLOAT:POSITIVE");
+  sub->add_option("--observer", request->observer,
+                  "DP scenarios: what the DP controller runs on: ideal (the true low-frequency "
+                  "motion), passive, ekf, or raw (the measurements unfiltered)")
+      ->type_name("NAME");
   sub->add_flag("--list", request->list, "List the built-in scenarios and exit");
   sub->add_option("--jobs", request->jobs,
                   "Campaign: scenarios run at once (default 0: every core); the files do not "

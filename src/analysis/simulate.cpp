@@ -28,9 +28,13 @@ void check_positive(const std::optional<double>& value, const char* key, const c
 
 // --duration and --log-rate replace the scenario's values; a value out of its range is then
 // the option's error, not the scenario file's.
+// --observer applies to DP scenarios (in a campaign, the joystick ones keep none).
 void apply_overrides(const SimulateRequest& request, scenario::ScenarioSpec& spec) {
   if (request.duration_s) spec.set_duration(*request.duration_s);
   if (request.log_rate_hz) spec.log_rate_hz = *request.log_rate_hz;
+  if (request.observer && (request.scenario != kCampaign || !spec.setpoints.empty())) {
+    spec.observer = *control::parse_observer(*request.observer);
+  }
   try {
     spec.validate();
   } catch (const core::InputError& e) {
@@ -40,6 +44,9 @@ void apply_overrides(const SimulateRequest& request, scenario::ScenarioSpec& spe
     }
     if (request.log_rate_hz && field == "log_rate_hz") {
       throw option_error_in_file(e.where().file, "log_rate", e.problem(), e.hint());
+    }
+    if (request.observer && field == "observer") {
+      throw option_error_in_file(e.where().file, "observer", e.problem(), e.hint());
     }
     throw;
   }
@@ -135,6 +142,10 @@ void check_simulation_resources(const std::vector<scenario::ScenarioSpec>& specs
 void SimulateRequest::validate() const {
   check_positive(duration_s, "duration", "run length", "s");
   check_positive(log_rate_hz, "log_rate", "log rate", "Hz");
+  if (observer && !control::parse_observer(*observer)) {
+    throw option_error("observer", fmt::format("unknown observer '{}'", *observer),
+                       "use ideal, passive, ekf or raw");
+  }
   if (list) return;
   if (scenario.empty()) {
     throw core::InputError({}, "no scenario given",

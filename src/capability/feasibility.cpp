@@ -10,42 +10,6 @@
 
 namespace dynpos::capability {
 
-std::vector<FailureCase> failure_cases(const std::vector<model::ThrusterUnit>& units) {
-  std::vector<FailureCase> out;
-  const std::vector<double> intact(units.size(), 1.0);
-  out.push_back({"none", intact});
-  for (std::size_t k = 0; k < units.size(); ++k) {
-    FailureCase c{units[k].name, intact};
-    c.capacity[k] = 0.0;
-    out.push_back(std::move(c));
-  }
-  std::vector<std::string> groups;
-  for (const model::ThrusterUnit& u : units) {
-    if (!u.group.empty() && std::find(groups.begin(), groups.end(), u.group) == groups.end()) {
-      groups.push_back(u.group);
-    }
-  }
-  for (const std::string& g : groups) {
-    FailureCase c{"group:" + g, intact};
-    for (std::size_t k = 0; k < units.size(); ++k) {
-      if (units[k].group == g) c.capacity[k] = 0.0;
-    }
-    out.push_back(std::move(c));
-  }
-  return out;
-}
-
-FailureCase failure_case(const std::vector<model::ThrusterUnit>& units, const std::string& name) {
-  std::vector<std::string> names;
-  for (FailureCase& c : failure_cases(units)) {
-    if (c.name == name) return c;
-    names.push_back(c.name);
-  }
-  throw core::InputError::for_option(
-      "failure", fmt::format("no unit or group '{}' in the layout", name),
-      fmt::format("use worst or one of: {}", fmt::join(names, ", ")));
-}
-
 FeasibilityPoint feasibility(const model::LayoutAllocator& allocator, const LoadCase& load,
                              const FailureCase& failure) {
   FeasibilityPoint out;

@@ -49,12 +49,6 @@ std::vector<Limit> limits_in_region(const ThrustLimits& l, std::array<int, 2> re
 
 }  // namespace
 
-const std::array<std::string, 5>& actuator_names() {
-  static const std::array<std::string, 5> names = {"port", "stb", "rudder.port", "rudder.stb",
-                                                   "tunnel"};
-  return names;
-}
-
 ThrustLimits thrust_limits(const model::ThrustAllocator& allocator, double surge_speed_mps,
                            bool propeller_inflow) {
   ThrustLimits l;
@@ -74,21 +68,6 @@ ThrustLimits thrust_limits(const model::ThrustAllocator& allocator, double surge
   }
   for (int k = 0; k < 5; ++k) l.failed[static_cast<std::size_t>(k)] = capacity(k) == 0.0;
   return l;
-}
-
-model::ThrustAllocationOptions with_failures(model::ThrustAllocationOptions vessel_allocation,
-                                             const std::vector<std::string>& failed) {
-  const auto& names = actuator_names();
-  for (const std::string& name : failed) {
-    const auto it = std::find(names.begin(), names.end(), name);
-    if (it == names.end()) {
-      throw core::InputError::for_option("failure", "unknown actuator '" + name + "'",
-                                         "name one of port, stb, rudder.port, rudder.stb, "
-                                         "tunnel, or worst or none");
-    }
-    vessel_allocation.capacity(static_cast<int>(it - names.begin())) = 0.0;
-  }
-  return vessel_allocation;
 }
 
 std::optional<Attainment> attain(const ThrustLimits& limits, const Eigen::Vector3d& tau_b) {

@@ -43,7 +43,7 @@ void ObserverModel::validate() const {
   if (!(bias_time_constant_s.array() > 0.0).all() || !bias_time_constant_s.allFinite()) {
     throw std::invalid_argument("observer model: bias time constants must be finite and > 0");
   }
-  if (!(wave_peak_frequency_rad_s > 0.0) || !std::isfinite(wave_peak_frequency_rad_s)) {
+  if (!(wave_peak_frequency_rad_s.array() > 0.0).all() || !wave_peak_frequency_rad_s.allFinite()) {
     throw std::invalid_argument("observer model: the wave peak frequency must be > 0");
   }
   if (!(wave_damping_ratio > 0.0 && wave_damping_ratio <= 1.0)) {

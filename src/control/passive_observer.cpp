@@ -18,18 +18,18 @@ Eigen::Matrix3d rotation(double psi) {
 PassiveObserverGains passive_observer_gains(const ObserverModel& model,
                                             const PassiveObserverTuning& tuning) {
   model.validate();
-  const double w0 = model.wave_peak_frequency_rad_s;
-  const double wc = tuning.cutoff_ratio * w0;
-  const double wb = tuning.lf_bandwidth_ratio * w0;
+  const Eigen::Vector3d w0 = model.wave_peak_frequency_rad_s;
+  const Eigen::Vector3d wc = tuning.cutoff_ratio * w0;
+  const Eigen::Vector3d wb = tuning.lf_bandwidth_ratio * w0;
   const double dz = tuning.notch_damping - model.wave_damping_ratio;
   PassiveObserverGains g;
-  g.K1.topRows<3>() = Eigen::Matrix3d::Identity() * (-2.0 * dz * wc / w0);
-  g.K1.bottomRows<3>() = Eigen::Matrix3d::Identity() * (2.0 * w0 * dz);
-  g.K2 = Eigen::Matrix3d::Identity() * wc;
+  g.K1.topRows<3>() = (-2.0 * dz * wc.cwiseQuotient(w0)).asDiagonal();
+  g.K1.bottomRows<3>() = (2.0 * dz * w0).asDiagonal();
+  g.K2 = wc.asDiagonal();
   // The slow pair s² + K₄/(M K₂) s + K₃/(M K₂) at ω_b, critically damped, per DOF (BODY).
   const Eigen::Vector3d m = model.M.diagonal();
-  g.K4 = (2.0 * wb * wc * m).asDiagonal();
-  g.K3 = (wb * wb * wc * m).asDiagonal();
+  g.K4 = (2.0 * wb.cwiseProduct(wc).cwiseProduct(m)).asDiagonal();
+  g.K3 = (wb.cwiseProduct(wb).cwiseProduct(wc).cwiseProduct(m)).asDiagonal();
   return g;
 }
 
@@ -50,10 +50,11 @@ PassiveObserver::State PassiveObserver::derivative(const State& x, const Eigen::
   const Eigen::Matrix3d R = rotation(std::isnan(y_n.z()) ? eta.z() : y_n.z());
   const Eigen::Vector3d y_tilde = innovation(y_n, eta + xi2);
   const Eigen::Vector3d y_tilde_b = R.transpose() * y_tilde;
-  const double w0 = model_.wave_peak_frequency_rad_s;
+  const Eigen::Vector3d& w0 = model_.wave_peak_frequency_rad_s;
   State d;
   d.segment<3>(0) = xi2 + gains_.K1.topRows<3>() * y_tilde;
-  d.segment<3>(3) = -w0 * w0 * xi1 - 2.0 * model_.wave_damping_ratio * w0 * xi2 +
+  d.segment<3>(3) = -w0.cwiseProduct(w0).cwiseProduct(xi1) -
+                    2.0 * model_.wave_damping_ratio * w0.cwiseProduct(xi2) +
                     gains_.K1.bottomRows<3>() * y_tilde;
   d.segment<3>(6) = R * nu + gains_.K2 * y_tilde;
   // K₃ and K₄ act in BODY (they scale with M's diagonal), so b̂ takes R K₃ Rᵀ ỹ.

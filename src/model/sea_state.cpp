@@ -44,6 +44,12 @@ void resonance(double omega, double period_s, double zeta, double& gain, double&
   lag = std::atan2(im, re);
 }
 
+// The hull's averaging of waves of deep-water number k [1/m] shorter than it.
+double short_wave_attenuation(double k, double length_m) {
+  const double ratio = length_m * k / kTwoPi;
+  return 1.0 / (1.0 + ratio * ratio);
+}
+
 }  // namespace
 
 void SeaStateParams::validate() const {
@@ -77,6 +83,30 @@ double jonswap(double omega, double hs_m, double tp_s, double gamma) {
   return (1.0 - 0.287 * std::log(gamma)) * pm * std::pow(gamma, r);
 }
 
+Eigen::Vector3d response_peak_frequency(const SeaStateParams& sea,
+                                        const WaveResponseParams& response) {
+  const double wp = kTwoPi / sea.tp_s;
+  const double lo = sea.omega_min_factor * wp, hi = sea.omega_max_factor * wp;
+  constexpr int kSteps = 4000;
+  double best_xy = 0.0, best_yaw = 0.0;
+  Eigen::Vector3d peak = Eigen::Vector3d::Constant(wp);
+  for (int i = 0; i <= kSteps; ++i) {
+    const double omega = lo + (hi - lo) * i / kSteps;
+    const double k = omega * omega / kG;
+    const double a = short_wave_attenuation(k, response.length_m);
+    const double s = jonswap(omega, 1.0, sea.tp_s, sea.gamma) * a * a;
+    if (s > best_xy) {
+      best_xy = s;
+      peak.x() = peak.y() = omega;
+    }
+    if (s * k * k > best_yaw) {
+      best_yaw = s * k * k;
+      peak.z() = omega;
+    }
+  }
+  return peak;
+}
+
 std::vector<WaveComponent> discretise(const SeaStateParams& sea, std::uint64_t seed) {
   sea.validate();
   std::vector<WaveComponent> out;
@@ -107,9 +137,7 @@ WaveMotion::WaveMotion(const SeaStateParams& sea, const WaveResponseParams& resp
   for (std::size_t i = 0; i < n; ++i) {
     const WaveComponent& c = components_[i];
     const double k = c.omega * c.omega / kG;  // deep-water wave number
-    const double lambda = kTwoPi / k;         // wave length [m]
-    const double ratio = response_.length_m / lambda;
-    const double attenuation = 1.0 / (1.0 + ratio * ratio);  // the hull averages short waves
+    const double attenuation = short_wave_attenuation(k, response_.length_m);
     double g_heave = 0, l_heave = 0, g_roll = 0, l_roll = 0, g_pitch = 0, l_pitch = 0;
     resonance(c.omega, response_.heave_period_s, response_.heave_damping, g_heave, l_heave);
     resonance(c.omega, response_.roll_period_s, response_.roll_damping, g_roll, l_roll);

@@ -171,7 +171,7 @@ InitialTrim initial_trim(const ScenarioSpec& spec, const VesselConfig& vessel,
 }
 
 ControlTask::ControlTask(const ScenarioSpec& spec, const VesselConfig& vessel,
-                         const VesselPlant& plant, const InitialTrim& trim)
+                         const VesselPlant& plant, const InitialTrim& trim, std::uint64_t seed)
     : joystick_params_(vessel.joystick),
       period_s_(1.0 / vessel.joystick.control_rate_hz),
       dt_s_(spec.dt_s),
@@ -182,14 +182,29 @@ ControlTask::ControlTask(const ScenarioSpec& spec, const VesselConfig& vessel,
       joystick_(spec.joystick, trim.lever_pct),
       rudder_(spec.rudder, plant.rudder(), plant.hull(), vessel.layout.p_port_rudder_b.x(),
               spec.dt_s),
+      allocation_options_(vessel.allocation),
+      capacity_(plant.capacity()),
       demand_pct_(trim.demand_pct),
       commands_(trim.commands) {
   if (!plant.drives().empty()) layout_allocator_.emplace(vessel.thrusters);
   if (spec.heading_hold) heading_hold_.emplace(heading_hold_params(spec, vessel));
   if (!spec.setpoints.empty()) {
-    dp_.emplace(spec, vessel, plant.hull(), trim.x0.segment<3>(Plant::kHull + Hull::kNorth),
-                period_s_);
+    const Eigen::Vector3d eta0_n = trim.x0.segment<3>(Plant::kHull + Hull::kNorth);
+    dp_.emplace(spec, vessel, plant.hull(), eta0_n, period_s_);
+    estimator_.emplace(spec, vessel, plant, seed, period_s_, eta0_n);
   }
+  if (spec.failure) failure_.emplace(*spec.failure, vessel);
+}
+
+void ControlTask::apply_failure(double t) {
+  if (!failure_ || failure_applied_ || !failure_->failed_at(t)) return;
+  failure_applied_ = true;
+  if (!plant_.drives().empty()) {
+    for (std::size_t k = 0; k < capacity_.size(); ++k) capacity_[k] *= failure_->capacity()[k];
+    return;
+  }
+  allocator_ = model::ThrustAllocator(plant_.propeller(), plant_.rudder(), plant_.tunnel(),
+                                      plant_.layout(), failure_->allocation(allocation_options_));
 }
 
 const Eigen::Vector3d& ControlTask::setpoint_n() const noexcept {
@@ -200,8 +215,9 @@ const Eigen::Vector3d& ControlTask::bias_hat_n() const noexcept {
   return dp_ ? dp_->bias_hat_n() : kNoBias;
 }
 
-void ControlTask::step(double t, const sim::ConstVectorRef& x) {
+void ControlTask::step(double t, const sim::ConstVectorRef& x, const sim::ConstVectorRef& u) {
   const JoystickParams& js = joystick_params_;
+  apply_failure(t);
   const bool changed = joystick_.advance(t);
   demand_pct_ = 100.0 * lever_to_demand_fraction(joystick_.lever_pct(), js.lever_exponent);
   if (heading_hold_) {
@@ -215,10 +231,11 @@ void ControlTask::step(double t, const sim::ConstVectorRef& x) {
       (demand_pct_ / 100.0)
           .cwiseProduct(Eigen::Vector3d(js.max_surge_N, js.max_sway_N, js.max_yaw_Nm));
   in.tau_d_b = joystick_tau_b;
+  double psi_dp = x[Plant::kHull + Hull::kYaw];  // the heading the DP loop sees
   if (dp_) {
-    const Eigen::Vector3d eta_n = x.segment<3>(Plant::kHull + Hull::kNorth);
-    const Eigen::Vector3d nu_b = x.segment<3>(Plant::kHull + Hull::kSurge);
-    if (const std::optional<DpDemand> demand = dp_->control(t, eta_n, nu_b)) {
+    const DpMotion motion = estimator_->update(t, x, u);
+    psi_dp = motion.eta_n.z();
+    if (const std::optional<DpDemand> demand = dp_->control(t, motion.eta_n, motion.nu_b)) {
       in.tau_d_b = demand->tau_b;
       if (demand->hold_split) in.hold_forces = forces_N_;
     }
@@ -226,7 +243,7 @@ void ControlTask::step(double t, const sim::ConstVectorRef& x) {
   if (!plant_.drives().empty()) {
     const ActuatorCommands before = commands_;
     const model::LayoutAllocation a = allocate_units(in.tau_d_b, x);
-    if (dp_) dp_->integrate_bias(x[Plant::kHull + Hull::kYaw], a.met);
+    if (dp_) dp_->integrate_bias(psi_dp, a.met);
     unmet_max_ = unmet_max_.cwiseMax(a.tau_unmet_b.cwiseAbs());
     if (changed) record_command(t, before, joystick_tau_b, a.tau_unmet_b);
     return;
@@ -234,7 +251,7 @@ void ControlTask::step(double t, const sim::ConstVectorRef& x) {
   in.surge_speed = x[Plant::kHull + Hull::kSurge];
   const model::ThrustAllocationResult a = allocator_.allocate(in);
   if (dp_) {
-    dp_->integrate_bias(x[Plant::kHull + Hull::kYaw], a.status == model::AllocationStatus::kOk);
+    dp_->integrate_bias(psi_dp, a.status == model::AllocationStatus::kOk);
   }
   const ActuatorCommands before = commands_;
   commands_ = {a.n_port, a.n_stb, a.rudder_port, a.rudder_stb, a.n_tunnel, {}};
@@ -249,12 +266,12 @@ void ControlTask::step(double t, const sim::ConstVectorRef& x) {
 model::LayoutAllocation ControlTask::allocate_units(const Eigen::Vector3d& tau_d_b,
                                                     const sim::ConstVectorRef& x) {
   model::LayoutAllocation a =
-      steered_allocation(*layout_allocator_, plant_.drives(), plant_.capacity(), tau_d_b, x);
+      steered_allocation(*layout_allocator_, plant_.drives(), capacity_, tau_d_b, x);
   const auto& drives = plant_.drives();
   for (std::size_t k = 0; k < drives.size(); ++k) {
     const double angle_now = x[Plant::kUnits + 2 * static_cast<Eigen::Index>(k) + 1];
     commands_.units[k] = unit_order(drives[k], a.units[k], commands_.units[k].angle_rad, angle_now,
-                                    plant_.capacity()[k]);
+                                    capacity_[k]);
   }
   return a;
 }

@@ -90,7 +90,7 @@ ScenarioRun simulate(const ScenarioSpec& spec, const VesselConfig& vessel, std::
   const InitialTrim trim = initial_trim(spec, vessel, plant);
   ActuatorDelays delays(vessel, spec.dt_s, trim.commands);
   check_control_rate(spec, vessel);
-  ControlTask control(spec, vessel, plant, trim);
+  ControlTask control(spec, vessel, plant, trim, seed);
 
   ScenarioRun run;
   TruthRecorder truth_recorder(run.truth_log, control);
@@ -113,10 +113,11 @@ ScenarioRun simulate(const ScenarioSpec& spec, const VesselConfig& vessel, std::
   options.end_time = clock.end_time_s();
   sim::Simulator simulator(plant, options);
   simulator.add_periodic_task("control", control.period_s(), 0.0, [&](sim::TaskContext& c) {
-    control.step(clock.time(c.tick()), c.state());
+    control.step(clock.time(c.tick()), c.state(), c.input());
   });
   simulator.add_every_tick_task("actuators", [&](sim::TaskContext& c) {
     delays.step(control.commands(), c.mutable_input());
+    if (control.failure()) control.failure()->cut(clock.time(c.tick()), c.state(), c.mutable_input());
   });
   simulator.add_every_tick_task("environment", [&](sim::TaskContext& c) {
     environment.step(c.tick(), c.state(), c.mutable_input());

@@ -127,7 +127,39 @@ void validate_dp_mode(const ScenarioSpec& spec) {
   }
 }
 
+// The observer, the failure and the dropouts.
+void validate_events(const ScenarioSpec& spec) {
+  if (spec.observer != control::ObserverKind::kIdeal && spec.setpoints.empty()) {
+    throw core::InputError(at(spec, "observer"), "an observer runs in the DP loop",
+                           "add [[setpoint]] entries or remove the observer");
+  }
+  if (spec.failure) {
+    check_range(spec, "failure_at_s", spec.failure->t_s, 0.0, spec.duration_s);
+    if (spec.failure->name.empty()) {
+      throw core::InputError(at(spec, "failure"), "no unit named",
+                             "name the unit, group:NAME or actuator that fails");
+    }
+  }
+  double end = -1.0;
+  for (std::size_t i = 0; i < spec.gnss_dropouts.size(); ++i) {
+    const DropoutEvent& d = spec.gnss_dropouts[i];
+    const std::string field = fmt::format("gnss_dropout[{}]", i + 1);
+    check_range(spec, field + ".t_s", d.t_s, 0.0, spec.duration_s);
+    check_range(spec, field + ".duration_s", d.duration_s, 1e-3, 86400.0);
+    if (d.t_s < end) {
+      throw core::InputError(at(spec, field + ".t_s"),
+                             "dropouts must be in increasing time and not overlap");
+    }
+    end = d.t_s + d.duration_s;
+  }
+}
+
 }  // namespace
+
+bool ScenarioSpec::gnss_lost(double t) const noexcept {
+  return std::any_of(gnss_dropouts.begin(), gnss_dropouts.end(),
+                     [t](const DropoutEvent& d) { return d.covers(t); });
+}
 
 void ScenarioSpec::set_duration(double duration) {
   duration_s = duration;
@@ -135,6 +167,9 @@ void ScenarioSpec::set_duration(double duration) {
   joystick.erase(std::remove_if(joystick.begin(), joystick.end(), after_end), joystick.end());
   rudder.erase(std::remove_if(rudder.begin(), rudder.end(), after_end), rudder.end());
   setpoints.erase(std::remove_if(setpoints.begin(), setpoints.end(), after_end), setpoints.end());
+  if (failure && failure->t_s > duration) failure.reset();
+  gnss_dropouts.erase(std::remove_if(gnss_dropouts.begin(), gnss_dropouts.end(), after_end),
+                      gnss_dropouts.end());
 }
 
 void ScenarioSpec::validate() const {
@@ -204,6 +239,7 @@ void ScenarioSpec::validate() const {
                            "add [[setpoint]] entries or remove the [hybrid] section");
   }
   if (!setpoints.empty()) validate_dp_mode(*this);
+  validate_events(*this);
   previous = -1.0;
   for (std::size_t i = 0; i < rudder.size(); ++i) {
     const std::string field = fmt::format("rudder[{}]", i + 1);
@@ -234,7 +270,8 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
   root.reject_unknown({"name", "description", "duration_s", "dt_s", "log_rate_hz",
                        "initial_heading_deg", "initial_surge_mps", "heading_hold", "settle_s",
                        "start_utc", "environment", "joystick", "hybrid", "rudder", "setpoint",
-                       "load", "device_files"});
+                       "load", "device_files", "observer", "failure_at_s", "failure",
+                       "gnss_dropout"});
   ScenarioSpec spec;
   spec.source = file;
   spec.name = root.string("name");
@@ -285,6 +322,22 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
     e.east_N = t.number_or("east_N", 0.0, -1e8, 1e8);
     e.yaw_Nm = t.number_or("yaw_Nm", 0.0, -1e10, 1e10);
     spec.loads.push_back(e);
+  });
+  if (root.has("observer")) {
+    const std::string name = root.string("observer");
+    const std::optional<control::ObserverKind> kind = control::parse_observer(name);
+    if (!kind) {
+      throw core::InputError(root.where("observer"), fmt::format("unknown observer '{}'", name),
+                             "use ideal, passive, ekf or raw");
+    }
+    spec.observer = *kind;
+  }
+  if (root.has("failure") || root.has("failure_at_s")) {
+    spec.failure = FailureEvent{root.number("failure_at_s", 0.0, 1e6), root.string("failure")};
+  }
+  for_each_row(doc, root, "gnss_dropout", [&](const TomlTable& t) {
+    t.reject_unknown({"t_s", "duration_s"});
+    spec.gnss_dropouts.push_back({t.number("t_s", 0.0, 1e6), t.number("duration_s", 1e-3, 86400.0)});
   });
   if (auto h = root.optional_table("hybrid")) {
     hybrid::IntegralJumpParams p;

@@ -22,15 +22,6 @@ model::WindParams wind_params(const EnvironmentSpec& env, const VesselConfig& ve
   return p;
 }
 
-model::SeaStateParams sea_state(const EnvironmentSpec& env) {
-  model::SeaStateParams sea;
-  sea.hs_m = env.hs_m;
-  sea.tp_s = env.tp_s;
-  sea.from_rad = core::deg_to_rad(env.wave_from_deg);
-  sea.components = env.wave_components;
-  return sea;
-}
-
 std::vector<model::StepLoad> step_loads(const std::vector<LoadEvent>& events) {
   std::vector<model::StepLoad> loads;
   for (const LoadEvent& e : events) {
@@ -40,6 +31,15 @@ std::vector<model::StepLoad> step_loads(const std::vector<LoadEvent>& events) {
 }
 
 }  // namespace
+
+model::SeaStateParams sea_state(const EnvironmentSpec& env) {
+  model::SeaStateParams sea;
+  sea.hs_m = env.hs_m;
+  sea.tp_s = env.tp_s;
+  sea.from_rad = core::deg_to_rad(env.wave_from_deg);
+  sea.components = env.wave_components;
+  return sea;
+}
 
 TrialEnvironment::TrialEnvironment(const ScenarioSpec& spec, const VesselConfig& vessel,
                                    std::uint64_t seed, const TrialClock& clock)

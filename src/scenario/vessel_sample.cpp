@@ -1,5 +1,7 @@
 #include "dynpos/scenario/vessel_sample.hpp"
 
+#include <cmath>
+
 #include "dynpos/core/angle.hpp"
 #include "vessel_motion.hpp"
 
@@ -21,6 +23,7 @@ const VesselSample& VesselSampler::sample(double t, const sim::ConstVectorRef& x
                                   dxdt_[Plant::kHull + Hull::kYawRate]);
   s.motion =
       detail::compose_motion(x.segment<10>(Plant::kHull), dxdt_.segment<10>(Plant::kHull), wf);
+  s.eta_lf_n = x.segment<3>(Plant::kHull + Hull::kNorth);
   s.shaft_speed_rps = {a.port.shaft_speed, a.stb.shaft_speed, a.tunnel.shaft_speed};
   s.thrust_N = {a.port.thrust, a.stb.thrust, a.tunnel.thrust};
   s.power_W = {a.port.power, a.stb.power, a.tunnel.power};
@@ -33,6 +36,15 @@ const VesselSample& VesselSampler::sample(double t, const sim::ConstVectorRef& x
   s.wind_speed_mps = environment_.wind().speed_mps();
   s.wind_from_rad = core::wrap_2pi(environment_.wind().from_rad());
   s.load_n = environment_.load_n(t);
+  const double psi = x[Plant::kHull + Hull::kYaw];
+  const double c = std::cos(psi), sn = std::sin(psi);
+  const Eigen::Vector3d current_b(c * s.current_n.x() + sn * s.current_n.y(),
+                                  -sn * s.current_n.x() + c * s.current_n.y(), 0.0);
+  const Eigen::Vector3d env_b = u.segment<3>(Plant::kTauEnvBody) +
+                                plant_.hull().hydrodynamic_forces(Eigen::Vector3d::Zero(), -current_b);
+  s.env_load_n = u.segment<3>(Plant::kForceNed) +
+                 Eigen::Vector3d(c * env_b.x() - sn * env_b.y(), sn * env_b.x() + c * env_b.y(),
+                                 env_b.z());
   return s;
 }
 

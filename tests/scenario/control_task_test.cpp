@@ -59,18 +59,18 @@ TEST(ControlTask, JoystickStepIsAllocatedAndRecordedWithThePropellerTruth) {
   const Plant plant(vessel);
   const ScenarioSpec spec = joystick_spec();
   const InitialTrim trim = initial_trim(spec, vessel, plant);
-  ControlTask control(spec, vessel, plant, trim);
+  ControlTask control(spec, vessel, plant, trim, 1);
   EXPECT_DOUBLE_EQ(control.period_s(), 1.0 / vessel.joystick.control_rate_hz);
-  control.step(0.0, trim.x0);
+  control.step(0.0, trim.x0, Eigen::VectorXd::Zero(plant.input_size()));
   EXPECT_EQ(control.commands().n_port_rps, 0.0);
-  control.step(10.0, trim.x0);
+  control.step(10.0, trim.x0, Eigen::VectorXd::Zero(plant.input_size()));
   // 50 % lever with exponent 2: 25 % of the largest surge force, both propellers ahead.
   EXPECT_EQ(control.lever_pct(), Eigen::Vector3d(50.0, 0.0, 0.0));
   EXPECT_NEAR(control.demand_pct().x(), 25.0, 1e-12);
   EXPECT_GT(control.commands().n_port_rps, 0.0);
   EXPECT_NEAR(control.forces_N()[0] + control.forces_N()[1], 0.25 * vessel.joystick.max_surge_N,
               1.0);
-  control.step(10.1, trim.x0);  // held: no new record
+  control.step(10.1, trim.x0, Eigen::VectorXd::Zero(plant.input_size()));  // held: no new record
   TrialTruth truth;
   control.write_truth(truth);
   ASSERT_EQ(truth.commands.size(), 1u);
@@ -102,8 +102,8 @@ TEST(ControlTask, RudderStepOverridesTheAllocationsRudders) {
   ScenarioSpec spec = joystick_spec();
   spec.rudder = {{5.0, 10.0, false}};
   const InitialTrim trim = initial_trim(spec, vessel, plant);
-  ControlTask control(spec, vessel, plant, trim);
-  control.step(5.0, trim.x0);
+  ControlTask control(spec, vessel, plant, trim, 1);
+  control.step(5.0, trim.x0, Eigen::VectorXd::Zero(plant.input_size()));
   EXPECT_EQ(control.commands().rudder_port_rad, core::deg_to_rad(10.0));
   EXPECT_EQ(control.commands().rudder_stb_rad, core::deg_to_rad(10.0));
   TrialTruth truth;
@@ -118,16 +118,16 @@ TEST(ControlTask, AutoHeadingAddsAYawDemand) {
   ScenarioSpec spec = joystick_spec();
   spec.heading_hold = true;
   const InitialTrim trim = initial_trim(spec, vessel, plant);
-  ControlTask control(spec, vessel, plant, trim);
+  ControlTask control(spec, vessel, plant, trim, 1);
   Eigen::VectorXd x = trim.x0;
   x[Plant::kHull + Hull::kYaw] = core::deg_to_rad(5.0);  // 5° to starboard of ψ(0) = 0
-  control.step(0.0, x);
+  control.step(0.0, x, Eigen::VectorXd::Zero(plant.input_size()));
   EXPECT_LT(control.demand_pct().z(), 0.0);  // turns back to port
   EXPECT_EQ(control.lever_pct().z(), 0.0);   // the operator's lever is untouched
   // Without auto heading the same state gives no yaw demand.
   spec.heading_hold = false;
-  ControlTask manual(spec, vessel, plant, trim);
-  manual.step(0.0, x);
+  ControlTask manual(spec, vessel, plant, trim, 1);
+  manual.step(0.0, x, Eigen::VectorXd::Zero(plant.input_size()));
   EXPECT_EQ(manual.demand_pct().z(), 0.0);
 }
 
@@ -139,10 +139,10 @@ TEST(ControlTask, DpModeHoldsTheSetpointAndRecordsIt) {
   spec.setpoints = {{0.0, 0.0, 0.0, 0.0, "hold"}};
   spec.hybrid_integral = hybrid::IntegralJumpParams{};
   const InitialTrim trim = initial_trim(spec, vessel, plant);
-  ControlTask control(spec, vessel, plant, trim);
+  ControlTask control(spec, vessel, plant, trim, 1);
   Eigen::VectorXd x = trim.x0;
   x[Plant::kHull + Hull::kNorth] = 3.0;  // 3 m north of the setpoint
-  control.step(0.0, x);
+  control.step(0.0, x, Eigen::VectorXd::Zero(plant.input_size()));
   EXPECT_TRUE(control.dp_active());
   EXPECT_EQ(control.setpoint_n(), Eigen::Vector3d::Zero());
   EXPECT_LT(control.forces_N()[0] + control.forces_N()[1], 0.0);  // astern, towards it
@@ -162,9 +162,9 @@ TEST(ControlTask, LargestUnmetDemandIsKept) {
   ScenarioSpec spec = joystick_spec();
   spec.joystick = {{0.0, 100.0, 100.0, 100.0}, {10.0, 0.0, 0.0, 0.0}};  // beyond the thrusters
   const InitialTrim trim = initial_trim(spec, vessel, plant);
-  ControlTask control(spec, vessel, plant, trim);
-  control.step(0.0, trim.x0);
-  control.step(10.0, trim.x0);
+  ControlTask control(spec, vessel, plant, trim, 1);
+  control.step(0.0, trim.x0, Eigen::VectorXd::Zero(plant.input_size()));
+  control.step(10.0, trim.x0, Eigen::VectorXd::Zero(plant.input_size()));
   TrialTruth truth;
   control.write_truth(truth);
   EXPECT_GT(truth.allocation_unmet_max.norm(), 0.0);

@@ -15,6 +15,7 @@
 
 #include <Eigen/Core>
 
+#include "dynpos/model/failure_case.hpp"
 #include "dynpos/model/layout_allocator.hpp"
 
 namespace dynpos::capability {
@@ -37,19 +38,9 @@ struct FeasibilityPoint {
   std::string failure = "none";       ///< "none", a unit's name or "group:NAME"
 };
 
-/// A failure case: its name and each unit's capacity (0 lost, 1 as rated).
-struct FailureCase {
-  std::string name;
-  std::vector<double> capacity;
-};
-
-/// The intact case, then each unit alone, then each redundancy group (units sharing a non-empty
-/// `group`), in layout order.
-std::vector<FailureCase> failure_cases(const std::vector<model::ThrusterUnit>& units);
-
-/// The case named `name` ("none", a unit's name or "group:NAME"); throws core::InputError
-/// (option "failure") naming the cases for an unknown one.
-FailureCase failure_case(const std::vector<model::ThrusterUnit>& units, const std::string& name);
+using model::failure_case;
+using model::failure_cases;
+using model::FailureCase;
 
 /// The factor of `load` with the capacities of `failure`. A zero load is held at any factor:
 /// kMaxLoadFactor, capped. A factor whose multiple of the load is below 10⁻³ of the

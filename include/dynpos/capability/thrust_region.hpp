@@ -19,13 +19,13 @@
 #include <string>
 #include <vector>
 
+#include "dynpos/model/failure_case.hpp"
 #include "dynpos/model/thrust_allocation.hpp"
 
 namespace dynpos::capability {
 
-/// The allocation variables' names in the order of f: "port", "stb", "rudder.port",
-/// "rudder.stb", "tunnel".
-const std::array<std::string, 5>& actuator_names();
+using model::actuator_names;
+using model::with_failures;
 
 /// The actuators' limits at one inflow speed, with failures applied.
 struct ThrustLimits {
@@ -44,11 +44,6 @@ struct ThrustLimits {
 /// with J, (2.25) with (2.27)); without, their bollard thrust as the allocation takes it.
 ThrustLimits thrust_limits(const model::ThrustAllocator& allocator, double surge_speed_mps,
                            bool propeller_inflow = false);
-
-/// `vessel_allocation` with the actuators named in `failed` (actuator_names()) lost: capacity 0.
-/// Throws core::InputError (option "failure") for an unknown name.
-model::ThrustAllocationOptions with_failures(model::ThrustAllocationOptions vessel_allocation,
-                                             const std::vector<std::string>& failed);
 
 /// An allocation that meets τ within the limits, and the actuators at a limit in it.
 struct Attainment {

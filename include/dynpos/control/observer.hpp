@@ -11,7 +11,9 @@
 ///     ḃ = −T⁻¹ b                                                       (2.22)
 ///     y = η + η_w
 ///
-/// with Ω = diag(ω₀) at the wave peak frequency ω₀ = 2π/T_p and Λ = diag(λ). b is the
+/// with Ω = diag(ω₀ᵢ) at each DOF's wave peak frequency (the peak of its wave-frequency motion's
+/// spectrum: near 2π/T_p in surge and sway, higher in yaw, which follows the wave slope) and
+/// Λ = diag(λ). b is the
 /// environmental load in NED (everything the thrusters hold against: mean wind, current, wave
 /// drift, slowly varying loads).
 ///
@@ -41,11 +43,12 @@ struct ObserverModel {
   /// T of (2.22) per axis [s]. Source: reasoned — a slowly varying load, far slower than the
   /// DP loop (Fossen 2011 uses 1000 s).
   Eigen::Vector3d bias_time_constant_s{1000.0, 1000.0, 1000.0};
-  double wave_peak_frequency_rad_s = 0.9;  ///< ω₀ = 2π/T_p [rad/s], > 0
+  /// ω₀ per DOF (N, E, ψ) [rad/s], > 0.
+  Eigen::Vector3d wave_peak_frequency_rad_s{0.8, 0.8, 1.2};
   /// λ, relative damping of the wave model [-]. Source: Fossen 2011 (0.05–0.1).
   double wave_damping_ratio = 0.1;
   /// Throws std::invalid_argument unless M is symmetric positive definite, D positive
-  /// semidefinite on its diagonal, T > 0, ω₀ > 0 and 0 < λ ≤ 1.
+  /// semidefinite on its diagonal, T > 0, every ω₀ > 0 and 0 < λ ≤ 1.
   void validate() const;
 };
 

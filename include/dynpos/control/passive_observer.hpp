@@ -28,7 +28,10 @@ namespace dynpos::control {
 struct PassiveObserverTuning {
   double notch_damping = 1.0;  ///< ζ_n [-]. Source: Fossen 2011 (ζ_n = 1.0).
   double cutoff_ratio = 1.2255;  ///< ω_c/ω₀ [-]. Source: Fossen 2011 (1.2255 ω₀).
-  double lf_bandwidth_ratio = 0.1;  ///< ω_b/ω₀ [-]. Source: reasoned — a decade below the waves.
+  /// ω_b/ω₀ [-]. Source: calibrated on the virtual pure DP trial in Hs 2.5 m, T_p 8 s at 45° to
+  /// the waves (seed 1): 0.2 gave the smallest heading error (0.18°; 0.1 gave 0.26°, 0.3 0.17°
+  /// with a larger position error); from 0.5 with ω_c = 1.2255 ω₀ the loop is unstable.
+  double lf_bandwidth_ratio = 0.2;
 };
 
 /// The gains K₁…K₄ (see the file comment).

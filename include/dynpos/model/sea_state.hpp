@@ -74,6 +74,12 @@ double jonswap(double omega, double hs_m, double tp_s, double gamma = 3.3);
 Eigen::Vector3d drift_force_b(const WaveResponseParams& response, double hs_m,
                               double beta_rad) noexcept;
 
+/// The peak frequencies [rad/s] of the wave-frequency motion's spectra in surge, sway (the
+/// wave amplitude's, both) and yaw (the wave slope's, which weighs short waves by k²), each
+/// with the hull's short-wave attenuation: the wave model a DP observer filters per DOF.
+Eigen::Vector3d response_peak_frequency(const SeaStateParams& sea,
+                                        const WaveResponseParams& response);
+
 /// One harmonic wave component.
 struct WaveComponent {
   double omega;      ///< ω [rad/s]

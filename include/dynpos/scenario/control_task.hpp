@@ -20,6 +20,7 @@
 /// the main propellers at the shaft speed that holds it and the lever that demands it.
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -28,10 +29,12 @@
 #include "dynpos/model/thrust_allocation.hpp"
 #include "dynpos/model/thruster.hpp"
 #include "dynpos/scenario/actuator_commands.hpp"
+#include "dynpos/scenario/dp_estimator.hpp"
 #include "dynpos/scenario/dp_task.hpp"
 #include "dynpos/scenario/operator_commands.hpp"
 #include "dynpos/scenario/scenario_spec.hpp"
 #include "dynpos/scenario/trial_truth.hpp"
+#include "dynpos/scenario/unit_failure.hpp"
 #include "dynpos/scenario/vessel_config.hpp"
 #include "dynpos/scenario/vessel_plant.hpp"
 
@@ -54,14 +57,16 @@ InitialTrim initial_trim(const ScenarioSpec& spec, const VesselConfig& vessel,
 /// The control task (see the file comment).
 class ControlTask {
  public:
-  /// The control of `spec` on `vessel` and its `plant`, from `trim`. Throws
-  /// std::invalid_argument on bad heading-hold or DP parameters.
+  /// The control of `spec` on `vessel` and its `plant`, from `trim`; `seed` is the run's master
+  /// seed (the DP system's measurement noise and waves). Throws std::invalid_argument on bad
+  /// heading-hold or DP parameters, core::InputError on a failure the vessel does not have.
   ControlTask(const ScenarioSpec& spec, const VesselConfig& vessel, const VesselPlant& plant,
-              const InitialTrim& trim);
+              const InitialTrim& trim, std::uint64_t seed);
 
   /// One control step at scenario time t [s] with the plant's state x (its low-frequency
-  /// motion: an ideal observer).
-  void step(double t, const sim::ConstVectorRef& x);
+  /// motion) and held input u: DP runs on what the scenario's observer makes of it
+  /// (dp_estimator.hpp); the joystick modes on the low-frequency motion.
+  void step(double t, const sim::ConstVectorRef& x, const sim::ConstVectorRef& u);
 
   /// The period of the control steps [s], 1/control_rate_hz.
   double period_s() const noexcept { return period_s_; }
@@ -82,6 +87,10 @@ class ControlTask {
   const Eigen::Vector3d& setpoint_n() const noexcept;
   /// The DP bias estimate b̂ (NED) [N, N, N·m]; zero outside DP.
   const Eigen::Vector3d& bias_hat_n() const noexcept;
+  /// The DP system's measurement and observer; nullptr outside DP.
+  const DpEstimator* estimator() const noexcept { return estimator_ ? &*estimator_ : nullptr; }
+  /// The run's failure as it happens, if it has one.
+  const std::optional<UnitFailure>& failure() const noexcept { return failure_; }
 
   /// Writes what the task did into `truth`: commands, propeller_steps, rudder_steps,
   /// setpoints, hybrid (with hybrid integral action) and allocation_unmet_max.
@@ -93,6 +102,8 @@ class ControlTask {
   // A layout's allocation of tau_d_b at state x into commands_.units; its unmet part.
   model::LayoutAllocation allocate_units(const Eigen::Vector3d& tau_d_b,
                                          const sim::ConstVectorRef& x);
+  // From the failure's time on: the allocation without the failed units (once).
+  void apply_failure(double t);
 
   JoystickParams joystick_params_;
   double period_s_;
@@ -105,6 +116,11 @@ class ControlTask {
   RudderSchedule rudder_;
   std::optional<control::HeadingHold> heading_hold_;
   std::optional<DpTask> dp_;
+  std::optional<DpEstimator> estimator_;
+  std::optional<UnitFailure> failure_;
+  bool failure_applied_ = false;
+  model::ThrustAllocationOptions allocation_options_;  // the vessel's, for a failure
+  std::vector<double> capacity_;                      // a layout's units' capacity now
   Eigen::Vector3d demand_pct_;
   ActuatorCommands commands_;
   Eigen::Matrix<double, 5, 1> forces_N_ = Eigen::Matrix<double, 5, 1>::Zero();

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "dynpos/control/observer.hpp"
 #include "dynpos/hybrid/integral_jump.hpp"
 #include "dynpos/scenario/device_files.hpp"
 
@@ -52,6 +53,24 @@ struct LoadEvent {
   double north_N = 0.0;    ///< force towards north [N]
   double east_N = 0.0;     ///< force towards east [N]
   double yaw_Nm = 0.0;     ///< yaw moment, + bow to starboard [N·m]
+};
+
+/// A failure as it happens: at t_s the unit, group ("group:NAME") or model actuator `name`
+/// trips. Its drive is cut (its thrust falls with the unit's own dynamics) and the allocation
+/// has it at capacity 0 from the next control step on.
+struct FailureEvent {
+  double t_s = 0.0;  ///< [s] in [0, duration]
+  std::string name;  ///< a [[thruster]] unit, "group:NAME", or port, stb, tunnel, rudder.port,
+                     ///< rudder.stb of the model
+};
+
+/// A loss of the DP system's position reference (every GNSS receiver) over
+/// [t_s, t_s + duration_s): no fixes are logged and the DP observer coasts on its model.
+struct DropoutEvent {
+  double t_s = 0.0;         ///< [s] ≥ 0
+  double duration_s = 0.0;  ///< [s] > 0
+  /// True at scenario time t [s].
+  bool covers(double t) const noexcept { return t >= t_s && t < t_s + duration_s; }
 };
 
 /// The weather and water of a run. Directions follow the sea-trial habit: wind and waves are
@@ -97,6 +116,15 @@ struct ScenarioSpec {
   /// from the first setpoint's time on, and joystick commands are not allowed.
   std::vector<SetpointCommand> setpoints;
   std::vector<LoadEvent> loads;  ///< scheduled step loads
+  /// DP mode: what the DP controller runs on (file key `observer`): the true low-frequency
+  /// motion ("ideal", the default), the passive observer, the EKF, or the raw measurements.
+  control::ObserverKind observer = control::ObserverKind::kIdeal;
+  /// A unit that fails during the run (file keys `failure_at_s`, `failure`).
+  std::optional<FailureEvent> failure;
+  /// GNSS dropouts ([[gnss_dropout]] with t_s, duration_s), in increasing time.
+  std::vector<DropoutEvent> gnss_dropouts;
+  /// True while a GNSS dropout covers scenario time t [s].
+  bool gnss_lost(double t) const noexcept;
   /// DP mode with hybrid integral action (thesis ch. 5): the bias estimate jumps by the
   /// practical rule (5.64)–(5.67) (file section [hybrid], enabled = true). Absent: the
   /// conventional continuous integral action only.

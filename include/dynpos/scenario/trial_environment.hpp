@@ -24,6 +24,9 @@
 
 namespace dynpos::scenario {
 
+/// The sea state of `env`: its waves (H_s, T_p, direction, components).
+model::SeaStateParams sea_state(const EnvironmentSpec& env);
+
 /// The environment of a run (see the file comment).
 class TrialEnvironment {
  public:

@@ -36,6 +36,7 @@ class TruthRecorder {
   std::vector<sim::RecordedSignal> actuator_signals();
   std::vector<sim::RecordedSignal> unit_signals();
   std::vector<sim::RecordedSignal> command_and_weather_signals();
+  std::vector<sim::RecordedSignal> observer_signals();
 
   const ControlTask& control_;
   const VesselSample* sample_ = nullptr;           // the sample being recorded

@@ -18,6 +18,8 @@ namespace dynpos::scenario {
 /// The truth at one log tick (SI units).
 struct VesselSample {
   sensors::RigidBodyMotion motion;          ///< at the control origin, LF + WF
+  /// The low-frequency position and heading alone (N, E, ψ) [m, m, rad], ψ unwrapped.
+  Eigen::Vector3d eta_lf_n = Eigen::Vector3d::Zero();
   std::array<double, 3> shaft_speed_rps{};  ///< port, stb, tunnel
   std::array<double, 3> thrust_N{};         ///< port, stb, tunnel
   std::array<double, 3> power_W{};          ///< port, stb, tunnel
@@ -28,6 +30,10 @@ struct VesselSample {
   double wind_from_rad = 0.0;                           ///< the direction it comes from, [0, 2π)
   Eigen::Vector2d current_n = Eigen::Vector2d::Zero();  ///< current (N, E) [m/s]
   Eigen::Vector3d load_n = Eigen::Vector3d::Zero();     ///< step loads (NED) [N, N, N·m]
+  /// The whole environmental load the thrusters hold against at rest (NED) [N, N, N·m]: wind and
+  /// wave drift at the vessel's motion, the current on the hull at rest, the slowly varying bias
+  /// (2.22) and the step loads: what an observer's b̂ estimates.
+  Eigen::Vector3d env_load_n = Eigen::Vector3d::Zero();
 };
 
 /// Takes VesselSamples of a run (keeps the workspace, so sampling does not allocate).

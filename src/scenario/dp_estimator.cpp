@@ -1,0 +1,101 @@
+#include "dynpos/scenario/dp_estimator.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "dynpos/core/angle.hpp"
+#include "dynpos/core/log.hpp"
+#include "dynpos/scenario/dp_task.hpp"
+#include "dynpos/scenario/trial_environment.hpp"
+
+namespace dynpos::scenario {
+namespace {
+
+using Plant = VesselPlant;
+using model::Hull;
+
+double gnss_std_m(const VesselConfig& vessel) {
+  return vessel.sensors.gnss.empty() ? 0.01 : vessel.sensors.gnss.front().horizontal_std_m;
+}
+
+}  // namespace
+
+control::ObserverModel observer_model(const ScenarioSpec& spec, const VesselConfig& vessel,
+                                      const model::Hull& hull) {
+  const control::DpControllerParams dp = dp_controller_params(vessel, hull);
+  control::ObserverModel m;
+  m.M = dp.M;
+  m.D = dp.D;
+  m.wave_peak_frequency_rad_s = model::response_peak_frequency(sea_state(spec.environment), vessel.waves);
+  return m;
+}
+
+DpEstimator::DpEstimator(const ScenarioSpec& spec, const VesselConfig& vessel,
+                         const VesselPlant& plant, std::uint64_t seed, double period_s,
+                         const Eigen::Vector3d& eta0_n)
+    : spec_(spec),
+      plant_(plant),
+      kind_(spec.observer),
+      period_s_(period_s),
+      waves_(sea_state(spec.environment), vessel.waves, seed, period_s),
+      north_noise_(gnss_std_m(vessel), sim::Rng(seed, "dp.gnss.north")),
+      east_noise_(gnss_std_m(vessel), sim::Rng(seed, "dp.gnss.east")),
+      heading_noise_(vessel.sensors.gyro.noise.noise_std, sim::Rng(seed, "dp.gyro")) {
+  const control::ObserverModel model = observer_model(spec, vessel, plant.hull());
+  if (kind_ == control::ObserverKind::kPassive) {
+    observer_.emplace<control::PassiveObserver>(model, control::passive_observer_gains(model),
+                                                eta0_n);
+  }
+}
+
+Eigen::Vector3d DpEstimator::measure(double t, const sim::ConstVectorRef& x) {
+  // The wave generator at the sample of t (the control grid from t = 0).
+  const long k = std::lround(t / period_s_);
+  if (sample_ < 0) sample_ = 0;
+  for (; sample_ < k; ++sample_) waves_.advance();
+  const double psi = x[Plant::kHull + Hull::kYaw];
+  const model::WaveMotion6 wf = waves_.motion(psi);
+  const double c = std::cos(psi), s = std::sin(psi);
+  Eigen::Vector3d y(x[Plant::kHull + Hull::kNorth] + c * wf.position[0] - s * wf.position[1],
+                    x[Plant::kHull + Hull::kEast] + s * wf.position[0] + c * wf.position[1],
+                    psi + wf.position[5]);
+  y.x() += north_noise_.sample();
+  y.y() += east_noise_.sample();
+  y.z() = core::wrap_2pi(y.z() + heading_noise_.sample());
+  wf_velocity_b_ = Eigen::Vector3d(wf.velocity[0], wf.velocity[1], wf.velocity[5]);
+  if (spec_.gnss_lost(t)) y.x() = y.y() = core::kMissing;
+  return y;
+}
+
+DpMotion DpEstimator::update(double t, const sim::ConstVectorRef& x, const sim::ConstVectorRef& u) {
+  DpMotion truth{x.segment<3>(Plant::kHull + Hull::kNorth), x.segment<3>(Plant::kHull + Hull::kSurge)};
+  if (kind_ == control::ObserverKind::kIdeal || t < 0.0) return truth;
+  const Eigen::Vector3d y = measure(t, x);
+  if (kind_ == control::ObserverKind::kRaw) {
+    DpMotion raw{y, truth.nu_b + wf_velocity_b_};
+    // Coasts on the last position through a dropout; the heading stays continuous.
+    raw.eta_n.z() = truth.eta_n.z() + core::wrap_pi(y.z() - truth.eta_n.z());
+    if (std::isnan(y.x())) raw.eta_n.head<2>() = last_raw_.head<2>();
+    last_raw_ = raw.eta_n;
+    return raw;
+  }
+  const Eigen::Vector3d tau_b =
+      plant_.actuators(x, u.segment<2>(Plant::kCurrentNed)).tau_b;  // thrust feedback
+  return std::visit(
+      [&](auto& o) -> DpMotion {
+        if constexpr (std::is_same_v<std::decay_t<decltype(o)>, std::monostate>) {
+          return truth;
+        } else {
+          o.step(y, tau_b, period_s_);
+          return {o.estimate().eta_n, o.estimate().nu_b};
+        }
+      },
+      observer_);
+}
+
+std::optional<control::ObserverEstimate> DpEstimator::estimate() const {
+  if (const auto* o = std::get_if<control::PassiveObserver>(&observer_)) return o->estimate();
+  return std::nullopt;
+}
+
+}  // namespace dynpos::scenario
