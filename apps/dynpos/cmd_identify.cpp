@@ -1,5 +1,6 @@
-// dynpos identify step|thrust-map|agility|four-corner|station-keeping: thesis chapter 3 on any
-// CSV log through a column map. `step` is here; the others have a file each.
+// dynpos identify step|thrust-map|agility|four-corner|station-keeping|failure-test: thesis
+// chapter 3 (and the DP failure tests) on any CSV log through a column map. `step` is here; the
+// others have a file each.
 
 #include <fmt/core.h>
 
@@ -71,6 +72,7 @@ void register_identify(CLI::App& app) {
   add_identify_agility(*identify);
   add_identify_four_corner(*identify);
   add_identify_station_keeping(*identify);
+  add_identify_failure_test(*identify);
 }
 
 }  // namespace dynpos::cli

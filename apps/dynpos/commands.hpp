@@ -71,6 +71,7 @@ void add_identify_agility(CLI::App& identify);          // cmd_identify_agility.
 void add_identify_thrust_map(CLI::App& identify);       // cmd_identify_thrust_map.cpp
 void add_identify_four_corner(CLI::App& identify);      // cmd_identify_four_corner.cpp
 void add_identify_station_keeping(CLI::App& identify);  // cmd_identify_station_keeping.cpp
+void add_identify_failure_test(CLI::App& identify);     // cmd_identify_failure_test.cpp
 void add_leverarm_gnss(CLI::App& leverarm);             // cmd_leverarm_gnss.cpp
 void add_leverarm_mru(CLI::App& leverarm);              // cmd_leverarm_mru.cpp
 

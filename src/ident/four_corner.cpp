@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "dynpos/core/error.hpp"
+#include "dynpos/ident/control_origin.hpp"
 
 namespace dynpos::ident {
 namespace {
@@ -342,15 +343,8 @@ FourCornerResult analyse_four_corner(const FourCornerInput& in, const FourCorner
     throw core::InputError({{}, {}, {}, "arm"}, "the antenna lever arm is not finite");
   }
   const FourCornerInput at_origin = in.arm_x_m == 0.0 && in.arm_y_m == 0.0 ? in : [&] {
-    // p_CO = p − R(ψ)·l with the heading held from its last valid sample.
     FourCornerInput moved = in;
-    Held h{in.heading_rad};
-    for (std::size_t i = 0; i < in.t_s.size(); ++i) {
-      const double psi = h(i);
-      if (i >= moved.north_m.size() || i >= moved.east_m.size()) break;
-      moved.north_m[i] -= std::cos(psi) * in.arm_x_m - std::sin(psi) * in.arm_y_m;
-      moved.east_m[i] -= std::sin(psi) * in.arm_x_m + std::cos(psi) * in.arm_y_m;
-    }
+    move_to_control_origin(moved.north_m, moved.east_m, in.heading_rad, in.arm_x_m, in.arm_y_m);
     return moved;
   }();
   return analyse_at_origin(at_origin, o);

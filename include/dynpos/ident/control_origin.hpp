@@ -1,0 +1,17 @@
+#pragma once
+/// \file
+/// A logged position of a point fixed in the hull (a GNSS antenna) moved to the control origin
+/// (CO), where a DP system controls its position: p_CO = p − R(ψ)·l in the horizontal plane.
+
+#include <vector>
+
+namespace dynpos::ident {
+
+/// Moves north_m/east_m [m] (NED) of the point at the horizontal lever arm (arm_x_m forward,
+/// arm_y_m starboard; BODY, from the CO) [m] to the CO, in place. The heading [rad] at a sample
+/// is the last valid one at or before it; positions before the first valid heading become NaN.
+/// NaN positions stay NaN; an arm of zero changes nothing. The series share one time axis.
+void move_to_control_origin(std::vector<double>& north_m, std::vector<double>& east_m,
+                            const std::vector<double>& heading_rad, double arm_x_m, double arm_y_m);
+
+}  // namespace dynpos::ident

@@ -1,0 +1,141 @@
+#pragma once
+/// \file
+/// Thruster failure tests (DP annual trials, IMCA M 190; FMEA proving trials): the trips of
+/// units found in their feedback, and per trip the excursion of the control origin, the heading
+/// excursion, the recovery and the redistribution of thrust to the other units.
+///
+/// Detection, per unit on a = |feedback| (docs/theory.md, "Failure test"):
+/// - a is smoothed by a centered running median over `median_window_s` (single spikes go);
+///   S = its largest value in the log (the unit's full scale there); σ̂ = the noise of a from
+///   first differences of its valid samples;
+/// - near zero: smoothed a ≤ z = max(zero_fraction·S, 4σ̂);
+/// - a trip is a stretch near zero that starts at t_z after a sample above z and lasts at least
+///   `min_off_s`, where
+///   - the level before is clearly non-zero: L, the median of a over the `level_window_s`
+///     ending `max_fall_s` before t_z, is ≥ max(min_level_fraction·S, 2·z);
+///   - the fall is fast: the last sample before t_z with smoothed a ≥ fall_from_fraction·L is
+///     at most `max_fall_s` before t_z (a commanded ramp to zero over tens of seconds is not a
+///     trip: its level `max_fall_s` + `level_window_s`/2 before t_z is too low for that);
+///   - another unit takes over: its mean |feedback| over `redistribution_window_s` after the
+///     failure differs from the mean over as long before by ≥ max(takeover_fraction·S', 3σ̂')
+///     with S', σ̂' its own scale and noise (not required when no other unit is logged).
+/// - the failure instant t_f is the start of the fall: the step time plus the dead time of a
+///   first-order-plus-dead-time fit of the fall (fopdt_fit.hpp) over the level window and
+///   `max_fall_s` on either side of the fall; when that fit fails or puts the start outside
+///   the fall, the last sample before the fall still at the level: smoothed a ≥ L − max(0.1·L,
+///   3σ̂).
+///   Either way t_f lags the trip itself by the dead time of the unit's feedback.
+/// Trips of several units starting within `max_fall_s` of each other are one event (a bus
+/// failure), named after the first.
+///
+/// Figures per event, with t_f its failure instant:
+/// - the pre-failure window [t_f − pre_window_s, t_f], cut at the previous event: the mean
+///   position, the circular mean heading, and the footprint: the largest horizontal distance
+///   from the mean position during the window;
+/// - the response span: from t_f to the first of t_f + response_window_s, the next event and
+///   the end of the log; in it the peak excursion (largest distance from the pre-failure mean)
+///   and its time after t_f, and the largest |heading − pre-failure mean|;
+/// - recovery: from t_f to the first sample at or after the peak from which the distance,
+///   through a centered running median over `recovery_median_s` (a single noisy fix above the
+///   footprint does not hold it back), stays within the footprint for `hold_s`, inside the
+///   response span; missing when there is none; 0 when the peak is within the footprint;
+/// - redistribution: per other unit the mean |feedback| over `redistribution_window_s` before
+///   t_f (cut at the previous event) and after it (cut at the next one), and the change.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace dynpos::ident {
+
+/// The feedback of one unit (thruster): thrust [N] or shaft speed [rps], NaN = missing.
+struct UnitFeedback {
+  std::string name;
+  std::vector<double> values;
+};
+
+/// The logged channels, SI, on one time axis; NaN = missing sample, empty = not logged.
+struct FailureTestInput {
+  std::vector<double> t_s;              ///< strictly increasing
+  std::vector<double> north_m, east_m;  ///< control origin, NED [m], any offset
+  std::vector<double> heading_rad;
+  std::vector<UnitFeedback> units;
+};
+
+struct FailureTestOptions {
+  double pre_window_s = 60.0;             ///< pre-failure mean and footprint [s], > 0
+  double redistribution_window_s = 30.0;  ///< before/after means of the other units [s], > 0
+  double hold_s = 10.0;                   ///< recovered when within the footprint this long [s]
+  double response_window_s = 300.0;       ///< peak and recovery searched this long [s], > 0
+  double max_fall_s = 5.0;                ///< a trip falls to near zero within this [s], > 0
+  double min_off_s = 20.0;                ///< a tripped unit stays near zero this long [s], > 0
+  double level_window_s = 20.0;           ///< the level before the fall [s], > 0
+  double median_window_s = 1.0;           ///< running median of the feedback [s], ≥ 0
+  double recovery_median_s = 3.0;         ///< … of the distance, for the recovery [s], ≥ 0
+  double zero_fraction = 0.05;            ///< near zero: of the full scale, in (0, 1)
+  double min_level_fraction = 0.2;        ///< clearly non-zero: of the full scale, in (0, 1)
+  double fall_from_fraction = 0.6;        ///< the fall is timed from this share of the level
+  double takeover_fraction = 0.05;        ///< another unit's change, of its full scale, ≥ 0
+
+  /// Throws core::InputError for the first bad option, named by its request key
+  /// ("pre_window", "redistribution_window", "hold", "response_window", "max_fall",
+  /// "min_off", or the field name for the others).
+  void validate() const;
+};
+
+/// How the failure instant was found.
+enum class OnsetMethod {
+  kFopdtFit,   ///< start of the fall of a first-order-plus-dead-time fit
+  kLastLevel,  ///< last sample still at the pre-failure level
+};
+
+/// A unit's scale in the log, as the detection used it (SI, the feedback's unit).
+struct UnitScale {
+  std::string name;
+  double full_scale = 0.0;   ///< S: largest smoothed |feedback|
+  double noise_sigma = 0.0;  ///< σ̂ from first differences
+  double near_zero = 0.0;    ///< z: the near-zero band
+};
+
+/// The mean |feedback| of another unit before and after a failure (SI); missing with fewer
+/// than 3 valid samples in a window.
+struct UnitRedistribution {
+  std::string unit;
+  std::optional<double> mean_before;
+  std::optional<double> mean_after;
+  std::optional<double> change;  ///< after − before
+  bool took_over = false;        ///< |change| reached the take-over threshold
+};
+
+struct FailureEvent {
+  double time_s = 0.0;             ///< t_f, the failure instant (start of the fall) [s]
+  std::string unit;                ///< the unit that tripped (the first, if several did)
+  std::vector<std::string> units;  ///< every unit that tripped in this event
+  OnsetMethod onset = OnsetMethod::kLastLevel;
+  double level_before = 0.0;                      ///< L of `unit` (SI, its feedback's unit)
+  std::optional<double> fall_time_constant_s;     ///< of the fit, when it gave t_f
+  double near_zero_s = 0.0;                       ///< t_z: first sample near zero [s]
+  double pre_from_s = 0.0, pre_to_s = 0.0;        ///< the pre-failure window [s]
+  double response_to_s = 0.0;                     ///< the end of the response span [s]
+  std::optional<double> pre_north_m, pre_east_m;  ///< pre-failure mean position (NED)
+  std::optional<double> pre_heading_rad;          ///< pre-failure circular mean heading
+  std::optional<double> footprint_m;              ///< largest pre-failure distance from the mean
+  std::optional<double> peak_excursion_m;
+  std::optional<double> time_to_peak_s;
+  std::optional<double> recovery_s;
+  std::optional<double> peak_heading_rad;          ///< largest |heading − pre-failure mean|
+  std::vector<UnitRedistribution> redistribution;  ///< the units that did not trip
+};
+
+struct FailureTestResult {
+  std::vector<UnitScale> units;      ///< in the input's order
+  std::vector<FailureEvent> events;  ///< in time order
+};
+
+/// Finds the trips and their figures. Position and heading are optional (their figures are
+/// missing without them). Throws core::InputError if the options are bad, no unit is given,
+/// the time axis is not strictly increasing, or a channel's length differs from it.
+FailureTestResult analyse_failure_test(const FailureTestInput& input,
+                                       const FailureTestOptions& options = {});
+
+}  // namespace dynpos::ident

@@ -1,0 +1,246 @@
+#include "dynpos/ident/failure_test.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "dynpos/core/error.hpp"
+#include "dynpos/ident/fopdt_fit.hpp"
+#include "failure_events.hpp"
+#include "series.hpp"
+
+namespace dynpos::ident {
+namespace {
+
+// |feedback|, its running median, full scale, noise and near-zero band.
+detail::UnitProfile make_profile(const std::vector<double>& t, const UnitFeedback& unit,
+                                 const FailureTestOptions& o) {
+  detail::UnitProfile p;
+  p.abs.resize(unit.values.size());
+  std::vector<double> valid;
+  for (std::size_t i = 0; i < unit.values.size(); ++i) {
+    p.abs[i] = std::abs(unit.values[i]);
+    if (!std::isnan(p.abs[i])) valid.push_back(p.abs[i]);
+  }
+  p.smooth = detail::running_median(t, p.abs, o.median_window_s);
+  p.scale.name = unit.name;
+  for (const double v : p.smooth) {
+    if (!std::isnan(v)) p.scale.full_scale = std::max(p.scale.full_scale, v);
+  }
+  p.scale.noise_sigma = detail::difference_noise_sigma(valid);
+  p.scale.near_zero = std::max(o.zero_fraction * p.scale.full_scale, 4.0 * p.scale.noise_sigma);
+  return p;
+}
+
+// The start of the fall from a FOPDT fit of |feedback| over the level window and max_fall_s
+// around the fall: nullopt when the fit fails or puts the start outside [t_step, t_z].
+std::optional<std::pair<double, double>> fitted_onset(const std::vector<double>& t,
+                                                      const detail::UnitProfile& p,
+                                                      const std::string& name, double t_hi,
+                                                      double t_z, double t_end,
+                                                      const FailureTestOptions& o) {
+  Step step;
+  step.t_step = t_hi - o.max_fall_s;
+  step.t_begin = step.t_step - o.level_window_s;
+  step.t_end = t_end;
+  step.u_before = 1.0;
+  step.u_after = 0.0;
+  FopdtFitOptions fit;
+  fit.pre_step_s = o.level_window_s;
+  fit.output_name = name;
+  try {
+    const FopdtFitResult r = fit_fopdt(t, p.abs, step, fit);
+    const std::optional<FopdtModel> m = r.model();
+    if (!m || !(m->amplitude < 0.0)) return std::nullopt;
+    const double onset = m->t_step + m->dead_time;
+    if (onset < step.t_step || onset > t_z) return std::nullopt;
+    return std::pair{onset, m->time_constant};
+  } catch (const core::InputError&) {
+    return std::nullopt;  // too little log around the fall for a fit
+  }
+}
+
+// The failure instant of a fall that reaches near zero at index iz, last at fall_from·L at ihi.
+void time_the_fall(const std::vector<double>& t, const detail::UnitProfile& p,
+                   const std::string& name, std::size_t ihi, std::size_t iz, double t_end,
+                   const FailureTestOptions& o, detail::Trip& trip) {
+  if (const auto fit = fitted_onset(t, p, name, t[ihi], t[iz], t_end, o)) {
+    trip.t_f = fit->first;
+    trip.time_constant_s = fit->second;
+    trip.onset = OnsetMethod::kFopdtFit;
+    return;
+  }
+  // The last sample still at the level, searched back to the level window's start.
+  const double at_level = trip.level - std::max(0.1 * trip.level, 3.0 * p.scale.noise_sigma);
+  const double t_stop = t[iz] - o.max_fall_s - o.level_window_s;
+  trip.t_f = t[ihi];
+  for (std::size_t i = ihi + 1; i-- > 0 && t[i] >= t_stop;) {
+    if (!std::isnan(p.smooth[i]) && p.smooth[i] >= at_level) {
+      trip.t_f = t[i];
+      break;
+    }
+  }
+  trip.onset = OnsetMethod::kLastLevel;
+}
+
+// A trip when the stretch near zero from index iz, ending at t_off_end, follows a clearly
+// non-zero level with a fast fall; nullopt otherwise.
+std::optional<detail::Trip> trip_at(const std::vector<double>& t, const detail::UnitProfile& p,
+                                    std::size_t unit, const std::string& name, std::size_t iz,
+                                    double t_off_end, const FailureTestOptions& o) {
+  const double tz = t[iz];
+  if (t_off_end - tz < o.min_off_s) return std::nullopt;
+  const double level_to = tz - o.max_fall_s;
+  std::vector<double> level = detail::valid_in(t, p.abs, level_to - o.level_window_s, level_to);
+  if (level.size() < 3) return std::nullopt;
+  detail::Trip trip;
+  trip.unit = unit;
+  trip.t_z = tz;
+  trip.level = detail::median_in_place(level);
+  const UnitScale& s = p.scale;
+  if (trip.level < std::max(o.min_level_fraction * s.full_scale, 2.0 * s.near_zero)) {
+    return std::nullopt;
+  }
+  // The last sample at fall_from·L before t_z, no further back than max_fall_s.
+  std::optional<std::size_t> ihi;
+  for (std::size_t i = iz; i-- > 0 && t[i] >= level_to;) {
+    if (!std::isnan(p.smooth[i]) && p.smooth[i] >= o.fall_from_fraction * trip.level) {
+      ihi = i;
+      break;
+    }
+  }
+  if (!ihi) return std::nullopt;
+  time_the_fall(t, p, name, *ihi, iz, std::min(tz + o.max_fall_s, t_off_end), o, trip);
+  return trip;
+}
+
+// Every trip of one unit: each stretch near zero that starts after a sample above it.
+std::vector<detail::Trip> unit_trips(const std::vector<double>& t, const detail::UnitProfile& p,
+                                     std::size_t unit, const std::string& name,
+                                     const FailureTestOptions& o) {
+  std::vector<detail::Trip> trips;
+  const double z = p.scale.near_zero;
+  bool above = false;  // the last valid sample was above the band
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    const double v = p.smooth[i];
+    if (std::isnan(v)) continue;
+    if (v > z) {
+      above = true;
+      continue;
+    }
+    if (!above) continue;
+    above = false;
+    // The stretch lasts until the next valid sample above the band, or the end of the log.
+    std::size_t j = i + 1;
+    while (j < t.size() && !(p.smooth[j] > z)) ++j;
+    const double t_off_end = j < t.size() ? t[j] : t.back();
+    if (auto trip = trip_at(t, p, unit, name, i, t_off_end, o)) trips.push_back(*trip);
+    i = j - 1;
+  }
+  return trips;
+}
+
+// Trips of several units starting within max_fall_s of the first are one event.
+std::vector<std::vector<detail::Trip>> group_trips(std::vector<detail::Trip> trips,
+                                                   double max_fall_s) {
+  std::sort(trips.begin(), trips.end(),
+            [](const detail::Trip& a, const detail::Trip& b) { return a.t_f < b.t_f; });
+  std::vector<std::vector<detail::Trip>> groups;
+  for (const detail::Trip& trip : trips) {
+    if (groups.empty() || trip.t_f - groups.back().front().t_f > max_fall_s) groups.emplace_back();
+    groups.back().push_back(trip);
+  }
+  return groups;
+}
+
+void check_input(const FailureTestInput& in) {
+  if (in.units.empty()) {
+    throw core::InputError({{}, {}, {}, "units"}, "no unit feedback (thrust or shaft speed)",
+                           "give the thrust or the shaft speed of each unit");
+  }
+  detail::check_time_axis(in.t_s, "time", 1);
+  for (const std::vector<double>* x : {&in.north_m, &in.east_m, &in.heading_rad}) {
+    if (!x->empty()) detail::check_same_length(in.t_s.size(), x->size(), "position/heading");
+  }
+  for (const UnitFeedback& u : in.units) {
+    detail::check_same_length(in.t_s.size(), u.values.size(), u.name);
+  }
+}
+
+}  // namespace
+
+void FailureTestOptions::validate() const {
+  auto positive = [](const char* key, double v) {
+    if (!(v > 0.0) || !std::isfinite(v)) {
+      throw core::InputError::for_option(key, fmt::format("{:g} s must be > 0", v));
+    }
+  };
+  positive("pre_window", pre_window_s);
+  positive("redistribution_window", redistribution_window_s);
+  if (!(hold_s >= 0.0) || !std::isfinite(hold_s)) {
+    throw core::InputError::for_option("hold", fmt::format("{:g} s must be ≥ 0", hold_s));
+  }
+  positive("response_window", response_window_s);
+  positive("max_fall", max_fall_s);
+  positive("min_off", min_off_s);
+  positive("level_window", level_window_s);
+  for (const auto& [key, v] : {std::pair{"median_window", median_window_s},
+                               std::pair{"recovery_median", recovery_median_s}}) {
+    if (!(v >= 0.0) || !std::isfinite(v)) {
+      throw core::InputError::for_option(key, fmt::format("{:g} s must be ≥ 0", v));
+    }
+  }
+  auto fraction = [](const char* key, double v) {
+    if (!(v > 0.0 && v < 1.0)) {
+      throw core::InputError::for_option(key, fmt::format("{:g} is not in (0, 1)", v));
+    }
+  };
+  fraction("zero_fraction", zero_fraction);
+  fraction("min_level_fraction", min_level_fraction);
+  fraction("fall_from_fraction", fall_from_fraction);
+  if (!(takeover_fraction >= 0.0) || !std::isfinite(takeover_fraction)) {
+    throw core::InputError::for_option("takeover_fraction", "must be ≥ 0");
+  }
+}
+
+FailureTestResult analyse_failure_test(const FailureTestInput& in, const FailureTestOptions& o) {
+  o.validate();
+  check_input(in);
+  FailureTestResult r;
+  std::vector<detail::UnitProfile> profiles;
+  std::vector<detail::Trip> trips;
+  for (std::size_t k = 0; k < in.units.size(); ++k) {
+    profiles.push_back(make_profile(in.t_s, in.units[k], o));
+    r.units.push_back(profiles.back().scale);
+    if (in.t_s.size() < 2) continue;
+    const std::vector<detail::Trip> found =
+        unit_trips(in.t_s, profiles.back(), k, in.units[k].name, o);
+    trips.insert(trips.end(), found.begin(), found.end());
+  }
+  const std::vector<std::vector<detail::Trip>> groups = group_trips(std::move(trips), o.max_fall_s);
+  // Candidates bound each other's windows; those no other unit answered are dropped, and the
+  // figures of the rest taken with the events kept as bounds.
+  std::vector<FailureEvent> candidates;
+  for (const std::vector<detail::Trip>& g : groups) {
+    candidates.push_back(detail::event_of(in, g));
+  }
+  std::vector<FailureEvent> kept;
+  for (std::size_t k = 0; k < candidates.size(); ++k) {
+    FailureEvent e = candidates[k];
+    detail::redistribute(in, profiles, detail::neighbours(candidates, k), o, e);
+    const bool answered = std::any_of(e.redistribution.begin(), e.redistribution.end(),
+                                      [](const UnitRedistribution& u) { return u.took_over; });
+    if (answered || e.redistribution.empty()) kept.push_back(candidates[k]);
+  }
+  for (std::size_t k = 0; k < kept.size(); ++k) {
+    FailureEvent e = kept[k];
+    const detail::Neighbours around = detail::neighbours(kept, k);
+    detail::redistribute(in, profiles, around, o, e);
+    detail::excursion(in, around, o, e);
+    r.events.push_back(std::move(e));
+  }
+  return r;
+}
+
+}  // namespace dynpos::ident
