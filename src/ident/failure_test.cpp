@@ -154,8 +154,8 @@ std::vector<std::vector<detail::Trip>> group_trips(std::vector<detail::Trip> tri
   return groups;
 }
 
-void check_input(const FailureTestInput& in) {
-  if (in.units.empty()) {
+void check_input(const FailureTestInput& in, bool need_units = true) {
+  if (need_units && in.units.empty()) {
     throw core::InputError({{}, {}, {}, "units"}, "no unit feedback (thrust or shaft speed)",
                            "give the thrust or the shaft speed of each unit");
   }
@@ -241,6 +241,16 @@ FailureTestResult analyse_failure_test(const FailureTestInput& in, const Failure
     r.events.push_back(std::move(e));
   }
   return r;
+}
+
+FailureEvent failure_excursion(const FailureTestInput& in, double t_f_s,
+                               const FailureTestOptions& o) {
+  o.validate();
+  check_input(in, false);
+  FailureEvent e;
+  e.time_s = t_f_s;
+  if (!in.t_s.empty()) detail::excursion(in, {}, o, e);
+  return e;
 }
 
 }  // namespace dynpos::ident

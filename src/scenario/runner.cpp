@@ -8,6 +8,7 @@
 
 #include "dynpos/core/angle.hpp"
 #include "dynpos/core/error.hpp"
+#include "dynpos/ident/failure_test.hpp"
 #include "dynpos/model/rudder.hpp"
 #include "dynpos/scenario/actuator_commands.hpp"
 #include "dynpos/scenario/control_task.hpp"
@@ -62,6 +63,22 @@ TimeConstantsTruth time_constants(const VesselConfig& vessel, const VesselPlant&
   return tc;
 }
 
+// The failure of a run and the response of the control origin's true motion `track` to it.
+FailureTruth failure_truth(const UnitFailure& failure, const VesselConfig& vessel,
+                           const ident::FailureTestInput& track) {
+  const ident::FailureEvent e = ident::failure_excursion(track, failure.time_s());
+  FailureTruth f;
+  f.time_s = failure.time_s();
+  f.unit = failure.name();
+  f.units = failure.units(vessel);
+  f.footprint_m = e.footprint_m.value_or(core::kMissing);
+  f.peak_excursion_m = e.peak_excursion_m.value_or(core::kMissing);
+  f.time_to_peak_s = e.time_to_peak_s.value_or(core::kMissing);
+  f.recovery_s = e.recovery_s;
+  f.peak_heading_deg = core::rad_to_deg(e.peak_heading_rad.value_or(core::kMissing));
+  return f;
+}
+
 // The truth of a finished run: its inputs, what the control task did, the model's constants.
 TrialTruth trial_truth(const ScenarioSpec& spec, const VesselConfig& vessel, std::uint64_t seed,
                        const VesselPlant& plant, const ControlTask& control) {
@@ -75,6 +92,7 @@ TrialTruth trial_truth(const ScenarioSpec& spec, const VesselConfig& vessel, std
   control.write_truth(truth);
   truth.time_constants = time_constants(vessel, plant, spec.dt_s);
   truth.start_utc = spec.start_utc;
+  truth.observer = std::string(control::observer_name(spec.observer));
   return truth;
 }
 
@@ -100,6 +118,7 @@ ScenarioRun simulate(const ScenarioSpec& spec, const VesselConfig& vessel, std::
   run.truth_log.reserve(held);
   run.log.reserve(held);
   VesselSampler sampler(plant, environment);
+  ident::FailureTestInput track;  // the control origin's true motion, for a failure's truth
   const auto hand_over = [&] {
     sink(run.log, run.truth_log);
     run.log.clear_rows();
@@ -127,6 +146,12 @@ ScenarioRun simulate(const ScenarioSpec& spec, const VesselConfig& vessel, std::
     const sim::TaskContext at = clock.scenario_context(c);
     const VesselSample& sample = sampler.sample(at.time(), c.state(), c.input());
     truth_recorder.record(at, sample);
+    if (control.failure()) {
+      track.t_s.push_back(at.time());
+      track.north_m.push_back(sample.motion.p_n.x());
+      track.east_m.push_back(sample.motion.p_n.y());
+      track.heading_rad.push_back(sample.motion.theta.z());
+    }
     trial_logger.record(at.time(), sample);
     if (sink && run.log.size() >= held) hand_over();
   });
@@ -138,6 +163,7 @@ ScenarioRun simulate(const ScenarioSpec& spec, const VesselConfig& vessel, std::
   }
   if (sink && !run.log.empty()) hand_over();
   run.truth = trial_truth(spec, vessel, seed, plant, control);
+  if (control.failure()) run.truth.failure = failure_truth(*control.failure(), vessel, track);
   run.start_utc = spec.start_utc;
   run.device_files = spec.device_files;
   run.geoid_separation_m = vessel.sensors.origin.height_m;

@@ -305,6 +305,31 @@ HybridTruth read_hybrid(const Field& f) {
   return h;
 }
 
+json failure_json(const FailureTruth& f) {
+  const auto optional = [](const std::optional<double>& v) { return v ? json(*v) : json(); };
+  return {{"time_s", f.time_s},
+          {"unit", f.unit},
+          {"units", f.units},
+          {"footprint_m", f.footprint_m},
+          {"peak_excursion_m", f.peak_excursion_m},
+          {"time_to_peak_s", f.time_to_peak_s},
+          {"recovery_s", optional(f.recovery_s)},
+          {"peak_heading_deg", f.peak_heading_deg}};
+}
+
+FailureTruth read_failure(const Field& f) {
+  FailureTruth out;
+  out.time_s = f["time_s"].number();
+  out.unit = f["unit"].string();
+  for (const Field& u : f["units"].items()) out.units.push_back(u.string());
+  out.footprint_m = f["footprint_m"].number();
+  out.peak_excursion_m = f["peak_excursion_m"].number();
+  out.time_to_peak_s = f["time_to_peak_s"].number();
+  out.recovery_s = f.optional_number("recovery_s");
+  out.peak_heading_deg = f["peak_heading_deg"].number();
+  return out;
+}
+
 template <class T, class F>
 std::vector<T> read_array(const Field& f, F read_item) {
   std::vector<T> out;
@@ -343,6 +368,8 @@ json to_json(const TrialTruth& truth) {
   j["rudder_steps"] = array_json(truth.rudder_steps, rudder_step_json);
   j["setpoints"] = array_json(truth.setpoints, setpoint_json);
   if (truth.hybrid) j["hybrid"] = hybrid_json(*truth.hybrid);
+  if (truth.failure) j["failure"] = failure_json(*truth.failure);
+  if (truth.observer != "ideal") j["observer"] = truth.observer;
   j["lever_arms"] = json::object();
   for (const auto& [name, arm_b] : truth.lever_arms) j["lever_arms"][name] = vector_json(arm_b);
   j["mru_acceleration"] = sensors::to_string(truth.mru_acceleration);
@@ -367,6 +394,8 @@ TrialTruth from_json(const json& doc, const std::string& file) {
   t.rudder_steps = read_array<RudderStepTruth>(root["rudder_steps"], read_rudder_step);
   t.setpoints = read_array<SetpointTruth>(root["setpoints"], read_setpoint);
   if (root.has("hybrid")) t.hybrid = read_hybrid(root["hybrid"]);
+  if (root.has("failure")) t.failure = read_failure(root["failure"]);
+  if (root.has("observer")) t.observer = root["observer"].string();
   const Field arms = root["lever_arms"];
   if (!arms.value().is_object()) arms.fail("is not an object");
   for (const auto& [name, value] : arms.value().items()) {

@@ -5,10 +5,18 @@
 #include <cmath>
 
 #include "dynpos/core/error.hpp"
+#include "dynpos/scenario/unit_failure.hpp"
 
 namespace dynpos::scenario {
 
 void check_simulated(const VesselConfig& vessel, const ScenarioSpec& spec, const char* key) {
+  if (spec.failure) {
+    try {
+      (void)UnitFailure(*spec.failure, vessel);
+    } catch (const core::InputError& e) {
+      throw core::InputError({spec.source, {}, {}, "failure"}, e.problem(), e.hint());
+    }
+  }
   if (vessel.thrusters.empty() || spec.rudder.empty()) return;
   throw core::InputError::for_option(
       key,

@@ -138,4 +138,11 @@ struct FailureTestResult {
 FailureTestResult analyse_failure_test(const FailureTestInput& input,
                                        const FailureTestOptions& options = {});
 
+/// The figures of a failure at a known instant t_f [s] (the pre-failure window, the peak and
+/// heading excursion, the recovery; no redistribution), as analyse_failure_test() gives them for
+/// a trip it found: the simulator's truth of its failures has the same meanings. Throws
+/// core::InputError as analyse_failure_test() does (no unit needed).
+FailureEvent failure_excursion(const FailureTestInput& input, double t_f_s,
+                               const FailureTestOptions& options = {});
+
 }  // namespace dynpos::ident

@@ -128,6 +128,22 @@ struct TimeConstantsTruth {
 };
 
 /// Everything truth.json holds (see the file comment).
+/// A failure as it happened in the run (ScenarioSpec::failure) and the vessel's response, from
+/// the true motion of the control origin as the log samples it (wave-frequency motion included,
+/// as a position reference sees it), with the meanings of `identify failure-test`
+/// (ident/failure_test.hpp: pre-failure window 60 s, hold 10 s, response span 300 s).
+struct FailureTruth {
+  double time_s = 0.0;             ///< the failure instant [s]
+  std::string unit;                ///< as the scenario names it (a unit, group:NAME, actuator)
+  std::vector<std::string> units;  ///< the units lost
+  double footprint_m = 0.0;        ///< largest pre-failure distance from the pre-failure mean
+  double peak_excursion_m = 0.0;   ///< largest distance from the pre-failure mean after it [m]
+  double time_to_peak_s = 0.0;     ///< from the failure to that peak [s]
+  /// From the failure until back within the pre-failure footprint [s]; missing if never.
+  std::optional<double> recovery_s;
+  double peak_heading_deg = 0.0;  ///< largest |heading − pre-failure mean| after it [deg]
+};
+
 struct TrialTruth {
   std::uint64_t seed = 0;
   TrialScenario scenario;
@@ -137,6 +153,8 @@ struct TrialTruth {
   std::vector<RudderStepTruth> rudder_steps;
   std::vector<SetpointTruth> setpoints;  ///< DP mode only
   std::optional<HybridTruth> hybrid;     ///< with hybrid integral action only
+  std::optional<FailureTruth> failure;   ///< with a failure as it happens only
+  std::string observer = "ideal";        ///< what the DP controller ran on (ScenarioSpec)
   /// The true lever arm of every GNSS antenna and MRU, BODY [m], by sensor name.
   std::map<std::string, Eigen::Vector3d> lever_arms;
   sensors::AccelerationConvention mru_acceleration = sensors::AccelerationConvention::kKinematic;

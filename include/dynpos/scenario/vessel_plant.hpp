@@ -46,7 +46,8 @@ struct ActuatorState {
 };
 
 /// Throws core::InputError (option `key`) when `spec` cannot run on `vessel`: manual rudder
-/// steps name the model's two rudders, which a [[thruster]] layout does not have.
+/// steps name the model's two rudders, which a [[thruster]] layout does not have; and (the
+/// scenario file's key `failure`) when its failure names a unit the vessel does not have.
 void check_simulated(const VesselConfig& vessel, const ScenarioSpec& spec,
                      const char* key = "vessel");
 
