@@ -2,6 +2,7 @@
 
 #include <Eigen/LU>
 #include <cmath>
+#include <stdexcept>
 
 namespace dynpos::control {
 namespace {
@@ -13,11 +14,28 @@ Eigen::Matrix3d rotation(double psi) {
   return R;
 }
 
+void validate(const PassiveObserverTuning& tuning, const ObserverModel& model) {
+  if (!(tuning.notch_damping > model.wave_damping_ratio) || !std::isfinite(tuning.notch_damping)) {
+    throw std::invalid_argument(
+        "passive observer tuning: the notch damping must be finite and above the wave model's "
+        "damping ratio");
+  }
+  if (!(tuning.cutoff_ratio > 1.0) || !std::isfinite(tuning.cutoff_ratio)) {
+    throw std::invalid_argument(
+        "passive observer tuning: the cut-off ratio ω_c/ω₀ must be finite and > 1");
+  }
+  if (!(tuning.lf_bandwidth_ratio > 0.0 && tuning.lf_bandwidth_ratio < 1.0)) {
+    throw std::invalid_argument(
+        "passive observer tuning: the LF bandwidth ratio ω_b/ω₀ must be in (0, 1)");
+  }
+}
+
 }  // namespace
 
 PassiveObserverGains passive_observer_gains(const ObserverModel& model,
                                             const PassiveObserverTuning& tuning) {
   model.validate();
+  validate(tuning, model);
   const Eigen::Vector3d w0 = model.wave_peak_frequency_rad_s;
   const Eigen::Vector3d wc = tuning.cutoff_ratio * w0;
   const Eigen::Vector3d wb = tuning.lf_bandwidth_ratio * w0;
@@ -59,8 +77,7 @@ PassiveObserver::State PassiveObserver::derivative(const State& x, const Eigen::
   d.segment<3>(6) = R * nu + gains_.K2 * y_tilde;
   // K₃ and K₄ act in BODY (they scale with M's diagonal), so b̂ takes R K₃ Rᵀ ỹ.
   d.segment<3>(9) = M_inv_ * (-model_.D * nu + R.transpose() * b + tau_b + gains_.K4 * y_tilde_b);
-  d.segment<3>(12) =
-      -b.cwiseQuotient(model_.bias_time_constant_s) + R * (gains_.K3 * y_tilde_b);
+  d.segment<3>(12) = -b.cwiseQuotient(model_.bias_time_constant_s) + R * (gains_.K3 * y_tilde_b);
   return d;
 }
 

@@ -45,6 +45,8 @@ DpEstimator::DpEstimator(const ScenarioSpec& spec, const VesselConfig& vessel,
   if (kind_ == control::ObserverKind::kPassive) {
     observer_.emplace<control::PassiveObserver>(model, control::passive_observer_gains(model),
                                                 eta0_n);
+  } else if (kind_ == control::ObserverKind::kEkf) {
+    observer_.emplace<control::EkfObserver>(model, control::EkfObserverTuning{}, eta0_n);
   }
 }
 
@@ -95,6 +97,7 @@ DpMotion DpEstimator::update(double t, const sim::ConstVectorRef& x, const sim::
 
 std::optional<control::ObserverEstimate> DpEstimator::estimate() const {
   if (const auto* o = std::get_if<control::PassiveObserver>(&observer_)) return o->estimate();
+  if (const auto* o = std::get_if<control::EkfObserver>(&observer_)) return o->estimate();
   return std::nullopt;
 }
 

@@ -17,6 +17,7 @@
 #include <optional>
 #include <variant>
 
+#include "dynpos/control/ekf_observer.hpp"
 #include "dynpos/control/observer.hpp"
 #include "dynpos/control/passive_observer.hpp"
 #include "dynpos/model/sea_state.hpp"
@@ -66,7 +67,7 @@ class DpEstimator {
   sim::WhiteNoise north_noise_, east_noise_, heading_noise_;
   Eigen::Vector3d wf_velocity_b_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d last_raw_ = Eigen::Vector3d::Zero();  // "raw": the last measured position
-  std::variant<std::monostate, control::PassiveObserver> observer_;
+  std::variant<std::monostate, control::PassiveObserver, control::EkfObserver> observer_;
 };
 
 }  // namespace dynpos::scenario
