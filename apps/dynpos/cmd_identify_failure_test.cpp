@@ -13,14 +13,16 @@ namespace {
 
 struct FailureTestCliOptions {
   LogInput input;
-  std::vector<double> arm_m;  ///< X,Y [m]
+  std::vector<double> arm_m;  ///< X,Y[,Z] [m]
   analysis::FailureTestRequest request;
   analysis::Outputs outputs;
 };
 
 void run_failure_test(FailureTestCliOptions& o) {
   o.request.source = o.input;
-  if (!o.arm_m.empty()) o.request.arm_m = Eigen::Vector2d(o.arm_m[0], o.arm_m[1]);
+  if (!o.arm_m.empty()) {
+    o.request.arm_m = Eigen::Vector3d(o.arm_m[0], o.arm_m[1], o.arm_m.size() > 2 ? o.arm_m[2] : 0.0);
+  }
   write_and_print(analysis::run_failure_test(o.request), o.outputs);
 }
 
@@ -35,9 +37,10 @@ void add_identify_failure_test(CLI::App& identify) {
                        "time; north, east (m, any offset) or lat, lon; heading; per unit "
                        "thrust.NAME or rpm.NAME");
   sub->add_option("--arm", o->arm_m,
-                  "Horizontal lever arm X,Y [m] (BODY: forward, starboard) of the antenna whose "
-                  "position is logged; the position is moved to the control origin")
-      ->expected(2)
+                  "Lever arm X,Y[,Z] [m] (BODY: forward, starboard, down) of the antenna whose "
+                  "position is logged; the position is moved to the control origin, with roll and "
+                  "pitch when both are mapped (needed for a Z)")
+      ->expected(2, 3)
       ->delimiter(',');
   sub->add_flag("--rpm", r.use_rpm, "Use the shaft speed (rpm.NAME) even when thrust is logged");
   sub->add_option("--from", r.t_from_s, "Analyse from this time [s]");

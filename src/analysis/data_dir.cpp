@@ -16,7 +16,9 @@ std::filesystem::path find_data_dir() {
     const std::filesystem::path installed = exe.parent_path().parent_path() / "share" / "dynpos";
     if (std::filesystem::is_directory(installed / "scenarios")) return installed;
   }
-  for (const std::filesystem::path dir : {DYNPOS_INSTALL_DATA_DIR, DYNPOS_SOURCE_DATA_DIR}) {
+  // A binary of the build tree reads its own source tree's data, not an older installed copy;
+  // an installed one found its data beside it above.
+  for (const std::filesystem::path dir : {DYNPOS_SOURCE_DATA_DIR, DYNPOS_INSTALL_DATA_DIR}) {
     if (std::filesystem::is_directory(dir / "scenarios")) return dir;
   }
   throw core::InputError({}, "cannot find the dynpos data folder (vessels, scenarios)",

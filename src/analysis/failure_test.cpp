@@ -13,7 +13,7 @@ namespace dynpos::analysis {
 namespace {
 
 bool wanted_role(const std::string& role) {
-  for (const char* r : {"north", "east", "lat", "lon", "heading"}) {
+  for (const char* r : {"north", "east", "lat", "lon", "heading", "roll", "pitch"}) {
     if (role == r) return true;
   }
   return role.rfind("thrust.", 0) == 0 || role.rfind("rpm.", 0) == 0;
@@ -75,8 +75,17 @@ void read_position(const FailureTestRequest& request, const core::Log& log,
     throw request.source.error("heading", "the lever arm (--arm) needs the heading",
                                "map heading (--col heading=COLUMN)");
   }
-  ident::move_to_control_origin(in.north_m, in.east_m, in.heading_rad, request.arm_m->x(),
-                                request.arm_m->y());
+  const Eigen::Vector3d& arm = *request.arm_m;
+  std::vector<double> roll = values_or_empty(log, "roll"), pitch = values_or_empty(log, "pitch");
+  report.attitude = has_valid_sample(roll) && has_valid_sample(pitch);
+  if (arm.z() != 0.0 && !report.attitude) {
+    throw request.source.error("roll/pitch", "the arm's height (--arm X,Y,Z) needs roll and pitch",
+                               "map roll and pitch (e.g. --col roll=mru1.roll --col "
+                               "pitch=mru1.pitch), or give the horizontal arm X,Y alone");
+  }
+  if (!report.attitude) roll.clear(), pitch.clear();
+  ident::move_to_control_origin(in.north_m, in.east_m, in.heading_rad, roll, pitch,
+                                {arm.x(), arm.y(), arm.z()});
 }
 
 }  // namespace
@@ -96,7 +105,7 @@ ident::FailureTestOptions FailureTestRequest::options() const {
 void FailureTestRequest::validate() const {
   options();
   if (arm_m && !arm_m->allFinite()) {
-    throw option_error("arm", "the antenna lever arm is not finite", "give X,Y in metres");
+    throw option_error("arm", "the antenna lever arm is not finite", "give X,Y[,Z] in metres");
   }
 }
 

@@ -82,7 +82,7 @@ TEST(FailureTestAnalysis, BadInputNamesTheLogOrTheOption) {
   bad.max_fall_s = 0.0;
   EXPECT_EQ(option_key_of([&] { bad.validate(); }), "max_fall");
   bad = request;
-  bad.arm_m = Eigen::Vector2d(std::nan(""), 0.0);
+  bad.arm_m = Eigen::Vector3d(std::nan(""), 0.0, 0.0);
   EXPECT_EQ(option_key_of([&] { bad.validate(); }), "arm");
 }
 

@@ -35,7 +35,7 @@ map=(--col north=gnss1.north --col east=gnss1.east)
   > "$out/stdout.txt"
 fail() { echo "$1"; cat "$out/stdout.txt"; jq -c '.events' "$out/ft.json"; exit 1; }
 grep -q "failure test, 1 event(s)" "$out/stdout.txt" || fail "text"
-jq -e '.analysis == "failure-test" and .arm_m == [10, -2] and .position == "north/east" and
+jq -e '.analysis == "failure-test" and .arm_m == [10, -2, 0] and .position == "north/east" and
        .windows.pre_window_s == 60 and .windows.hold_s == 10' "$out/ft.json" > /dev/null \
   || fail "context"
 jq -e '[.units[].channel] == ["thrust.port", "thrust.stb", "thrust.tunnel", "rpm.azimuth"]' \

@@ -7,8 +7,9 @@
 namespace dynpos::analysis {
 
 /// $DYNPOS_DATA_DIR if set; else ../share/dynpos beside the running executable (an installed
-/// dynpos); else the installed library's share/dynpos; else the source tree's data/ folder it
-/// was built from. InputError if none holds a scenarios/ folder.
+/// dynpos); else the source tree's data/ folder it was built from (a build-tree binary reads its
+/// own data, not an older installed copy); else the configured prefix's share/dynpos.
+/// InputError if none holds a scenarios/ folder.
 std::filesystem::path find_data_dir();
 
 /// `given`, or the built-in vessel (the virtual R/V Gunnerus, vessels/gunnerus.toml of

@@ -24,10 +24,11 @@ namespace dynpos::analysis {
 struct FailureTestRequest {
   /// time; north, east [m, any offset] or lat, lon; heading; per unit thrust.NAME or rpm.NAME.
   LogSource source;
-  /// Horizontal lever arm (x forward, y starboard, BODY) [m] of the antenna whose position is
-  /// logged; the position is moved to the control origin (arm). Absent: the logged position
-  /// is the control origin's.
-  std::optional<Eigen::Vector2d> arm_m;
+  /// Lever arm (x forward, y starboard, z down; BODY) [m] of the antenna whose position is
+  /// logged; the position is moved to the control origin (arm), with the logged roll and pitch
+  /// when both are mapped (a z other than 0 needs them). Absent: the logged position is the
+  /// control origin's.
+  std::optional<Eigen::Vector3d> arm_m;
   /// Each unit's shaft speed even where its thrust is logged (rpm).
   bool use_rpm = false;
   /// Analyse from / up to this log time [s] (from, to): only these rows are read.
@@ -58,9 +59,10 @@ struct FailureTestUnit {
 struct FailureTestReport {
   std::filesystem::path log;  ///< the log as given
   io::InputReport input;      ///< the files read, their formats and skipped lines
-  std::optional<Eigen::Vector2d> arm_m;
+  std::optional<Eigen::Vector3d> arm_m;
   std::string position;  ///< the roles of the position: "north/east" or "lat/lon"
   bool has_heading = false;
+  bool attitude = false;  ///< the arm was applied with the logged roll and pitch
   std::vector<FailureTestUnit> units;  ///< in the log's order, as result.units
   std::vector<std::string> notes;      ///< channels left out, and why
   ident::FailureTestOptions options;

@@ -61,7 +61,7 @@ struct LoadEvent {
 struct FailureEvent {
   double t_s = 0.0;  ///< [s] in [0, duration]
   std::string name;  ///< a [[thruster]] unit, "group:NAME", or port, stb, tunnel, rudder.port,
-                     ///< rudder.stb of the model
+                     ///< rudder.stb of the model; several joined by "+" fail together
 };
 
 /// A loss of the DP system's position reference (every GNSS receiver) over

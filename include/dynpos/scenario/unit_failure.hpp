@@ -6,7 +6,8 @@
 /// points; the DP system's allocation has them at capacity 0 from its next control step.
 ///
 /// A [[thruster]] layout fails by unit or redundancy group (model/failure_case.hpp); the model's
-/// own actuators by name (port, stb, tunnel, rudder.port, rudder.stb).
+/// own actuators by name (port, stb, tunnel, rudder.port, rudder.stb). Names joined by "+" fail
+/// together (a switchboard feeding several units, e.g. "stb+tunnel").
 
 #include <string>
 #include <vector>
@@ -21,8 +22,8 @@ namespace dynpos::scenario {
 /// One failure of a run (see the file comment).
 class UnitFailure {
  public:
-  /// `event` on `vessel`; throws core::InputError (option `key`) for a name the vessel does not
-  /// have.
+  /// `event` on `vessel`; throws core::InputError (option `key`) for a name (or a part of a
+  /// "+" name) the vessel does not have.
   UnitFailure(const FailureEvent& event, const VesselConfig& vessel, const char* key = "failure");
 
   double time_s() const noexcept { return time_s_; }
@@ -44,7 +45,7 @@ class UnitFailure {
   double time_s_;
   std::string name_;
   std::vector<double> capacity_;  // a layout's
-  int actuator_ = -1;             // the model's (model::actuator_names())
+  std::vector<int> actuators_;    // the model's (model::actuator_names())
 };
 
 }  // namespace dynpos::scenario
