@@ -14,10 +14,10 @@ namespace {
 constexpr int kXi1 = 0, kXi2 = 3, kEta = 6, kNu = 9, kBias = 12;
 
 // The measured rows (at most 3): fixed-capacity matrices, no allocation per step.
-using RowsH = Eigen::Matrix<double, Eigen::Dynamic, 15, Eigen::RowMajor, 3, 15>;
-using RowsSquare = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3>;
-using RowsVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1>;
-using Gain = Eigen::Matrix<double, 15, Eigen::Dynamic, 0, 15, 3>;
+using RowsH = Eigen::Matrix<double, Eigen::Dynamic, 15, Eigen::RowMajor, 4, 15>;
+using RowsSquare = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, 4>;
+using RowsVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 4, 1>;
+using Gain = Eigen::Matrix<double, 15, Eigen::Dynamic, 0, 15, 4>;
 
 Eigen::Matrix3d rotation(double psi) {
   const double c = std::cos(psi), s = std::sin(psi);
@@ -57,6 +57,7 @@ void EkfObserverTuning::validate() const {
   require_positive(initial_bias_accel_std, "initial_bias_accel_std");
   require_positive(position_std_m, "position_std_m");
   require_positive(heading_std_rad, "heading_std_rad");
+  require_positive(yaw_rate_std_rad_s, "yaw_rate_std_rad_s");
 }
 
 EkfObserver::EkfObserver(const ObserverModel& model, const EkfObserverTuning& tuning,
@@ -132,24 +133,35 @@ EkfObserver::Covariance EkfObserver::process_noise(double psi_rad) const {
   return Q;
 }
 
-void EkfObserver::correct(const Eigen::Vector3d& y_n) {
+void EkfObserver::correct(const Eigen::Vector3d& y_n, double yaw_rate_rad_s) {
   std::array<int, 3> rows{};
   int m = 0;
   for (int i = 0; i < 3; ++i) {
     if (!std::isnan(y_n[i])) rows[m++] = i;
   }
-  if (m == 0) return;  // nothing measured: coast
+  const bool rate = !std::isnan(yaw_rate_rad_s);
+  if (m == 0 && !rate) return;  // nothing measured: coast
   const Eigen::Vector3d y_tilde_all = innovation(y_n, x_.segment<3>(kEta) + x_.segment<3>(kXi2));
   const Eigen::Vector3d sigma(tuning_.position_std_m, tuning_.position_std_m,
                               tuning_.heading_std_rad);
-  RowsH H = RowsH::Zero(m, 15);
-  RowsSquare Rm = RowsSquare::Zero(m, m);
-  RowsVector y_tilde(m);
+  const int n = m + (rate ? 1 : 0);
+  RowsH H = RowsH::Zero(n, 15);
+  RowsSquare Rm = RowsSquare::Zero(n, n);
+  RowsVector y_tilde(n);
   for (int r = 0; r < m; ++r) {
     H(r, kXi2 + rows[r]) = 1.0;  // y = η + ξ₂
     H(r, kEta + rows[r]) = 1.0;
     Rm(r, r) = sigma[rows[r]] * sigma[rows[r]];
     y_tilde[r] = y_tilde_all[rows[r]];
+  }
+  if (rate) {
+    // The rate gyro: r plus the wave model's yaw rate ξ̇₂ = −ω₀²ξ₁ − 2λω₀ξ₂.
+    const double w0 = model_.wave_peak_frequency_rad_s.z();
+    H(m, kNu + 2) = 1.0;
+    H(m, kXi1 + 2) = -w0 * w0;
+    H(m, kXi2 + 2) = -2.0 * model_.wave_damping_ratio * w0;
+    Rm(m, m) = tuning_.yaw_rate_std_rad_s * tuning_.yaw_rate_std_rad_s;
+    y_tilde[m] = yaw_rate_rad_s - H.row(m).dot(x_);
   }
   const Gain PHt = P_ * H.transpose();
   const RowsSquare S = H * PHt + Rm;
@@ -173,11 +185,12 @@ void EkfObserver::predict(const Eigen::Vector3d& tau_b, double dt_s) {
   P_ = 0.5 * (P_ + P_.transpose()).eval();
 }
 
-void EkfObserver::step(const Eigen::Vector3d& y_n, const Eigen::Vector3d& tau_b, double dt_s) {
+void EkfObserver::step(const Eigen::Vector3d& y_n, const Eigen::Vector3d& tau_b, double dt_s,
+                       double yaw_rate_rad_s) {
   if (!std::isfinite(dt_s) || !(dt_s > 0.0)) {
     throw std::invalid_argument("EKF observer: the step dt must be finite and > 0");
   }
-  correct(y_n);
+  correct(y_n, yaw_rate_rad_s);
   predict(tau_b, dt_s);
   estimate_.wave_n = x_.segment<3>(kXi2);
   estimate_.eta_n = x_.segment<3>(kEta);

@@ -237,6 +237,7 @@ void ControlTask::step(double t, const sim::ConstVectorRef& x, const sim::ConstV
     psi_dp = motion.eta_n.z();
     if (const std::optional<DpDemand> demand = dp_->control(t, motion.eta_n, motion.nu_b)) {
       in.tau_d_b = demand->tau_b;
+      dp_demand_b_ = demand->tau_b;
       if (demand->hold_split) in.hold_forces = forces_N_;
     }
   }

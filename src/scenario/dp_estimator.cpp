@@ -18,6 +18,10 @@ double gnss_std_m(const VesselConfig& vessel) {
   return vessel.sensors.gnss.empty() ? 0.01 : vessel.sensors.gnss.front().horizontal_std_m;
 }
 
+double rate_std_rad_s(const VesselConfig& vessel) {
+  return vessel.sensors.mru.empty() ? core::deg_to_rad(0.03) : vessel.sensors.mru.front().rate_std_rad_s;
+}
+
 }  // namespace
 
 control::ObserverModel observer_model(const ScenarioSpec& spec, const VesselConfig& vessel,
@@ -40,7 +44,8 @@ DpEstimator::DpEstimator(const ScenarioSpec& spec, const VesselConfig& vessel,
       waves_(sea_state(spec.environment), vessel.waves, seed, period_s),
       north_noise_(gnss_std_m(vessel), sim::Rng(seed, "dp.gnss.north")),
       east_noise_(gnss_std_m(vessel), sim::Rng(seed, "dp.gnss.east")),
-      heading_noise_(vessel.sensors.gyro.noise.noise_std, sim::Rng(seed, "dp.gyro")) {
+      heading_noise_(vessel.sensors.gyro.noise.noise_std, sim::Rng(seed, "dp.gyro")),
+      rate_noise_(rate_std_rad_s(vessel), sim::Rng(seed, "dp.rate")) {
   const control::ObserverModel model = observer_model(spec, vessel, plant.hull());
   if (kind_ == control::ObserverKind::kPassive) {
     observer_.emplace<control::PassiveObserver>(model, control::passive_observer_gains(model),
@@ -65,6 +70,7 @@ Eigen::Vector3d DpEstimator::measure(double t, const sim::ConstVectorRef& x) {
   y.y() += east_noise_.sample();
   y.z() = core::wrap_2pi(y.z() + heading_noise_.sample());
   wf_velocity_b_ = Eigen::Vector3d(wf.velocity[0], wf.velocity[1], wf.velocity[5]);
+  yaw_rate_ = x[Plant::kHull + Hull::kYawRate] + wf.velocity[5] + rate_noise_.sample();
   if (spec_.gnss_lost(t)) y.x() = y.y() = core::kMissing;
   return y;
 }
@@ -88,7 +94,11 @@ DpMotion DpEstimator::update(double t, const sim::ConstVectorRef& x, const sim::
         if constexpr (std::is_same_v<std::decay_t<decltype(o)>, std::monostate>) {
           return truth;
         } else {
-          o.step(y, tau_b, period_s_);
+          if constexpr (std::is_same_v<std::decay_t<decltype(o)>, control::EkfObserver>) {
+            o.step(y, tau_b, period_s_, yaw_rate_);
+          } else {
+            o.step(y, tau_b, period_s_);
+          }
           return {o.estimate().eta_n, o.estimate().nu_b};
         }
       },

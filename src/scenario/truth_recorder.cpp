@@ -42,29 +42,35 @@ std::vector<sim::RecordedSignal> TruthRecorder::signals() {
 std::vector<sim::RecordedSignal> TruthRecorder::observer_signals() {
   std::vector<sim::RecordedSignal> out;
   const DpEstimator* estimator = control_.estimator();
-  if (estimator == nullptr || !estimator->estimate()) return out;  // ideal or raw: no observer
-  const auto estimate = [estimator] { return *estimator->estimate(); };
+  if (estimator == nullptr) return out;  // not a DP run
+  const char* const dofs[] = {"surge", "sway", "yaw"};
+  const char* const axes[][2] = {{"north", "N"}, {"east", "N"}, {"yaw", "N*m"}};
+  for (int k = 0; k < 3; ++k) {
+    out.push_back(truth_channel(std::string("demand.") + dofs[k], axes[k][1], [this, k] {
+      return control_.dp_active() ? control_.dp_demand_b()[k] : core::kMissing;
+    }));
+  }
   out.push_back(truth_channel("lf.north", "m", [this] { return sample_->eta_lf_n.x(); }));
   out.push_back(truth_channel("lf.east", "m", [this] { return sample_->eta_lf_n.y(); }));
   out.push_back(
       truth_channel("lf.heading", "rad", [this] { return core::wrap_2pi(sample_->eta_lf_n.z()); }));
-  out.push_back(truth_channel("observer.north", "m", [=] { return estimate().eta_n.x(); }));
-  out.push_back(truth_channel("observer.east", "m", [=] { return estimate().eta_n.y(); }));
-  out.push_back(truth_channel("observer.heading", "rad",
-                              [=] { return core::wrap_2pi(estimate().eta_n.z()); }));
-  const char* const axes[][2] = {{"north", "N"}, {"east", "N"}, {"yaw", "N*m"}};
-  for (int k = 0; k < 3; ++k) {
-    out.push_back(truth_channel(std::string("observer.bias.") + axes[k][0], axes[k][1],
-                                [=] { return estimate().bias_n[k]; }));
-  }
   for (int k = 0; k < 3; ++k) {
     out.push_back(truth_channel(std::string("env_load.") + axes[k][0], axes[k][1],
                                 [this, k] { return sample_->env_load_n[k]; }));
   }
+  if (!estimator->estimate()) return out;  // ideal or raw: no observer
+  const auto estimate = [estimator] { return *estimator->estimate(); };
+  out.push_back(truth_channel("observer.north", "m", [=] { return estimate().eta_n.x(); }));
+  out.push_back(truth_channel("observer.east", "m", [=] { return estimate().eta_n.y(); }));
+  out.push_back(truth_channel("observer.heading", "rad",
+                              [=] { return core::wrap_2pi(estimate().eta_n.z()); }));
+  for (int k = 0; k < 3; ++k) {
+    out.push_back(truth_channel(std::string("observer.bias.") + axes[k][0], axes[k][1],
+                                [=] { return estimate().bias_n[k]; }));
+  }
   return out;
 }
 
-// Position, attitude and velocities of the control origin (LF + WF motion).
 std::vector<sim::RecordedSignal> TruthRecorder::motion_signals() {
   const auto m = [this]() -> const sensors::RigidBodyMotion& { return sample_->motion; };
   return {

@@ -87,6 +87,8 @@ class ControlTask {
   const Eigen::Vector3d& setpoint_n() const noexcept;
   /// The DP bias estimate b̂ (NED) [N, N, N·m]; zero outside DP.
   const Eigen::Vector3d& bias_hat_n() const noexcept;
+  /// The DP controller's demand τ_d (5.38) of the last step (BODY) [N, N, N·m]; zero outside DP.
+  const Eigen::Vector3d& dp_demand_b() const noexcept { return dp_demand_b_; }
   /// The DP system's measurement and observer; nullptr outside DP.
   const DpEstimator* estimator() const noexcept { return estimator_ ? &*estimator_ : nullptr; }
   /// The run's failure as it happens, if it has one.
@@ -121,6 +123,7 @@ class ControlTask {
   bool failure_applied_ = false;
   model::ThrustAllocationOptions allocation_options_;  // the vessel's, for a failure
   std::vector<double> capacity_;                      // a layout's units' capacity now
+  Eigen::Vector3d dp_demand_b_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d demand_pct_;
   ActuatorCommands commands_;
   Eigen::Matrix<double, 5, 1> forces_N_ = Eigen::Matrix<double, 5, 1>::Zero();

@@ -5,7 +5,8 @@
 /// the low-frequency motion plus the wave-frequency motion of the run's sea (the same wave
 /// components as the loggers', sampled at the control rate) plus white noise of the vessel's first
 /// GNSS receiver and its gyro; a GNSS dropout (ScenarioSpec::gnss_dropouts) leaves the position
-/// missing. The observer (control/passive_observer.hpp, control/ekf_observer.hpp) filters it with
+/// missing. Its rate gyro (the first MRU's) measures the yaw rate, LF plus WF, with the MRU's rate
+/// noise; the EKF uses it. The observer (control/passive_observer.hpp, control/ekf_observer.hpp) filters it with
 /// the thrust the actuators give (the DP system's thrust feedback) on the controller's model M, D
 /// and the wave peak frequency 2π/T_p of the scenario's sea.
 ///
@@ -64,7 +65,8 @@ class DpEstimator {
   double period_s_;
   model::WaveMotion waves_;
   long sample_ = -1;  // the wave generator's sample
-  sim::WhiteNoise north_noise_, east_noise_, heading_noise_;
+  sim::WhiteNoise north_noise_, east_noise_, heading_noise_, rate_noise_;
+  double yaw_rate_ = 0.0;  // the rate gyro's at the last measurement [rad/s]
   Eigen::Vector3d wf_velocity_b_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d last_raw_ = Eigen::Vector3d::Zero();  // "raw": the last measured position
   std::variant<std::monostate, control::PassiveObserver, control::EkfObserver> observer_;
