@@ -86,7 +86,8 @@ TEST(PassiveObserver, ErrorDynamicsAreStableWithOneSlowPolePerDofNearHalfOmegaB)
   const PassiveObserverGains g = passive_observer_gains(model);
   Eigen::VectorXcd poles = error_dynamics(model, g).eigenvalues();
   std::sort(poles.begin(), poles.end(), [](auto a, auto b) { return std::abs(a) < std::abs(b); });
-  const double wb = PassiveObserverTuning{}.lf_bandwidth_ratio * model.wave_peak_frequency_rad_s.x();
+  const double wb =
+      PassiveObserverTuning{}.lf_bandwidth_ratio * model.wave_peak_frequency_rad_s.x();
   std::printf("poles / ω_b:");
   for (const auto& p : poles) std::printf(" %.2f%+.2fi", p.real() / wb, p.imag() / wb);
   std::printf("\n");

@@ -120,7 +120,7 @@ class ControlTask {
   std::optional<UnitFailure> failure_;
   bool failure_applied_ = false;
   model::ThrustAllocationOptions allocation_options_;  // the vessel's, for a failure
-  std::vector<double> capacity_;                      // a layout's units' capacity now
+  std::vector<double> capacity_;                       // a layout's units' capacity now
   Eigen::Vector3d demand_pct_;
   ActuatorCommands commands_;
   Eigen::Matrix<double, 5, 1> forces_N_ = Eigen::Matrix<double, 5, 1>::Zero();
