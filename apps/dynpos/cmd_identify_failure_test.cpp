@@ -21,7 +21,8 @@ struct FailureTestCliOptions {
 void run_failure_test(FailureTestCliOptions& o) {
   o.request.source = o.input;
   if (!o.arm_m.empty()) {
-    o.request.arm_m = Eigen::Vector3d(o.arm_m[0], o.arm_m[1], o.arm_m.size() > 2 ? o.arm_m[2] : 0.0);
+    o.request.arm_m =
+        Eigen::Vector3d(o.arm_m[0], o.arm_m[1], o.arm_m.size() > 2 ? o.arm_m[2] : 0.0);
   }
   write_and_print(analysis::run_failure_test(o.request), o.outputs);
 }

@@ -81,7 +81,9 @@ void register_leverarm(CLI::App& app);
 void register_hybrid(CLI::App& app);
 void register_compare(CLI::App& app);
 void register_demo(CLI::App& app);
-void register_capability(CLI::App& app);  // cmd_capability.cpp
-void register_montecarlo(CLI::App& app);  // cmd_montecarlo.cpp
+void register_capability(CLI::App& app);   // cmd_capability.cpp
+void register_montecarlo(CLI::App& app);   // cmd_montecarlo.cpp
+void register_estimate(CLI::App& app);     // cmd_estimate.cpp
+void register_consequence(CLI::App& app);  // cmd_consequence.cpp
 
 }  // namespace dynpos::cli

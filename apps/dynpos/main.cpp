@@ -87,6 +87,8 @@ int main(int argc, char** argv) {
   register_compare(app);
   register_capability(app);
   register_montecarlo(app);
+  register_estimate(app);
+  register_consequence(app);
   register_demo(app);
   // Every output of the subcommand given is checked before any subcommand runs.
   app.parse_complete_callback([&app] { check_outputs(app); });

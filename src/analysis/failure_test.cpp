@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
+#include "dynpos/analysis/control_origin_track.hpp"
 #include "dynpos/analysis/options.hpp"
 #include "dynpos/core/error.hpp"
-#include "dynpos/ident/control_origin.hpp"
 
 namespace dynpos::analysis {
 namespace {
@@ -59,33 +59,13 @@ void read_units(const FailureTestRequest& request, const core::Log& log, Failure
 // The position [m] of the control origin: north/east or lat/lon as logged, moved by the arm.
 void read_position(const FailureTestRequest& request, const core::Log& log,
                    FailureTestReport& report, ident::FailureTestInput& in) {
-  std::optional<ident::LocalPositions> p = local_position(log);
-  if (!p) {
-    throw request.source.error("north/east", "no position in the log",
-                               "map north and east in metres (any offset, e.g. UTM: --col "
-                               "north=gnss1.north --col east=gnss1.east) or lat and lon");
-  }
-  report.position = log.has("north") && log.has("east") ? "north/east" : "lat/lon";
-  in.north_m = std::move(p->north_m);
-  in.east_m = std::move(p->east_m);
-  in.heading_rad = values_or_empty(log, "heading");
-  report.has_heading = has_valid_sample(in.heading_rad);
-  if (!request.arm_m) return;
-  if (!report.has_heading) {
-    throw request.source.error("heading", "the lever arm (--arm) needs the heading",
-                               "map heading (--col heading=COLUMN)");
-  }
-  const Eigen::Vector3d& arm = *request.arm_m;
-  std::vector<double> roll = values_or_empty(log, "roll"), pitch = values_or_empty(log, "pitch");
-  report.attitude = has_valid_sample(roll) && has_valid_sample(pitch);
-  if (arm.z() != 0.0 && !report.attitude) {
-    throw request.source.error("roll/pitch", "the arm's height (--arm X,Y,Z) needs roll and pitch",
-                               "map roll and pitch (e.g. --col roll=mru1.roll --col "
-                               "pitch=mru1.pitch), or give the horizontal arm X,Y alone");
-  }
-  if (!report.attitude) roll.clear(), pitch.clear();
-  ident::move_to_control_origin(in.north_m, in.east_m, in.heading_rad, roll, pitch,
-                                {arm.x(), arm.y(), arm.z()});
+  ControlOriginTrack track = control_origin_track(request.source, log, request.arm_m);
+  report.position = track.position;
+  report.has_heading = track.has_heading;
+  report.attitude = track.attitude;
+  in.north_m = std::move(track.north_m);
+  in.east_m = std::move(track.east_m);
+  in.heading_rad = std::move(track.heading_rad);
 }
 
 }  // namespace

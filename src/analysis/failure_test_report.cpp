@@ -124,9 +124,9 @@ nlohmann::json to_json(const FailureTestReport& report) {
   doc["input"] = io::to_json(report.input);
   doc["position"] = report.position;
   doc["heading_logged"] = report.has_heading;
-  doc["arm_m"] = report.arm_m ? nlohmann::json{report.arm_m->x(), report.arm_m->y(),
-                                                report.arm_m->z()}
-                               : nlohmann::json(nullptr);
+  doc["arm_m"] = report.arm_m
+                     ? nlohmann::json{report.arm_m->x(), report.arm_m->y(), report.arm_m->z()}
+                     : nlohmann::json(nullptr);
   doc["arm_with_attitude"] = report.attitude;
   doc["units"] = units_json(report);
   doc["windows"] = windows_json(report.options);
@@ -166,12 +166,12 @@ std::string to_text(const FailureTestReport& report) {
   }
   out += fmt::format("  units: {}\n", units);
   out += fmt::format("  position: {}{}\n", report.position,
-                     report.arm_m ? fmt::format(", moved to the control origin by the arm "
-                                                "({:g}, {:g}, {:g}) m{}",
-                                                report.arm_m->x(), report.arm_m->y(),
-                                                report.arm_m->z(),
-                                                report.attitude ? " with roll and pitch" : "")
-                                  : std::string());
+                     report.arm_m
+                         ? fmt::format(", moved to the control origin by the arm "
+                                       "({:g}, {:g}, {:g}) m{}",
+                                       report.arm_m->x(), report.arm_m->y(), report.arm_m->z(),
+                                       report.attitude ? " with roll and pitch" : "")
+                         : std::string());
   const ident::FailureTestOptions& o = report.options;
   out += fmt::format(
       "  windows: pre-failure {:g} s, redistribution {:g} s, hold {:g} s, response {:g} s\n",

@@ -24,8 +24,8 @@ void move_to_control_origin(std::vector<double>& north_m, std::vector<double>& e
     if (!std::isnan(heading_rad[i])) psi = heading_rad[i];
     if (i < roll_rad.size() && !std::isnan(roll_rad[i])) phi = roll_rad[i];
     if (i < pitch_rad.size() && !std::isnan(pitch_rad[i])) theta = pitch_rad[i];
-    const double cf = std::cos(phi), sf = std::sin(phi), ct = std::cos(theta),
-                 st = std::sin(theta), cp = std::cos(psi), sp = std::sin(psi);
+    const double cf = std::cos(phi), sf = std::sin(phi), ct = std::cos(theta), st = std::sin(theta),
+                 cp = std::cos(psi), sp = std::sin(psi);
     // The first two rows of R(Θ) (2.4) times l.
     north_m[i] -= cp * ct * x + (-sp * cf + cp * st * sf) * y + (sp * sf + cp * cf * st) * z;
     east_m[i] -= sp * ct * x + (cp * cf + sf * st * sp) * y + (-cp * sf + st * sp * cf) * z;

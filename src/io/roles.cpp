@@ -54,6 +54,8 @@ std::vector<RoleSpec> build_catalogue() {
       make("power.NAME", Quantity::kPower, "kW", cont, "power of thruster NAME"),
       make("rpm.NAME", Quantity::kShaftSpeed, "rpm", cont, "shaft speed of thruster NAME"),
       make("rudder.NAME", Quantity::kAngle, "deg", angle, "angle of rudder NAME"),
+      make("azimuth.NAME", Quantity::kAngle, "deg", angle,
+           "thrust direction of azimuth NAME, clockwise from ahead"),
       make("command.NAME", Quantity::kFraction, "%", hold, "thrust or pitch command to NAME"),
       make("command.rpm.NAME", Quantity::kShaftSpeed, "rpm", hold,
            "commanded shaft speed of thruster NAME"),
@@ -129,8 +131,8 @@ std::optional<RoleSpec> find_role(std::string_view name) {
   const std::string_view prefix = name.substr(0, dot);
   const std::string_view suffix = name.substr(dot + 1);
 
-  static constexpr std::array<std::string_view, 5> kNamed = {"thrust", "power", "rpm", "rudder",
-                                                             "command"};
+  static constexpr std::array<std::string_view, 6> kNamed = {"thrust", "power",   "rpm",
+                                                             "rudder", "azimuth", "command"};
   if (prefix == "command") {
     // command.rpm.NAME, command.thrust.NAME, command.rudder.NAME
     const auto dot2 = suffix.find('.');

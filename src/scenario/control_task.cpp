@@ -271,8 +271,8 @@ model::LayoutAllocation ControlTask::allocate_units(const Eigen::Vector3d& tau_d
   const auto& drives = plant_.drives();
   for (std::size_t k = 0; k < drives.size(); ++k) {
     const double angle_now = x[Plant::kUnits + 2 * static_cast<Eigen::Index>(k) + 1];
-    commands_.units[k] = unit_order(drives[k], a.units[k], commands_.units[k].angle_rad, angle_now,
-                                    capacity_[k]);
+    commands_.units[k] =
+        unit_order(drives[k], a.units[k], commands_.units[k].angle_rad, angle_now, capacity_[k]);
   }
   return a;
 }

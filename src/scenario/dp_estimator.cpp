@@ -24,14 +24,19 @@ double rate_std_rad_s(const VesselConfig& vessel) {
 
 }  // namespace
 
-control::ObserverModel observer_model(const ScenarioSpec& spec, const VesselConfig& vessel,
-                                      const model::Hull& hull) {
+control::ObserverModel observer_model(const VesselConfig& vessel, const model::Hull& hull,
+                                      const model::SeaStateParams& sea) {
   const control::DpControllerParams dp = dp_controller_params(vessel, hull);
   control::ObserverModel m;
   m.M = dp.M;
   m.D = dp.D;
-  m.wave_peak_frequency_rad_s = model::response_peak_frequency(sea_state(spec.environment), vessel.waves);
+  m.wave_peak_frequency_rad_s = model::response_peak_frequency(sea, vessel.waves);
   return m;
+}
+
+control::ObserverModel observer_model(const ScenarioSpec& spec, const VesselConfig& vessel,
+                                      const model::Hull& hull) {
+  return observer_model(vessel, hull, sea_state(spec.environment));
 }
 
 DpEstimator::DpEstimator(const ScenarioSpec& spec, const VesselConfig& vessel,
@@ -76,7 +81,8 @@ Eigen::Vector3d DpEstimator::measure(double t, const sim::ConstVectorRef& x) {
 }
 
 DpMotion DpEstimator::update(double t, const sim::ConstVectorRef& x, const sim::ConstVectorRef& u) {
-  DpMotion truth{x.segment<3>(Plant::kHull + Hull::kNorth), x.segment<3>(Plant::kHull + Hull::kSurge)};
+  DpMotion truth{x.segment<3>(Plant::kHull + Hull::kNorth),
+                 x.segment<3>(Plant::kHull + Hull::kSurge)};
   if (kind_ == control::ObserverKind::kIdeal || t < 0.0) return truth;
   const Eigen::Vector3d y = measure(t, x);
   if (kind_ == control::ObserverKind::kRaw) {

@@ -136,7 +136,8 @@ ScenarioRun simulate(const ScenarioSpec& spec, const VesselConfig& vessel, std::
   });
   simulator.add_every_tick_task("actuators", [&](sim::TaskContext& c) {
     delays.step(control.commands(), c.mutable_input());
-    if (control.failure()) control.failure()->cut(clock.time(c.tick()), c.state(), c.mutable_input());
+    if (control.failure())
+      control.failure()->cut(clock.time(c.tick()), c.state(), c.mutable_input());
   });
   simulator.add_every_tick_task("environment", [&](sim::TaskContext& c) {
     environment.step(c.tick(), c.state(), c.mutable_input());

@@ -267,10 +267,26 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
   const std::string file = path.string();
   const toml::table doc = TomlTable::parse_file(file);
   const TomlTable root(doc, file, "");
-  root.reject_unknown({"name", "description", "duration_s", "dt_s", "log_rate_hz",
-                       "initial_heading_deg", "initial_surge_mps", "heading_hold", "settle_s",
-                       "start_utc", "environment", "joystick", "hybrid", "rudder", "setpoint",
-                       "load", "device_files", "observer", "failure_at_s", "failure",
+  root.reject_unknown({"name",
+                       "description",
+                       "duration_s",
+                       "dt_s",
+                       "log_rate_hz",
+                       "initial_heading_deg",
+                       "initial_surge_mps",
+                       "heading_hold",
+                       "settle_s",
+                       "start_utc",
+                       "environment",
+                       "joystick",
+                       "hybrid",
+                       "rudder",
+                       "setpoint",
+                       "load",
+                       "device_files",
+                       "observer",
+                       "failure_at_s",
+                       "failure",
                        "gnss_dropout"});
   ScenarioSpec spec;
   spec.source = file;
@@ -337,7 +353,8 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
   }
   for_each_row(doc, root, "gnss_dropout", [&](const TomlTable& t) {
     t.reject_unknown({"t_s", "duration_s"});
-    spec.gnss_dropouts.push_back({t.number("t_s", 0.0, 1e6), t.number("duration_s", 1e-3, 86400.0)});
+    spec.gnss_dropouts.push_back(
+        {t.number("t_s", 0.0, 1e6), t.number("duration_s", 1e-3, 86400.0)});
   });
   if (auto h = root.optional_table("hybrid")) {
     hybrid::IntegralJumpParams p;

@@ -42,7 +42,8 @@ model::ThrustAllocationOptions UnitFailure::allocation(
 
 std::vector<std::string> UnitFailure::units(const VesselConfig& vessel) const {
   std::vector<std::string> out;
-  for (const int a : actuators_) out.push_back(model::actuator_names()[static_cast<std::size_t>(a)]);
+  for (const int a : actuators_)
+    out.push_back(model::actuator_names()[static_cast<std::size_t>(a)]);
   for (std::size_t k = 0; k < capacity_.size(); ++k) {
     if (capacity_[k] == 0.0) out.push_back(vessel.thrusters[k].name);
   }
@@ -60,11 +61,21 @@ void UnitFailure::cut(double t, const sim::ConstVectorRef& x, sim::VectorRef u) 
   }
   for (const int a : actuators_) {
     switch (a) {
-      case 0: u[Plant::kCmdPort] = 0.0; break;
-      case 1: u[Plant::kCmdStb] = 0.0; break;
-      case 2: u[Plant::kCmdRudderPort] = x[Plant::kRudderPort]; break;
-      case 3: u[Plant::kCmdRudderStb] = x[Plant::kRudderStb]; break;
-      default: u[Plant::kCmdTunnel] = 0.0; break;
+      case 0:
+        u[Plant::kCmdPort] = 0.0;
+        break;
+      case 1:
+        u[Plant::kCmdStb] = 0.0;
+        break;
+      case 2:
+        u[Plant::kCmdRudderPort] = x[Plant::kRudderPort];
+        break;
+      case 3:
+        u[Plant::kCmdRudderStb] = x[Plant::kRudderStb];
+        break;
+      default:
+        u[Plant::kCmdTunnel] = 0.0;
+        break;
     }
   }
 }

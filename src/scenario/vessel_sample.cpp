@@ -40,11 +40,12 @@ const VesselSample& VesselSampler::sample(double t, const sim::ConstVectorRef& x
   const double c = std::cos(psi), sn = std::sin(psi);
   const Eigen::Vector3d current_b(c * s.current_n.x() + sn * s.current_n.y(),
                                   -sn * s.current_n.x() + c * s.current_n.y(), 0.0);
-  const Eigen::Vector3d env_b = u.segment<3>(Plant::kTauEnvBody) +
-                                plant_.hull().hydrodynamic_forces(Eigen::Vector3d::Zero(), -current_b);
-  s.env_load_n = u.segment<3>(Plant::kForceNed) +
-                 Eigen::Vector3d(c * env_b.x() - sn * env_b.y(), sn * env_b.x() + c * env_b.y(),
-                                 env_b.z());
+  const Eigen::Vector3d env_b =
+      u.segment<3>(Plant::kTauEnvBody) +
+      plant_.hull().hydrodynamic_forces(Eigen::Vector3d::Zero(), -current_b);
+  s.env_load_n =
+      u.segment<3>(Plant::kForceNed) +
+      Eigen::Vector3d(c * env_b.x() - sn * env_b.y(), sn * env_b.x() + c * env_b.y(), env_b.z());
   return s;
 }
 

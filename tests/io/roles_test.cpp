@@ -89,6 +89,8 @@ TEST(Roles, PatternRolesTakeTheirNamePart) {
   EXPECT_EQ(find_role("rudder.port")->interp, Interp::kAngle);
   EXPECT_FALSE(find_role("rudder.port")->discrete());
   EXPECT_EQ(find_role("command.rudder.port")->interp, Interp::kHold);
+  EXPECT_EQ(find_role("azimuth.pod_port")->quantity, Quantity::kAngle);
+  EXPECT_EQ(find_role("azimuth.pod_port")->interp, Interp::kAngle);
   EXPECT_EQ(find_role("gnss2.lon")->interp, Interp::kAngle);
   EXPECT_EQ(find_role("gnss2.lat")->interp, Interp::kLinear);
 }
@@ -133,7 +135,7 @@ TEST(Roles, CatalogueListsEveryRoleOnce) {
                                "mruK.roll", "command.rpm.NAME", "setpoint.north", "trigger"}) {
     EXPECT_TRUE(names.contains(expected)) << expected;
   }
-  EXPECT_EQ(names.size(), 49u);  // the table in docs/log-format.md
+  EXPECT_EQ(names.size(), 50u);  // the table in docs/log-format.md
 }
 
 TEST(Roles, ClosestRoleSuggestsNearNames) {

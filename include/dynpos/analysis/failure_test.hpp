@@ -62,7 +62,7 @@ struct FailureTestReport {
   std::optional<Eigen::Vector3d> arm_m;
   std::string position;  ///< the roles of the position: "north/east" or "lat/lon"
   bool has_heading = false;
-  bool attitude = false;  ///< the arm was applied with the logged roll and pitch
+  bool attitude = false;               ///< the arm was applied with the logged roll and pitch
   std::vector<FailureTestUnit> units;  ///< in the log's order, as result.units
   std::vector<std::string> notes;      ///< channels left out, and why
   ident::FailureTestOptions options;

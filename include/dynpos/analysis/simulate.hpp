@@ -38,8 +38,8 @@ struct SimulateRequest {
   std::optional<double> log_rate_hz;  ///< log rate override [Hz], > 0
   /// The DP observer override: "ideal", "passive", "ekf" or "raw" (DP scenarios).
   std::optional<std::string> observer;
-  bool list = false;                  ///< only list the built-in scenarios
-  unsigned jobs = core::kEveryCore;   ///< campaign: scenarios run at once, 0 = every core
+  bool list = false;                 ///< only list the built-in scenarios
+  unsigned jobs = core::kEveryCore;  ///< campaign: scenarios run at once, 0 = every core
 
   /// Throws option_error for a duration or log rate that is not > 0 ("duration", "log_rate"),
   /// an unknown observer ("observer"),

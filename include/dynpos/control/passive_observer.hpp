@@ -35,7 +35,7 @@ namespace dynpos::control {
 /// The tuning of the passive observer (see the file comment). passive_observer_gains() throws
 /// std::invalid_argument unless ζ_n > λ (else no notch), ω_c/ω₀ > 1 and 0 < ω_b/ω₀ < 1.
 struct PassiveObserverTuning {
-  double notch_damping = 1.0;  ///< ζ_n [-]. Source: Fossen 2011 (ζ_n = 1.0).
+  double notch_damping = 1.0;    ///< ζ_n [-]. Source: Fossen 2011 (ζ_n = 1.0).
   double cutoff_ratio = 1.2255;  ///< ω_c/ω₀ [-]. Source: Fossen 2011 (1.2255 ω₀).
   /// ω_b/ω₀ [-]. Source: calibrated on the virtual Gunnerus under DP in Hs 2.5 m, T_p 8 s at
   /// 45° to the waves (seed 3): a decade below the waves (0.1) left the observer's velocity so

@@ -29,8 +29,13 @@
 
 namespace dynpos::scenario {
 
-/// The observer model of the DP controller of `vessel` (M, D as dp_controller_params) in the sea
-/// of `spec`.
+/// The observer model of the DP controller of `vessel` (M, D as dp_controller_params) with the
+/// wave model at the peaks of `sea`'s wave-frequency motion (model::response_peak_frequency):
+/// what a DP system sets from the peak period its operator enters.
+control::ObserverModel observer_model(const VesselConfig& vessel, const model::Hull& hull,
+                                      const model::SeaStateParams& sea);
+
+/// observer_model() in the sea of `spec`.
 control::ObserverModel observer_model(const ScenarioSpec& spec, const VesselConfig& vessel,
                                       const model::Hull& hull);
 

@@ -17,7 +17,7 @@ namespace dynpos::scenario {
 
 /// The truth at one log tick (SI units).
 struct VesselSample {
-  sensors::RigidBodyMotion motion;          ///< at the control origin, LF + WF
+  sensors::RigidBodyMotion motion;  ///< at the control origin, LF + WF
   /// The low-frequency position and heading alone (N, E, ψ) [m, m, rad], ψ unwrapped.
   Eigen::Vector3d eta_lf_n = Eigen::Vector3d::Zero();
   std::array<double, 3> shaft_speed_rps{};  ///< port, stb, tunnel

@@ -1,0 +1,211 @@
+#include "dynpos/analysis/estimate.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "dynpos/analysis/control_origin_track.hpp"
+#include "dynpos/analysis/data_dir.hpp"
+#include "dynpos/analysis/options.hpp"
+#include "dynpos/model/hull.hpp"
+#include "dynpos/model/sea_state.hpp"
+#include "dynpos/scenario/dp_estimator.hpp"
+#include "dynpos/scenario/vessel_config.hpp"
+
+namespace dynpos::analysis {
+namespace {
+
+bool wanted_role(const std::string& role) {
+  for (const char* r : {"north", "east", "lat", "lon", "heading", "roll", "pitch"}) {
+    if (role == r) return true;
+  }
+  for (const char* prefix : {"thrust.", "rudder.", "azimuth."}) {
+    if (role.rfind(prefix, 0) == 0) return true;
+  }
+  return false;
+}
+
+bool has_valid_sample(const std::vector<double>& x) {
+  return std::any_of(x.begin(), x.end(), [](double v) { return !std::isnan(v); });
+}
+
+// The channel of `role`, required with a valid sample: else an error naming the role.
+const std::vector<double>& required(const EstimateRequest& q, const core::Log& log,
+                                    const std::string& role, const std::string& unit_name,
+                                    const std::string& vessel) {
+  if (log.has(role) && has_valid_sample(log.values(role))) return log.values(role);
+  throw q.source.error(
+      role,
+      fmt::format("no {} of unit '{}' of {} ({}) with a valid sample in the log",
+                  role.rfind("thrust.", 0) == 0 ? "thrust" : "angle", unit_name, vessel, role),
+      fmt::format("map it (--col {}=COLUMN), or give the vessel whose units the log has "
+                  "(--vessel FILE)",
+                  role));
+}
+
+// Each sample's last valid value at or before it, while at most max_hold_s old; else NaN.
+std::vector<double> held(const std::vector<double>& t_s, const std::vector<double>& x,
+                         double max_hold_s) {
+  std::vector<double> out(x.size(), core::kMissing);
+  double last_t = -std::numeric_limits<double>::infinity(), last = core::kMissing;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (!std::isnan(x[i])) last_t = t_s[i], last = x[i];
+    if (t_s[i] - last_t <= max_hold_s) out[i] = last;
+  }
+  return out;
+}
+
+// τ_b at each row from every unit's thrust and angle held (observer_run.hpp's hold); NaN where
+// one of them is missing.
+std::vector<Eigen::Vector3d> thrust_series(const EstimateRequest& q, const core::Log& log,
+                                           const scenario::ThrustFeedback& feedback,
+                                           const std::string& vessel) {
+  const std::size_t n_units = feedback.channels().size();
+  std::vector<std::vector<double>> thrust, angle;
+  for (const scenario::FeedbackChannel& c : feedback.channels()) {
+    thrust.push_back(
+        held(log.time(), required(q, log, c.thrust_role, c.unit, vessel), q.max_hold_s));
+    angle.push_back(
+        c.angle_role.empty()
+            ? std::vector<double>(log.size(), 0.0)
+            : held(log.time(), required(q, log, c.angle_role, c.unit, vessel), q.max_hold_s));
+  }
+  std::vector<Eigen::Vector3d> tau(log.size());
+  std::vector<double> t(n_units), a(n_units);
+  for (std::size_t i = 0; i < log.size(); ++i) {
+    for (std::size_t k = 0; k < n_units; ++k) t[k] = thrust[k][i], a[k] = angle[k][i];
+    const bool complete =
+        std::none_of(t.begin(), t.end(), [](double v) { return std::isnan(v); }) &&
+        std::none_of(a.begin(), a.end(), [](double v) { return std::isnan(v); });
+    tau[i] = complete ? feedback.tau_b(t, a) : Eigen::Vector3d::Constant(core::kMissing);
+  }
+  return tau;
+}
+
+// The observer's model for the vessel and the operator's T_p.
+control::ObserverModel observer_model(const scenario::VesselConfig& vessel, double tp_s) {
+  model::SeaStateParams sea;
+  sea.tp_s = tp_s;
+  return scenario::observer_model(vessel, model::Hull(vessel.hull), sea);
+}
+
+}  // namespace
+
+void EstimateRequest::validate() const {
+  if (!vessel.empty() && !std::filesystem::is_regular_file(vessel)) {
+    throw option_error("vessel", "'" + vessel.string() + "' is not a file",
+                       "give a vessel TOML file (docs/vessel-file.md)");
+  }
+  if (arm_m && !arm_m->allFinite()) {
+    throw option_error("arm", "the antenna lever arm is not finite", "give X,Y[,Z] in metres");
+  }
+  const auto kind = control::parse_observer(observer);
+  if (!kind || (*kind != control::ObserverKind::kPassive && *kind != control::ObserverKind::kEkf)) {
+    throw option_error("observer",
+                       fmt::format("the observer must be passive or ekf, got '{}'", observer),
+                       "passive (Fossen & Strand's) or ekf (the extended Kalman filter)");
+  }
+  const core::ParamRange& tp = model::kPeakPeriodRange;
+  if (!(tp_s >= tp.lo && tp_s <= tp.hi)) {
+    throw option_error(
+        "tp",
+        fmt::format("the wave peak period must be from {:g} to {:g} s, got {}", tp.lo, tp.hi, tp_s),
+        "the sea's peak period, e.g. 8");
+  }
+  if (!(rate_hz >= 0.1 && rate_hz <= 100.0)) {
+    throw option_error(
+        "rate", fmt::format("the observer's rate must be from 0.1 to 100 Hz, got {}", rate_hz),
+        "e.g. 10, a DP system's");
+  }
+  if (!(std::isfinite(max_hold_s) && max_hold_s > 0.0)) {
+    throw option_error("max_hold",
+                       fmt::format("the longest hold must be > 0 s, got {}", max_hold_s), "e.g. 5");
+  }
+  if (!(std::isfinite(settle_s) && settle_s >= 0.0)) {
+    throw option_error("settle", fmt::format("the settling time must be ≥ 0 s, got {}", settle_s),
+                       "e.g. 120");
+  }
+}
+
+control::ObserverRunOptions EstimateRequest::run_options() const {
+  validate();
+  control::ObserverRunOptions o;
+  o.kind = *control::parse_observer(observer);
+  o.rate_hz = rate_hz;
+  o.max_hold_s = max_hold_s;
+  return o;
+}
+
+std::optional<BiasSummary> summarise_bias(const control::ObserverTrack& track, double from_s) {
+  BiasSummary s;
+  s.from_s = from_s;
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero(), sum2 = Eigen::Vector3d::Zero();
+  for (std::size_t k = 0; k < track.t_s.size(); ++k) {
+    if (track.t_s[k] < from_s) continue;
+    const Eigen::Vector3d& b = track.estimate[k].bias_n;
+    sum += b;
+    sum2 += b.cwiseProduct(b);
+    ++s.samples;
+    s.to_s = track.t_s[k];
+  }
+  if (s.samples == 0) return std::nullopt;
+  const double n = static_cast<double>(s.samples);
+  s.mean_n = sum / n;
+  s.std_n = (sum2 / n - s.mean_n.cwiseProduct(s.mean_n)).cwiseMax(0.0).cwiseSqrt();
+  return s;
+}
+
+EstimateReport run_estimate(const EstimateRequest& q) {
+  const control::ObserverRunOptions run = q.run_options();  // validates
+  const scenario::VesselConfig vessel =
+      scenario::load_vessel_config(vessel_file_or_default(q.vessel));
+  LogSource source = q.source;
+  source.window_from_s = q.t_from_s;
+  source.window_to_s = q.t_to_s;
+  LoadedLog loaded = source.load(wanted_role);
+  const core::Log& log = loaded.log;
+  EstimateReport r;
+  r.log = q.source.log;
+  r.input = std::move(loaded.input);
+  r.vessel = vessel.name;
+  r.vessel_source = q.vessel.empty() ? "" : q.vessel.string();
+  r.arm_m = q.arm_m;
+  r.observer = run.kind;
+  r.tp_s = q.tp_s;
+  r.run = run;
+  r.settle_s = q.settle_s;
+  r.csv = q.out;
+  const scenario::ThrustFeedback feedback(vessel);
+  r.units = feedback.channels();
+  ControlOriginTrack co = control_origin_track(q.source, log, q.arm_m);
+  if (!co.has_heading) {
+    throw q.source.error("heading", "the observer needs the heading: none in the log",
+                         "map heading (--col heading=COLUMN)");
+  }
+  r.position = co.position;
+  r.attitude = co.attitude;
+  control::ObserverInputs in;
+  in.tau_b = thrust_series(q, log, feedback, vessel.name);
+  in.t_s = log.time();
+  in.north_m = std::move(co.north_m);
+  in.east_m = std::move(co.east_m);
+  in.heading_rad = std::move(co.heading_rad);
+  const control::ObserverModel model = observer_model(vessel, q.tp_s);
+  r.wave_peak_frequency_rad_s = model.wave_peak_frequency_rad_s;
+  try {
+    r.track = control::run_observer(model, in, run);
+  } catch (const std::invalid_argument& e) {
+    std::string problem = e.what();
+    if (problem.rfind("observer run: ", 0) == 0) problem.erase(0, 14);
+    throw q.source.error("north/east/heading/thrust", problem,
+                         "the observer starts where the log has a position, a heading and every "
+                         "unit's feedback, and needs at least one step after that");
+  }
+  r.bias = summarise_bias(r.track, r.track.start_s + q.settle_s);
+  return r;
+}
+
+}  // namespace dynpos::analysis
