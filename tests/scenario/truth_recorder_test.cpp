@@ -92,8 +92,8 @@ struct Fixture {
       spec.joystick = {{0.0, 50.0, -20.0, 10.0}};
     }
     trim = initial_trim(spec, vessel, plant);
-    control.emplace(spec, vessel, plant, trim);
-    control->step(0.0, trim.x0);
+    control.emplace(spec, vessel, plant, trim, 1);
+    control->step(0.0, trim.x0, Eigen::VectorXd::Zero(plant.input_size()));
   }
 };
 
