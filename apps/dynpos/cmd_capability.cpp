@@ -9,6 +9,7 @@
 
 #include "commands.hpp"
 #include "dynpos/analysis/capability.hpp"
+#include "dynpos/analysis/capability_transient.hpp"
 #include "dynpos/analysis/feasibility.hpp"
 #include "dynpos/analysis/options.hpp"
 
@@ -26,7 +27,8 @@ struct CapabilityCliOptions {
 void run_loads(const CapabilityCliOptions& o, const CLI::App& sub) {
   for (const char* option :
        {"--level", "--site", "--hs", "--tp", "--current", "--direction-step", "--wind-tolerance",
-        "--duration", "--settle", "--footprint", "--footprint-deg", "--seed", "--jobs", "--out"}) {
+        "--duration", "--settle", "--footprint", "--footprint-deg", "--seed", "--jobs", "--out",
+        "--transient", "--rows", "--after", "--seeds", "--observer"}) {
     if (sub.count(option) > 0) {
       throw analysis::option_error(
           "loads", fmt::format("{} is not an option of the load table's factors", option),
@@ -81,6 +83,20 @@ void register_capability(CLI::App& app) {
       ->capture_default_str();
   add_seed_option(*sub, r.seed, "Level 3: master seed of the runs");
   sub->add_option("--jobs", r.jobs, "Level 3: parallel runs (default: every core)");
+  sub->add_flag("--transient", r.transient,
+                "Level 3: trip the --failure named as it happens after --settle s of "
+                "stationkeeping; per direction and weather row the largest excursion and the "
+                "time to it (a footprint plot, footprint.svg) instead of a rose");
+  sub->add_option("--rows", r.rows, "Transient: the weather rows (DP numbers) run")
+      ->delimiter(',')
+      ->capture_default_str();
+  sub->add_option("--after", r.after, "Transient: run after the failure [s]")
+      ->capture_default_str();
+  sub->add_option("--seeds", r.seeds, "Transient: runs per direction and row (seeds --seed, +1, …)")
+      ->capture_default_str();
+  sub->add_option("--observer", r.observer,
+                  "Transient: what the DP loop runs on: ideal, passive, ekf or raw")
+      ->capture_default_str();
   output_folder(
       sub->add_option("--out", o->outputs.figures, "Folder for the capability rose (rose.svg)"));
   add_json_option(*sub, o->outputs.json, "Write the results as JSON to FILE, or '-' for stdout");
@@ -91,6 +107,15 @@ void register_capability(CLI::App& app) {
       "the vessel leaves its footprint. Example: dynpos capability --failure worst --out cap");
   sub->callback([o, sub] {
     if (!o->loads.empty()) return run_loads(*o, *sub);
+    if (o->request.transient) {
+      return write_and_print(analysis::run_capability_transient(o->request), o->outputs);
+    }
+    for (const char* option : {"--rows", "--after", "--seeds", "--observer"}) {
+      if (sub->count(option) > 0) {
+        throw analysis::option_error(option + 2, fmt::format("{} is an option of --transient", option),
+                                     "add --level 3 --transient --failure NAME");
+      }
+    }
     write_and_print(analysis::run_capability(o->request), o->outputs);
   });
 }

@@ -95,7 +95,9 @@ void CapabilityRequest::validate() const {
     throw option_error("vessel", "'" + vessel.string() + "' is not a file",
                        "give a vessel TOML file (docs/vessel-file.md)");
   }
-  if (level == 3) time_domain_options(*this, capability::dnv_level1_table()).validate();
+  if (level == 3 && !transient) {
+    time_domain_options(*this, capability::dnv_level1_table()).validate();
+  }
 }
 
 const CapabilityCase& CapabilityReport::headline() const {

@@ -16,7 +16,8 @@ bool wanted_role(const std::string& role) {
   for (const char* r : {"north", "east", "lat", "lon", "heading", "roll", "pitch"}) {
     if (role == r) return true;
   }
-  return role.rfind("thrust.", 0) == 0 || role.rfind("rpm.", 0) == 0;
+  return role.rfind("thrust.", 0) == 0 || role.rfind("rpm.", 0) == 0 ||
+         role.rfind("command.thrust.", 0) == 0 || role.rfind("command.rpm.", 0) == 0;
 }
 
 bool has_valid_sample(const std::vector<double>& x) {
@@ -42,7 +43,10 @@ void read_units(const FailureTestRequest& request, const core::Log& log, Failure
       }
       const bool thrust = channel.rfind("thrust.", 0) == 0;
       report.units.push_back({name, channel, thrust ? "kN" : "rpm", thrust ? 1e-3 : 60.0});
-      in.units.push_back({name, log.values(channel)});
+      // The unit's order of the same kind, when logged: a stop it was ordered is not a trip.
+      const std::string order = "command." + channel;
+      in.units.push_back({name, log.values(channel),
+                          log.has(order) ? log.values(order) : std::vector<double>{}});
       break;
     }
   }

@@ -84,11 +84,46 @@ void time_the_fall(const std::vector<double>& t, const detail::UnitProfile& p,
   trip.onset = OnsetMethod::kLastLevel;
 }
 
+// The first time from `from` at which |x| (its valid samples) is below `below`; nullopt if none.
+std::optional<double> first_below(const std::vector<double>& t, const std::vector<double>& x,
+                                  double from, double below) {
+  for (std::size_t i = detail::first_at(t, from); i < t.size(); ++i) {
+    if (!std::isnan(x[i]) && std::abs(x[i]) < below) return t[i];
+  }
+  return std::nullopt;
+}
+
+// Whether the fall was ordered: when the feedback has fallen below half its value just before
+// the fall (its median over the 2 s before t_f), the unit's logged order (its median over the
+// 0.5 s up to then, commanded_within_s later) is below a fifth of its own value before the fall
+// (its median from 5 s to 2 s before t_f, before an order the feedback lags). A tripped unit's
+// order holds, or drifts with the load, until the DP system flags the fault from the feedback,
+// after the feedback has fallen. No order logged, or none before: not known to be ordered.
+bool commanded(const std::vector<double>& t, const detail::UnitProfile& p,
+               const std::vector<double>& order, const detail::Trip& trip,
+               const FailureTestOptions& o) {
+  if (order.empty()) return false;
+  std::vector<double> abs_order(order.size());
+  std::transform(order.begin(), order.end(), abs_order.begin(),
+                 [](double v) { return std::abs(v); });
+  std::vector<double> fb_before = detail::valid_in(t, p.abs, trip.t_f - 2.0, trip.t_f);
+  std::vector<double> order_before = detail::valid_in(t, abs_order, trip.t_f - 5.0, trip.t_f - 2.0);
+  if (fb_before.empty() || order_before.empty()) return false;
+  const double order_level = detail::median_in_place(order_before);
+  const std::optional<double> fb_half =
+      first_below(t, p.abs, trip.t_f, 0.5 * detail::median_in_place(fb_before));
+  if (!fb_half || !(order_level > 0.0)) return false;
+  const double at = *fb_half + o.commanded_within_s;
+  std::vector<double> order_then = detail::valid_in(t, abs_order, at - 0.5, at);
+  return !order_then.empty() && detail::median_in_place(order_then) < 0.2 * order_level;
+}
+
 // A trip when the stretch near zero from index iz, ending at t_off_end, follows a clearly
 // non-zero level with a fast fall; nullopt otherwise.
 std::optional<detail::Trip> trip_at(const std::vector<double>& t, const detail::UnitProfile& p,
-                                    std::size_t unit, const std::string& name, std::size_t iz,
-                                    double t_off_end, const FailureTestOptions& o) {
+                                    const std::vector<double>& order, std::size_t unit,
+                                    const std::string& name, std::size_t iz, double t_off_end,
+                                    const FailureTestOptions& o) {
   const double tz = t[iz];
   if (t_off_end - tz < o.min_off_s) return std::nullopt;
   const double level_to = tz - o.max_fall_s;
@@ -112,13 +147,14 @@ std::optional<detail::Trip> trip_at(const std::vector<double>& t, const detail::
   }
   if (!ihi) return std::nullopt;
   time_the_fall(t, p, name, *ihi, iz, std::min(tz + o.max_fall_s, t_off_end), o, trip);
+  if (commanded(t, p, order, trip, o)) return std::nullopt;
   return trip;
 }
 
 // Every trip of one unit: each stretch near zero that starts after a sample above it.
 std::vector<detail::Trip> unit_trips(const std::vector<double>& t, const detail::UnitProfile& p,
-                                     std::size_t unit, const std::string& name,
-                                     const FailureTestOptions& o) {
+                                     const std::vector<double>& order, std::size_t unit,
+                                     const std::string& name, const FailureTestOptions& o) {
   std::vector<detail::Trip> trips;
   const double z = p.scale.near_zero;
   bool above = false;  // the last valid sample was above the band
@@ -135,7 +171,7 @@ std::vector<detail::Trip> unit_trips(const std::vector<double>& t, const detail:
     std::size_t j = i + 1;
     while (j < t.size() && !(p.smooth[j] > z)) ++j;
     const double t_off_end = j < t.size() ? t[j] : t.back();
-    if (auto trip = trip_at(t, p, unit, name, i, t_off_end, o)) trips.push_back(*trip);
+    if (auto trip = trip_at(t, p, order, unit, name, i, t_off_end, o)) trips.push_back(*trip);
     i = j - 1;
   }
   return trips;
@@ -165,6 +201,7 @@ void check_input(const FailureTestInput& in, bool need_units = true) {
   }
   for (const UnitFeedback& u : in.units) {
     detail::check_same_length(in.t_s.size(), u.values.size(), u.name);
+    if (!u.order.empty()) detail::check_same_length(in.t_s.size(), u.order.size(), u.name);
   }
 }
 
@@ -199,6 +236,9 @@ void FailureTestOptions::validate() const {
   fraction("zero_fraction", zero_fraction);
   fraction("min_level_fraction", min_level_fraction);
   fraction("fall_from_fraction", fall_from_fraction);
+  if (!(commanded_within_s >= 0.0) || !std::isfinite(commanded_within_s)) {
+    throw core::InputError::for_option("commanded_within_s", "must be ≥ 0 s");
+  }
   if (!(takeover_fraction >= 0.0) || !std::isfinite(takeover_fraction)) {
     throw core::InputError::for_option("takeover_fraction", "must be ≥ 0");
   }
@@ -215,7 +255,7 @@ FailureTestResult analyse_failure_test(const FailureTestInput& in, const Failure
     r.units.push_back(profiles.back().scale);
     if (in.t_s.size() < 2) continue;
     const std::vector<detail::Trip> found =
-        unit_trips(in.t_s, profiles.back(), k, in.units[k].name, o);
+        unit_trips(in.t_s, profiles.back(), in.units[k].order, k, in.units[k].name, o);
     trips.insert(trips.end(), found.begin(), found.end());
   }
   const std::vector<std::vector<detail::Trip>> groups = group_trips(std::move(trips), o.max_fall_s);
@@ -231,7 +271,12 @@ FailureTestResult analyse_failure_test(const FailureTestInput& in, const Failure
     detail::redistribute(in, profiles, detail::neighbours(candidates, k), o, e);
     const bool answered = std::any_of(e.redistribution.begin(), e.redistribution.end(),
                                       [](const UnitRedistribution& u) { return u.took_over; });
-    if (answered || e.redistribution.empty()) kept.push_back(candidates[k]);
+    // With the tripped unit's order logged, the order already told a trip from a stop: a bus
+    // failure may leave no unit that can take over.
+    const bool ordered_checked = std::any_of(in.units.begin(), in.units.end(), [&](const auto& u) {
+      return u.name == e.unit && !u.order.empty();
+    });
+    if (answered || ordered_checked || e.redistribution.empty()) kept.push_back(candidates[k]);
   }
   for (std::size_t k = 0; k < kept.size(); ++k) {
     FailureEvent e = kept[k];

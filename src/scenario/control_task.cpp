@@ -197,7 +197,7 @@ ControlTask::ControlTask(const ScenarioSpec& spec, const VesselConfig& vessel,
 }
 
 void ControlTask::apply_failure(double t) {
-  if (!failure_ || failure_applied_ || !failure_->failed_at(t)) return;
+  if (!failure_ || failure_applied_ || !failure_->detected_at(t)) return;
   failure_applied_ = true;
   if (!plant_.drives().empty()) {
     for (std::size_t k = 0; k < capacity_.size(); ++k) capacity_[k] *= failure_->capacity()[k];

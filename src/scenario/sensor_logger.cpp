@@ -158,7 +158,8 @@ double SensorLogger::measure(Channel& c, double x_si) {
   return c.resolution > 0.0 ? sim::quantize(y, c.resolution) : y;
 }
 
-void SensorLogger::record(std::size_t tick, const VesselSample& now, std::span<double> row) {
+void SensorLogger::record(std::size_t tick, const VesselSample& now, std::span<double> row,
+                          bool gnss_lost) {
   history_.push_back(now);
   while (history_.size() > max_delay_ + 1) history_.pop_front();
   std::size_t i = 0;
@@ -166,7 +167,7 @@ void SensorLogger::record(std::size_t tick, const VesselSample& now, std::span<d
     for (std::size_t k = 0; k < n; ++k) row[i++] = core::kMissing;
   };
   for (auto& [rx, sch] : gnss_) {
-    if (!sch.fires(tick)) {
+    if (!sch.fires(tick) || gnss_lost) {
       skip(6);
       continue;
     }

@@ -43,8 +43,10 @@ class SensorLogger {
   std::size_t channel_count() const noexcept { return names_.size(); }
 
   /// Records logger tick k (ticks are consecutive from 0) with the truth `now`: fills `row`
-  /// (channel_count() values, missing where no sensor sampled) from the delayed truths.
-  void record(std::size_t tick, const VesselSample& now, std::span<double> row);
+  /// (channel_count() values, missing where no sensor sampled) from the delayed truths; with
+  /// gnss_lost (a GNSS dropout) no receiver gives a fix.
+  void record(std::size_t tick, const VesselSample& now, std::span<double> row,
+              bool gnss_lost = false);
 
  private:
   struct Channel {

@@ -1,5 +1,7 @@
 #include "dynpos/scenario/trial_logger.hpp"
 
+#include <algorithm>
+
 #include <fmt/core.h>
 
 #include <span>
@@ -67,7 +69,10 @@ std::vector<std::pair<std::string, std::string>> unit_command_channels(
 
 TrialLogger::TrialLogger(core::Log& log, const ScenarioSpec& spec, const VesselConfig& vessel,
                          const VesselPlant& plant, std::uint64_t seed, const ControlTask& control)
-    : log_(log), control_(control), sensors_(sensor_logger(spec, vessel, plant, seed)) {
+    : log_(log),
+      control_(control),
+      gnss_dropouts_(spec.gnss_dropouts),
+      sensors_(sensor_logger(spec, vessel, plant, seed)) {
   sensors_->declare(log_);
   std::size_t commands = std::size(kCommandChannels);
   if (!plant.drives().empty()) {
@@ -84,7 +89,9 @@ TrialLogger::~TrialLogger() = default;
 
 void TrialLogger::record(double t, const VesselSample& sample) {
   const std::span<double> measured(row_);
-  sensors_->record(tick_++, sample, measured.first(sensors_->channel_count()));
+  const bool gnss_lost = std::any_of(gnss_dropouts_.begin(), gnss_dropouts_.end(),
+                                     [t](const DropoutEvent& d) { return d.covers(t); });
+  sensors_->record(tick_++, sample, measured.first(sensors_->channel_count()), gnss_lost);
   std::size_t i = sensors_->channel_count();
   const Eigen::Vector3d& demand_pct = control_.demand_pct();
   const Eigen::Vector3d& lever_pct = control_.lever_pct();

@@ -325,7 +325,8 @@ FailureTruth read_failure(const Field& f) {
   out.footprint_m = f["footprint_m"].number();
   out.peak_excursion_m = f["peak_excursion_m"].number();
   out.time_to_peak_s = f["time_to_peak_s"].number();
-  out.recovery_s = f.optional_number("recovery_s");
+  // null: not back within the footprint before the run ended.
+  if (!f["recovery_s"].value().is_null()) out.recovery_s = f["recovery_s"].number();
   out.peak_heading_deg = f["peak_heading_deg"].number();
   return out;
 }

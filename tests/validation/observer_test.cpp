@@ -145,26 +145,33 @@ std::vector<std::vector<Figures>> run_trial(const std::vector<ObserverKind>& kin
   return out;
 }
 
-class ObserverTrial : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    quartering_ = new std::vector<std::vector<Figures>>(run_trial(
-        {ObserverKind::kIdeal, ObserverKind::kPassive, ObserverKind::kEkf, ObserverKind::kRaw},
-        45.0));
-  }
-  static void TearDownTestSuite() { delete quartering_; }
-  static const std::vector<Figures>& at45(ObserverKind kind) {
-    return (*quartering_)[static_cast<std::size_t>(kind)];
-  }
-  static std::vector<std::vector<Figures>>* quartering_;
-};
-std::vector<std::vector<Figures>>* ObserverTrial::quartering_ = nullptr;
+// The trial's 80 runs are shared by the checks below: one test (CTest runs each test in a
+// process of its own, which would run them once per check).
+using Trial = std::vector<std::vector<Figures>>;
 
-TEST_F(ObserverTrial, LowFrequencyPositionErrorIsAFractionOfTheWaveMotion) {
+void low_frequency_position_error_is_a_fraction_of_the_wave_motion(const Trial& at45);
+void bias_mean_is_the_true_environmental_load(const Trial& at45);
+void filtered_demand_has_little_wave_band_power(const Trial& at45);
+void stationkeeping_on_an_observer_is_close_to_the_ideal_one(const Trial& at45);
+void heading_error_rms(const Trial& at45);
+
+TEST(ObserverTrial, FiguresOfThePureDpTrialAt45DegreesAndHeadOn) {
+  const Trial at45 = run_trial(
+      {ObserverKind::kIdeal, ObserverKind::kPassive, ObserverKind::kEkf, ObserverKind::kRaw},
+      45.0);
+  low_frequency_position_error_is_a_fraction_of_the_wave_motion(at45);
+  bias_mean_is_the_true_environmental_load(at45);
+  filtered_demand_has_little_wave_band_power(at45);
+  stationkeeping_on_an_observer_is_close_to_the_ideal_one(at45);
+  heading_error_rms(at45);
+}
+
+void low_frequency_position_error_is_a_fraction_of_the_wave_motion(const Trial& at45_all) {
+  SCOPED_TRACE("LF position error");
   for (ObserverKind kind : {ObserverKind::kPassive, ObserverKind::kEkf}) {
     double worst = 0.0;
     for (int s = 0; s < kSeeds; ++s) {
-      const Figures& f = at45(kind)[static_cast<std::size_t>(s)];
+      const Figures& f = at45_all[static_cast<std::size_t>(kind)][static_cast<std::size_t>(s)];
       worst = std::max(worst, f.lf_error_rms_m / f.wf_rms_m);
       EXPECT_LE(f.lf_error_rms_m, 0.3 * f.wf_rms_m) << observer_name(kind) << " seed " << s + 1;
     }
@@ -173,13 +180,14 @@ TEST_F(ObserverTrial, LowFrequencyPositionErrorIsAFractionOfTheWaveMotion) {
   }
 }
 
-TEST_F(ObserverTrial, BiasMeanIsTheTrueEnvironmentalLoad) {
+void bias_mean_is_the_true_environmental_load(const Trial& at45_all) {
+  SCOPED_TRACE("bias mean");
   // Issue bounds: 10 % in surge and sway, 15 % in yaw, of the true mean load.
   const Eigen::Vector3d bound(0.10, 0.10, 0.15);
   for (ObserverKind kind : {ObserverKind::kPassive, ObserverKind::kEkf}) {
     Eigen::Vector3d worst = Eigen::Vector3d::Zero();
     for (int s = 0; s < kSeeds; ++s) {
-      const Figures& f = at45(kind)[static_cast<std::size_t>(s)];
+      const Figures& f = at45_all[static_cast<std::size_t>(kind)][static_cast<std::size_t>(s)];
       const Eigen::Vector3d rel =
           (f.bias_mean_b - f.load_mean_b).cwiseAbs().cwiseQuotient(f.load_mean_b.cwiseAbs());
       worst = worst.cwiseMax(rel);
@@ -194,12 +202,13 @@ TEST_F(ObserverTrial, BiasMeanIsTheTrueEnvironmentalLoad) {
   }
 }
 
-TEST_F(ObserverTrial, FilteredDemandHasLittleWaveBandPowerAgainstTheRawMeasurements) {
+void filtered_demand_has_little_wave_band_power(const Trial& at45_all) {
+  SCOPED_TRACE("wave-band power");
   for (ObserverKind kind : {ObserverKind::kPassive, ObserverKind::kEkf}) {
     Eigen::Vector3d worst = Eigen::Vector3d::Zero();
     for (int s = 0; s < kSeeds; ++s) {
-      const Eigen::Vector3d ratio = at45(kind)[static_cast<std::size_t>(s)].wave_band_power.cwiseQuotient(
-          at45(ObserverKind::kRaw)[static_cast<std::size_t>(s)].wave_band_power);
+      const Eigen::Vector3d ratio = at45_all[static_cast<std::size_t>(kind)][static_cast<std::size_t>(s)].wave_band_power.cwiseQuotient(
+          at45_all[static_cast<std::size_t>(ObserverKind::kRaw)][static_cast<std::size_t>(s)].wave_band_power);
       worst = worst.cwiseMax(ratio);
       for (int d = 0; d < 3; ++d) {
         EXPECT_LE(ratio[d], 0.3) << observer_name(kind) << " seed " << s + 1 << " dof " << d;
@@ -214,16 +223,17 @@ TEST_F(ObserverTrial, FilteredDemandHasLittleWaveBandPowerAgainstTheRawMeasureme
 // observer. The EKF's loop moves more (measured up to 2.4): its velocity follows the model more
 // and the position less than the passive observer's; 2.6 guards that level until it is tuned
 // further (the issue's bound is not met by the EKF: see docs/theory.md).
-TEST_F(ObserverTrial, StationkeepingOnAnObserverIsCloseToTheIdealOne) {
+void stationkeeping_on_an_observer_is_close_to_the_ideal_one(const Trial& at45_all) {
+  SCOPED_TRACE("stationkeeping");
   for (ObserverKind kind : {ObserverKind::kPassive, ObserverKind::kEkf}) {
     const double bound = kind == ObserverKind::kPassive ? 1.3 : 2.6;
     double worst = 0.0;
     for (int s = 0; s < kSeeds; ++s) {
-      const double ratio = at45(kind)[static_cast<std::size_t>(s)].position_std_m /
-                           at45(ObserverKind::kIdeal)[static_cast<std::size_t>(s)].position_std_m;
+      const double ratio = at45_all[static_cast<std::size_t>(kind)][static_cast<std::size_t>(s)].position_std_m /
+                           at45_all[static_cast<std::size_t>(ObserverKind::kIdeal)][static_cast<std::size_t>(s)].position_std_m;
       worst = std::max(worst, ratio);
       EXPECT_LE(ratio, bound) << observer_name(kind) << " seed " << s + 1 << ": "
-                              << at45(kind)[static_cast<std::size_t>(s)].position_std_m << " m";
+                              << at45_all[static_cast<std::size_t>(kind)][static_cast<std::size_t>(s)].position_std_m << " m";
     }
     std::printf("%s: LF position std over the ideal observer's, worst: %.3f\n",
                 observer_name(kind).data(), worst);
@@ -234,11 +244,12 @@ TEST_F(ObserverTrial, StationkeepingOnAnObserverIsCloseToTheIdealOne) {
 // waves the wave-frequency yaw is 0.75° rms with much of it at 1–2 rad/s, beyond what one
 // second-order wave model per DOF follows: both observers leave 0.2–0.25° there (measured worst
 // 0.24°), guarded at 0.3° (not the issue's bound: open, docs/theory.md).
-TEST_F(ObserverTrial, HeadingErrorRms) {
+void heading_error_rms(const Trial& at45_all) {
+  SCOPED_TRACE("heading");
   for (ObserverKind kind : {ObserverKind::kPassive, ObserverKind::kEkf}) {
     double worst = 0.0;
     for (int s = 0; s < kSeeds; ++s) {
-      const double e = at45(kind)[static_cast<std::size_t>(s)].heading_error_rms_deg;
+      const double e = at45_all[static_cast<std::size_t>(kind)][static_cast<std::size_t>(s)].heading_error_rms_deg;
       worst = std::max(worst, e);
       EXPECT_LE(e, 0.3) << observer_name(kind) << " at 45°, seed " << s + 1;
     }

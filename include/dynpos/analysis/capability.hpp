@@ -47,6 +47,12 @@ struct CapabilityRequest {
   std::optional<double> wind_tolerance;  ///< [m/s]; default 0.01 (levels 1, 2), 0.25 (level 3)
   std::uint64_t seed = 1;                ///< level 3: master seed of the runs
   unsigned jobs = core::kEveryCore;      ///< level 3: parallel runs, 0 = every core
+  /// Level 3: the failure as it happens instead of a rose (analysis/capability_transient.hpp).
+  bool transient = false;
+  std::vector<int> rows{3, 4, 5};  ///< transient: the weather rows (DP numbers) run
+  double after = 300.0;            ///< transient: run after the failure [s]
+  unsigned seeds = 1;              ///< transient: runs per direction and row
+  std::string observer = "ideal";  ///< transient: what the DP loop runs on
   /// Throws option_error naming the first bad option.
   void validate() const;
 };

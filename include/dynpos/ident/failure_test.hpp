@@ -16,9 +16,15 @@
 ///   - the fall is fast: the last sample before t_z with smoothed a ≥ fall_from_fraction·L is
 ///     at most `max_fall_s` before t_z (a commanded ramp to zero over tens of seconds is not a
 ///     trip: its level `max_fall_s` + `level_window_s`/2 before t_z is too low for that);
+///   - it was not ordered: with the unit's order logged, when the feedback has fallen below
+///     half its value of the 2 s before t_f, the order (its median over the 0.5 s up to then,
+///     `commanded_within_s` later) is still above a fifth of its value from 5 s to 2 s before
+///     t_f (an order the feedback follows drops first; a tripped unit's holds or drifts);
 ///   - another unit takes over: its mean |feedback| over `redistribution_window_s` after the
 ///     failure differs from the mean over as long before by ≥ max(takeover_fraction·S', 3σ̂')
-///     with S', σ̂' its own scale and noise (not required when no other unit is logged).
+///     with S', σ̂' its own scale and noise (not required when no other unit is logged, nor
+///     when the tripped unit's order is: the order tells a trip from a stop, and after a bus
+///     failure no unit may be left to take over).
 /// - the failure instant t_f is the start of the fall: the step time plus the dead time of a
 ///   first-order-plus-dead-time fit of the fall (fopdt_fit.hpp) over the level window and
 ///   `max_fall_s` on either side of the fall; when that fit fails or puts the start outside
@@ -52,6 +58,9 @@ namespace dynpos::ident {
 struct UnitFeedback {
   std::string name;
   std::vector<double> values;
+  /// The unit's order as logged (its thrust or shaft speed command, the feedback's kind), NaN
+  /// = missing; empty: not logged.
+  std::vector<double> order = {};
 };
 
 /// The logged channels, SI, on one time axis; NaN = missing sample, empty = not logged.
@@ -76,6 +85,11 @@ struct FailureTestOptions {
   double min_level_fraction = 0.2;        ///< clearly non-zero: of the full scale, in (0, 1)
   double fall_from_fraction = 0.6;        ///< the fall is timed from this share of the level
   double takeover_fraction = 0.05;        ///< another unit's change, of its full scale, ≥ 0
+  /// With the unit's order logged: a fall whose order had dropped below a fifth of its value
+  /// before the fall when the feedback had halved (or at most this long after [s]) was ordered
+  /// (a stop), not a trip. A DP system keeps ordering a tripped unit until it flags the fault
+  /// from the feedback, seconds later. ≥ 0.
+  double commanded_within_s = 0.0;
 
   /// Throws core::InputError for the first bad option, named by its request key
   /// ("pre_window", "redistribution_window", "hold", "response_window", "max_fall",

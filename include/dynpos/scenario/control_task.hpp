@@ -104,7 +104,7 @@ class ControlTask {
   // A layout's allocation of tau_d_b at state x into commands_.units; its unmet part.
   model::LayoutAllocation allocate_units(const Eigen::Vector3d& tau_d_b,
                                          const sim::ConstVectorRef& x);
-  // From the failure's time on: the allocation without the failed units (once).
+  // From the failure's detection on: the allocation without the failed units (once).
   void apply_failure(double t);
 
   JoystickParams joystick_params_;

@@ -44,6 +44,7 @@ class TrialLogger {
 
   core::Log& log_;
   const ControlTask& control_;
+  std::vector<DropoutEvent> gnss_dropouts_;  // the scenario's: no GNSS fix is logged in them
   std::unique_ptr<detail::SensorLogger> sensors_;
   std::size_t tick_ = 0;
   std::vector<double> row_;

@@ -3,7 +3,8 @@
 /// A failure as it happens in a run (ScenarioSpec::failure): at its time the failed units'
 /// drives are cut on the vessel itself, every simulator tick from then on (a breaker opens: no
 /// dead time), so each shaft runs down with its own dynamics and a steering unit stays where it
-/// points; the DP system's allocation has them at capacity 0 from its next control step.
+/// points. The DP system goes on ordering them until it flags the fault from their feedback,
+/// kDetection_s later; its allocation has them at capacity 0 from then on.
 ///
 /// A [[thruster]] layout fails by unit or redundancy group (model/failure_case.hpp); the model's
 /// own actuators by name (port, stb, tunnel, rudder.port, rudder.stb). Names joined by "+" fail
@@ -19,6 +20,11 @@
 
 namespace dynpos::scenario {
 
+/// The time a DP system takes to flag a tripped unit from its feedback leaving its order [s].
+/// Source: reasoned — thruster fault detection compares feedback and order over a few seconds
+/// before it alarms and takes the unit out of the allocation.
+inline constexpr double kDetection_s = 3.0;
+
 /// One failure of a run (see the file comment).
 class UnitFailure {
  public:
@@ -30,6 +36,8 @@ class UnitFailure {
   const std::string& name() const noexcept { return name_; }
   /// True from the failure time on, at scenario time t [s].
   bool failed_at(double t) const noexcept { return t >= time_s_; }
+  /// True from the DP system's flagging of the failure on (kDetection_s after it).
+  bool detected_at(double t) const noexcept { return t >= time_s_ + kDetection_s; }
   /// A layout's capacity factor per unit (0 lost, 1 intact); empty for the model's actuators.
   const std::vector<double>& capacity() const noexcept { return capacity_; }
   /// `options` with the model's failed actuator at capacity 0 (unchanged for a layout).

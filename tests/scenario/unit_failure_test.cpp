@@ -1,0 +1,183 @@
+// Failures as they happen, GNSS dropouts and the observer in a scenario run: the scenario keys,
+// their errors, the drive cut, the allocation's redistribution and the truth.
+
+#include "dynpos/scenario/unit_failure.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "../source_dir.hpp"
+#include "dynpos/core/error.hpp"
+#include "dynpos/scenario/runner.hpp"
+#include "dynpos/scenario/vessel_plant.hpp"
+
+namespace dynpos::scenario {
+namespace {
+
+const std::filesystem::path kSource = DYNPOS_SOURCE_DIR;
+
+VesselConfig vessel(const char* name = "gunnerus.toml") {
+  return load_vessel_config(kSource / "data" / "vessels" / name);
+}
+
+// Stationkeeping at heading 0 with 10 m/s wind 30° off the bow for `duration` s.
+ScenarioSpec hold(double duration) {
+  ScenarioSpec spec;
+  spec.name = "hold";
+  spec.duration_s = duration;
+  spec.environment.wind_speed_mps = 10.0;
+  spec.environment.wind_from_deg = 30.0;
+  spec.setpoints.push_back({0.0, 0.0, 0.0, 0.0, "hold"});
+  return spec;
+}
+
+std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const core::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(UnitFailure, NamesTheModelsActuatorsAndLayoutUnitsAndGroups) {
+  const UnitFailure model({10.0, "stb+tunnel"}, vessel());
+  EXPECT_EQ(model.units(vessel()), (std::vector<std::string>{"stb", "tunnel"}));
+  EXPECT_TRUE(model.capacity().empty());
+  const model::ThrustAllocationOptions options = model.allocation({});
+  EXPECT_EQ(options.capacity(1), 0.0);
+  EXPECT_EQ(options.capacity(4), 0.0);
+  EXPECT_EQ(options.capacity(0), 1.0);
+  const VesselConfig layout = vessel("gunnerus-2015.toml");
+  const UnitFailure group({10.0, "group:port"}, layout);
+  EXPECT_EQ(group.units(layout), (std::vector<std::string>{"pod_port", "tunnel"}));
+  EXPECT_THAT(error_of([&] { UnitFailure({1.0, "bow3"}, layout); }),
+              ::testing::HasSubstr("no unit or group 'bow3'"));
+  EXPECT_THAT(error_of([&] { UnitFailure({1.0, "port+rudder"}, vessel()); }),
+              ::testing::HasSubstr("unknown actuator 'rudder'"));
+}
+
+TEST(UnitFailure, CutsTheDrivesFromItsTimeOnAndHoldsTheSteering) {
+  const VesselConfig layout = vessel("gunnerus-2015.toml");
+  const VesselPlant plant(layout);
+  const UnitFailure f({5.0, "pod_port"}, layout);
+  Eigen::VectorXd x = plant.initial_state(0.0);
+  x[VesselPlant::kUnits + 1] = 0.7;  // pod_port points at 0.7 rad
+  Eigen::VectorXd u = Eigen::VectorXd::Constant(plant.input_size(), 3.0);
+  f.cut(4.99, x, u);
+  EXPECT_EQ(u[VesselPlant::kCmdUnits], 3.0);
+  f.cut(5.0, x, u);
+  EXPECT_EQ(u[VesselPlant::kCmdUnits], 0.0);      // shaft speed order
+  EXPECT_EQ(u[VesselPlant::kCmdUnits + 1], 0.7);  // azimuth held where it points
+  EXPECT_EQ(u[VesselPlant::kCmdUnits + 2], 3.0);  // pod_stb untouched
+}
+
+TEST(UnitFailure, TheRunTripsTheUnitAndItsTruthStatesTheResponse) {
+  ScenarioSpec spec = hold(360.0);
+  spec.failure = FailureEvent{300.0, "tunnel"};
+  const ScenarioRun run = run_scenario(spec, vessel(), 1);
+  ASSERT_TRUE(run.truth.failure);
+  const FailureTruth& f = *run.truth.failure;
+  EXPECT_EQ(f.time_s, 300.0);
+  EXPECT_EQ(f.units, (std::vector<std::string>{"tunnel"}));
+  EXPECT_GT(f.peak_excursion_m, 0.0);
+  EXPECT_GE(f.time_to_peak_s, 0.0);
+  // The tunnel's shaft runs down with its own dynamics: running before, near zero 20 s after.
+  const auto& t = run.truth_log.time();
+  const auto& n = run.truth_log.values("rpm.tunnel");
+  double before = 0.0, after = 0.0;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (t[i] > 240.0 && t[i] < 300.0) before = std::max(before, std::abs(n[i]));
+    if (t[i] > 320.0) after = std::max(after, std::abs(n[i]));
+  }
+  EXPECT_GT(before, 0.5);
+  EXPECT_LT(after, 1e-3 * before);
+  // truth.json reads back the same.
+  const TrialTruth back = from_json(to_json(run.truth));
+  ASSERT_TRUE(back.failure);
+  EXPECT_EQ(back.failure->peak_excursion_m, f.peak_excursion_m);
+  EXPECT_EQ(back.failure->recovery_s.has_value(), f.recovery_s.has_value());
+}
+
+TEST(UnitFailure, AFailureTheVesselDoesNotHaveNamesTheScenarioKey) {
+  ScenarioSpec spec = hold(10.0);
+  spec.source = "trip.toml";
+  spec.failure = FailureEvent{5.0, "bow3"};
+  const std::string e = error_of([&] { run_scenario(spec, vessel(), 1); });
+  EXPECT_THAT(e, ::testing::HasSubstr("trip.toml"));
+  EXPECT_THAT(e, ::testing::HasSubstr("failure"));
+  EXPECT_THAT(e, ::testing::HasSubstr("unknown actuator 'bow3'"));
+}
+
+TEST(ScenarioEvents, FileKeysAndTheirErrors) {
+  const auto dir = std::filesystem::temp_directory_path() / "dynpos_unit_failure_test";
+  std::filesystem::create_directories(dir);
+  const auto load = [&](const std::string& extra) {
+    const auto path = dir / "s.toml";
+    std::ofstream(path) << "name = \"s\"\nduration_s = 100\n" << extra
+                        << "\n[[setpoint]]\nt_s = 0\nnorth_m = 0\neast_m = 0\nheading_deg = 0\n";
+    return load_scenario(path);
+  };
+  const ScenarioSpec ok = load(
+      "observer = \"ekf\"\nfailure_at_s = 50\nfailure = \"tunnel\"\n"
+      "[[gnss_dropout]]\nt_s = 20\nduration_s = 30");
+  EXPECT_EQ(ok.observer, control::ObserverKind::kEkf);
+  ASSERT_TRUE(ok.failure);
+  EXPECT_EQ(ok.failure->t_s, 50.0);
+  EXPECT_TRUE(ok.gnss_lost(20.0));
+  EXPECT_TRUE(ok.gnss_lost(49.9));
+  EXPECT_FALSE(ok.gnss_lost(50.0));
+  EXPECT_THAT(error_of([&] { load("observer = \"kalman\""); }),
+              ::testing::HasSubstr("unknown observer 'kalman'"));
+  EXPECT_THAT(error_of([&] { load("failure_at_s = 500\nfailure = \"tunnel\""); }),
+              ::testing::HasSubstr("failure_at_s"));
+  EXPECT_THAT(error_of([&] { load("failure_at_s = 5"); }), ::testing::HasSubstr("failure"));
+  EXPECT_THAT(error_of([&] {
+                load("[[gnss_dropout]]\nt_s = 20\nduration_s = 30\n"
+                     "[[gnss_dropout]]\nt_s = 40\nduration_s = 5");
+              }),
+              ::testing::HasSubstr("not overlap"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(ScenarioEvents, AnObserverNeedsDpSetpoints) {
+  ScenarioSpec spec;
+  spec.name = "joystick";
+  spec.duration_s = 10.0;
+  spec.observer = control::ObserverKind::kPassive;
+  EXPECT_THAT(error_of([&] { spec.validate(); }),
+              ::testing::HasSubstr("an observer runs in the DP loop"));
+}
+
+TEST(ScenarioEvents, ADropoutLeavesTheLoggedFixesMissingAndTheObserverCoasts) {
+  ScenarioSpec spec = hold(120.0);
+  spec.observer = control::ObserverKind::kEkf;
+  spec.gnss_dropouts = {{60.0, 30.0}};
+  const ScenarioRun run = run_scenario(spec, vessel(), 1);
+  const auto& t = run.log.time();
+  const auto& lat = run.log.values("gnss1.lat");
+  int in_dropout = 0, outside = 0;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (std::isnan(lat[i])) continue;
+    (t[i] >= 60.0 && t[i] < 90.0 ? in_dropout : outside) += 1;
+  }
+  EXPECT_EQ(in_dropout, 0);
+  EXPECT_GT(outside, 80);  // 1 Hz over the other 90 s
+  // The observer's estimate stays finite and near the true motion through the dropout.
+  const core::Log& truth = run.truth_log;
+  for (std::size_t i = 0; i < truth.time().size(); ++i) {
+    const double e = std::hypot(truth.values("observer.north")[i] - truth.values("lf.north")[i],
+                                truth.values("observer.east")[i] - truth.values("lf.east")[i]);
+    ASSERT_TRUE(std::isfinite(e));
+    if (truth.time()[i] > 30.0) {
+      EXPECT_LT(e, 2.0) << "t = " << truth.time()[i];
+    }
+  }
+}
+
+}  // namespace
+}  // namespace dynpos::scenario
