@@ -112,7 +112,8 @@ void register_capability(CLI::App& app) {
     }
     for (const char* option : {"--rows", "--after", "--seeds", "--observer"}) {
       if (sub->count(option) > 0) {
-        throw analysis::option_error(option + 2, fmt::format("{} is an option of --transient", option),
+        throw analysis::option_error(option + 2,
+                                     fmt::format("{} is an option of --transient", option),
                                      "add --level 3 --transient --failure NAME");
       }
     }

@@ -34,12 +34,11 @@ nlohmann::json run_json(const capability::TransientRun& r) {
 
 capability::TransientOptions transient_options(const CapabilityRequest& q) {
   if (q.level != 3) {
-    throw option_error("transient", "the failure as it happens is a level 3 run",
-                       "add --level 3");
+    throw option_error("transient", "the failure as it happens is a level 3 run", "add --level 3");
   }
   if (q.failure == "none" || q.failure == "worst" || !q.worst_of.empty()) {
-    throw option_error("failure", fmt::format("--transient trips one named failure, not '{}'",
-                                              q.failure),
+    throw option_error("failure",
+                       fmt::format("--transient trips one named failure, not '{}'", q.failure),
                        "name the worst-case failure: a unit, group:NAME or an actuator of the "
                        "model (port, stb, tunnel, rudder.port, rudder.stb)");
   }

@@ -137,8 +137,8 @@ std::vector<TransientPoint> transient_footprint(const scenario::VesselConfig& ve
         p.time_to_peak_s = r.time_to_peak_s;
       }
       p.peak_heading_deg = std::max(p.peak_heading_deg, r.peak_heading_deg);
-      p.holds = p.holds && r.peak_excursion_m <= o.footprint_m &&
-                r.peak_heading_deg <= o.footprint_deg;
+      p.holds =
+          p.holds && r.peak_excursion_m <= o.footprint_m && r.peak_heading_deg <= o.footprint_deg;
     }
   }
   return points;

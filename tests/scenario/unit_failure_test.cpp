@@ -55,9 +55,13 @@ TEST(UnitFailure, NamesTheModelsActuatorsAndLayoutUnitsAndGroups) {
   const VesselConfig layout = vessel("gunnerus-2015.toml");
   const UnitFailure group({10.0, "group:port"}, layout);
   EXPECT_EQ(group.units(layout), (std::vector<std::string>{"pod_port", "tunnel"}));
-  EXPECT_THAT(error_of([&] { UnitFailure({1.0, "bow3"}, layout); }),
+  EXPECT_THAT(error_of([&] {
+                UnitFailure({1.0, "bow3"}, layout);
+              }),
               ::testing::HasSubstr("no unit or group 'bow3'"));
-  EXPECT_THAT(error_of([&] { UnitFailure({1.0, "port+rudder"}, vessel()); }),
+  EXPECT_THAT(error_of([&] {
+                UnitFailure({1.0, "port+rudder"}, vessel());
+              }),
               ::testing::HasSubstr("unknown actuator 'rudder'"));
 }
 
@@ -118,7 +122,8 @@ TEST(ScenarioEvents, FileKeysAndTheirErrors) {
   std::filesystem::create_directories(dir);
   const auto load = [&](const std::string& extra) {
     const auto path = dir / "s.toml";
-    std::ofstream(path) << "name = \"s\"\nduration_s = 100\n" << extra
+    std::ofstream(path) << "name = \"s\"\nduration_s = 100\n"
+                        << extra
                         << "\n[[setpoint]]\nt_s = 0\nnorth_m = 0\neast_m = 0\nheading_deg = 0\n";
     return load_scenario(path);
   };
@@ -137,8 +142,9 @@ TEST(ScenarioEvents, FileKeysAndTheirErrors) {
               ::testing::HasSubstr("failure_at_s"));
   EXPECT_THAT(error_of([&] { load("failure_at_s = 5"); }), ::testing::HasSubstr("failure"));
   EXPECT_THAT(error_of([&] {
-                load("[[gnss_dropout]]\nt_s = 20\nduration_s = 30\n"
-                     "[[gnss_dropout]]\nt_s = 40\nduration_s = 5");
+                load(
+                    "[[gnss_dropout]]\nt_s = 20\nduration_s = 30\n"
+                    "[[gnss_dropout]]\nt_s = 40\nduration_s = 5");
               }),
               ::testing::HasSubstr("not overlap"));
   std::filesystem::remove_all(dir);

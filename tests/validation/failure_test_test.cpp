@@ -58,8 +58,7 @@ analysis::FailureTestReport failure_test(const std::filesystem::path& log,
                                          const Eigen::Vector3d& arm_b) {
   analysis::FailureTestRequest q;
   q.source.log = log;
-  q.source.columns = {"north=gnss1.north", "east=gnss1.east", "roll=mru1.roll",
-                      "pitch=mru1.pitch"};
+  q.source.columns = {"north=gnss1.north", "east=gnss1.east", "roll=mru1.roll", "pitch=mru1.pitch"};
   q.arm_m = arm_b;
   return analysis::run_failure_test(q);
 }
@@ -77,7 +76,8 @@ TEST(FailureTestOnTheVirtualTrial, TheTripIsFoundWithTheTrueExcursionAndRecovery
       const scenario::TrialTruth truth = simulate(name, seed, dir);
       ASSERT_TRUE(truth.failure);
       const scenario::FailureTruth& f = *truth.failure;
-      const analysis::FailureTestReport r = failure_test(dir / "log.csv", truth.lever_arms.at("gnss1"));
+      const analysis::FailureTestReport r =
+          failure_test(dir / "log.csv", truth.lever_arms.at("gnss1"));
       ASSERT_EQ(r.result.events.size(), 1u);
       const ident::FailureEvent& e = r.result.events.front();
       EXPECT_NEAR(e.time_s, f.time_s, 2.5);
@@ -89,11 +89,12 @@ TEST(FailureTestOnTheVirtualTrial, TheTripIsFoundWithTheTrueExcursionAndRecovery
       if (e.recovery_s && f.recovery_s) {
         EXPECT_NEAR(*e.recovery_s, *f.recovery_s, 15.0);
       }
-      std::printf("%s seed %llu: time %.2f (true %.2f) s, peak %.2f (true %.2f) m, recovery %.1f "
-                  "(true %.1f) s (-1: never)\n",
-                  name.c_str(), static_cast<unsigned long long>(seed), e.time_s, f.time_s,
-                  *e.peak_excursion_m, f.peak_excursion_m, e.recovery_s.value_or(-1.0),
-                  f.recovery_s.value_or(-1.0));
+      std::printf(
+          "%s seed %llu: time %.2f (true %.2f) s, peak %.2f (true %.2f) m, recovery %.1f "
+          "(true %.1f) s (-1: never)\n",
+          name.c_str(), static_cast<unsigned long long>(seed), e.time_s, f.time_s,
+          *e.peak_excursion_m, f.peak_excursion_m, e.recovery_s.value_or(-1.0),
+          f.recovery_s.value_or(-1.0));
       std::filesystem::remove_all(dir);
     }
   }

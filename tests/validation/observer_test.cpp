@@ -62,8 +62,8 @@ struct Figures {
   double lf_error_rms_m = 0.0;
   double wf_rms_m = 0.0;
   double heading_error_rms_deg = 0.0;
-  Eigen::Vector3d bias_mean_b = Eigen::Vector3d::Zero();  // b̂ in BODY [N, N, N·m]
-  Eigen::Vector3d load_mean_b = Eigen::Vector3d::Zero();  // the true load in BODY
+  Eigen::Vector3d bias_mean_b = Eigen::Vector3d::Zero();      // b̂ in BODY [N, N, N·m]
+  Eigen::Vector3d load_mean_b = Eigen::Vector3d::Zero();      // the true load in BODY
   Eigen::Vector3d wave_band_power = Eigen::Vector3d::Zero();  // of τ_d [N², N², (N·m)²]
   double position_std_m = 0.0;                                // LF, horizontal
 };
@@ -112,9 +112,8 @@ Figures figures(const core::Log& log) {
     if (!observed) continue;
     lf2 += std::pow(log.values("observer.north")[i] - lf_n[i], 2) +
            std::pow(log.values("observer.east")[i] - lf_e[i], 2);
-    psi2 += std::pow(std::remainder(log.values("observer.heading")[i] - lf_psi[i],
-                                    2.0 * std::numbers::pi),
-                     2);
+    psi2 += std::pow(
+        std::remainder(log.values("observer.heading")[i] - lf_psi[i], 2.0 * std::numbers::pi), 2);
     f.bias_mean_b += body("observer.bias");
   }
   const double k = static_cast<double>(count);
@@ -126,7 +125,8 @@ Figures figures(const core::Log& log) {
   f.position_std_m = std::sqrt(snn / k - sn * sn / (k * k) + see / k - se * se / (k * k));
   const std::size_t half = static_cast<std::size_t>(std::lround(8.0 * 10.0));  // 8 s at 10 Hz
   const char* const dofs[] = {"demand.surge", "demand.sway", "demand.yaw"};
-  for (int d = 0; d < 3; ++d) f.wave_band_power[d] = wave_band_power(log.values(dofs[d]), from, half);
+  for (int d = 0; d < 3; ++d)
+    f.wave_band_power[d] = wave_band_power(log.values(dofs[d]), from, half);
   return f;
 }
 
@@ -157,8 +157,7 @@ void heading_error_rms(const Trial& at45);
 
 TEST(ObserverTrial, FiguresOfThePureDpTrialAt45DegreesAndHeadOn) {
   const Trial at45 = run_trial(
-      {ObserverKind::kIdeal, ObserverKind::kPassive, ObserverKind::kEkf, ObserverKind::kRaw},
-      45.0);
+      {ObserverKind::kIdeal, ObserverKind::kPassive, ObserverKind::kEkf, ObserverKind::kRaw}, 45.0);
   low_frequency_position_error_is_a_fraction_of_the_wave_motion(at45);
   bias_mean_is_the_true_environmental_load(at45);
   filtered_demand_has_little_wave_band_power(at45);
@@ -196,9 +195,9 @@ void bias_mean_is_the_true_environmental_load(const Trial& at45_all) {
                                     << " b̂ " << f.bias_mean_b[d] << " true " << f.load_mean_b[d];
       }
     }
-    std::printf("%s: bias mean error, worst of %d seeds: surge %.1f %%, sway %.1f %%, yaw %.1f %%\n",
-                observer_name(kind).data(), kSeeds, 100 * worst.x(), 100 * worst.y(),
-                100 * worst.z());
+    std::printf(
+        "%s: bias mean error, worst of %d seeds: surge %.1f %%, sway %.1f %%, yaw %.1f %%\n",
+        observer_name(kind).data(), kSeeds, 100 * worst.x(), 100 * worst.y(), 100 * worst.z());
   }
 }
 
@@ -207,8 +206,11 @@ void filtered_demand_has_little_wave_band_power(const Trial& at45_all) {
   for (ObserverKind kind : {ObserverKind::kPassive, ObserverKind::kEkf}) {
     Eigen::Vector3d worst = Eigen::Vector3d::Zero();
     for (int s = 0; s < kSeeds; ++s) {
-      const Eigen::Vector3d ratio = at45_all[static_cast<std::size_t>(kind)][static_cast<std::size_t>(s)].wave_band_power.cwiseQuotient(
-          at45_all[static_cast<std::size_t>(ObserverKind::kRaw)][static_cast<std::size_t>(s)].wave_band_power);
+      const Eigen::Vector3d ratio =
+          at45_all[static_cast<std::size_t>(kind)][static_cast<std::size_t>(s)]
+              .wave_band_power.cwiseQuotient(at45_all[static_cast<std::size_t>(ObserverKind::kRaw)]
+                                                     [static_cast<std::size_t>(s)]
+                                                         .wave_band_power);
       worst = worst.cwiseMax(ratio);
       for (int d = 0; d < 3; ++d) {
         EXPECT_LE(ratio[d], 0.3) << observer_name(kind) << " seed " << s + 1 << " dof " << d;
@@ -229,11 +231,15 @@ void stationkeeping_on_an_observer_is_close_to_the_ideal_one(const Trial& at45_a
     const double bound = kind == ObserverKind::kPassive ? 1.3 : 2.6;
     double worst = 0.0;
     for (int s = 0; s < kSeeds; ++s) {
-      const double ratio = at45_all[static_cast<std::size_t>(kind)][static_cast<std::size_t>(s)].position_std_m /
-                           at45_all[static_cast<std::size_t>(ObserverKind::kIdeal)][static_cast<std::size_t>(s)].position_std_m;
+      const double ratio =
+          at45_all[static_cast<std::size_t>(kind)][static_cast<std::size_t>(s)].position_std_m /
+          at45_all[static_cast<std::size_t>(ObserverKind::kIdeal)][static_cast<std::size_t>(s)]
+              .position_std_m;
       worst = std::max(worst, ratio);
-      EXPECT_LE(ratio, bound) << observer_name(kind) << " seed " << s + 1 << ": "
-                              << at45_all[static_cast<std::size_t>(kind)][static_cast<std::size_t>(s)].position_std_m << " m";
+      EXPECT_LE(ratio, bound)
+          << observer_name(kind) << " seed " << s + 1 << ": "
+          << at45_all[static_cast<std::size_t>(kind)][static_cast<std::size_t>(s)].position_std_m
+          << " m";
     }
     std::printf("%s: LF position std over the ideal observer's, worst: %.3f\n",
                 observer_name(kind).data(), worst);
@@ -249,7 +255,8 @@ void heading_error_rms(const Trial& at45_all) {
   for (ObserverKind kind : {ObserverKind::kPassive, ObserverKind::kEkf}) {
     double worst = 0.0;
     for (int s = 0; s < kSeeds; ++s) {
-      const double e = at45_all[static_cast<std::size_t>(kind)][static_cast<std::size_t>(s)].heading_error_rms_deg;
+      const double e = at45_all[static_cast<std::size_t>(kind)][static_cast<std::size_t>(s)]
+                           .heading_error_rms_deg;
       worst = std::max(worst, e);
       EXPECT_LE(e, 0.3) << observer_name(kind) << " at 45°, seed " << s + 1;
     }
@@ -283,8 +290,8 @@ TEST(ObserverDropout, CoastsThroughThirtySecondsWithoutGnss) {
     const scenario::ScenarioRun run = scenario::run_scenario(spec, vessel, job % kSeeds + 1);
     const core::Log& log = run.truth_log;
     const auto& t = log.time();
-    const std::size_t i = static_cast<std::size_t>(
-        std::lower_bound(t.begin(), t.end(), 630.0 - 1e-9) - t.begin());
+    const std::size_t i =
+        static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), 630.0 - 1e-9) - t.begin());
     error_m[job] = std::hypot(log.values("observer.north")[i] - log.values("lf.north")[i],
                               log.values("observer.east")[i] - log.values("lf.east")[i]);
   });

@@ -38,7 +38,7 @@ struct TransientOptions {
   unsigned seeds = 1;                ///< runs per point, 1 … 1000
   std::uint64_t seed = 1;            ///< the first run's seed
   control::ObserverKind observer = control::ObserverKind::kIdeal;  ///< what the DP loop runs on
-  unsigned jobs = 0;                                                ///< parallel runs; 0 = every core
+  unsigned jobs = 0;  ///< parallel runs; 0 = every core
   /// Throws core::InputError naming the first bad option (request keys: rows, direction_step,
   /// settle, after, footprint, footprint_deg, seeds).
   void validate() const;
@@ -47,9 +47,9 @@ struct TransientOptions {
 /// One run of a point.
 struct TransientRun {
   std::uint64_t seed = 0;
-  double peak_excursion_m = 0.0;    ///< from the pre-failure mean position [m]
-  double time_to_peak_s = 0.0;      ///< from the failure [s]
-  double peak_heading_deg = 0.0;    ///< |heading − pre-failure mean| [deg]
+  double peak_excursion_m = 0.0;     ///< from the pre-failure mean position [m]
+  double time_to_peak_s = 0.0;       ///< from the failure [s]
+  double peak_heading_deg = 0.0;     ///< |heading − pre-failure mean| [deg]
   std::optional<double> recovery_s;  ///< back within the pre-failure footprint; none: never
   /// The true environmental load's mean over the pre-failure minute (BODY) [N, N, N·m].
   Eigen::Vector3d load_b = Eigen::Vector3d::Zero();
