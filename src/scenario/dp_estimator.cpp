@@ -19,7 +19,8 @@ double gnss_std_m(const VesselConfig& vessel) {
 }
 
 double rate_std_rad_s(const VesselConfig& vessel) {
-  return vessel.sensors.mru.empty() ? core::deg_to_rad(0.03) : vessel.sensors.mru.front().rate_std_rad_s;
+  return vessel.sensors.mru.empty() ? core::deg_to_rad(0.03)
+                                    : vessel.sensors.mru.front().rate_std_rad_s;
 }
 
 }  // namespace

@@ -274,8 +274,9 @@ TEST(PassiveObserver, RejectsABadModelOrTuning) {
   ObserverModel bad = model;
   bad.M(1, 1) = 0.0;
   gains_throw(bad, {}, "M must be");
-  EXPECT_THROW(PassiveObserver(bad, passive_observer_gains(model, kTuning), Eigen::Vector3d::Zero()),
-               std::invalid_argument);
+  EXPECT_THROW(
+      PassiveObserver(bad, passive_observer_gains(model, kTuning), Eigen::Vector3d::Zero()),
+      std::invalid_argument);
   bad = model;
   bad.wave_peak_frequency_rad_s = Eigen::Vector3d::Zero();
   gains_throw(bad, {}, "wave peak frequency");

@@ -62,8 +62,8 @@ struct Figures {
   double lf_error_rms_m = 0.0;
   double wf_rms_m = 0.0;
   double heading_error_rms_deg = 0.0;
-  Eigen::Vector3d bias_mean_b = Eigen::Vector3d::Zero();  // b̂ in BODY [N, N, N·m]
-  Eigen::Vector3d load_mean_b = Eigen::Vector3d::Zero();  // the true load in BODY
+  Eigen::Vector3d bias_mean_b = Eigen::Vector3d::Zero();      // b̂ in BODY [N, N, N·m]
+  Eigen::Vector3d load_mean_b = Eigen::Vector3d::Zero();      // the true load in BODY
   Eigen::Vector3d wave_band_power = Eigen::Vector3d::Zero();  // of τ_d [N², N², (N·m)²]
   double position_std_m = 0.0;                                // LF, horizontal
 };
@@ -112,9 +112,8 @@ Figures figures(const core::Log& log) {
     if (!observed) continue;
     lf2 += std::pow(log.values("observer.north")[i] - lf_n[i], 2) +
            std::pow(log.values("observer.east")[i] - lf_e[i], 2);
-    psi2 += std::pow(std::remainder(log.values("observer.heading")[i] - lf_psi[i],
-                                    2.0 * std::numbers::pi),
-                     2);
+    psi2 += std::pow(
+        std::remainder(log.values("observer.heading")[i] - lf_psi[i], 2.0 * std::numbers::pi), 2);
     f.bias_mean_b += body("observer.bias");
   }
   const double k = static_cast<double>(count);
@@ -126,7 +125,8 @@ Figures figures(const core::Log& log) {
   f.position_std_m = std::sqrt(snn / k - sn * sn / (k * k) + see / k - se * se / (k * k));
   const std::size_t half = static_cast<std::size_t>(std::lround(8.0 * 10.0));  // 8 s at 10 Hz
   const char* const dofs[] = {"demand.surge", "demand.sway", "demand.yaw"};
-  for (int d = 0; d < 3; ++d) f.wave_band_power[d] = wave_band_power(log.values(dofs[d]), from, half);
+  for (int d = 0; d < 3; ++d)
+    f.wave_band_power[d] = wave_band_power(log.values(dofs[d]), from, half);
   return f;
 }
 
@@ -188,9 +188,9 @@ TEST_F(ObserverTrial, BiasMeanIsTheTrueEnvironmentalLoad) {
                                     << " b̂ " << f.bias_mean_b[d] << " true " << f.load_mean_b[d];
       }
     }
-    std::printf("%s: bias mean error, worst of %d seeds: surge %.1f %%, sway %.1f %%, yaw %.1f %%\n",
-                observer_name(kind).data(), kSeeds, 100 * worst.x(), 100 * worst.y(),
-                100 * worst.z());
+    std::printf(
+        "%s: bias mean error, worst of %d seeds: surge %.1f %%, sway %.1f %%, yaw %.1f %%\n",
+        observer_name(kind).data(), kSeeds, 100 * worst.x(), 100 * worst.y(), 100 * worst.z());
   }
 }
 
@@ -198,8 +198,9 @@ TEST_F(ObserverTrial, FilteredDemandHasLittleWaveBandPowerAgainstTheRawMeasureme
   for (ObserverKind kind : {ObserverKind::kPassive, ObserverKind::kEkf}) {
     Eigen::Vector3d worst = Eigen::Vector3d::Zero();
     for (int s = 0; s < kSeeds; ++s) {
-      const Eigen::Vector3d ratio = at45(kind)[static_cast<std::size_t>(s)].wave_band_power.cwiseQuotient(
-          at45(ObserverKind::kRaw)[static_cast<std::size_t>(s)].wave_band_power);
+      const Eigen::Vector3d ratio =
+          at45(kind)[static_cast<std::size_t>(s)].wave_band_power.cwiseQuotient(
+              at45(ObserverKind::kRaw)[static_cast<std::size_t>(s)].wave_band_power);
       worst = worst.cwiseMax(ratio);
       for (int d = 0; d < 3; ++d) {
         EXPECT_LE(ratio[d], 0.3) << observer_name(kind) << " seed " << s + 1 << " dof " << d;
@@ -272,8 +273,8 @@ TEST(ObserverDropout, CoastsThroughThirtySecondsWithoutGnss) {
     const scenario::ScenarioRun run = scenario::run_scenario(spec, vessel, job % kSeeds + 1);
     const core::Log& log = run.truth_log;
     const auto& t = log.time();
-    const std::size_t i = static_cast<std::size_t>(
-        std::lower_bound(t.begin(), t.end(), 630.0 - 1e-9) - t.begin());
+    const std::size_t i =
+        static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), 630.0 - 1e-9) - t.begin());
     error_m[job] = std::hypot(log.values("observer.north")[i] - log.values("lf.north")[i],
                               log.values("observer.east")[i] - log.values("lf.east")[i]);
   });

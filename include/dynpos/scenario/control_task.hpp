@@ -122,7 +122,7 @@ class ControlTask {
   std::optional<UnitFailure> failure_;
   bool failure_applied_ = false;
   model::ThrustAllocationOptions allocation_options_;  // the vessel's, for a failure
-  std::vector<double> capacity_;                      // a layout's units' capacity now
+  std::vector<double> capacity_;                       // a layout's units' capacity now
   Eigen::Vector3d dp_demand_b_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d demand_pct_;
   ActuatorCommands commands_;

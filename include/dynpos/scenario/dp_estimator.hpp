@@ -6,9 +6,9 @@
 /// components as the loggers', sampled at the control rate) plus white noise of the vessel's first
 /// GNSS receiver and its gyro; a GNSS dropout (ScenarioSpec::gnss_dropouts) leaves the position
 /// missing. Its rate gyro (the first MRU's) measures the yaw rate, LF plus WF, with the MRU's rate
-/// noise; the EKF uses it. The observer (control/passive_observer.hpp, control/ekf_observer.hpp) filters it with
-/// the thrust the actuators give (the DP system's thrust feedback) on the controller's model M, D
-/// and the wave peak frequency 2π/T_p of the scenario's sea.
+/// noise; the EKF uses it. The observer (control/passive_observer.hpp, control/ekf_observer.hpp)
+/// filters it with the thrust the actuators give (the DP system's thrust feedback) on the
+/// controller's model M, D and the wave peak frequency 2π/T_p of the scenario's sea.
 ///
 /// "ideal" hands the controller the true low-frequency motion; "raw" the measurement itself with
 /// the measured velocity (low- plus wave-frequency), as a DP system without a wave filter would.
