@@ -162,8 +162,9 @@ class Field {
     if (!value_.is_number()) fail("is not a number");
     return value_.get<double>();
   }
+  // A number that may be absent: a missing key or null (e.g. a failure's recovery_s, "never").
   std::optional<double> optional_number(const char* name) const {
-    if (!has(name)) return std::nullopt;
+    if (!has(name) || (*this)[name].is_null()) return std::nullopt;
     return (*this)[name].number();
   }
   std::string string() const {
