@@ -24,10 +24,11 @@ from ._dynpos import InputError, Log
 __version__: str = _dynpos.__version__
 
 __all__ = [
-    "InputError", "Log", "Result", "Simulation", "read_log", "identify_step",
+    "InputError", "Log", "Result", "Estimate", "Simulation", "read_log", "identify_step",
     "identify_thrust_map", "identify_agility", "identify_four_corner",
-    "identify_station_keeping", "leverarm_gnss", "leverarm_mru", "hybrid_case", "hybrid_vessel",
-    "compare", "capability", "capability_loads", "montecarlo", "simulate", "scenarios",
+    "identify_station_keeping", "identify_failure_test", "leverarm_gnss", "leverarm_mru",
+    "estimate", "consequence", "hybrid_case", "hybrid_vessel", "compare", "capability",
+    "capability_loads", "montecarlo", "simulate", "scenarios",
 ]
 
 
@@ -72,6 +73,31 @@ class Result:
 
     def __repr__(self) -> str:
         return f"Result({', '.join(sorted(self._data))})"
+
+
+class Estimate(Result):
+    """The result of :func:`estimate`: the summary (``to_dict()`` is the CLI's ``--json``
+    document) and ``series``, the observer's time series as a :class:`Log` in SI, named as
+    truth.csv names the true motion: ``lf.north``, ``lf.east`` [m], ``lf.heading`` [rad,
+    0–2π), ``lf.u``, ``lf.v`` [m/s], ``lf.r`` [rad/s] and the bias b̂ in NED, ``bias.north``,
+    ``bias.east`` [N], ``bias.yaw`` [N·m]; one row per observer step. ``to_frame()`` is the
+    series as a pandas DataFrame (``time`` [s] first)."""
+
+    def __init__(self, data: Mapping[str, Any], series: Log):
+        super().__init__(data)
+        self.series = series
+
+    def to_frame(self, key: str | None = None):
+        if key is not None:
+            return super().to_frame(key)
+        import pandas  # optional: only to_frame needs it
+
+        columns = {"time": self.series.time}
+        columns.update({name: self.series[name] for name in self.series.channels})
+        return pandas.DataFrame(columns)
+
+    def __dir__(self):
+        return sorted(set(super().__dir__()) | {"series"})
 
 
 def _wrap(value):
@@ -331,6 +357,21 @@ def identify_station_keeping(log, col=None, unit=None, map=None, *, json=None,
     return Result(_json.loads(_dynpos.run_station_keeping(q, _path(json))), "windows")
 
 
+def identify_failure_test(log, col=None, unit=None, map=None, *, json=None,
+                          **options) -> Result:
+    """Thruster failure test (DP annual trials, IMCA M 190; FMEA proving trials): each trip
+    found in the units' feedback (``thrust.NAME``, else ``rpm.NAME``) with the control origin's
+    peak excursion from its pre-failure mean [m], time to peak [s], recovery [s] (back within
+    the pre-failure footprint for ``hold``; None if never), peak heading change [deg] and the
+    other units' redistribution. Roles: time; north, east [m] or lat, lon; heading; roll, pitch
+    (with an arm's Z). Options as ``dynpos identify failure-test``: ``arm`` ((X, Y) or (X, Y, Z)
+    [m], BODY, of the antenna whose position is logged: a tuple, list, numpy array or "X,Y,Z"),
+    ``rpm``, ``from_``, ``to``, ``pre_window``, ``redistribution_window``, ``hold``,
+    ``response_window``, ``max_fall``, ``min_off`` [s]. Table: ``events``."""
+    q = _request(_dynpos.FailureTestRequest, log, col, unit, map, options)
+    return Result(_json.loads(_dynpos.run_failure_test(q, _path(json))), "events")
+
+
 def leverarm_gnss(log, col=None, unit=None, map=None, *, json=None, plots=None,
                   **options) -> Result:
     """GNSS antenna (and further MRU) lever arms [m, BODY]: from the logger alone by GNSS/INS
@@ -355,6 +396,35 @@ def leverarm_mru(log, col=None, unit=None, map=None, *, json=None, plots=None,
     q = _request(_dynpos.LeverarmMruRequest, log, col, unit, map, options)
     doc = _dynpos.run_leverarm_mru(q, _path(json), _path(plots, "plots"))
     return Result(_json.loads(doc), "arms")
+
+
+def estimate(log, col=None, unit=None, map=None, *, json=None, out=None,
+             **options) -> Estimate:
+    """The DP observer run over a logged DP run, as the DP system's own would have run: the
+    low-frequency motion and the bias b̂ (the environmental load the thrusters held against,
+    NED) as a time series (:class:`Estimate` ``series``, SI), and b̂'s mean and spread after
+    ``settle``. Roles: time; north, east [m] or lat, lon; heading; roll, pitch (with an arm's
+    Z); per unit of the vessel ``thrust.NAME`` and its ``rudder.NAME`` or ``azimuth.NAME``.
+    Options as ``dynpos estimate``: ``vessel`` (file), ``arm`` ((X, Y) or (X, Y, Z) [m]),
+    ``observer`` ("ekf", "passive"), ``tp`` [s] (the wave peak period the wave model is set
+    for), ``rate`` [Hz], ``max_hold``, ``settle``, ``from_``, ``to`` [s]; ``out`` (the series'
+    CSV as the CLI writes it: deg, kN)."""
+    q = _request(_dynpos.EstimateRequest, log, col, unit, map, options)
+    doc, series = _dynpos.run_estimate(q, _path(json), _path(out, "out"))
+    return Estimate(_json.loads(doc), series)
+
+
+def consequence(log, col=None, unit=None, map=None, *, json=None, out=None,
+                **options) -> Result:
+    """Consequence analysis (DNV-RU-SHIP Pt.6 Ch.3) along a logged DP run: every ``step`` the
+    observer's b̂ (as :func:`estimate`), averaged over ``window`` and taken into BODY at the
+    estimated heading, is the load; for each single failure of the vessel the largest factor λ
+    of it the remaining thrusters hold, and the margin λ − 1 of the worst case (negative:
+    position would have been lost). Options: those of :func:`estimate`, and ``step``,
+    ``window`` [s]; ``out`` (the points' CSV). Table: ``per_case``."""
+    q = _request(_dynpos.ConsequenceRequest, log, col, unit, map, options)
+    doc = _dynpos.run_consequence(q, _path(json), _path(out, "out"))
+    return Result(_json.loads(doc), "per_case")
 
 
 def hybrid_case(case: str = "first-order", *, json=None, out=None, **options) -> Result:
@@ -437,32 +507,32 @@ def montecarlo(scenario: str, seeds: str | tuple[int, int] = (1, 10), *, json=No
 
 class Simulation:
     """A virtual sea-trial run: ``log`` (the trial logger, SI), ``truth`` (truth.json as a
-    dict), ``motion`` (the true motion and actuator states, truth.csv) and ``out`` (its folder,
-    None when it was temporary)."""
+    dict), ``motion`` (every column of truth.csv, SI: the true motion and actuator states, and
+    in DP runs ``lf.*``, ``env_load.*``, ``demand.*`` and with an observer ``observer.*``;
+    commands and levers as fractions) and ``out`` (its folder, None when it was temporary)."""
 
     def __init__(self, folder: str, out: str | None):
         self.out = out
         self.log = read_log(os.path.join(folder, "log.csv"))
-        truth_csv = os.path.join(folder, "truth.csv")
-        with open(truth_csv, encoding="utf-8") as f:
-            names = [c.split(" [")[0] for c in f.readline().strip().split(",")]
-        # The true commands are fractions in truth.csv, percent as a logger's role: left out.
-        self.motion = read_log(truth_csv, roles=[n for n in names if not n.startswith("command.")])
+        self.motion = _dynpos.read_csv_all(os.path.join(folder, "truth.csv"))
         with open(os.path.join(folder, "truth.json"), encoding="utf-8") as f:
             self.truth = _json.load(f)
 
 
 def simulate(scenario: str, seed: int = 1, out=None, duration: float | None = None,
-             vessel=None, log_rate: float | None = None, jobs: int = 0):
+             vessel=None, log_rate: float | None = None, jobs: int = 0,
+             observer: str | None = None):
     """Runs a scenario of the virtual R/V Gunnerus (a built-in name such as
     ``"turning-circle"``, see :func:`scenarios`, or a .toml file) with a master seed: the same
     seed gives the same log, bit for bit (``jobs``: campaign runs at once, 0 = every core). The files go to ``out`` as ``dynpos simulate --out``
-    writes them (a temporary folder, removed after reading, when not given). Returns a
+    writes them (a temporary folder, removed after reading, when not given). ``observer``
+    (DP scenarios): what the DP controller runs on, ``"ideal"`` (the true low-frequency
+    motion), ``"passive"``, ``"ekf"`` or ``"raw"``; None: the scenario's. Returns a
     :class:`Simulation`; for ``"campaign"`` a dict of them by scenario name."""
     q = _dynpos.SimulateRequest()
     q.scenario = _fspath(scenario, "scenario")
     for key, value in (("seed", seed), ("duration", duration), ("log_rate", log_rate),
-                       ("jobs", jobs)):
+                       ("jobs", jobs), ("observer", observer)):
         _set(q, key, value)
     if vessel is not None:
         q.vessel = _fspath(vessel, "vessel")

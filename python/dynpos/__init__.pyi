@@ -13,6 +13,8 @@ _Path = str | os.PathLike[str]
 _Pairs = Mapping[str, Any] | Sequence[str] | str | None
 _LogLike = _Path | Log | Any  # a path, a Log or a pandas DataFrame
 _Vec3 = tuple[float, float, float] | Sequence[float] | numpy.typing.ArrayLike | str  # X,Y,Z
+_Arm = (tuple[float, float] | tuple[float, float, float] | Sequence[float]
+        | numpy.typing.ArrayLike | str)  # X,Y[,Z]
 
 __version__: str  # the command's --version
 
@@ -53,6 +55,12 @@ class Result:
     def __getattr__(self, name: str) -> Any: ...
     def __getitem__(self, name: str) -> Any: ...
     def __contains__(self, name: str) -> bool: ...
+
+class Estimate(Result):
+    """estimate()'s result: the summary, and the observer's time series in SI."""
+
+    series: Log
+    def __init__(self, data: Mapping[str, Any], series: Log) -> None: ...
 
 class Simulation:
     out: str | None
@@ -111,6 +119,16 @@ def identify_station_keeping(log: _LogLike, col: _Pairs = None, unit: _Pairs = N
                              max_gap: float = ..., format: str = ..., strict: bool = ...,
                              time_format: str = ..., date: str = ...,
                              time_order: str = ..., jobs: int = ...) -> Result: ...
+def identify_failure_test(log: _LogLike, col: _Pairs = None, unit: _Pairs = None,
+                          map: _Path | None = None, *, json: _Path | None = None,
+                          arm: _Arm | None = ..., rpm: bool = ...,
+                          from_: float | None = ..., to: float | None = ...,
+                          pre_window: float = ..., redistribution_window: float = ...,
+                          hold: float = ..., response_window: float = ...,
+                          max_fall: float = ..., min_off: float = ...,
+                          clock_offset: _Pairs = ..., max_gap: float = ..., format: str = ...,
+                          strict: bool = ..., time_format: str = ..., date: str = ...,
+                          time_order: str = ..., jobs: int = ...) -> Result: ...
 def leverarm_gnss(log: _LogLike, col: _Pairs = None, unit: _Pairs = None,
                   map: _Path | None = None, *, json: _Path | None = None,
                   plots: _Path | None = None,
@@ -136,6 +154,23 @@ def leverarm_mru(log: _LogLike, col: _Pairs = None, unit: _Pairs = None,
                  tau_s: float = ..., w1: float = ..., clock_offset: _Pairs = ...,
                  max_gap: float = ..., format: str = ..., strict: bool = ...,
                  time_format: str = ..., date: str = ..., time_order: str = ..., jobs: int = ...) -> Result: ...
+def estimate(log: _LogLike, col: _Pairs = None, unit: _Pairs = None,
+             map: _Path | None = None, *, json: _Path | None = None, out: _Path | None = None,
+             vessel: _Path = ..., arm: _Arm | None = ...,
+             observer: Literal["ekf", "passive"] = ..., tp: float = ..., rate: float = ...,
+             max_hold: float = ..., settle: float = ..., from_: float | None = ...,
+             to: float | None = ..., clock_offset: _Pairs = ..., max_gap: float = ...,
+             format: str = ..., strict: bool = ..., time_format: str = ..., date: str = ...,
+             time_order: str = ..., jobs: int = ...) -> Estimate: ...
+def consequence(log: _LogLike, col: _Pairs = None, unit: _Pairs = None,
+                map: _Path | None = None, *, json: _Path | None = None,
+                out: _Path | None = None, vessel: _Path = ..., arm: _Arm | None = ...,
+                observer: Literal["ekf", "passive"] = ..., tp: float = ..., rate: float = ...,
+                max_hold: float = ..., settle: float = ..., from_: float | None = ...,
+                to: float | None = ..., step: float = ..., window: float = ...,
+                clock_offset: _Pairs = ..., max_gap: float = ..., format: str = ...,
+                strict: bool = ..., time_format: str = ..., date: str = ...,
+                time_order: str = ..., jobs: int = ...) -> Result: ...
 def hybrid_case(case: Literal["first-order", "dp"] = "first-order", *,
                 json: _Path | None = None, out: _Path | None = None, no_jumps: bool = ...,
                 sampled: bool = ..., seed: int = ..., lambda_: float | None = ...,
@@ -165,5 +200,7 @@ def montecarlo(scenario: str, seeds: str | tuple[int, int] = ..., *, json: _Path
                work_dir: _Path = ...) -> Result: ...
 def simulate(scenario: str, seed: int = 1, out: _Path | None = None,
              duration: float | None = None, vessel: _Path | None = None,
-             log_rate: float | None = None, jobs: int = 0) -> Simulation | dict[str, Simulation]: ...
+             log_rate: float | None = None, jobs: int = 0,
+             observer: Literal["ideal", "passive", "ekf", "raw"] | None = None
+             ) -> Simulation | dict[str, Simulation]: ...
 def scenarios() -> dict[str, str]: ...

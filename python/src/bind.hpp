@@ -5,7 +5,9 @@
 
 #include <pybind11/pybind11.h>
 
+#include <Eigen/Core>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "dynpos/analysis/outputs.hpp"
@@ -19,6 +21,16 @@ void bind_log(py::module_& m);       // Log, LogSource, read_log
 void bind_identify(py::module_& m);  // step, thrust map, agility, four-corner, station keeping
 void bind_calib(py::module_& m);     // GNSS and MRU lever arms
 void bind_control(py::module_& m);   // hybrid case studies and vessel, simulate, compare
+void bind_estimate(py::module_& m);  // the DP observer over a log, the consequence analysis
+
+/// An antenna's lever arm keyword (`key`, BODY [m]): (X, Y) or (X, Y, Z) as a sequence or a
+/// numpy array, or the text "X,Y[,Z]" (the CLI's); Z is 0 when left out; None: no arm. Not two
+/// or three numbers: option_error naming `key`. A value that is not finite is the request's to
+/// refuse (validate), with the CLI's message.
+std::optional<Eigen::Vector3d> antenna_arm(const py::handle& value, const char* key);
+
+/// An arm as a numpy array (x, y, z), or None.
+py::object arm_or_none(const std::optional<Eigen::Vector3d>& arm);
 
 /// Runs `run(request)` without the GIL, writes what `outputs` names by the analysis'
 /// write_outputs (as the CLI does) and returns the report's JSON text. The caller checks the

@@ -12,9 +12,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "bind.hpp"
@@ -147,7 +149,48 @@ void bind_leverarm_mru(py::module_& m) {
       py::arg("request"), py::arg("json") = "", py::arg("plots") = "");
 }
 
+// "X,Y[,Z]" as numbers; a piece that is not one number makes it no vector (empty).
+std::vector<double> numbers_of(const std::string& text) {
+  std::vector<double> out;
+  std::size_t begin = 0;
+  while (begin <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', begin), text.size());
+    const std::string piece = text.substr(begin, comma - begin);
+    char* end = nullptr;
+    const double v = std::strtod(piece.c_str(), &end);
+    if (end == piece.c_str() || std::string_view(end).find_first_not_of(" \t") != std::string::npos)
+      return {};
+    out.push_back(v);
+    begin = comma + 1;
+  }
+  return out;
+}
+
 }  // namespace
+
+std::optional<Vec3> antenna_arm(const py::handle& value, const char* key) {
+  if (value.is_none()) return std::nullopt;
+  std::vector<double> x;
+  std::string text;
+  if (py::isinstance<py::str>(value)) {
+    text = value.cast<std::string>();
+    x = numbers_of(text);
+  } else {
+    try {
+      x = value.cast<std::vector<double>>();
+      text = fmt::format("{}", fmt::join(x, ","));
+    } catch (const py::cast_error&) {
+      text = py::str(value).cast<std::string>();
+    }
+  }
+  if (x.size() != 2 && x.size() != 3) {
+    throw option_error(key, "'" + text + "' is not a lever arm of 2 or 3 numbers",
+                       "give (X, Y) or (X, Y, Z) in metres (BODY: forward, starboard, down)");
+  }
+  return Vec3(x[0], x[1], x.size() > 2 ? x[2] : 0.0);
+}
+
+py::object arm_or_none(const std::optional<Vec3>& arm) { return vec3_or_none(arm); }
 
 void bind_calib(py::module_& m) {
   bind_leverarm_gnss(m);

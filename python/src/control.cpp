@@ -224,6 +224,7 @@ void bind_simulate(py::module_& m) {
       .def_readwrite("vessel", &Q::vessel_file)
       .def_readwrite("duration", &Q::duration_s)
       .def_readwrite("log_rate", &Q::log_rate_hz)
+      .def_readwrite("observer", &Q::observer)
       .def_readwrite("jobs", &Q::jobs);
   m.def("run_simulate", &simulate, py::arg("request"));
   m.def("scenarios", [] {

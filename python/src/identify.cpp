@@ -1,5 +1,6 @@
-// Identification from logs (thesis chapter 3): the requests with their CLI option names, and one
-// run function each that writes the outputs the CLI writes and returns the --json text.
+// Identification from logs (thesis chapter 3) and the failure test of DP trials: the requests with
+// their CLI option names, and one run function each that writes the outputs the CLI writes and
+// returns the --json text.
 
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
@@ -12,6 +13,7 @@
 
 #include "bind.hpp"
 #include "dynpos/analysis/agility.hpp"
+#include "dynpos/analysis/failure_test.hpp"
 #include "dynpos/analysis/four_corner.hpp"
 #include "dynpos/analysis/options.hpp"
 #include "dynpos/analysis/station_keeping.hpp"
@@ -170,6 +172,33 @@ void bind_station_keeping(py::module_& m) {
       py::arg("request"), py::arg("json") = "");
 }
 
+void bind_failure_test(py::module_& m) {
+  using Q = FailureTestRequest;
+  py::class_<Q>(m, "FailureTestRequest")
+      .def(py::init<>())
+      .def_readwrite("source", &Q::source)
+      .def_property(
+          "arm", [](const Q& q) { return arm_or_none(q.arm_m); },
+          [](Q& q, const py::object& v) { q.arm_m = antenna_arm(v, "arm"); })
+      .def_readwrite("rpm", &Q::use_rpm)
+      .def_readwrite("from_", &Q::t_from_s)
+      .def_readwrite("to", &Q::t_to_s)
+      .def_readwrite("pre_window", &Q::pre_window_s)
+      .def_readwrite("redistribution_window", &Q::redistribution_window_s)
+      .def_readwrite("hold", &Q::hold_s)
+      .def_readwrite("response_window", &Q::response_window_s)
+      .def_readwrite("max_fall", &Q::max_fall_s)
+      .def_readwrite("min_off", &Q::min_off_s);
+  m.def(
+      "run_failure_test",
+      [](const Q& q, const std::string& json) {
+        const Outputs outputs{.json = json, .figures = {}};
+        outputs.check("plot", false);
+        return run_and_write(q, outputs, run_failure_test);
+      },
+      py::arg("request"), py::arg("json") = "");
+}
+
 }  // namespace
 
 void bind_identify(py::module_& m) {
@@ -178,6 +207,7 @@ void bind_identify(py::module_& m) {
   bind_agility(m);
   bind_four_corner(m);
   bind_station_keeping(m);
+  bind_failure_test(m);
 }
 
 }  // namespace dynpos::python

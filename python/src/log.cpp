@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -18,6 +19,7 @@
 #include "dynpos/analysis/log_source.hpp"
 #include "dynpos/core/error.hpp"
 #include "dynpos/core/log.hpp"
+#include "dynpos/io/csv_reader.hpp"
 #include "dynpos/io/input_report.hpp"
 
 namespace dynpos::python {
@@ -175,6 +177,16 @@ void bind_source(py::module_& m) {
         return py::make_tuple(log, io::to_json(loaded.input).dump());
       },
       py::arg("source"), py::arg("roles") = py::none());
+  // Every numeric column of a CSV such as the simulator's truth.csv, named by its header, known
+  // units in SI: the columns that are no role of a log too.
+  m.def("read_csv_all", [](const std::filesystem::path& path) {
+    std::shared_ptr<Log> log;
+    {
+      py::gil_scoped_release release;
+      log = std::make_shared<Log>(io::read_csv_all(path));
+    }
+    return log;
+  });
 }
 
 }  // namespace

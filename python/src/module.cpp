@@ -44,4 +44,5 @@ PYBIND11_MODULE(_dynpos, m) {
   dynpos::python::bind_identify(m);
   dynpos::python::bind_calib(m);
   dynpos::python::bind_control(m);
+  dynpos::python::bind_estimate(m);
 }

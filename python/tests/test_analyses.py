@@ -6,6 +6,7 @@ import json
 import os
 import subprocess
 
+import numpy as np
 import pytest
 
 import dynpos
@@ -274,3 +275,175 @@ def test_montecarlo_takes_typed_seeds_shards_and_measures():
         with pytest.raises(dynpos.InputError) as e:
             dynpos.montecarlo("turning-circle", **{"seeds": (1, 2), **options})
         assert e.value.option == key and f"({key}=)" in str(e.value)
+
+
+# The virtual trial's GNSS antenna 1 moved to the control origin with the MRU's roll and pitch.
+DP_COL = {"north": "gnss1.north", "east": "gnss1.east", "roll": "mru1.roll", "pitch": "mru1.pitch"}
+DP_CLI_COL = ["--col", "north=gnss1.north", "--col", "east=gnss1.east", "--col",
+              "roll=mru1.roll", "--col", "pitch=mru1.pitch"]
+
+
+def arm_text(arm):
+    return ",".join(repr(float(v)) for v in arm)
+
+
+@pytest.fixture(scope="session")
+def trip(tmp_path_factory):
+    """The annual DP trial's thruster trip (the bow tunnel at 600 s of 1200 s), seed 1."""
+    return dynpos.simulate("dp-thruster-trip", seed=1, out=tmp_path_factory.mktemp("trip"))
+
+
+@pytest.fixture(scope="session")
+def dp_run(tmp_path_factory):
+    """400 s of pure DP at heading 0 (weather from the bow) with the EKF in the loop, seed 3."""
+    return dynpos.simulate("pure-dp", seed=3, duration=400, observer="ekf",
+                           out=tmp_path_factory.mktemp("dp"))
+
+
+def test_identify_failure_test_against_the_truth(trip, tmp_path):
+    """The trip found in the logger's files (thrust feedback, GNSS antenna 1 at 1 Hz moved to
+    the control origin by its surveyed arm) against truth.json's failure, which the simulator
+    measures on the control origin's true motion with the same meanings: the instant within
+    0.5 s, the peak excursion within max(5 %, 0.1 m), the recovery within 2 s (or both never),
+    the peak heading change within 0.25°. (On this run's seed; the tunnel's thrust is logged at
+    1 Hz and falls with its demand before some trips, which moves the onset found earlier by
+    seconds on other seeds.)"""
+    log = os.path.join(trip.out, "log.csv")
+    arm = trip.truth["lever_arms"]["gnss1"]
+    r = dynpos.identify_failure_test(log, col=DP_COL, arm=arm, json=tmp_path / "py.json")
+    same_as_cli(tmp_path, r, tmp_path / "py.json", "identify", "failure-test", log, *DP_CLI_COL,
+                "--arm", arm_text(arm))
+    truth = trip.truth["failure"]
+    assert truth["time_s"] == 600 and truth["units"] == ["tunnel"]
+    assert r.arm_m == arm and r.arm_with_attitude and len(r.events) == 1
+    e = r.events[0]
+    assert e.unit == truth["unit"] and e.units == truth["units"]
+    assert abs(e.time_s - truth["time_s"]) <= 0.5
+    assert abs(e.peak_excursion_m - truth["peak_excursion_m"]) <= max(
+        0.05 * truth["peak_excursion_m"], 0.1)
+    if truth["recovery_s"] is None:
+        assert e.recovery_s is None
+    else:
+        assert e.recovery_s is not None and abs(e.recovery_s - truth["recovery_s"]) <= 2.0
+    assert abs(e.peak_heading_deg - truth["peak_heading_deg"]) <= 0.25
+    assert list(r.to_frame()["unit"]) == ["tunnel"]
+
+
+def test_failure_test_takes_the_arm_typed_and_names_a_bad_one(trip):
+    import numpy
+
+    log = os.path.join(trip.out, "log.csv")
+    arm = trip.truth["lever_arms"]["gnss1"]
+    expected = dynpos.identify_failure_test(log, col=DP_COL, arm=tuple(arm)).to_dict()
+    for given in (numpy.array(arm), arm_text(arm)):
+        assert dynpos.identify_failure_test(log, col=DP_COL, arm=given).to_dict() == expected
+    # Two numbers: Z is 0 (no attitude needed); without an arm, the antenna's own track.
+    flat = dynpos.identify_failure_test(log, col=DP_COL, arm=arm[:2])
+    assert flat.arm_m == [arm[0], arm[1], 0.0]
+    assert dynpos.identify_failure_test(log, col=DP_COL).arm_m is None
+    with pytest.raises(dynpos.InputError, match=r"\(arm=\): '1,2,3,4' is not a lever arm") as e:
+        dynpos.identify_failure_test(log, col=DP_COL, arm=(1, 2, 3, 4))
+    assert e.value.option == "arm"
+    with pytest.raises(dynpos.InputError, match=r"\(arm=\): the antenna lever arm is not finite"):
+        dynpos.identify_failure_test(log, col=DP_COL, arm=(float("nan"), 0.0))
+
+
+def test_simulate_observer_and_the_dp_truth_columns(dp_run, tmp_path):
+    """observer= as --observer (the same files, byte for byte), and truth.csv's DP columns in
+    Simulation.motion: lf, env_load and demand in every DP run, observer only with one."""
+    subprocess.run([BIN, "simulate", "pure-dp", "--seed", "3", "--duration", "400", "--observer",
+                    "ekf", "--out", str(tmp_path / "cli")], check=True, capture_output=True)
+    for name in ("log.csv", "truth.csv", "truth.json"):
+        assert (tmp_path / "cli" / name).read_bytes() == open(
+            os.path.join(dp_run.out, name), "rb").read(), name
+    assert dp_run.truth["observer"] == "ekf"
+    dp_columns = {f"{g}.{k}" for g, ks in (("lf", ("north", "east", "heading")),
+                                          ("env_load", ("north", "east", "yaw")),
+                                          ("demand", ("surge", "sway", "yaw"))) for k in ks}
+    observer_columns = {"observer.north", "observer.east", "observer.heading",
+                        "observer.bias.north", "observer.bias.east", "observer.bias.yaw"}
+    assert dp_columns | observer_columns <= set(dp_run.motion.channels)
+    ideal = dynpos.simulate("pure-dp", seed=3, duration=20)
+    assert "observer" not in ideal.truth and dp_columns <= set(ideal.motion.channels)
+    assert not observer_columns & set(ideal.motion.channels)
+    # The EKF in the loop follows the true low-frequency position within decimetres.
+    m = dp_run.motion
+    settled = m.time >= 120
+    for k in ("north", "east"):
+        error = m[f"observer.{k}"][settled] - m[f"lf.{k}"][settled]
+        assert float(np.sqrt(np.mean(error ** 2))) < 0.3, k
+    with pytest.raises(dynpos.InputError, match=r"\(observer=\): unknown observer 'kalman'"):
+        dynpos.simulate("pure-dp", duration=5, observer="kalman")
+
+
+def test_estimate_against_the_truth(dp_run, tmp_path):
+    """The observer over the logged run: the --json document and the CSV as the CLI's, the
+    series in SI the CSV's, and against truth.csv: b̂'s mean after the settling time within
+    10 % of the true load's horizontal magnitude in north and east and 15 % in yaw (as the CLI
+    test), the LF position within 0.3 m RMS and the heading within 0.5° RMS of the true LF
+    motion."""
+    log = os.path.join(dp_run.out, "log.csv")
+    arm = dp_run.truth["lever_arms"]["gnss1"]
+    r = dynpos.estimate(log, col=DP_COL, arm=arm, tp=7, json=tmp_path / "py.json")
+    same_as_cli(tmp_path, r, tmp_path / "py.json", "estimate", log, *DP_CLI_COL, "--arm",
+                arm_text(arm), "--tp", "7")
+    assert r.observer == "ekf" and r.steps == 4000 and r.bias.from_s == 120
+    s = r.series
+    assert len(s) == r.steps and s.unit("bias.yaw") == "N*m" and s.unit("lf.heading") == "rad"
+    # The summary is the series' own mean.
+    after = s.time >= r.bias.from_s
+    assert np.count_nonzero(after) == r.bias.samples
+    for k, key in (("north", "north_N"), ("east", "east_N"), ("yaw", "yaw_Nm")):
+        assert np.mean(s[f"bias.{k}"][after]) == pytest.approx(r.bias.mean[key], rel=1e-9)
+    # The series against the truth.
+    m = dp_run.motion
+    load = {k: np.interp(s.time, m.time, m[f"env_load.{k}"])[after].mean()
+            for k in ("north", "east", "yaw")}
+    horizontal = np.hypot(load["north"], load["east"])
+    for k in ("north", "east"):
+        assert abs(r.bias.mean[f"{k}_N"] - load[k]) < 0.10 * horizontal, k
+    assert abs(r.bias.mean.yaw_Nm - load["yaw"]) < 0.15 * abs(load["yaw"])
+    for k in ("north", "east"):
+        error = s[f"lf.{k}"][after] - np.interp(s.time, m.time, m[f"lf.{k}"])[after]
+        assert float(np.sqrt(np.mean(error ** 2))) < 0.3, k
+    heading = np.interp(s.time, m.time, np.unwrap(m["lf.heading"]))
+    dpsi = np.angle(np.exp(1j * (s["lf.heading"] - heading)))[after]
+    assert np.degrees(np.sqrt(np.mean(dpsi ** 2))) < 0.5
+    # out= writes the CLI's CSV (deg, kN), the series' values.
+    dynpos.estimate(log, col=DP_COL, arm=arm, tp=7, out=tmp_path / "py.csv")
+    subprocess.run([BIN, "estimate", log, *DP_CLI_COL, "--arm", arm_text(arm), "--tp", "7",
+                    "--out", str(tmp_path / "cli.csv")], check=True, capture_output=True)
+    assert (tmp_path / "py.csv").read_bytes() == (tmp_path / "cli.csv").read_bytes()
+    csv = np.genfromtxt(tmp_path / "py.csv", delimiter=",", skip_header=1)
+    assert np.allclose(csv[:, 0], s.time)
+    assert np.allclose(csv[:, 3], np.degrees(s["lf.heading"]), atol=1e-6)
+    assert np.allclose(csv[:, 7], s["bias.north"] / 1e3, atol=1e-6)
+    frame = r.to_frame()
+    assert list(frame.columns[:2]) == ["time", "lf.north"] and len(frame) == r.steps
+    # The passive observer runs on the held fix: it never coasts.
+    passive = dynpos.estimate(log, col=DP_COL, arm=arm, tp=7, observer="passive")
+    assert passive.measurement == "held" and passive.coasting_steps == 0
+
+
+def test_consequence(dp_run, tmp_path):
+    """Heading 0, the weather from the bow: the tunnel's loss is the worst case with a wide
+    margin at every point (λ > 3, as the CLI test), none negative; out= the CLI's CSV."""
+    log = os.path.join(dp_run.out, "log.csv")
+    arm = dp_run.truth["lever_arms"]["gnss1"]
+    r = dynpos.consequence(log, col=DP_COL, arm=arm, tp=7, json=tmp_path / "py.json")
+    same_as_cli(tmp_path, r, tmp_path / "py.json", "consequence", log, *DP_CLI_COL, "--arm",
+                arm_text(arm), "--tp", "7")
+    assert r.layout == "model" and r.cases == ["port", "stb", "rudder.port", "rudder.stb",
+                                               "tunnel"]
+    assert r.points == 23 and r.from_s == 180 and r.to_s == 400 and r.estimate.observer == "ekf"
+    assert r.smallest_margin.failure == "tunnel" and r.smallest_margin.margin > 2.0
+    assert r.fraction_negative == 0 and r.intact.min_load_factor > r.smallest_margin.load_factor
+    assert list(r.to_frame()["failure"]) == r.cases
+    dynpos.consequence(log, col=DP_COL, arm=arm, tp=7, step=20, window=30,
+                       out=tmp_path / "py.csv")
+    subprocess.run([BIN, "consequence", log, *DP_CLI_COL, "--arm", arm_text(arm), "--tp", "7",
+                    "--step", "20", "--window", "30", "--out", str(tmp_path / "cli.csv")],
+                   check=True, capture_output=True)
+    text = (tmp_path / "py.csv").read_text()
+    # A point every 20 s from the settling time and the window on, 150 … 390 s.
+    assert text == (tmp_path / "cli.csv").read_text() and len(text.splitlines()) == 1 + 13

@@ -28,12 +28,14 @@ FUNCTIONS = {("identify", "step"): dynpos.identify_step,
              ("identify", "agility"): dynpos.identify_agility,
              ("identify", "four-corner"): dynpos.identify_four_corner,
              ("identify", "station-keeping"): dynpos.identify_station_keeping,
+             ("identify", "failure-test"): dynpos.identify_failure_test,
              ("leverarm", "gnss"): dynpos.leverarm_gnss,
              ("leverarm", "mru"): dynpos.leverarm_mru}
 
 STEP_COLS = ["--col", "input=cmd", "--col", "output=response"]
 SK_COLS = ["--col", "north=response", "--col", "east=response"]
 THRUST = ["--col", "thrust.port=response", "--unit", "thrust.port=kN"]
+HEADING = ["--col", "heading=flat", "--unit", "heading=rad"]
 CASES = [
     ["identify", "step", STEPS, "--col", "input=cmd", "--col", "output=no_such_column"],
     ["identify", "step", os.path.join(CLI_DIR, "bad_steps.csv"), *STEP_COLS],
@@ -68,6 +70,18 @@ CASES = [
      f"heading=HDG@{MULTI}/nav.csv", "--col", f"time=stamp@{MULTI}/nav.csv"],
     ["identify", "thrust-map", STEPS],
     ["identify", "thrust-map", STEPS, "--apply"],
+    ["identify", "failure-test", STEPS, *SK_COLS],
+    ["identify", "failure-test", STEPS, *THRUST],
+    ["identify", "failure-test", STEPS, *THRUST, *SK_COLS, "--arm", "1,0"],
+    ["identify", "failure-test", STEPS, *THRUST, "--hold", "-1"],
+    ["identify", "failure-test", STEPS, *THRUST, *SK_COLS, "--from", "50", "--to", "10"],
+    ["estimate", STEPS, "--observer", "kalman"],
+    ["estimate", STEPS, "--tp", "30"],
+    ["estimate", STEPS, *SK_COLS],
+    ["estimate", STEPS, *SK_COLS, *HEADING],
+    ["consequence", STEPS, "--step", "0"],
+    ["consequence", STEPS, "--window", "-1"],
+    ["consequence", STEPS, *SK_COLS, *HEADING, *THRUST],
     ["leverarm", "mru", STEPS, "--accel", "gravity"],
     ["leverarm", "mru", STEPS],
     ["leverarm", "gnss", STEPS, "--method", "lsq"],
@@ -88,6 +102,7 @@ CASES = [
     ["capability", "--hs", "2"],
     ["capability", "--direction-step", "7"],
     ["simulate", "no-such-test", "--out", "unused"],
+    ["simulate", "pure-dp", "--observer", "kalman", "--out", "unused"],
     ["simulate", "surge-steps-forward", "--duration", "-5", "--out", "unused"],
     ["simulate", "surge-steps-forward", "--duration", "5", "--out", "unused", "--vessel",
      os.path.join(CLI_DIR, "bad_sensor_rate.toml")],
@@ -117,13 +132,13 @@ def options(argv):
             i += 1
             continue
         value = argv[i + 1]
-        if flag == "--window":  # the API takes each window as a tuple of numbers
+        if flag == "--window" and "," in value:  # agility's: each window a tuple of numbers
             kwargs.setdefault(key, []).append(tuple(float(v) for v in value.split(",")))
-        elif flag in REPEATED:
+        elif flag in REPEATED and flag != "--window":  # consequence's --window: a number
             kwargs.setdefault(key, []).append(value)
         else:
             kwargs[key] = number(value) if key not in ("labels", "date") else value
-        if key == "imu_arm":  # a vector: the API takes the numbers, (1, 2) for "1,2"
+        if key in ("imu_arm", "arm"):  # a vector: the API takes the numbers, (1, 2) for "1,2"
             kwargs[key] = tuple(number(v) for v in value.split(","))
         i += 2
     return kwargs
@@ -165,6 +180,8 @@ def call_api(argv, tmp_path):
         return dynpos.hybrid_vessel(o.pop("scenario"), **o)
     if argv[0] == "hybrid":
         return dynpos.hybrid_case(argv[1], **options(argv[2:]))
+    if argv[0] in ("estimate", "consequence"):
+        return getattr(dynpos, argv[0])(argv[1], **options(argv[2:]))
     if argv[0] == "capability":
         return dynpos.capability(**options(argv[1:]))
     if argv[0] == "simulate":

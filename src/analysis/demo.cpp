@@ -37,9 +37,9 @@ DemoReport run_demo(const DemoRequest& request) {
   // The campaign's report first, so that the logs have one even if an analysis fails.
   write_campaign_report(report.runs, vessel, request.seed, dir, {});
   std::vector<ReportSection> sections;
-  for (auto* section :
-       {&step_demo_section, &agility_demo_section, &four_corner_demo_section,
-        &station_keeping_demo_section, &leverarm_gnss_demo_section, &leverarm_mru_demo_section}) {
+  for (auto* section : {&step_demo_section, &agility_demo_section, &four_corner_demo_section,
+                        &station_keeping_demo_section, &failure_test_demo_section,
+                        &leverarm_gnss_demo_section, &leverarm_mru_demo_section}) {
     sections.push_back((*section)(dir));
   }
   sections.push_back(hybrid_vessel_demo_section(dir, request.seed));

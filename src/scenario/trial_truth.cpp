@@ -162,8 +162,9 @@ class Field {
     if (!value_.is_number()) fail("is not a number");
     return value_.get<double>();
   }
+  // A number that may be absent: a missing key or null (e.g. a failure's recovery_s, "never").
   std::optional<double> optional_number(const char* name) const {
-    if (!has(name)) return std::nullopt;
+    if (!has(name) || (*this)[name].is_null()) return std::nullopt;
     return (*this)[name].number();
   }
   std::string string() const {
@@ -326,7 +327,7 @@ FailureTruth read_failure(const Field& f) {
   out.peak_excursion_m = f["peak_excursion_m"].number();
   out.time_to_peak_s = f["time_to_peak_s"].number();
   // null: not back within the footprint before the run ended.
-  if (!f["recovery_s"].value().is_null()) out.recovery_s = f["recovery_s"].number();
+  out.recovery_s = f.optional_number("recovery_s");
   out.peak_heading_deg = f["peak_heading_deg"].number();
   return out;
 }

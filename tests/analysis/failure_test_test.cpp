@@ -3,13 +3,20 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <numbers>
 #include <string>
 
 #include <fmt/core.h>
 
 #include "../io/io_test_util.hpp"
+#include "../source_dir.hpp"
+#include "dynpos/analysis/demo_sections.hpp"
 #include "dynpos/core/error.hpp"
+#include "dynpos/scenario/run_files.hpp"
+#include "dynpos/scenario/runner.hpp"
+#include "dynpos/scenario/scenario_spec.hpp"
+#include "dynpos/scenario/vessel_config.hpp"
 #include "input_error_capture.hpp"
 
 namespace dynpos::analysis {
@@ -84,6 +91,32 @@ TEST(FailureTestAnalysis, BadInputNamesTheLogOrTheOption) {
   bad = request;
   bad.arm_m = Eigen::Vector3d(std::nan(""), 0.0, 0.0);
   EXPECT_EQ(option_key_of([&] { bad.validate(); }), "arm");
+}
+
+// The demo's section on a campaign folder holding the thruster trip (seed 1, as `dynpos demo`
+// writes a run): found against truth.json, the JSON with both; nothing without the run.
+TEST(FailureTestAnalysis, DemoSectionComparesWithTheTruth) {
+  TempDir dir;
+  const std::filesystem::path source = DYNPOS_SOURCE_DIR;
+  const scenario::ScenarioSpec spec =
+      scenario::load_scenario(source / "data" / "scenarios" / "dp-thruster-trip.toml");
+  const scenario::VesselConfig vessel =
+      scenario::load_vessel_config(source / "data" / "vessels" / "gunnerus.toml");
+  scenario::write_scenario_run(scenario::run_scenario(spec, vessel, 1),
+                               dir.path() / "dp-thruster-trip");
+  const ReportSection s = failure_test_demo_section(dir.path());
+  EXPECT_EQ(s.title, "Failure test");
+  for (const char* text : {"| dp-thruster-trip | found | tunnel | 600.0 |",
+                           "| dp-thruster-trip | true | tunnel | 600.0 |", "found − true"}) {
+    EXPECT_NE(s.markdown.find(text), std::string::npos) << text << "\n" << s.markdown;
+  }
+  std::ifstream file(dir.path() / "analysis" / "failure-test" / "dp-thruster-trip.json");
+  const nlohmann::json doc = nlohmann::json::parse(file);
+  EXPECT_EQ(doc.at("log"), "dp-thruster-trip/log.csv");
+  EXPECT_EQ(doc.at("events").size(), 1u);
+  EXPECT_EQ(doc.at("truth").at("time_s"), 600.0);
+  EXPECT_EQ(doc.at("truth").at("units"), nlohmann::json::array({"tunnel"}));
+  EXPECT_EQ(failure_test_demo_section(dir.path() / "no-campaign").title, "");
 }
 
 }  // namespace

@@ -143,6 +143,30 @@ TEST(TrialTruth, AFileOfMoreThan64MiBIsRefused) {
   std::filesystem::remove(path);
 }
 
+TEST(TrialTruth, AFailureReadsBackWithItsRecoveryOrWithoutOne) {
+  TrialTruth t = full_truth();
+  FailureTruth f;
+  f.time_s = 600.0;
+  f.unit = "stb+tunnel";
+  f.units = {"stb", "tunnel"};
+  f.footprint_m = 0.93;
+  f.peak_excursion_m = 90.4;
+  f.time_to_peak_s = 298.7;
+  f.peak_heading_deg = 82.9;
+  t.failure = f;  // never back within the footprint
+  nlohmann::json j = nlohmann::json::parse(to_json(t).dump());
+  EXPECT_TRUE(j["failure"]["recovery_s"].is_null());
+  TrialTruth back = from_json(j);
+  ASSERT_TRUE(back.failure.has_value());
+  EXPECT_FALSE(back.failure->recovery_s.has_value());
+  EXPECT_EQ(back.failure->units, f.units);
+  EXPECT_EQ(back.failure->time_to_peak_s, 298.7);
+  t.failure->recovery_s = 162.0;
+  back = from_json(nlohmann::json::parse(to_json(t).dump()));
+  ASSERT_TRUE(back.failure.has_value());
+  EXPECT_EQ(back.failure->recovery_s, 162.0);
+}
+
 TEST(TrialTruth, MissingNumberIsNullAndReadsAsNaN) {
   TrialTruth t = full_truth();
   t.rudder_steps[0].servo.time_constant = std::numeric_limits<double>::quiet_NaN();

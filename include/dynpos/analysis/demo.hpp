@@ -40,8 +40,8 @@ struct DemoReport {
 };
 
 /// Validates; runs the campaign into out_dir, then the analysis sections in the order of
-/// demo_sections.hpp (step, agility, four-corner, station keeping, GNSS and MRU lever arms,
-/// hybrid vessel, capability), and writes the report.
+/// demo_sections.hpp (step, agility, four-corner, station keeping, failure test, GNSS and MRU
+/// lever arms, hybrid vessel, capability), and writes the report.
 DemoReport run_demo(const DemoRequest& request);
 
 /// One line per scenario run, the totals and where index.html is.

@@ -17,6 +17,9 @@ ReportSection step_demo_section(const std::filesystem::path& campaign_dir);
 ReportSection agility_demo_section(const std::filesystem::path& campaign_dir);
 ReportSection four_corner_demo_section(const std::filesystem::path& campaign_dir);
 ReportSection station_keeping_demo_section(const std::filesystem::path& campaign_dir);
+/// The failure tests of the DP trials (dp-thruster-trip, dp-bus-failure): the events found in
+/// the logger's files beside truth.json's `failure` (analysis/failure-test/<scenario>.json).
+ReportSection failure_test_demo_section(const std::filesystem::path& campaign_dir);
 ReportSection leverarm_gnss_demo_section(const std::filesystem::path& campaign_dir);
 ReportSection leverarm_mru_demo_section(const std::filesystem::path& campaign_dir);
 /// Hybrid against conventional integral action on the virtual vessel under both sudden loads,
