@@ -108,6 +108,13 @@ void register_capability(CLI::App& app) {
   sub->callback([o, sub] {
     if (!o->loads.empty()) return run_loads(*o, *sub);
     if (o->request.transient) {
+      for (const char* option : {"--duration", "--wind-tolerance"}) {
+        if (sub->count(option) > 0) {
+          throw analysis::option_error(
+              option + 2, fmt::format("{} is not an option of --transient", option),
+              "--settle and --after set a transient run's length; it searches no wind");
+        }
+      }
       return write_and_print(analysis::run_capability_transient(o->request), o->outputs);
     }
     for (const char* option : {"--rows", "--after", "--seeds", "--observer"}) {

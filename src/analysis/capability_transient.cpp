@@ -9,6 +9,7 @@
 #include "dynpos/capability/quasi_static.hpp"
 #include "dynpos/report/polar_plot.hpp"
 #include "dynpos/report/table.hpp"
+#include "dynpos/scenario/unit_failure.hpp"
 #include "dynpos/scenario/vessel_config.hpp"
 
 namespace dynpos::analysis {
@@ -67,7 +68,7 @@ TransientReport run_capability_transient(const CapabilityRequest& q) {
   const capability::TransientOptions options = transient_options(q);
   const std::filesystem::path file = vessel_file_or_default(q.vessel);
   const scenario::VesselConfig vessel = scenario::load_vessel_config(file);
-  capability::check_failure(vessel, q.failure, "failure");
+  (void)scenario::UnitFailure({options.settle_s, q.failure}, vessel);  // option "failure"
   TransientReport r;
   r.vessel = vessel.name;
   r.vessel_source = q.vessel.empty() ? "" : q.vessel.string();

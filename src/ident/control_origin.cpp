@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace dynpos::ident {
 
@@ -17,7 +18,12 @@ void move_to_control_origin(std::vector<double>& north_m, std::vector<double>& e
                             const std::vector<double>& pitch_rad, const double (&arm_b_m)[3]) {
   const double x = arm_b_m[0], y = arm_b_m[1], z = arm_b_m[2];
   if (x == 0.0 && y == 0.0 && z == 0.0) return;
-  const std::size_t n = std::min({north_m.size(), east_m.size(), heading_rad.size()});
+  const std::size_t n = north_m.size();
+  if (east_m.size() != n || heading_rad.size() != n ||
+      (!roll_rad.empty() && roll_rad.size() != n) ||
+      (!pitch_rad.empty() && pitch_rad.size() != n)) {
+    throw std::invalid_argument("move_to_control_origin: the series differ in length");
+  }
   // Held from the last valid sample; level without roll and pitch.
   double psi = std::nan(""), phi = 0.0, theta = 0.0;
   for (std::size_t i = 0; i < n; ++i) {

@@ -1,5 +1,6 @@
 #include "dynpos/scenario/dp_estimator.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -43,7 +44,7 @@ control::ObserverModel observer_model(const ScenarioSpec& spec, const VesselConf
 DpEstimator::DpEstimator(const ScenarioSpec& spec, const VesselConfig& vessel,
                          const VesselPlant& plant, std::uint64_t seed, double period_s,
                          const Eigen::Vector3d& eta0_n)
-    : spec_(spec),
+    : gnss_dropouts_(spec.gnss_dropouts),
       plant_(plant),
       kind_(spec.observer),
       period_s_(period_s),
@@ -51,7 +52,8 @@ DpEstimator::DpEstimator(const ScenarioSpec& spec, const VesselConfig& vessel,
       north_noise_(gnss_std_m(vessel), sim::Rng(seed, "dp.gnss.north")),
       east_noise_(gnss_std_m(vessel), sim::Rng(seed, "dp.gnss.east")),
       heading_noise_(vessel.sensors.gyro.noise.noise_std, sim::Rng(seed, "dp.gyro")),
-      rate_noise_(rate_std_rad_s(vessel), sim::Rng(seed, "dp.rate")) {
+      rate_noise_(rate_std_rad_s(vessel), sim::Rng(seed, "dp.rate")),
+      last_raw_(eta0_n) {
   const control::ObserverModel model = observer_model(spec, vessel, plant.hull());
   if (kind_ == control::ObserverKind::kPassive) {
     observer_.emplace<control::PassiveObserver>(model, control::passive_observer_gains(model),
@@ -77,7 +79,9 @@ Eigen::Vector3d DpEstimator::measure(double t, const sim::ConstVectorRef& x) {
   y.z() = core::wrap_2pi(y.z() + heading_noise_.sample());
   wf_velocity_b_ = Eigen::Vector3d(wf.velocity[0], wf.velocity[1], wf.velocity[5]);
   yaw_rate_ = x[Plant::kHull + Hull::kYawRate] + wf.velocity[5] + rate_noise_.sample();
-  if (spec_.gnss_lost(t)) y.x() = y.y() = core::kMissing;
+  const bool lost = std::any_of(gnss_dropouts_.begin(), gnss_dropouts_.end(),
+                                [t](const DropoutEvent& d) { return d.covers(t); });
+  if (lost) y.x() = y.y() = core::kMissing;
   return y;
 }
 

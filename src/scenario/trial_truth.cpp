@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "dynpos/core/error.hpp"
+#include "dynpos/core/log.hpp"
 #include "dynpos/io/json_writer.hpp"
 #include "dynpos/io/text_file.hpp"
 
@@ -323,12 +324,12 @@ FailureTruth read_failure(const Field& f) {
   out.time_s = f["time_s"].number();
   out.unit = f["unit"].string();
   for (const Field& u : f["units"].items()) out.units.push_back(u.string());
-  out.footprint_m = f["footprint_m"].number();
-  out.peak_excursion_m = f["peak_excursion_m"].number();
-  out.time_to_peak_s = f["time_to_peak_s"].number();
+  out.footprint_m = f.optional_number("footprint_m").value_or(core::kMissing);
+  out.peak_excursion_m = f.optional_number("peak_excursion_m").value_or(core::kMissing);
+  out.time_to_peak_s = f.optional_number("time_to_peak_s").value_or(core::kMissing);
   // null: not back within the footprint before the run ended.
   out.recovery_s = f.optional_number("recovery_s");
-  out.peak_heading_deg = f["peak_heading_deg"].number();
+  out.peak_heading_deg = f.optional_number("peak_heading_deg").value_or(core::kMissing);
   return out;
 }
 

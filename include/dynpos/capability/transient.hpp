@@ -54,7 +54,7 @@ struct TransientRun {
   /// The true environmental load's mean over the pre-failure minute (BODY) [N, N, N·m].
   Eigen::Vector3d load_b = Eigen::Vector3d::Zero();
   /// The observer's bias estimate's mean over the same minute (BODY); the true load's with the
-  /// ideal observer.
+  /// ideal and the raw loop, which have no bias estimate of their own.
   Eigen::Vector3d estimated_load_b = Eigen::Vector3d::Zero();
 };
 

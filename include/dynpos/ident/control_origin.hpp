@@ -12,7 +12,8 @@ namespace dynpos::ident {
 /// Moves north_m/east_m [m] (NED) of the point at the horizontal lever arm (arm_x_m forward,
 /// arm_y_m starboard; BODY, from the CO) [m] to the CO, in place. The heading [rad] at a sample
 /// is the last valid one at or before it; positions before the first valid heading become NaN.
-/// NaN positions stay NaN; an arm of zero changes nothing. The series share one time axis.
+/// NaN positions stay NaN; an arm of zero changes nothing. The series share one time axis:
+/// std::invalid_argument if their lengths differ.
 void move_to_control_origin(std::vector<double>& north_m, std::vector<double>& east_m,
                             const std::vector<double>& heading_rad, double arm_x_m, double arm_y_m);
 

@@ -64,7 +64,7 @@ class DpEstimator {
   // The measurement y = (N, E, ψ) at t; position NaN during a GNSS dropout. Sets wf_velocity_b_.
   Eigen::Vector3d measure(double t, const sim::ConstVectorRef& x);
 
-  const ScenarioSpec& spec_;
+  std::vector<DropoutEvent> gnss_dropouts_;  // the scenario's
   const VesselPlant& plant_;
   control::ObserverKind kind_;
   double period_s_;

@@ -56,8 +56,9 @@ struct LoadEvent {
 };
 
 /// A failure as it happens: at t_s the unit, group ("group:NAME") or model actuator `name`
-/// trips. Its drive is cut (its thrust falls with the unit's own dynamics) and the allocation
-/// has it at capacity 0 from the next control step on.
+/// trips. Its drive is cut (its thrust falls with the unit's own dynamics); the DP system flags
+/// it from its feedback kDetection_s later and the allocation has it at capacity 0 from then on
+/// (unit_failure.hpp).
 struct FailureEvent {
   double t_s = 0.0;  ///< [s] in [0, duration]
   std::string name;  ///< a [[thruster]] unit, "group:NAME", or port, stb, tunnel, rudder.port,

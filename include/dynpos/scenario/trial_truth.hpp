@@ -127,7 +127,6 @@ struct TimeConstantsTruth {
   model::FopdtTruth rudder_0_to_20deg;
 };
 
-/// Everything truth.json holds (see the file comment).
 /// A failure as it happened in the run (ScenarioSpec::failure) and the vessel's response, from
 /// the true motion of the control origin as the log samples it (wave-frequency motion included,
 /// as a position reference sees it), with the meanings of `identify failure-test`
@@ -136,14 +135,17 @@ struct FailureTruth {
   double time_s = 0.0;             ///< the failure instant [s]
   std::string unit;                ///< as the scenario names it (a unit, group:NAME, actuator)
   std::vector<std::string> units;  ///< the units lost
-  double footprint_m = 0.0;        ///< largest pre-failure distance from the pre-failure mean
-  double peak_excursion_m = 0.0;   ///< largest distance from the pre-failure mean after it [m]
-  double time_to_peak_s = 0.0;     ///< from the failure to that peak [s]
+  /// The figures below are missing (NaN, null in the file) with fewer than 3 samples before the
+  /// failure.
+  double footprint_m = 0.0;       ///< largest pre-failure distance from the pre-failure mean
+  double peak_excursion_m = 0.0;  ///< largest distance from the pre-failure mean after it [m]
+  double time_to_peak_s = 0.0;    ///< from the failure to that peak [s]
   /// From the failure until back within the pre-failure footprint [s]; missing if never.
   std::optional<double> recovery_s;
   double peak_heading_deg = 0.0;  ///< largest |heading − pre-failure mean| after it [deg]
 };
 
+/// Everything truth.json holds (see the file comment).
 struct TrialTruth {
   std::uint64_t seed = 0;
   TrialScenario scenario;
