@@ -46,43 +46,54 @@ const std::vector<double>& required(const EstimateRequest& q, const core::Log& l
                   role));
 }
 
-// Each sample's last valid value at or before it, while at most max_hold_s old; else NaN.
-std::vector<double> held(const std::vector<double>& t_s, const std::vector<double>& x,
-                         double max_hold_s) {
-  std::vector<double> out(x.size(), core::kMissing);
+// A channel held: each row's last valid value at or before it while at most max_hold_s old
+// (else NaN), and that value's time.
+struct HeldChannel {
+  std::vector<double> value, sampled_s;
+};
+
+HeldChannel held(const std::vector<double>& t_s, const std::vector<double>& x, double max_hold_s) {
+  HeldChannel out{std::vector<double>(x.size(), core::kMissing),
+                  std::vector<double>(x.size(), core::kMissing)};
   double last_t = -std::numeric_limits<double>::infinity(), last = core::kMissing;
   for (std::size_t i = 0; i < x.size(); ++i) {
     if (!std::isnan(x[i])) last_t = t_s[i], last = x[i];
-    if (t_s[i] - last_t <= max_hold_s) out[i] = last;
+    if (t_s[i] - last_t <= max_hold_s) out.value[i] = last, out.sampled_s[i] = last_t;
   }
   return out;
 }
 
 // τ_b at each row from every unit's thrust and angle held (observer_run.hpp's hold); NaN where
-// one of them is missing.
-std::vector<Eigen::Vector3d> thrust_series(const EstimateRequest& q, const core::Log& log,
-                                           const scenario::ThrustFeedback& feedback,
-                                           const std::string& vessel) {
+// one of them is missing. Into `in`, with the time of each row's oldest sample.
+void thrust_series(const EstimateRequest& q, const core::Log& log,
+                   const scenario::ThrustFeedback& feedback, const std::string& vessel,
+                   control::ObserverInputs& in) {
   const std::size_t n_units = feedback.channels().size();
-  std::vector<std::vector<double>> thrust, angle;
+  std::vector<HeldChannel> thrust, angle;
   for (const scenario::FeedbackChannel& c : feedback.channels()) {
     thrust.push_back(
         held(log.time(), required(q, log, c.thrust_role, c.unit, vessel), q.max_hold_s));
     angle.push_back(
         c.angle_role.empty()
-            ? std::vector<double>(log.size(), 0.0)
+            ? HeldChannel{std::vector<double>(log.size(), 0.0), log.time()}
             : held(log.time(), required(q, log, c.angle_role, c.unit, vessel), q.max_hold_s));
   }
-  std::vector<Eigen::Vector3d> tau(log.size());
+  in.tau_b.assign(log.size(), Eigen::Vector3d::Constant(core::kMissing));
+  in.tau_sampled_s.assign(log.size(), core::kMissing);
   std::vector<double> t(n_units), a(n_units);
   for (std::size_t i = 0; i < log.size(); ++i) {
-    for (std::size_t k = 0; k < n_units; ++k) t[k] = thrust[k][i], a[k] = angle[k][i];
+    double oldest = log.time()[i];
+    for (std::size_t k = 0; k < n_units; ++k) {
+      t[k] = thrust[k].value[i], a[k] = angle[k].value[i];
+      oldest = std::min({oldest, thrust[k].sampled_s[i], angle[k].sampled_s[i]});
+    }
     const bool complete =
         std::none_of(t.begin(), t.end(), [](double v) { return std::isnan(v); }) &&
         std::none_of(a.begin(), a.end(), [](double v) { return std::isnan(v); });
-    tau[i] = complete ? feedback.tau_b(t, a) : Eigen::Vector3d::Constant(core::kMissing);
+    if (!complete) continue;
+    in.tau_b[i] = feedback.tau_b(t, a);
+    in.tau_sampled_s[i] = oldest;
   }
-  return tau;
 }
 
 // The observer's model for the vessel and the operator's T_p.
@@ -188,7 +199,7 @@ EstimateReport run_estimate(const EstimateRequest& q) {
   r.position = co.position;
   r.attitude = co.attitude;
   control::ObserverInputs in;
-  in.tau_b = thrust_series(q, log, feedback, vessel.name);
+  thrust_series(q, log, feedback, vessel.name, in);
   in.t_s = log.time();
   in.north_m = std::move(co.north_m);
   in.east_m = std::move(co.east_m);

@@ -33,7 +33,9 @@ class InputCursor {
         position = {t, Eigen::Vector2d(in_.north_m[i], in_.east_m[i])};
       }
       if (!std::isnan(in_.heading_rad[i])) heading = {t, in_.heading_rad[i]};
-      if (!in_.tau_b[i].hasNaN()) tau = {t, in_.tau_b[i]};
+      if (!in_.tau_b[i].hasNaN()) {
+        tau = {in_.tau_sampled_s.empty() ? t : in_.tau_sampled_s[i], in_.tau_b[i]};
+      }
     }
   }
 
@@ -49,7 +51,7 @@ class InputCursor {
 void check_inputs(const ObserverInputs& in) {
   const std::size_t n = in.t_s.size();
   if (in.north_m.size() != n || in.east_m.size() != n || in.heading_rad.size() != n ||
-      in.tau_b.size() != n) {
+      in.tau_b.size() != n || (!in.tau_sampled_s.empty() && in.tau_sampled_s.size() != n)) {
     throw std::invalid_argument("observer run: the inputs differ in length");
   }
   for (std::size_t i = 0; i < n; ++i) {

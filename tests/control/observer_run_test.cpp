@@ -112,6 +112,27 @@ TEST(ObserverRun, CoastsThroughAGnssDropoutAndHoldsTheThrust) {
   for (const ObserverEstimate& e : track.estimate) ASSERT_TRUE(e.eta_n.allFinite());
 }
 
+// A τ row made of a unit's sample held from earlier is as old as that sample: with every row
+// of 50–60 s built from the sample of 49.9 s, the steps from 55 s on are stale, as when the
+// rows are missing.
+TEST(ObserverRun, ThrustIsAsOldAsTheOldestSampleOfItsRow) {
+  const ObserverModel model = vessel_model();
+  TruthOptions opt;
+  opt.duration_s = 80.0;
+  ObserverInputs in = log_of(simulate_truth(model, opt));
+  in.tau_sampled_s = in.t_s;
+  for (std::size_t k = 500; k < 600; ++k) {
+    in.tau_b[k] = in.tau_b[499];
+    in.tau_sampled_s[k] = in.t_s[499];
+  }
+  ObserverRunOptions o;
+  o.kind = ObserverKind::kPassive;
+  o.max_hold_s = 5.05;
+  EXPECT_EQ(run_observer(model, in, o).stale_thrust_steps, 50u);
+  in.tau_sampled_s.clear();  // the rows' own times: never stale
+  EXPECT_EQ(run_observer(model, in, o).stale_thrust_steps, 0u);
+}
+
 TEST(ObserverRun, StartsAtTheFirstTimeWithEveryInput) {
   const ObserverModel model = vessel_model();
   TruthOptions opt;

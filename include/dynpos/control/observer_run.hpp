@@ -37,6 +37,9 @@ struct ObserverInputs {
   std::vector<double> east_m;          ///< control origin, NED [m]; NaN: no fix
   std::vector<double> heading_rad;     ///< [rad], any wrapping; NaN: no sample
   std::vector<Eigen::Vector3d> tau_b;  ///< thrust (X, Y, N) BODY [N, N, N·m]; any NaN: none
+  /// The time of the oldest sample each τ row was made of (units logged at other rates, held
+  /// into the row) [s]; empty: the row's own time. The age max_hold_s is judged on.
+  std::vector<double> tau_sampled_s = {};
 };
 
 /// How the run steps (see the file comment).
