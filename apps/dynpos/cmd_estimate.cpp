@@ -37,8 +37,9 @@ void EstimateCliOptions::add(CLI::App& sub) {
   sub.add_option("--rate", r.rate_hz, "The observer's step rate [Hz]; inputs sampled and held")
       ->capture_default_str();
   sub.add_option("--max-hold", r.max_hold_s,
-                 "A sample stands for its input at most this long [s]; a position older is "
-                 "missing (the observer coasts)")
+                 "A sample stands for its input at most this long [s]: a thrust older is "
+                 "counted as stale; with the passive observer a position older is missing "
+                 "(it coasts; the EKF corrects once per fresh sample)")
       ->capture_default_str();
   sub.add_option("--settle", r.settle_s,
                  "The summary's mean bias leaves out this long after the observer starts [s]")

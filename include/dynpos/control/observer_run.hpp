@@ -13,9 +13,10 @@
 ///     taken as zero for not being logged (steps on a τ older than max_hold_s are counted);
 ///   - the measurement y, per component (the position, the heading): held (a continuous-time
 ///     observer, the passive one, on the zero-order hold of its input), the last sample at or
-///     before t_k while it is at most max_hold_s old; fresh (the EKF: one correction per
-///     sample), only a sample taken after t_{k−1}. Otherwise y is missing there and the
-///     observer coasts on its model: a missing GNSS fix is never a position of zero.
+///     before t_k while it is at most max_hold_s old; fresh (the EKF), only a sample taken
+///     after t_{k−1} — the latest of them when several were, one correction per step, and no
+///     max_hold_s. Otherwise y is missing there and the observer coasts on its model: a
+///     missing GNSS fix is never a position of zero.
 /// An observer's step predicts over 1/rate, so the estimate after step k is the one at t_{k+1};
 /// the run ends with the last t_{k+1} within the inputs' time span.
 
