@@ -163,7 +163,7 @@ SecondOrderFitResult fit_second_order(std::span<const double> t, std::span<const
             ? "response shape faster than first order: taken as first order (T₂ = 0)"
             : "response more S-shaped than two equal time constants (underdamped or higher "
               "order): taken as T₁ = T₂";
-    result.warnings.emplace_back(WarningCode::kShapeOutOfRange, why);
+    result.warnings.push_back({WarningCode::kShapeOutOfRange, why});
   }
   const double t1 = sol.t1;
   const double t2 = sol.rho * t1;
