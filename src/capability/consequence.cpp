@@ -17,36 +17,22 @@ ThrustLimits model_limits(const scenario::VesselConfig& v, const std::vector<std
   return thrust_limits(allocator, 0.0);
 }
 
-// The largest λ ≤ kMaxLoadFactor with −λ·load in `limits`, to 0.01 % (feasibility()'s rule),
-// and the actuators at a limit there.
+// The largest λ with −λ·load in `limits` (largest_load_factor(), on the layout allocation's
+// default scales, as `capability --loads` has the model's units), and the actuators at a limit
+// there.
 FeasibilityPoint region_factor(const ThrustLimits& limits, const Eigen::Vector3d& load_b) {
   FeasibilityPoint out;
-  const auto held = [&](double lambda) { return attain(limits, -lambda * load_b); };
-  std::optional<Attainment> at = held(kMaxLoadFactor);
-  if (at) {
-    out.load_factor = kMaxLoadFactor;
-    out.capped = true;
-  } else {
-    double lo = 0.0, hi = kMaxLoadFactor;
-    at = held(0.0);
-    while (hi - lo > 1e-4 * hi) {
-      const double mid = 0.5 * (lo + hi);
-      if (std::optional<Attainment> a = held(mid)) {
-        lo = mid;
-        at = std::move(a);
-      } else {
-        hi = mid;
-      }
-    }
-    // feasibility()'s rule, on the layout allocation's default scales (`capability --loads`
-    // on the model's units): a multiple below 10⁻³ of them is nothing held, the bisection
-    // having run down to the region's rounding tolerance.
-    const model::LayoutAllocationOptions o;
-    const double size =
-        std::max({std::abs(load_b(0)) / o.force_scale, std::abs(load_b(1)) / o.force_scale,
-                  std::abs(load_b(2)) / o.moment_scale});
-    out.load_factor = lo * size < 1e-3 ? 0.0 : lo;
-  }
+  std::optional<Attainment> at;  // at the largest factor held
+  const auto holds = [&](double lambda) {
+    std::optional<Attainment> a = attain(limits, -lambda * load_b);
+    const bool met = a.has_value();
+    if (met) at = std::move(a);
+    return met;
+  };
+  const model::LayoutAllocationOptions o;
+  const LoadFactor f = largest_load_factor(holds, load_b, o.force_scale, o.moment_scale);
+  out.load_factor = f.value;
+  out.capped = f.capped;
   for (std::size_t k = 0; at && k < at->at_limit.size(); ++k) {
     if (at->at_limit[k]) out.limiting.push_back(actuator_names()[k]);
   }

@@ -10,41 +10,38 @@
 
 namespace dynpos::capability {
 
+LoadFactor largest_load_factor(const std::function<bool(double)>& holds,
+                               const Eigen::Vector3d& load_b, double force_scale,
+                               double moment_scale) {
+  if (holds(kMaxLoadFactor)) return {kMaxLoadFactor, true};
+  (void)holds(0.0);  // the callers' last held result is at least the calm's
+  double lo = 0.0, hi = kMaxLoadFactor;
+  while (hi - lo > 1e-4 * hi) {
+    const double mid = 0.5 * (lo + hi);
+    (holds(mid) ? lo : hi) = mid;
+  }
+  const double size =
+      std::max({std::abs(load_b(0)) / force_scale, std::abs(load_b(1)) / force_scale,
+                std::abs(load_b(2)) / moment_scale});
+  return {lo * size < 1e-3 ? 0.0 : lo, false};
+}
+
 FeasibilityPoint feasibility(const model::LayoutAllocator& allocator, const LoadCase& load,
                              const FailureCase& failure) {
   FeasibilityPoint out;
   out.direction_deg = load.direction_deg;
   out.failure = failure.name;
-  const auto held = [&](double lambda) {
-    return allocator.allocate(-lambda * load.load_b, failure.capacity);
+  model::LayoutAllocation at;  // the allocation at the largest factor held
+  const auto holds = [&](double lambda) {
+    model::LayoutAllocation a = allocator.allocate(-lambda * load.load_b, failure.capacity);
+    const bool met = a.met;
+    if (met) at = std::move(a);
+    return met;
   };
-  model::LayoutAllocation at = held(kMaxLoadFactor);
-  if (at.met) {
-    out.load_factor = kMaxLoadFactor;
-    out.capped = true;
-  } else {
-    double lo = 0.0, hi = kMaxLoadFactor;
-    at = held(0.0);
-    while (hi - lo > 1e-4 * hi) {
-      const double mid = 0.5 * (lo + hi);
-      model::LayoutAllocation a = held(mid);
-      if (a.met) {
-        lo = mid;
-        at = std::move(a);
-      } else {
-        hi = mid;
-      }
-    }
-    // A multiple so small that the allocation's tolerance of "met" (10⁻⁶ of the force and
-    // moment scales) is more than 0.1 % of it is nothing held: at 10⁻⁴ a load the units cannot
-    // hold at all came out at λ = 1.8·10⁻⁴ (a random layout against a linear programme,
-    // python/tests/test_feasibility_lp.py).
-    const auto& o = allocator.options();
-    const double size = std::max({std::abs(load.load_b(0)) / o.force_scale,
-                                  std::abs(load.load_b(1)) / o.force_scale,
-                                  std::abs(load.load_b(2)) / o.moment_scale});
-    out.load_factor = lo * size < 1e-3 ? 0.0 : lo;
-  }
+  const auto& o = allocator.options();
+  const LoadFactor f = largest_load_factor(holds, load.load_b, o.force_scale, o.moment_scale);
+  out.load_factor = f.value;
+  out.capped = f.capped;
   for (std::size_t k = 0; k < at.units.size(); ++k) {
     if (at.units[k].at_limit) out.limiting.push_back(allocator.units()[k].name);
   }

@@ -79,9 +79,7 @@ Eigen::Vector3d DpEstimator::measure(double t, const sim::ConstVectorRef& x) {
   y.z() = core::wrap_2pi(y.z() + heading_noise_.sample());
   wf_velocity_b_ = Eigen::Vector3d(wf.velocity[0], wf.velocity[1], wf.velocity[5]);
   yaw_rate_ = x[Plant::kHull + Hull::kYawRate] + wf.velocity[5] + rate_noise_.sample();
-  const bool lost = std::any_of(gnss_dropouts_.begin(), gnss_dropouts_.end(),
-                                [t](const DropoutEvent& d) { return d.covers(t); });
-  if (lost) y.x() = y.y() = core::kMissing;
+  if (any_covers(gnss_dropouts_, t)) y.x() = y.y() = core::kMissing;
   return y;
 }
 

@@ -156,8 +156,8 @@ void validate_events(const ScenarioSpec& spec) {
 
 }  // namespace
 
-bool ScenarioSpec::gnss_lost(double t) const noexcept {
-  return std::any_of(gnss_dropouts.begin(), gnss_dropouts.end(),
+bool any_covers(const std::vector<DropoutEvent>& dropouts, double t) noexcept {
+  return std::any_of(dropouts.begin(), dropouts.end(),
                      [t](const DropoutEvent& d) { return d.covers(t); });
 }
 

@@ -89,9 +89,8 @@ TrialLogger::~TrialLogger() = default;
 
 void TrialLogger::record(double t, const VesselSample& sample) {
   const std::span<double> measured(row_);
-  const bool gnss_lost = std::any_of(gnss_dropouts_.begin(), gnss_dropouts_.end(),
-                                     [t](const DropoutEvent& d) { return d.covers(t); });
-  sensors_->record(tick_++, sample, measured.first(sensors_->channel_count()), gnss_lost);
+  sensors_->record(tick_++, sample, measured.first(sensors_->channel_count()),
+                   any_covers(gnss_dropouts_, t));
   std::size_t i = sensors_->channel_count();
   const Eigen::Vector3d& demand_pct = control_.demand_pct();
   const Eigen::Vector3d& lever_pct = control_.lever_pct();

@@ -133,9 +133,9 @@ TEST(ScenarioEvents, FileKeysAndTheirErrors) {
   EXPECT_EQ(ok.observer, control::ObserverKind::kEkf);
   ASSERT_TRUE(ok.failure);
   EXPECT_EQ(ok.failure->t_s, 50.0);
-  EXPECT_TRUE(ok.gnss_lost(20.0));
-  EXPECT_TRUE(ok.gnss_lost(49.9));
-  EXPECT_FALSE(ok.gnss_lost(50.0));
+  EXPECT_TRUE(any_covers(ok.gnss_dropouts, 20.0));
+  EXPECT_TRUE(any_covers(ok.gnss_dropouts, 49.9));
+  EXPECT_FALSE(any_covers(ok.gnss_dropouts, 50.0));
   EXPECT_THAT(error_of([&] { load("observer = \"kalman\""); }),
               ::testing::HasSubstr("unknown observer 'kalman'"));
   EXPECT_THAT(error_of([&] { load("failure_at_s = 500\nfailure = \"tunnel\""); }),

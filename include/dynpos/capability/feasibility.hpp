@@ -10,6 +10,7 @@
 /// bisection on "the allocation meets −λ·τ_env", to 0.01 % of λ. The units at a limit in the
 /// allocation at that λ are the limiting ones.
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,20 @@ struct FeasibilityPoint {
 using model::failure_case;
 using model::failure_cases;
 using model::FailureCase;
+
+/// The largest λ in [0, kMaxLoadFactor] for which holds(λ) (−λ·load_b within the thrusters'
+/// limits): kMaxLoadFactor, capped, when that holds; else bisected to 0.01 % (every smaller
+/// multiple of a held load is held), and 0 when that multiple is below 10⁻³ of the force and
+/// moment scales [N, N·m] — the rounding of "held" is then more than 0.1 % of it: at 10⁻⁴ a load
+/// the units cannot hold at all came out at λ = 1.8·10⁻⁴ (a random layout against a linear
+/// programme, python/tests/test_feasibility_lp.py).
+struct LoadFactor {
+  double value = 0.0;
+  bool capped = false;
+};
+LoadFactor largest_load_factor(const std::function<bool(double)>& holds,
+                               const Eigen::Vector3d& load_b, double force_scale,
+                               double moment_scale);
 
 /// The factor of `load` with the capacities of `failure`. A zero load is held at any factor:
 /// kMaxLoadFactor, capped. A factor whose multiple of the load is below 10⁻³ of the

@@ -74,6 +74,9 @@ struct DropoutEvent {
   bool covers(double t) const noexcept { return t >= t_s && t < t_s + duration_s; }
 };
 
+/// True while one of `dropouts` covers scenario time t [s].
+bool any_covers(const std::vector<DropoutEvent>& dropouts, double t) noexcept;
+
 /// The weather and water of a run. Directions follow the sea-trial habit: wind and waves are
 /// given as the direction they come FROM, current as the direction it flows TO, all in degrees
 /// clockwise from north.
@@ -124,8 +127,6 @@ struct ScenarioSpec {
   std::optional<FailureEvent> failure;
   /// GNSS dropouts ([[gnss_dropout]] with t_s, duration_s), in increasing time.
   std::vector<DropoutEvent> gnss_dropouts;
-  /// True while a GNSS dropout covers scenario time t [s].
-  bool gnss_lost(double t) const noexcept;
   /// DP mode with hybrid integral action (thesis ch. 5): the bias estimate jumps by the
   /// practical rule (5.64)–(5.67) (file section [hybrid], enabled = true). Absent: the
   /// conventional continuous integral action only.
