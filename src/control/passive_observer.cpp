@@ -2,6 +2,7 @@
 
 #include <Eigen/LU>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 namespace dynpos::control {
@@ -82,6 +83,19 @@ PassiveObserver::State PassiveObserver::derivative(const State& x, const Eigen::
 }
 
 void PassiveObserver::step(const Eigen::Vector3d& y_n, const Eigen::Vector3d& tau_b, double dt_s) {
+  // Lost now: coast from the wave-period means (see the file comment).
+  const bool position_lost = std::isnan(y_n.x()) || std::isnan(y_n.y());
+  const bool heading_lost = std::isnan(y_n.z());
+  if (position_lost && !position_lost_) {
+    x_.segment<2>(9) = nu_mean_b_.head<2>();
+    x_.segment<2>(12) = bias_mean_n_.head<2>();
+  }
+  if (heading_lost && !heading_lost_) {
+    x_(11) = nu_mean_b_.z();
+    x_(14) = bias_mean_n_.z();
+  }
+  position_lost_ = position_lost;
+  heading_lost_ = heading_lost;
   const State k1 = derivative(x_, y_n, tau_b);
   const State k2 = derivative(x_ + 0.5 * dt_s * k1, y_n, tau_b);
   const State k3 = derivative(x_ + 0.5 * dt_s * k2, y_n, tau_b);
@@ -91,6 +105,13 @@ void PassiveObserver::step(const Eigen::Vector3d& y_n, const Eigen::Vector3d& ta
   estimate_.eta_n = x_.segment<3>(6);
   estimate_.nu_b = x_.segment<3>(9);
   estimate_.bias_n = x_.segment<3>(12);
+  const Eigen::Vector3d measured(position_lost ? 0.0 : 1.0, position_lost ? 0.0 : 1.0,
+                                 heading_lost ? 0.0 : 1.0);
+  const Eigen::Vector3d alpha =
+      measured.array() *
+      (1.0 - (-dt_s * model_.wave_peak_frequency_rad_s.array() / (2.0 * std::numbers::pi)).exp());
+  nu_mean_b_ += alpha.cwiseProduct(estimate_.nu_b - nu_mean_b_);
+  bias_mean_n_ += alpha.cwiseProduct(estimate_.bias_n - bias_mean_n_);
 }
 
 }  // namespace dynpos::control

@@ -64,6 +64,11 @@ std::vector<sim::RecordedSignal> TruthRecorder::observer_signals() {
   out.push_back(truth_channel("observer.east", "m", [=] { return estimate().eta_n.y(); }));
   out.push_back(truth_channel("observer.heading", "rad",
                               [=] { return core::wrap_2pi(estimate().eta_n.z()); }));
+  const char* const velocity[][2] = {{"u", "m/s"}, {"v", "m/s"}, {"r", "rad/s"}};
+  for (int k = 0; k < 3; ++k) {
+    out.push_back(truth_channel(std::string("observer.") + velocity[k][0], velocity[k][1],
+                                [=] { return estimate().nu_b[k]; }));
+  }
   for (int k = 0; k < 3; ++k) {
     out.push_back(truth_channel(std::string("observer.bias.") + axes[k][0], axes[k][1],
                                 [=] { return estimate().bias_n[k]; }));

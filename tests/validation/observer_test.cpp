@@ -276,9 +276,11 @@ void heading_error_rms(const Trial& at45_all) {
 // A 30 s GNSS dropout from 600 s: the observer coasts on its model (heading and thrust still
 // measured). The LF position error at the end of the dropout, worst of 20 seeds, against a
 // bound of 2 m: two thirds of a 3 m footprint, where a DP operator would have to act. The EKF
-// holds it (measured worst 1.0 m). The passive observer does not (measured worst 6.3 m): its
-// faster LF loop (passive_observer.hpp, what keeps the DP loop within 1.3 times the ideal one's
-// motion) leaves wave motion in its velocity, on which it then coasts; guarded at 7 m, open.
+// holds it (measured worst 1.0 m). The passive observer comes close (measured worst 2.34 m; 6.3 m
+// before it started coasting from its wave-period means, passive_observer.hpp): its faster LF
+// loop (what keeps the DP loop within 1.3 times the ideal one's motion) tracks the gusts in b̂,
+// and the load it coasts on is then off by the gusts of the dropout's 30 s; guarded at 2.5 m,
+// open.
 TEST(ObserverDropout, CoastsThroughThirtySecondsWithoutGnss) {
   const scenario::VesselConfig vessel =
       scenario::load_vessel_config(kSource / "data" / "vessels" / "gunnerus.toml");
@@ -300,7 +302,7 @@ TEST(ObserverDropout, CoastsThroughThirtySecondsWithoutGnss) {
     for (int s = 0; s < kSeeds; ++s) {
       const double e = error_m[k * kSeeds + static_cast<std::size_t>(s)];
       worst = std::max(worst, e);
-      EXPECT_LE(e, kinds[k] == ObserverKind::kEkf ? 2.0 : 7.0)
+      EXPECT_LE(e, kinds[k] == ObserverKind::kEkf ? 2.0 : 2.5)
           << observer_name(kinds[k]) << " seed " << s + 1;
     }
     std::printf("%s: LF position error at the end of a 30 s GNSS dropout, worst of %d: %.2f m\n",

@@ -25,6 +25,13 @@
 /// A bias held against the decay −T⁻¹ b̂ of (2.22) settles short of the truth, per BODY axis at
 /// b̂ = b / (1 + (D K₂ + K₄)/(T K₃)) ≈ b (1 − 2/(ω_b T)): 2.7–3.3 % short on that vessel with
 /// T = 1000 s.
+///
+/// A lost measurement (a GNSS dropout: N and E NaN; a gyro fault: ψ NaN) leaves ỹ = 0 in it and
+/// the observer coasts on its model. The fast LF loop leaves wave motion in ν̂ and b̂ (on the
+/// virtual Gunnerus in H_s 2.5 m up to 0.5 m/s and 10 kN at an instant), on which it would
+/// coast: when a measurement is lost, ν̂ and b̂ of its DOFs (u, v and b_N, b_E for the position;
+/// r and b_ψ for the heading) start from their means over the last wave period instead, a
+/// first-order low-pass of time constant 2π/ω₀ that the wave motion averages out of.
 
 #include <Eigen/Core>
 
@@ -67,7 +74,8 @@ class PassiveObserver {
                   const Eigen::Vector3d& eta0_n);
 
   /// Advances the estimate by dt [s] (one RK4 step with y and τ held) on the measurement
-  /// y = (N, E, ψ) [m, m, rad] (a component NaN: missing) and the thrust τ (BODY) [N, N, N·m].
+  /// y = (N, E, ψ) [m, m, rad] (a component NaN: missing; see the file comment for the step
+  /// where it is lost) and the thrust τ (BODY) [N, N, N·m].
   void step(const Eigen::Vector3d& y_n, const Eigen::Vector3d& tau_b, double dt_s);
 
   const ObserverEstimate& estimate() const noexcept { return estimate_; }
@@ -81,6 +89,10 @@ class PassiveObserver {
   Eigen::Matrix3d M_inv_;
   State x_ = State::Zero();
   ObserverEstimate estimate_;
+  // ν̂ (BODY) and b̂ (NED) low-passed over a wave period, per DOF, while it is measured.
+  Eigen::Vector3d nu_mean_b_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d bias_mean_n_ = Eigen::Vector3d::Zero();
+  bool position_lost_ = false, heading_lost_ = false;
 };
 
 }  // namespace dynpos::control
