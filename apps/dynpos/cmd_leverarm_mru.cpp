@@ -49,6 +49,10 @@ void add_leverarm_mru(CLI::App& leverarm) {
   sub->add_option("--mru-log", o->mru_log,
                   "MRU accelerations in a file of their own (repeatable): NAME=FILE with "
                   "columns time, NAME.ax, NAME.ay, NAME.az");
+  sub->add_option("--reference", o->request.reference,
+                  "An MRU of LOG (e.g. mru1) to measure the other MRUs' arms from: its "
+                  "accelerations stand in for the origin's, so no velocity is needed (the logger "
+                  "alone: its roll, pitch, p, q, r, ax, ay, az and the heading)");
   add_enum_option(*sub, "--accel", o->request.accel, analysis::accel_from_name,
                   "What the MRU acceleration channels hold: kinematic (gravity removed) or "
                   "specific-force (g rotated into BODY is added back)");
@@ -68,7 +72,8 @@ void add_leverarm_mru(CLI::App& leverarm) {
   sub->footer(
       "Model (4.65) in BODY: a_i − a₀ = (S(ω)² + S(ω̇))·l_i, a₀ = ν̇ + ω × ν (4.69). Needs "
       "rotation: a turning circle in waves. Example: dynpos leverarm mru DIR/truth.csv "
-      "--mru-log mru1=DIR/log.csv --mru-log mru2=DIR/log.csv --json arms.json --plots plots");
+      "--mru-log mru1=DIR/log.csv --mru-log mru2=DIR/log.csv --json arms.json --plots plots; from "
+      "the logger alone: dynpos leverarm mru DIR/log.csv --reference mru1");
   sub->callback([o] { run_cli(*o); });
 }
 

@@ -390,7 +390,8 @@ def leverarm_gnss(log, col=None, unit=None, map=None, *, json=None, plots=None,
 def leverarm_mru(log, col=None, unit=None, map=None, *, json=None, plots=None,
                  **options) -> Result:
     """MRU lever arms [m, BODY] from the MRUs' accelerations (thesis 4.3): least squares or the
-    observer. Options as ``dynpos leverarm mru``: ``mru_log`` ({"mruK": FILE}), ``accel``,
+    observer. Options as ``dynpos leverarm mru``: ``mru_log`` ({"mruK": FILE}), ``reference``
+    ("mruK": the other MRUs' arms from it, no velocity needed), ``accel``,
     ``method`` ("lsq", "observer"), ``window_s``, ``tau_s`` [s], ``w1`` [1/s]; ``plots``
     (folder). Table: ``arms``."""
     q = _request(_dynpos.LeverarmMruRequest, log, col, unit, map, options)

@@ -131,6 +131,7 @@ void bind_leverarm_mru(py::module_& m) {
   c.def(py::init<>())
       .def_readwrite("source", &Q::source)
       .def_readwrite("mru_log", &Q::mru_log)
+      .def_readwrite("reference", &Q::reference)
       .def_property(
           "method", [](const Q& q) { return std::string(calib::to_string(q.method)); },
           [](Q& q, const std::string& name) { q.method = mru_method_from_name(name); })

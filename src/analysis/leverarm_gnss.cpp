@@ -15,6 +15,7 @@
 #include "dynpos/io/nmea_log.hpp"
 #include "dynpos/io/time_stamp.hpp"
 #include "gnss_antenna_name.hpp"
+#include "gps_week_rollover.hpp"
 #include "leverarm_ins.hpp"
 
 namespace dynpos::analysis {
@@ -202,7 +203,9 @@ core::Log read_antenna_capture(const LeverarmGnssRequest& q, const std::string& 
   if (in.input.origin) main0 = io::parse_iso8601(*in.input.origin);
   core::Log placed;
   if (nl.origin_ns && main0 && !utc0) {
-    placed = shifted_by(nl.log, 1e-9 * static_cast<double>(*nl.origin_ns - main0->ns));
+    const int cycles = detail::gps_week_rollover_cycles(in.log, main0->ns, nl.log, *nl.origin_ns,
+                                                        0.0, q.source.strict, nl.report);
+    placed = shifted_by(nl.log, detail::origin_offset_s(main0->ns, *nl.origin_ns, cycles));
     nl.report.notes.push_back("aligned on the main log by its absolute time stamps");
   } else if (nl.origin_ns) {
     const std::int64_t day_ns = 86'400'000'000'000;

@@ -11,6 +11,15 @@ namespace dynpos::analysis {
 
 using Vec3 = Eigen::Vector3d;
 
+namespace {
+
+// What the arms are measured from.
+std::string origin_name(const LeverarmMruReport& report) {
+  return report.reference.empty() ? "the control origin" : report.reference;
+}
+
+}  // namespace
+
 nlohmann::json to_json(const LeverarmMruReport& report) {
   const calib::MruEstimateResult& r = report.result;
   nlohmann::json doc;
@@ -38,7 +47,8 @@ nlohmann::json to_json(const LeverarmMruReport& report) {
                        {"information_condition", number_json(e.info_condition)},
                        {"advice", e.advice}};
   doc["notes"] = report.notes;
-  doc["units"] = "m, BODY (x forward, y starboard, z down) from the control origin";
+  doc["reference"] = report.reference.empty() ? "co" : report.reference;
+  doc["units"] = "m, BODY (x forward, y starboard, z down) from " + origin_name(report);
   return doc;
 }
 
@@ -77,9 +87,9 @@ report::Table arm_table(const LeverarmMruReport& report,
 std::string to_text(const LeverarmMruReport& report) {
   const calib::MruEstimateResult& r = report.result;
   const auto& e = r.excitation;
-  std::string out =
-      fmt::format("{}: MRU lever arms ({}), BODY from the control origin\n{}", report.log.string(),
-                  calib::to_string(r.method), report::render_text(arm_table(report)));
+  std::string out = fmt::format("{}: MRU lever arms ({}), BODY from {}\n{}", report.log.string(),
+                                calib::to_string(r.method), origin_name(report),
+                                report::render_text(arm_table(report)));
   out += fmt::format(
       "excitation (Proposition 3): G(t) rank 3 in {:.0f} % of the samples, median "
       "σ_min(G) {:.2e} 1/s³, median cond(G) {:.1f}; information matrix cond {:.1f}\n",

@@ -9,6 +9,7 @@
 #include "dynpos/analysis/log_source.hpp"
 #include "dynpos/core/log_align.hpp"
 #include "dynpos/io/log_file.hpp"
+#include "gps_week_rollover.hpp"
 #include "log_files.hpp"
 
 namespace dynpos::analysis {
@@ -41,23 +42,6 @@ void check_overlap(const core::Log& main, io::FileLog& part, double offset_s) {
   }
 }
 
-// A GPS receiver whose firmware predates a week-number rollover dates its fixes 1024 weeks
-// (7168 days, 19.6 years) early; the last rollover was on 2019-04-06.
-constexpr std::int64_t kGpsWeekCycleNs = std::int64_t{1024} * 7 * 86400 * 1'000'000'000;
-
-// The difference of two absolute origins [s], `cycles` GPS week cycles (at most 3) added to
-// the part's: exact in integer nanoseconds, in floating point where that would overflow
-// (origins centuries apart, which no overlap check then accepts).
-double origin_offset_s(std::int64_t main_ns, std::int64_t part_ns, int cycles) {
-  std::int64_t ns = 0;
-  if (__builtin_sub_overflow(part_ns, main_ns, &ns) ||
-      __builtin_add_overflow(ns, cycles * kGpsWeekCycleNs, &ns)) {
-    return (static_cast<double>(part_ns) - static_cast<double>(main_ns)) * 1e-9 +
-           cycles * static_cast<double>(kGpsWeekCycleNs) * 1e-9;
-  }
-  return static_cast<double>(ns) * 1e-9;
-}
-
 // The offset [s] that puts `part`'s times on the main log's clock: the difference of their
 // absolute origins when both files have absolute time stamps (`cycles` GPS week cycles added to
 // the part's), plus the user's clock offset.
@@ -65,7 +49,7 @@ double clock_offset_s(std::optional<std::int64_t> main_origin_ns, io::FileLog& p
                       double user_offset_s, int cycles) {
   if (main_origin_ns && part.origin_ns) {
     part.report.notes.push_back("aligned on the main log by its absolute time stamps");
-    return origin_offset_s(*main_origin_ns, *part.origin_ns, cycles) + user_offset_s;
+    return detail::origin_offset_s(*main_origin_ns, *part.origin_ns, cycles) + user_offset_s;
   }
   if (main_origin_ns.has_value() != part.origin_ns.has_value()) {
     part.report.notes.push_back(fmt::format(
@@ -76,43 +60,13 @@ double clock_offset_s(std::optional<std::int64_t> main_origin_ns, io::FileLog& p
   return user_offset_s;
 }
 
-bool overlaps(const core::Log& main, const core::Log& part, double offset_s) {
-  return part.time().back() + offset_s >= main.time().front() &&
-         part.time().front() + offset_s <= main.time().back();
-}
-
-// Two files with absolute stamps that overlap only when one is moved by whole GPS week cycles
-// (1 to 3): a receiver's week-number rollover, which makes its dates early. Returns the cycles
-// to add to the part's stamps (positive: the part's dates are early; negative: the main log's),
-// noted in the part's report, or 0. With `strict` it is an error naming the part.
+// The GPS week cycles to add to `part`'s stamps (gps_week_rollover.hpp); 0 unless both files
+// have absolute stamps.
 int rollover_cycles(const core::Log& main, io::FileLog& part, std::optional<std::int64_t> main_ns,
                     double user_offset_s, bool strict) {
   if (!main_ns || !part.origin_ns) return 0;
-  const auto fits = [&](int cycles) {
-    return overlaps(main, part.log,
-                    origin_offset_s(*main_ns, *part.origin_ns, cycles) + user_offset_s);
-  };
-  if (fits(0)) return 0;
-  for (const int cycles : {1, -1, 2, -2, 3, -3}) {
-    if (!fits(cycles)) continue;
-    const int weeks = 1024 * std::abs(cycles);
-    const std::string what = fmt::format(
-        "its absolute time stamps are {} weeks ({:.1f} years) {} the main log's: {} those of a "
-        "GPS receiver after a week-number rollover",
-        weeks, weeks * 7 / 365.25, cycles > 0 ? "before" : "after",
-        cycles > 0 ? "its dates are" : "the main log's dates are");
-    if (strict) {
-      core::InputLocation where;
-      where.file = part.report.path;
-      throw core::InputError(where, what + "; refused with --strict",
-                             "correct the receiver's dates, or read without --strict to align "
-                             "the files by the whole weeks");
-    }
-    part.report.notes.push_back(
-        fmt::format("{}; aligned {} weeks {}", what, weeks, cycles > 0 ? "later" : "earlier"));
-    return cycles;
-  }
-  return 0;
+  return detail::gps_week_rollover_cycles(main, *main_ns, part.log, *part.origin_ns, user_offset_s,
+                                          strict, part.report);
 }
 
 // How a file other than the main log is read: detected by content, whole (a window is the

@@ -35,7 +35,8 @@ void trim_to_common_span(MruRawSamples& raw) {
 
 MruEstimateResult estimate_mru_arms_from_imu(const ImuSeries& imu, const core::Log& log,
                                              const std::vector<std::string>& names,
-                                             double smooth_window_s) {
+                                             double smooth_window_s,
+                                             const MruEstimateOptions& options) {
   MruRawSamples raw;
   raw.t_s = imu.t_s;
   raw.theta_rad = imu.theta_rad;
@@ -74,7 +75,7 @@ MruEstimateResult estimate_mru_arms_from_imu(const ImuSeries& imu, const core::L
   const Eigen::Matrix3d bias =
       Eigen::Matrix3d(var.asDiagonal()) - var.sum() * Eigen::Matrix3d::Identity();
   for (auto& M : s.M_b) M -= bias;
-  return estimate_mru_arms(s);
+  return estimate_mru_arms(s, options);
 }
 
 }  // namespace dynpos::calib

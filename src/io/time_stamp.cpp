@@ -363,16 +363,60 @@ struct FractionReadings {
   std::int64_t decimal_ns = 0;   // relative to the first cell
   std::int64_t unpadded_ns = 0;  // relative to the first cell
   std::size_t digits = 0;        // fraction digits
+  bool leading_zero = false;     // "05": never an unpadded integer
 };
+
+// The fraction digits of a cell as FractionReadings describes them.
+FractionReadings fraction_of(std::string_view digits) {
+  return {0, 0, digits.size(), digits.size() > 1 && digits.front() == '0'};
+}
+
+double median_of(std::vector<double> v) {
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+
+// The largest departure of a step from the median step.
+double largest_departure(const std::vector<double>& steps) {
+  const double m = median_of(steps);
+  double out = 0.0;
+  for (const double d : steps) out = std::max(out, std::abs(d - m));
+  return out;
+}
+
+// A slow logger (1–2 Hz) with the bug never goes back read as decimals, but where its fraction
+// changes length (0.099999999 s written "99999999", then 0.100000123 s "100000123") the decimal
+// reading jumps off its pace while the nanosecond reading keeps it: both lengths seen, 9 digits
+// among them, and the nanosecond reading's largest departure from its median step a tenth of the
+// decimal reading's at most, which departs by a tenth of its step at least.
+bool slow_logger_evidence(std::span<const FractionReadings> rows,
+                          const std::vector<double>& ns_steps,
+                          const std::vector<double>& decimal_steps) {
+  bool nine = false, shorter = false;
+  for (const FractionReadings& r : rows) {
+    nine = nine || r.digits == 9;
+    shorter = shorter || r.digits < 9;
+  }
+  if (!nine || !shorter || ns_steps.size() < 2 || decimal_steps.size() != ns_steps.size()) {
+    return false;
+  }
+  const double decimal_departure = largest_departure(decimal_steps);
+  return decimal_departure >= 0.1 * median_of(decimal_steps) &&
+         largest_departure(ns_steps) <= 0.1 * decimal_departure;
+}
 
 // The exporter bug's signature is systematic: read as unpadded nanoseconds the stamps never go
 // back and run at the logger's own pace; read as decimals they go back where the fraction
 // grows longer ("16.99…" then "16.1…"). One row out of order in a decimal log also goes back
 // from a shorter to a longer fraction ("12.9" then "12.85"), but read as nanoseconds its rows
 // then crowd into nanoseconds and jump by whole seconds: the median step tells the two apart.
+// A fraction with a leading zero ("12.05") is no unpadded integer: decimals.
 bool unpadded_evidence(std::span<const FractionReadings> rows) {
   std::size_t decimal_backs = 0;
   std::vector<double> ns_steps, decimal_steps;
+  for (const FractionReadings& r : rows) {
+    if (r.leading_zero) return false;
+  }
   for (std::size_t i = 1; i < rows.size(); ++i) {
     const FractionReadings& a = rows[i - 1];
     const FractionReadings& b = rows[i];
@@ -385,14 +429,11 @@ bool unpadded_evidence(std::span<const FractionReadings> rows) {
       decimal_steps.push_back(static_cast<double>(b.decimal_ns - a.decimal_ns));
     }
   }
-  if (decimal_backs == 0 || decimal_steps.empty()) return false;
-  const auto median = [](std::vector<double>& v) {
-    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
-    return v[v.size() / 2];
-  };
+  if (decimal_steps.empty()) return false;
+  if (decimal_backs == 0) return slow_logger_evidence(rows, ns_steps, decimal_steps);
   // The logger's pace read both ways agrees within a factor of ten for the bug; for a decimal
   // log with rows out of order the nanosecond reading's median step is below a microsecond.
-  return median(ns_steps) >= 0.1 * median(decimal_steps);
+  return median_of(ns_steps) >= 0.1 * median_of(decimal_steps);
 }
 
 // An ISO 8601 stamp without its fraction, and the fraction's digits; nullopt without one.
@@ -430,8 +471,10 @@ bool looks_like_unpadded_ns(std::span<const std::string_view> cells) {
       first_decimal = decimal;
     }
     // Decimal seconds to integer ns about the first cell: exact enough for the order and pace.
-    rows.push_back({std::llround((*decimal - *first_decimal) * 1e9), *ns - *first_ns,
-                    text.size() - text.find('.') - 1});
+    FractionReadings row = fraction_of(text.substr(text.find('.') + 1));
+    row.decimal_ns = std::llround((*decimal - *first_decimal) * 1e9);
+    row.unpadded_ns = *ns - *first_ns;
+    rows.push_back(row);
   }
   return unpadded_evidence(rows);
 }
@@ -462,8 +505,10 @@ bool looks_like_unpadded_iso8601(std::span<const std::string_view> cells) {
       first_ns = ns->ns;
       first_decimal = decimal->ns;
     }
-    rows.push_back({decimal->ns - *first_decimal, ns->ns - *first_ns,
-                    split_iso_fraction(cell)->digits.size()});
+    FractionReadings row = fraction_of(split_iso_fraction(cell)->digits);
+    row.decimal_ns = decimal->ns - *first_decimal;
+    row.unpadded_ns = ns->ns - *first_ns;
+    rows.push_back(row);
   }
   return unpadded_evidence(rows);
 }

@@ -132,10 +132,12 @@ void TimeStampReader::start(std::span<const std::string_view> first_cells,
   info_.format = std::string(time_format_name(f));
   if (format_.unpadded_ns) {
     info_.format += " (unpadded nanoseconds)";
-    info_.notes.push_back(
+    info_.notes.push_back(fmt::format(
         "the time fractions are integer nanoseconds without leading zeros (an exporter bug: "
-        "'16.79441101' is 16.079441101 s); read as such, since read as decimals the time went "
-        "back");
+        "'{}' is {}); read as such, since read as decimals the time went back or, where the "
+        "fraction changed length, off the logger's pace",
+        f == TimeFormat::kIso8601 ? "2025/04/28 11:39:17.78903511" : "16.79441101",
+        f == TimeFormat::kIso8601 ? "11:39:17.078903511" : "16.079441101 s"));
   }
   if (f == TimeFormat::kTimeOfDay && !column_.has_date && !date_days_) {
     info_.notes.push_back(

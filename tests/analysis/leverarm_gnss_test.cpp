@@ -3,11 +3,14 @@
 
 #include "dynpos/analysis/leverarm_gnss.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <string>
 #include <utility>
@@ -16,6 +19,7 @@
 #include "dynpos/analysis/demo_sections.hpp"
 #include "dynpos/analysis/leverarm_mru.hpp"
 #include "dynpos/core/error.hpp"
+#include "dynpos/io/time_stamp.hpp"
 #include "dynpos/scenario/campaign.hpp"
 #include "dynpos/scenario/runner.hpp"
 #include "dynpos/scenario/scenario_spec.hpp"
@@ -122,6 +126,79 @@ TEST_F(LeverarmGnss, NmeaFixesOnTheLogClock) {
   } catch (const core::InputError& e) {
     EXPECT_EQ(e.option(), "utc_at_zero");
     EXPECT_EQ(e.where().file, (trial() / "gnss1.nmea").string());
+  }
+}
+
+// `file` with each line through `edit`.
+void rewrite(const std::filesystem::path& from, const std::filesystem::path& to,
+             const std::function<std::string(const std::string&)>& edit) {
+  std::ifstream in(from);
+  std::ofstream out(to);
+  for (std::string line; std::getline(in, line);) out << edit(line) << '\n';
+}
+
+// An NMEA sentence's checksum: the XOR of the characters between '$' and '*'.
+std::string with_checksum(const std::string& sentence) {
+  const std::size_t star = sentence.find('*');
+  unsigned sum = 0;
+  for (std::size_t i = 1; i < star; ++i) sum ^= static_cast<unsigned char>(sentence[i]);
+  return sentence.substr(0, star) + fmt::format("*{:02X}", sum);
+}
+
+// A receiver after a GPS week-number rollover dates its RMC 1024 weeks early (1995-01-11 for
+// 2014-08-27). Beside a log with date-time stamps its capture is aligned by the whole weeks,
+// noted in its input entry, and gives the arms the rightly dated capture gives; with strict it
+// is an error naming the capture.
+TEST_F(LeverarmGnss, ACaptureDatedBeforeAWeekRolloverIsAlignedAndNoted) {
+  const std::int64_t t0_ns = io::parse_iso8601(start_utc_)->ns;
+  const std::filesystem::path dated = trial() / "truth-dated.csv";
+  rewrite(trial() / "truth.csv", dated, [&](const std::string& line) {
+    const std::size_t comma = line.find(',');
+    if (line.rfind("time", 0) == 0) return fmt::format("time{}", line.substr(comma));
+    const double t_s = std::stod(line.substr(0, comma));
+    return io::format_iso8601(t0_ns + std::llround(t_s * 1e9), 0) + line.substr(comma);
+  });
+  const std::string day = io::format_iso8601(t0_ns, 0);  // YYYY-MM-DDT…
+  const std::string early_day = io::format_iso8601(t0_ns - 7168 * 86'400'000'000'000, 0);
+  const auto ddmmyy = [](const std::string& iso) {
+    return fmt::format(",{}{}{},", iso.substr(8, 2), iso.substr(5, 2), iso.substr(2, 2));
+  };
+  EXPECT_EQ(early_day.substr(0, 10), "1995-01-11");
+  const std::filesystem::path early = trial() / "gnss1-early.nmea";
+  std::size_t dates = 0;
+  rewrite(trial() / "gnss1.nmea", early, [&](const std::string& line) {
+    const std::size_t at = line.find(ddmmyy(day));
+    if (line.rfind("$GNRMC", 0) != 0 || at == std::string::npos) return line;
+    ++dates;
+    return with_checksum(line.substr(0, at) + ddmmyy(early_day) + line.substr(at + 8));
+  });
+  ASSERT_GT(dates, 100U);
+
+  LeverarmGnssRequest q;
+  q.source.log = dated;
+  q.nmea = {{"gnss1", trial() / "gnss1.nmea"}};
+  const LeverarmGnssReport right = run_leverarm_gnss(q);
+  q.nmea = {{"gnss1", early}};
+  const LeverarmGnssReport r = run_leverarm_gnss(q);
+  ASSERT_EQ(r.result.arms.size(), 1U);
+  EXPECT_EQ(r.result.arms[0].l_b_m, right.result.arms[0].l_b_m);
+  const io::FileReport* capture = r.input.file(early.string());
+  ASSERT_NE(capture, nullptr);
+  bool noted = false;
+  for (const std::string& note : capture->notes) {
+    noted = noted || note.find(
+                         "its absolute time stamps are 1024 weeks (19.6 years) before the "
+                         "main log's") != std::string::npos;
+  }
+  EXPECT_TRUE(noted) << ::testing::PrintToString(capture->notes);
+
+  q.source.strict = true;
+  try {
+    run_leverarm_gnss(q);
+    FAIL() << "a capture dated 1024 weeks early was accepted with strict";
+  } catch (const core::InputError& e) {
+    EXPECT_EQ(e.where().file, early.string());
+    EXPECT_NE(e.problem().find("refused with --strict"), std::string::npos) << e.what();
   }
 }
 

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "../source_dir.hpp"
@@ -167,14 +168,59 @@ TEST_F(LeverarmMru, JsonHasTheDocumentedKeys) {
     EXPECT_TRUE(j["excitation"].contains(key)) << key;
 }
 
-TEST_F(LeverarmMru, DemoSectionComparesWithTheTruth) {
-  const ReportSection s = leverarm_mru_demo_section(dir_);
+// The demo's section reads the logger alone: in a campaign without truth.csv it runs, its arms
+// from MRU 1, and the true arms' difference (truth.json) is only its check.
+TEST_F(LeverarmMru, DemoSectionRunsFromTheLoggerAloneAndChecksAgainstTheTruth) {
+  const std::filesystem::path campaign = dir_ / "logger-only";
+  std::filesystem::create_directories(campaign / "turning-circle");
+  for (const char* f : {"log.csv", "truth.json"}) {
+    std::filesystem::copy_file(trial() / f, campaign / "turning-circle" / f,
+                               std::filesystem::copy_options::overwrite_existing);
+  }
+  const ReportSection s = leverarm_mru_demo_section(campaign);
   EXPECT_EQ(s.title, "MRU lever arms");
   EXPECT_NE(s.markdown.find("error x, y, z [mm]"), std::string::npos);
-  const std::filesystem::path out = dir_ / "analysis" / "leverarm";
-  for (const char* f : {"mru.json", "mru1.svg", "mru2.svg", "mru-excitation.svg"})
+  EXPECT_NE(s.markdown.find("--reference mru1"), std::string::npos);
+  const std::filesystem::path out = campaign / "analysis" / "leverarm";
+  for (const char* f : {"mru.json", "mru2.svg", "mru-excitation.svg"})
     EXPECT_TRUE(std::filesystem::exists(out / f)) << f;
+  EXPECT_FALSE(std::filesystem::exists(out / "mru1.svg"));  // the reference: no arm of its own
+  std::ifstream in(out / "mru.json");
+  const nlohmann::json doc = nlohmann::json::parse(in);
+  EXPECT_EQ(doc["reference"], "mru1");
+  ASSERT_EQ(doc["input"]["files"].size(), 1U);
+  EXPECT_EQ(doc["input"]["files"][0]["path"], "turning-circle/log.csv");
+  ASSERT_EQ(doc["arms"].size(), 1U);
+  EXPECT_EQ(doc["arms"][0]["name"], "mru2");
+  const Eigen::Vector3d arm(doc["arms"][0]["x"].get<double>(), doc["arms"][0]["y"].get<double>(),
+                            doc["arms"][0]["z"].get<double>());
+  EXPECT_LT((arm - (truth_.at("mru2") - truth_.at("mru1"))).cwiseAbs().maxCoeff(), 0.02) << arm;
   EXPECT_EQ(leverarm_mru_demo_section(dir_ / "no-campaign").title, "");
+}
+
+// A reference MRU: the other MRUs' arms from it with no velocity read; a name that is no MRU
+// prefix, and MRUs in files of their own, are errors of the option.
+TEST_F(LeverarmMru, ReferenceMruNeedsNoVelocity) {
+  LeverarmMruRequest q;
+  q.source.log = trial() / "log.csv";
+  q.reference = "mru1";
+  const LeverarmMruReport r = run_leverarm_mru(q);
+  ASSERT_EQ(r.result.arms.size(), 1U);
+  EXPECT_EQ(r.reference, "mru1");
+  for (const io::RoleOrigin& role : r.input.roles) {
+    EXPECT_TRUE(role.role != "u" && role.role != "v" && role.role != "w") << role.role;
+  }
+  EXPECT_EQ(to_json(r)["units"], "m, BODY (x forward, y starboard, z down) from mru1");
+  EXPECT_NE(to_text(r).find("BODY from mru1\n"), std::string::npos);
+  LeverarmMruRequest bad = q;
+  bad.reference = "gnss1";
+  EXPECT_EQ(error_key(bad), "reference");
+  bad = q;
+  bad.mru_log = {{"mru2", trial() / "log.csv"}};
+  EXPECT_EQ(error_key(bad), "reference");
+  bad = q;
+  bad.reference = "mru3";  // not in the log
+  EXPECT_THROW(run_leverarm_mru(bad), core::InputError);
 }
 
 }  // namespace

@@ -16,6 +16,7 @@ namespace {
 
 using ::testing::ContainsRegex;
 using testing::fixture;
+using ::testing::HasSubstr;
 using testing::input_error_message;
 using testing::TempDir;
 
@@ -110,6 +111,21 @@ TEST(CsvTimeStamps, SecondsAndNanosecondsColumns) {
   EXPECT_EQ(r.log.time(), steps_of(100'000'000, 4));
   EXPECT_EQ(r.time.origin, "2024-05-01T10:00:00.079441101Z");
   EXPECT_EQ(r.log.channel_names(), std::vector<std::string>{"heading"});
+}
+
+// A 1 Hz logger's date-time stamps with the bug (tests/data/io/time_unpadded_iso_1hz.csv):
+// the decimal reading never goes back but jumps 0.11 s where the fraction gets its 9th digit.
+TEST(CsvTimeStamps, UnpaddedNanosecondsOfASlowDateTimeLogger) {
+  const CsvLog r = read_csv_log(fixture("time_unpadded_iso_1hz.csv"),
+                                map_of({{"time", "time"}, {"heading", "heading"}}));
+  EXPECT_EQ(r.time.format, "iso8601 (unpadded nanoseconds)");
+  ASSERT_EQ(r.time.notes.size(), 1u);
+  EXPECT_THAT(r.time.notes[0], HasSubstr("'2025/04/28 11:39:17.78903511' is 11:39:17.078903511"));
+  EXPECT_EQ(r.time.origin, "2025-04-28T11:39:17.090");
+  ASSERT_EQ(r.log.size(), 20u);
+  for (std::size_t k = 0; k < r.log.size(); ++k) {
+    EXPECT_NEAR(r.log.time()[k], 1.001 * static_cast<double>(k), 1e-9) << k;
+  }
 }
 
 TEST(CsvTimeStamps, UnpaddedNanosecondsAreReadAsTheExporterMeantThem) {

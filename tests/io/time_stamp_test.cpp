@@ -408,6 +408,42 @@ TEST(TimeStampReader, UnpaddedNanosecondsInDateTimeStamps) {
       ContainsRegex("f\\.csv:5:2 \\(Time\\): time '2025/04/28 11:39:17\\.85' .* goes back"));
 }
 
+// A 1 Hz logger with the bug never goes back read as decimals; where its fraction drifts across
+// 0.1 s (8 digits, then 9) the decimal reading steps 0.11 s instead of 1.001 s while the
+// nanosecond reading keeps its pace: read as nanoseconds. A 1 Hz logger of true decimals
+// printed to 9 digits without trailing zeros keeps its pace as decimals: decimals.
+TEST(TimeStampReader, UnpaddedNanosecondsOfASlowLogger) {
+  std::vector<std::string> iso, seconds;
+  for (int k = 0; k < 30; ++k) {
+    const std::int64_t ns = 17 * kS + 90'000'000 + k * (kS + 1'000'000);  // gains 1 ms/s
+    iso.push_back(fmt::format("2025/04/28 11:39:{:02}.{}", ns / kS, ns % kS));
+    seconds.push_back(fmt::format("{}.{}", ns / kS, ns % kS));
+  }
+  EXPECT_EQ(iso[9], "2025/04/28 11:39:26.99000000");
+  EXPECT_EQ(iso[10], "2025/04/28 11:39:27.100000000");
+  const std::vector<std::string_view> iso_cells(iso.begin(), iso.end());
+  const TimeColumn c = read(iso_cells);
+  EXPECT_EQ(c.info.format, "iso8601 (unpadded nanoseconds)");
+  EXPECT_EQ(c.info.origin, "2025-04-28T11:39:17.090");
+  ASSERT_EQ(c.t_s.size(), 30u);
+  for (std::size_t k = 0; k < c.t_s.size(); ++k) {
+    EXPECT_NEAR(c.t_s[k], 1.001 * static_cast<double>(k), 1e-9) << k;
+  }
+  const std::vector<std::string_view> second_cells(seconds.begin(), seconds.end());
+  EXPECT_TRUE(detect_time_format(second_cells)->unpadded_ns);
+
+  // The same drift that never reaches 9 digits: the readings differ by a constant only.
+  EXPECT_FALSE(looks_like_unpadded_iso8601(std::span(iso_cells).first(10)));
+  // True decimals at 1 Hz, 9 digits where needed: as nanoseconds their steps would be 1.5 s
+  // and 0.5 s.
+  const std::vector<std::string_view> decimals = {"17.5", "18.500000001", "19.5", "20.499999999",
+                                                  "21.5", "22.500000002", "23.5"};
+  EXPECT_FALSE(looks_like_unpadded_ns(decimals));
+  // A fraction with a leading zero is no unpadded integer.
+  EXPECT_FALSE(looks_like_unpadded_ns(std::vector<std::string_view>{
+      "17.90000000", "18.91000000", "19.92000000", "20.093000000", "21.104000000"}));
+}
+
 TEST(TimeStampReader, OrderPolicies) {
   const std::vector<std::string_view> cells = {"0", "0.1", "0.1", "0.05", "0.2"};
   EXPECT_THAT(

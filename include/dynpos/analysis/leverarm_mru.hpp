@@ -26,6 +26,11 @@ struct LeverarmMruRequest {
   /// NAME → FILE: an MRU's accelerations NAME.ax/ay/az in a file of their own, read with the
   /// source's map, columns and units.
   std::map<std::string, std::filesystem::path> mru_log;
+  /// An MRU of the log ("mru1") the other MRUs' arms are measured from, with its roll, pitch,
+  /// rates and accelerations and the heading: its accelerations stand in for a₀, so no velocity
+  /// is read (the logger alone; calib/imu_mru_arms.hpp). Empty: arms from the control origin,
+  /// a₀ from the velocity (4.69).
+  std::string reference;
   calib::MruAccel accel = calib::MruAccel::kKinematic;  ///< what the acceleration channels hold
   calib::MruMethod method = calib::MruMethod::kLsq;     ///< batch least squares or observer
   double window_s = 1.0;  ///< Savitzky–Golay window of the smoother [s], > 0
@@ -46,13 +51,15 @@ calib::MruMethod mru_method_from_name(const std::string& name);
 /// The estimate and the resolved inputs its outputs need.
 struct LeverarmMruReport {
   std::filesystem::path log;        ///< the motion log as given
+  std::string reference;            ///< the MRU the arms are from; empty: the control origin
   io::InputReport input;            ///< the files read, their formats and skipped lines
   calib::MruEstimateResult result;  ///< status kOk (failures throw)
   std::vector<std::string> notes;   ///< assumptions made preparing the signals
 };
 
 /// Validates, reads the motion and the MRU channels (every NAME of mru_log, then each mruK of
-/// the log not given there), prepares the signals and estimates the arms. core::InputError (naming
+/// the log not given there), prepares the signals and estimates the arms. With a reference,
+/// the arms of the log's other MRUs from it. core::InputError (naming
 /// the file) when the inputs do not give an estimate.
 LeverarmMruReport run_leverarm_mru(const LeverarmMruRequest& request);
 

@@ -17,10 +17,11 @@
 namespace dynpos::calib {
 
 /// Arms of the MRUs `names` (roles NAME.ax/ay/az of `log`, interpolated onto the IMU's time)
-/// from the IMU [m, BODY]. The IMU's time axis should be uniform (a logger's fixed rate).
-/// Throws core::InputError naming a missing role.
+/// from the IMU [m, BODY], by `options`' method. The IMU's time axis should be uniform (a
+/// logger's fixed rate). Throws core::InputError naming a missing role.
 MruEstimateResult estimate_mru_arms_from_imu(const ImuSeries& imu, const core::Log& log,
                                              const std::vector<std::string>& names,
-                                             double smooth_window_s = 1.0);
+                                             double smooth_window_s = 1.0,
+                                             const MruEstimateOptions& options = {});
 
 }  // namespace dynpos::calib
