@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <string_view>
 
 #include "commands.hpp"
 #include "dynpos/analysis/capability.hpp"
@@ -107,22 +108,11 @@ void register_capability(CLI::App& app) {
       "the vessel leaves its footprint. Example: dynpos capability --failure worst --out cap");
   sub->callback([o, sub] {
     if (!o->loads.empty()) return run_loads(*o, *sub);
+    analysis::check_transient_options(o->request, [sub](std::string_view name) {
+      return sub->count("--" + std::string(name)) > 0;
+    });
     if (o->request.transient) {
-      for (const char* option : {"--duration", "--wind-tolerance"}) {
-        if (sub->count(option) > 0) {
-          throw analysis::option_error(
-              option + 2, fmt::format("{} is not an option of --transient", option),
-              "--settle and --after set a transient run's length; it searches no wind");
-        }
-      }
       return write_and_print(analysis::run_capability_transient(o->request), o->outputs);
-    }
-    for (const char* option : {"--rows", "--after", "--seeds", "--observer"}) {
-      if (sub->count(option) > 0) {
-        throw analysis::option_error(option + 2,
-                                     fmt::format("{} is an option of --transient", option),
-                                     "add --level 3 --transient --failure NAME");
-      }
     }
     write_and_print(analysis::run_capability(o->request), o->outputs);
   });

@@ -476,9 +476,15 @@ def capability(*, json=None, out=None, **options) -> Result:
     ``current`` [m/s], 3 time-domain runs), ``vessel`` (file), ``failure`` ("worst", "none", an
     actuator of the model, or a unit or "group:NAME" of a ``[[thruster]]`` layout), ``direction_step`` [deg], ``wind_tolerance`` [m/s]; level 3: ``duration``,
     ``settle`` [s], ``footprint`` [m], ``footprint_deg`` [deg], ``seed``, ``jobs``; ``out``
-    (folder for rose.svg). Table: ``points``."""
+    (folder for rose.svg). ``transient=True`` (level 3, a named ``failure``): the failure as it
+    happens, as ``dynpos capability --transient``, with ``rows`` (weather rows, DP numbers),
+    ``after`` [s], ``seeds`` and ``observer`` ("ideal", "passive", "ekf" or "raw"); per direction
+    and row the largest excursion after the failure and the time to it (``out``: footprint.svg).
+    Table: ``points``."""
     q = _options(_dynpos.CapabilityRequest, options)
-    return Result(_json.loads(_dynpos.run_capability(q, _path(json), _path(out, "out"))), "points")
+    given = [name.replace("_", "-") for name in options]
+    doc = _dynpos.run_capability(q, given, _path(json), _path(out, "out"))
+    return Result(_json.loads(doc), "points")
 
 
 def capability_loads(loads, *, json=None, **options) -> Result:

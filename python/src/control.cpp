@@ -4,17 +4,20 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <variant>
 #include <vector>
 
 #include "bind.hpp"
 #include "dynpos/analysis/capability.hpp"
+#include "dynpos/analysis/capability_transient.hpp"
 #include "dynpos/analysis/compare.hpp"
 #include "dynpos/analysis/feasibility.hpp"
 #include "dynpos/analysis/hybrid_case.hpp"
@@ -132,15 +135,26 @@ void bind_capability(py::module_& m) {
       .def_readwrite("footprint", &Q::footprint)
       .def_readwrite("footprint_deg", &Q::footprint_deg)
       .def_readwrite("seed", &Q::seed)
-      .def_readwrite("jobs", &Q::jobs);
+      .def_readwrite("jobs", &Q::jobs)
+      .def_readwrite("transient", &Q::transient)
+      .def_readwrite("rows", &Q::rows)
+      .def_readwrite("after", &Q::after)
+      .def_readwrite("seeds", &Q::seeds)
+      .def_readwrite("observer", &Q::observer);
   m.def(
       "run_capability",
-      [](const Q& q, const std::string& json, const std::filesystem::path& out) {
+      [](const Q& q, const std::vector<std::string>& given, const std::string& json,
+         const std::filesystem::path& out) {
+        check_transient_options(q, [&given](std::string_view name) {
+          return std::find(given.begin(), given.end(), name) != given.end();
+        });
         const Outputs outputs{json, out};
         outputs.check("out", true);
+        if (q.transient) return run_and_write(q, outputs, run_capability_transient);
         return run_and_write(q, outputs, run_capability);
       },
-      py::arg("request"), py::arg("json") = "", py::arg("out") = std::filesystem::path());
+      py::arg("request"), py::arg("given"), py::arg("json") = "",
+      py::arg("out") = std::filesystem::path());
 }
 
 void bind_capability_loads(py::module_& m) {

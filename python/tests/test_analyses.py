@@ -227,6 +227,22 @@ def test_capability(tmp_path):
     assert all(w <= i.max_wind_mps for w, i in zip(frame["max_wind_mps"], r.intact))
 
 
+def test_capability_transient(tmp_path):
+    options = dict(level=3, transient=True, failure="tunnel", direction_step=90, rows=[3],
+                   settle=60, after=60)
+    r = dynpos.capability(json=tmp_path / "py.json", out=tmp_path / "fp", **options)
+    same_as_cli(tmp_path, r, tmp_path / "py.json", "capability", "--level", "3", "--transient",
+                "--failure", "tunnel", "--direction-step", "90", "--rows", "3", "--settle", "60",
+                "--after", "60")
+    assert r.analysis == "capability-transient" and (tmp_path / "fp" / "footprint.svg").exists()
+    assert [p.direction_deg for p in r.points] == [0.0, 90.0, 180.0, 270.0]
+    assert all(p.peak_excursion_m > 0.0 for p in r.points)
+    with pytest.raises(dynpos.InputError, match=r"--rows is an option of --transient"):
+        dynpos.capability(rows=[3])
+    with pytest.raises(dynpos.InputError, match=r"--wind-tolerance is not an option"):
+        dynpos.capability(wind_tolerance=1.0, **options)
+
+
 def test_capability_loads(tmp_path):
     data = os.path.join(os.path.dirname(__file__), "..", "..", "tests", "cli", "data")
     loads, vessel = os.path.join(data, "loads_osv.csv"), os.path.join(data, "osv_layout.toml")

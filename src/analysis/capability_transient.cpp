@@ -63,6 +63,26 @@ capability::TransientOptions transient_options(const CapabilityRequest& q) {
   return o;
 }
 
+void check_transient_options(const CapabilityRequest& q,
+                             const std::function<bool(std::string_view)>& given) {
+  if (q.transient) {
+    for (const char* option : {"duration", "wind-tolerance"}) {
+      if (given(option)) {
+        throw option_error(option, fmt::format("--{} is not an option of --transient", option),
+                           "--settle and --after set a transient run's length; it searches no "
+                           "wind");
+      }
+    }
+    return;
+  }
+  for (const char* option : {"rows", "after", "seeds", "observer"}) {
+    if (given(option)) {
+      throw option_error(option, fmt::format("--{} is an option of --transient", option),
+                         "add --level 3 --transient --failure NAME");
+    }
+  }
+}
+
 TransientReport run_capability_transient(const CapabilityRequest& q) {
   q.validate();
   const capability::TransientOptions options = transient_options(q);

@@ -67,3 +67,15 @@ dynpos_cli_test(capability_layout_level_2_json
   COMMAND ${DYNPOS_EXE} capability --vessel ${LOADS_DATA}/azimuth_layout.toml --level 2
           --direction-step 90 --json -
   PASS "\"thrust_losses\": false")
+# Level 3 with the failure as it happens: per direction the excursion after the tunnel trips
+# (beam on it is lost: the footprint is left), and the options that do not go with it refused.
+dynpos_cli_test(capability_transient
+  COMMAND ${DYNPOS_EXE} capability --level 3 --transient --failure tunnel --direction-step 90
+          --rows 3 --settle 60 --after 60 --json -
+  PASS "\"analysis\": \"capability-transient\".*\"failure\": \"tunnel\".*\"holds\": false")
+dynpos_cli_test(capability_transient_option_without_it
+  COMMAND bash ${EXPECT_EXIT} 2 "\\(--rows\\): --rows is an option of --transient; add --level 3 --transient --failure NAME"
+          ${DYNPOS_EXE} capability --rows 3)
+dynpos_cli_test(capability_transient_refuses_the_wind_search
+  COMMAND bash ${EXPECT_EXIT} 2 "\\(--wind-tolerance\\): --wind-tolerance is not an option of --transient"
+          ${DYNPOS_EXE} capability --level 3 --transient --failure tunnel --wind-tolerance 1)

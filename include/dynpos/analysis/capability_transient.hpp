@@ -7,7 +7,9 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "dynpos/analysis/capability.hpp"
@@ -30,6 +32,13 @@ struct TransientReport {
 /// seeds, observer and the level-3 options it shares (settle, footprints, direction step, seed,
 /// jobs). Throws option_error naming the first bad option.
 capability::TransientOptions transient_options(const CapabilityRequest& request);
+
+/// Refuses an option given (`given(name)`, the name as the command line spells it without its
+/// dashes, e.g. "wind-tolerance") that does not go with `request.transient`: the transient's own
+/// options (rows, after, seeds, observer) without it, the wind search's (duration,
+/// wind-tolerance) with it. Throws option_error naming the option.
+void check_transient_options(const CapabilityRequest& request,
+                             const std::function<bool(std::string_view)>& given);
 
 /// Validates, loads the vessel and runs the footprint.
 TransientReport run_capability_transient(const CapabilityRequest& request);
