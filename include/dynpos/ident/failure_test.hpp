@@ -18,7 +18,7 @@
 ///     trip: its level `max_fall_s` + `level_window_s`/2 before t_z is too low for that);
 ///   - it was not ordered: with the unit's order logged, when the feedback has fallen below
 ///     half its value of the 2 s before t_f, the order (its mean |order| over the 1 s up to
-///     then, `commanded_within_s` later) is still above half its mean from 5 s to 2 s before
+///     then, `commanded_within_s` later) is still above a third of its mean from 5 s to 2 s
 ///     t_f (an order the feedback follows leads the fall; a tripped unit's holds or drifts;
 ///     means: an order chattering at the control rate is followed as its mean);
 ///   - another unit takes over: its mean |feedback| over `redistribution_window_s` after the
@@ -98,7 +98,7 @@ struct FailureTestOptions {
   double min_level_fraction = 0.2;  ///< clearly non-zero: of the full scale, in (0, 1)
   double fall_from_fraction = 0.6;  ///< the fall is timed from this share of the level
   double takeover_fraction = 0.05;  ///< another unit's change, of its full scale, ≥ 0
-  /// With the unit's order logged: a fall whose order had dropped below half its value before
+  /// With the unit's order logged: a fall whose order had dropped below a third of its value
   /// the fall when the feedback had halved (or at most this long after [s]) was ordered (a
   /// stop), not a trip. A DP system keeps ordering a tripped unit until it flags the fault
   /// from the feedback, seconds later. ≥ 0.
