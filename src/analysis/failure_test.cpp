@@ -45,8 +45,9 @@ void read_units(const FailureTestRequest& request, const core::Log& log, Failure
       report.units.push_back({name, channel, thrust ? "kN" : "rpm", thrust ? 1e-3 : 60.0});
       // The unit's order of the same kind, when logged: a stop it was ordered is not a trip.
       const std::string order = "command." + channel;
-      in.units.push_back(
-          {name, log.values(channel), log.has(order) ? log.values(order) : std::vector<double>{}});
+      in.units.push_back({name, log.values(channel),
+                          log.has(order) ? log.values(order) : std::vector<double>{},
+                          thrust ? 2.0 : 1.0});  // thrust ∝ n|n|
       break;
     }
   }

@@ -17,7 +17,7 @@ namespace {
 constexpr double kDeg = 180.0 / std::numbers::pi;
 
 std::string onset_name(ident::OnsetMethod m) {
-  return m == ident::OnsetMethod::kFopdtFit ? "fopdt-fit" : "last-level";
+  return m == ident::OnsetMethod::kFallFit ? "fall-fit" : "last-level";
 }
 
 // A direction [rad] in [0, 360) deg, or null.

@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "dynpos/core/circular_stats.hpp"
+#include "fix_spline.hpp"
 #include "series.hpp"
 
 namespace dynpos::ident::detail {
@@ -34,14 +35,14 @@ void heading_figures(const FailureTestInput& in, FailureEvent& e) {
 }
 
 // The pre-failure mean position and footprint; false with fewer than 3 fixes in the window.
-bool pre_failure_position(const FailureTestInput& in, FailureEvent& e) {
-  const std::vector<double>& t = in.t_s;
+bool pre_failure_position(const std::vector<double>& t, const std::vector<double>& north,
+                          const std::vector<double>& east, FailureEvent& e) {
   double sn = 0.0, se = 0.0;
   std::vector<std::size_t> fixes;
   for (std::size_t i = first_at(t, e.pre_from_s); i < t.size() && t[i] <= e.pre_to_s; ++i) {
-    if (std::isnan(in.north_m[i]) || std::isnan(in.east_m[i])) continue;
-    sn += in.north_m[i];
-    se += in.east_m[i];
+    if (std::isnan(north[i]) || std::isnan(east[i])) continue;
+    sn += north[i];
+    se += east[i];
     fixes.push_back(i);
   }
   if (fixes.size() < 3) return false;
@@ -50,7 +51,7 @@ bool pre_failure_position(const FailureTestInput& in, FailureEvent& e) {
   e.pre_east_m = se / n;
   e.footprint_m = 0.0;
   for (const std::size_t i : fixes) {
-    const double d = std::hypot(in.north_m[i] - *e.pre_north_m, in.east_m[i] - *e.pre_east_m);
+    const double d = std::hypot(north[i] - *e.pre_north_m, east[i] - *e.pre_east_m);
     e.footprint_m = std::max(*e.footprint_m, d);
   }
   return true;
@@ -159,26 +160,33 @@ void excursion(const FailureTestInput& in, const Neighbours& around, const Failu
   e.pre_to_s = e.time_s;
   e.response_to_s = std::min({e.time_s + o.response_window_s, around.next_s, t.back()});
   if (!in.heading_rad.empty()) heading_figures(in, e);
-  if (in.north_m.empty() || in.east_m.empty() || !pre_failure_position(in, e)) return;
+  if (in.north_m.empty() || in.east_m.empty()) return;
+  // The position at every row of the log, the fixes joined (fix_spline.hpp).
+  const std::vector<double> north = fill_between_fixes(t, in.north_m, o.fix_gap_s);
+  const std::vector<double> east = fill_between_fixes(t, in.east_m, o.fix_gap_s);
+  if (!pre_failure_position(t, north, east, e)) return;
   // Distances from the pre-failure mean over the response span.
   const std::size_t i0 = first_at(t, e.time_s);
   std::vector<double> span_t, d;
   std::optional<std::size_t> peak;
   for (std::size_t i = i0; i < t.size() && t[i] <= e.response_to_s; ++i) {
     span_t.push_back(t[i]);
-    d.push_back(std::hypot(in.north_m[i] - *e.pre_north_m, in.east_m[i] - *e.pre_east_m));
+    d.push_back(std::hypot(north[i] - *e.pre_north_m, east[i] - *e.pre_east_m));
     if (!std::isnan(d.back()) && (!peak || d.back() > d[*peak])) peak = d.size() - 1;
   }
   if (!peak) return;
   e.peak_excursion_m = d[*peak];
   e.time_to_peak_s = span_t[*peak] - e.time_s;
-  if (d[*peak] <= *e.footprint_m) {
+  // Out of and back within the footprint on the running median of the distance: a single
+  // noisy fix or wave crest neither takes the vessel out nor holds the recovery back, and a
+  // monotone return is not moved by it.
+  const std::vector<double> smooth = running_median(span_t, d, o.recovery_median_s);
+  const bool left = std::any_of(smooth.begin(), smooth.end(),
+                                [&](double v) { return !std::isnan(v) && v > *e.footprint_m; });
+  if (!left) {
     e.recovery_s = 0.0;  // never left the footprint
     return;
   }
-  // Back within the footprint on the running median of the distance: a single noisy fix does
-  // not hold the recovery back, and a monotone return is not moved by it.
-  const std::vector<double> smooth = running_median(span_t, d, o.recovery_median_s);
   if (const auto back =
           back_within(span_t, smooth, *peak, *e.footprint_m, o.hold_s, e.response_to_s)) {
     e.recovery_s = *back - e.time_s;

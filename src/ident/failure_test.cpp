@@ -6,8 +6,8 @@
 #include <cmath>
 
 #include "dynpos/core/error.hpp"
-#include "dynpos/ident/fopdt_fit.hpp"
 #include "failure_events.hpp"
+#include "fall_onset.hpp"
 #include "series.hpp"
 
 namespace dynpos::ident {
@@ -33,42 +33,37 @@ detail::UnitProfile make_profile(const std::vector<double>& t, const UnitFeedbac
   return p;
 }
 
-// The start of the fall from a FOPDT fit of |feedback| over the level window and max_fall_s
-// around the fall: nullopt when the fit fails or puts the start outside [t_step, t_z].
-std::optional<std::pair<double, double>> fitted_onset(const std::vector<double>& t,
-                                                      const detail::UnitProfile& p,
-                                                      const std::string& name, double t_hi,
-                                                      double t_z, double t_end,
-                                                      const FailureTestOptions& o) {
-  Step step;
-  step.t_step = t_hi - o.max_fall_s;
-  step.t_begin = step.t_step - o.level_window_s;
-  step.t_end = t_end;
-  step.u_before = 1.0;
-  step.u_after = 0.0;
-  FopdtFitOptions fit;
-  fit.pre_step_s = o.level_window_s;
-  fit.output_name = name;
-  try {
-    const FopdtFitResult r = fit_fopdt(t, p.abs, step, fit);
-    const std::optional<FopdtModel> m = r.model();
-    if (!m || !(m->amplitude < 0.0)) return std::nullopt;
-    const double onset = m->t_step + m->dead_time;
-    if (onset < step.t_step || onset > t_z) return std::nullopt;
-    return std::pair{onset, m->time_constant};
-  } catch (const core::InputError&) {
-    return std::nullopt;  // too little log around the fall for a fit
+// The start of the fall from a fit of the unit's decay on its shaft speed (fall_onset.hpp):
+// onsets from 0.4·max_fall_s before the last sample at fall_from·L (ihi) to the next valid one
+// (a rate-limited fall from full speed to 0.6 of it takes a third of that on the Gunnerus).
+std::optional<detail::FallOnset> fitted_onset(const std::vector<double>& t,
+                                              const detail::UnitProfile& p, double exponent,
+                                              std::size_t ihi, const FailureTestOptions& o) {
+  std::size_t ib = ihi + 1;
+  while (ib < t.size() && std::isnan(p.abs[ib])) ++ib;
+  if (ib >= t.size()) return std::nullopt;
+  std::vector<double> speed(p.abs.size());
+  std::transform(p.abs.begin(), p.abs.end(), speed.begin(),
+                 [&](double a) { return std::pow(a, 1.0 / exponent); });
+  std::vector<double> valid;
+  for (const double v : speed) {
+    if (!std::isnan(v)) valid.push_back(v);
   }
+  detail::FallSearch q;
+  q.from_s = t[ihi] - 0.4 * o.max_fall_s;
+  q.to_s = t[ib];
+  q.noise_sigma = detail::difference_noise_sigma(valid);
+  return detail::fit_fall_onset(t, speed, q);
 }
 
 // The failure instant of a fall that reaches near zero at index iz, last at fall_from·L at ihi.
-void time_the_fall(const std::vector<double>& t, const detail::UnitProfile& p,
-                   const std::string& name, std::size_t ihi, std::size_t iz, double t_end,
-                   const FailureTestOptions& o, detail::Trip& trip) {
-  if (const auto fit = fitted_onset(t, p, name, t[ihi], t[iz], t_end, o)) {
-    trip.t_f = fit->first;
-    trip.time_constant_s = fit->second;
-    trip.onset = OnsetMethod::kFopdtFit;
+void time_the_fall(const std::vector<double>& t, const detail::UnitProfile& p, double exponent,
+                   std::size_t ihi, std::size_t iz, const FailureTestOptions& o,
+                   detail::Trip& trip) {
+  if (const auto fit = fitted_onset(t, p, exponent, ihi, o)) {
+    trip.t_f = fit->t_s;
+    trip.time_constant_s = fit->time_constant_s;
+    trip.onset = OnsetMethod::kFallFit;
     return;
   }
   // The last sample still at the level, searched back to the level window's start.
@@ -93,12 +88,25 @@ std::optional<double> first_below(const std::vector<double>& t, const std::vecto
   return std::nullopt;
 }
 
+// The mean of the valid samples of x with t in [from, to]; nullopt without one.
+std::optional<double> mean_in(const std::vector<double>& t, const std::vector<double>& x,
+                              double from, double to) {
+  const std::vector<double> v = detail::valid_in(t, x, from, to);
+  if (v.empty()) return std::nullopt;
+  double sum = 0.0;
+  for (const double a : v) sum += a;
+  return sum / static_cast<double>(v.size());
+}
+
 // Whether the fall was ordered: when the feedback has fallen below half its value just before
-// the fall (its median over the 2 s before t_f), the unit's logged order (its median over the
-// 0.5 s up to then, commanded_within_s later) is below a fifth of its own value before the fall
-// (its median from 5 s to 2 s before t_f, before an order the feedback lags). A tripped unit's
-// order holds, or drifts with the load, until the DP system flags the fault from the feedback,
-// after the feedback has fallen. No order logged, or none before: not known to be ordered.
+// the fall (its median over the 2 s before t_f), the unit's logged |order| (its mean over the
+// 1 s up to then, commanded_within_s later) is below a third of its own value before the fall
+// (its mean from 5 s to 2 s before t_f, before an order the feedback lags): the order led the
+// fall (a trip's is at 0.53-1.7 of it then on the virtual trial, a slow stop's at 0.21).
+// Means, not medians: an order chattering between two allocations at the control rate is
+// followed as its mean. A tripped unit's order holds, or drifts with the load, until the DP
+// system flags the fault from the feedback, after the feedback has fallen. No order logged, or
+// none before: not known to be ordered.
 bool commanded(const std::vector<double>& t, const detail::UnitProfile& p,
                const std::vector<double>& order, const detail::Trip& trip,
                const FailureTestOptions& o) {
@@ -107,23 +115,21 @@ bool commanded(const std::vector<double>& t, const detail::UnitProfile& p,
   std::transform(order.begin(), order.end(), abs_order.begin(),
                  [](double v) { return std::abs(v); });
   std::vector<double> fb_before = detail::valid_in(t, p.abs, trip.t_f - 2.0, trip.t_f);
-  std::vector<double> order_before = detail::valid_in(t, abs_order, trip.t_f - 5.0, trip.t_f - 2.0);
-  if (fb_before.empty() || order_before.empty()) return false;
-  const double order_level = detail::median_in_place(order_before);
+  const std::optional<double> order_level = mean_in(t, abs_order, trip.t_f - 5.0, trip.t_f - 2.0);
+  if (fb_before.empty() || !order_level || !(*order_level > 0.0)) return false;
   const std::optional<double> fb_half =
       first_below(t, p.abs, trip.t_f, 0.5 * detail::median_in_place(fb_before));
-  if (!fb_half || !(order_level > 0.0)) return false;
+  if (!fb_half) return false;
   const double at = *fb_half + o.commanded_within_s;
-  std::vector<double> order_then = detail::valid_in(t, abs_order, at - 0.5, at);
-  return !order_then.empty() && detail::median_in_place(order_then) < 0.2 * order_level;
+  const std::optional<double> order_then = mean_in(t, abs_order, at - 1.0, at);
+  return order_then && *order_then < *order_level / 3.0;
 }
 
 // A trip when the stretch near zero from index iz, ending at t_off_end, follows a clearly
 // non-zero level with a fast fall; nullopt otherwise.
 std::optional<detail::Trip> trip_at(const std::vector<double>& t, const detail::UnitProfile& p,
-                                    const std::vector<double>& order, std::size_t unit,
-                                    const std::string& name, std::size_t iz, double t_off_end,
-                                    const FailureTestOptions& o) {
+                                    const UnitFeedback& feedback, std::size_t unit, std::size_t iz,
+                                    double t_off_end, const FailureTestOptions& o) {
   const double tz = t[iz];
   if (t_off_end - tz < o.min_off_s) return std::nullopt;
   const double level_to = tz - o.max_fall_s;
@@ -146,15 +152,15 @@ std::optional<detail::Trip> trip_at(const std::vector<double>& t, const detail::
     }
   }
   if (!ihi) return std::nullopt;
-  time_the_fall(t, p, name, *ihi, iz, std::min(tz + o.max_fall_s, t_off_end), o, trip);
-  if (commanded(t, p, order, trip, o)) return std::nullopt;
+  time_the_fall(t, p, feedback.shaft_speed_exponent, *ihi, iz, o, trip);
+  if (commanded(t, p, feedback.order, trip, o)) return std::nullopt;
   return trip;
 }
 
 // Every trip of one unit: each stretch near zero that starts after a sample above it.
 std::vector<detail::Trip> unit_trips(const std::vector<double>& t, const detail::UnitProfile& p,
-                                     const std::vector<double>& order, std::size_t unit,
-                                     const std::string& name, const FailureTestOptions& o) {
+                                     const UnitFeedback& feedback, std::size_t unit,
+                                     const FailureTestOptions& o) {
   std::vector<detail::Trip> trips;
   const double z = p.scale.near_zero;
   bool above = false;  // the last valid sample was above the band
@@ -171,7 +177,7 @@ std::vector<detail::Trip> unit_trips(const std::vector<double>& t, const detail:
     std::size_t j = i + 1;
     while (j < t.size() && !(p.smooth[j] > z)) ++j;
     const double t_off_end = j < t.size() ? t[j] : t.back();
-    if (auto trip = trip_at(t, p, order, unit, name, i, t_off_end, o)) trips.push_back(*trip);
+    if (auto trip = trip_at(t, p, feedback, unit, i, t_off_end, o)) trips.push_back(*trip);
     i = j - 1;
   }
   return trips;
@@ -202,6 +208,10 @@ void check_input(const FailureTestInput& in, bool need_units = true) {
   for (const UnitFeedback& u : in.units) {
     detail::check_same_length(in.t_s.size(), u.values.size(), u.name);
     if (!u.order.empty()) detail::check_same_length(in.t_s.size(), u.order.size(), u.name);
+    if (!(u.shaft_speed_exponent > 0.0) || !std::isfinite(u.shaft_speed_exponent)) {
+      throw core::InputError({{}, {}, {}, u.name}, "shaft speed exponent must be > 0",
+                             "1 for a shaft speed, 2 for a thrust");
+    }
   }
 }
 
@@ -222,8 +232,9 @@ void FailureTestOptions::validate() const {
   positive("max_fall", max_fall_s);
   positive("min_off", min_off_s);
   positive("level_window", level_window_s);
-  for (const auto& [key, v] : {std::pair{"median_window", median_window_s},
-                               std::pair{"recovery_median", recovery_median_s}}) {
+  for (const auto& [key, v] :
+       {std::pair{"median_window", median_window_s},
+        std::pair{"recovery_median", recovery_median_s}, std::pair{"fix_gap", fix_gap_s}}) {
     if (!(v >= 0.0) || !std::isfinite(v)) {
       throw core::InputError::for_option(key, fmt::format("{:g} s must be ≥ 0", v));
     }
@@ -254,8 +265,7 @@ FailureTestResult analyse_failure_test(const FailureTestInput& in, const Failure
     profiles.push_back(make_profile(in.t_s, in.units[k], o));
     r.units.push_back(profiles.back().scale);
     if (in.t_s.size() < 2) continue;
-    const std::vector<detail::Trip> found =
-        unit_trips(in.t_s, profiles.back(), in.units[k].order, k, in.units[k].name, o);
+    const std::vector<detail::Trip> found = unit_trips(in.t_s, profiles.back(), in.units[k], k, o);
     trips.insert(trips.end(), found.begin(), found.end());
   }
   const std::vector<std::vector<detail::Trip>> groups = group_trips(std::move(trips), o.max_fall_s);

@@ -103,7 +103,7 @@ TEST(FailureTest, FindsATripAndItsExcursion) {
   EXPECT_EQ(e.unit, "port");
   EXPECT_EQ(e.units, std::vector<std::string>{"port"});
   // The fit finds the start of the fall, 0.2 s (the dead time) after the trip.
-  EXPECT_EQ(e.onset, OnsetMethod::kFopdtFit);
+  EXPECT_EQ(e.onset, OnsetMethod::kFallFit);
   EXPECT_NEAR(e.time_s, 300.0, 0.5);
   EXPECT_NEAR(e.time_s, 300.2, 0.1);
   ASSERT_TRUE(e.fall_time_constant_s);
@@ -132,7 +132,7 @@ TEST(FailureTest, FindsATripAndItsExcursion) {
   EXPECT_NEAR(e.level_before, 40e3, 3e3);
 }
 
-TEST(FailureTest, AnInstantDropIsTimedAtTheLastSampleAtTheLevel) {
+TEST(FailureTest, AnInstantDropIsTimedAtTheDrop) {
   Series s = one_trip();
   std::vector<double>& port = s.in.units[0].values;
   for (std::size_t i = 0; i < s.t.size(); ++i) port[i] = s.t[i] < 300.05 ? 40e3 : 0.0;
@@ -232,6 +232,74 @@ TEST(FailureTest, WithoutPositionOnlyThePositionFiguresAreMissing) {
   EXPECT_FALSE(r.events[0].peak_excursion_m);
   EXPECT_FALSE(r.events[0].recovery_s);
   EXPECT_TRUE(r.events[0].peak_heading_rad);
+}
+
+// An order chattering at 10 Hz between two allocations (0.2 and 13.9 kN, as the Gunnerus'
+// tunnel's in the agility trial) until `t_stop` [s], 0 after; NaN-free.
+std::vector<double> chattering_order(const std::vector<double>& t, double t_stop) {
+  std::vector<double> order(t.size());
+  Normal rng(11);
+  for (std::size_t i = 0; i < t.size(); ++i)
+    order[i] = t[i] >= t_stop ? 0.0 : rng() > 0.0 ? 13.9e3 : 0.2e3;
+  return order;
+}
+
+TEST(FailureTest, AChatteringOrderTheFeedbackFollowsIsNoTrip) {
+  // The unit follows the order's mean (7 kN) and, 1 s after the order drops to 0 at 400 s,
+  // decays to 0 with T = 1 s: a stop. The other unit does not answer.
+  auto follows = [](double t) { return t < 401.0 ? 7e3 : 7e3 * std::exp(-(t - 401.0)); };
+  Series s = series(Bump{}, {{"tunnel", follows}, {"stb", constant(30e3)}});
+  s.in.units[0].order = chattering_order(s.t, 400.0);
+  EXPECT_TRUE(analyse_failure_test(s.in).events.empty());
+  // The same order chattering on while the feedback falls at 400 s: a trip, at its instant.
+  auto trips = [](double t) { return t < 400.0 ? 7e3 : 7e3 * std::exp(-(t - 400.0)); };
+  Series tripped = series(Bump{}, {{"tunnel", trips}, {"stb", constant(30e3)}});
+  tripped.in.units[0].order = chattering_order(tripped.t, 1e9);
+  const FailureTestResult r = analyse_failure_test(tripped.in);
+  ASSERT_EQ(r.events.size(), 1u);
+  EXPECT_NEAR(r.events[0].time_s, 400.0, 0.2);
+}
+
+// 300 s at 10 Hz of wave motion alone: 0.5 m north at an 8 s period, a failure at 150 s.
+FailureTestInput waves() {
+  FailureTestInput in;
+  in.t_s = testing::time_axis(0.0, 0.1, 3001);
+  for (const double t : in.t_s) {
+    in.north_m.push_back(0.5 * std::sin(2.0 * kPi * t / 8.0));
+    in.east_m.push_back(0.0);
+  }
+  return in;
+}
+
+TEST(FailureTest, ASingleWaveCrestAboveTheFootprintIsNoDeparture) {
+  // The crest at 202 s, 2 cm higher than the rest for 0.3 s: the peak, above the footprint,
+  // but the distance through its 3 s median never leaves it.
+  FailureTestInput in = waves();
+  for (std::size_t i = 0; i < in.t_s.size(); ++i) {
+    in.north_m[i] += 0.02 * std::exp(-std::pow((in.t_s[i] - 202.0) / 0.15, 2));
+  }
+  const FailureEvent e = failure_excursion(in, 150.0);
+  ASSERT_TRUE(e.footprint_m && e.peak_excursion_m && e.recovery_s);
+  EXPECT_GT(*e.peak_excursion_m, *e.footprint_m + 0.01);
+  EXPECT_EQ(*e.recovery_s, 0.0);
+}
+
+TEST(FailureTest, FixesAtOneHertzGiveTheFootprintAndPeakOfEveryRow) {
+  // The same motion with a fix every 10th row, 0.3 s off the crests: joined by the spline, the
+  // footprint and peak are those of the 10 Hz motion within 0.5 %; the fixes alone reach
+  // cos(2π·0.3/8) = 0.97 of them.
+  const FailureTestInput every_row = waves();
+  FailureTestInput fixes = every_row;
+  for (std::size_t i = 0; i < fixes.t_s.size(); ++i) {
+    if (i % 10 != 3) fixes.north_m[i] = fixes.east_m[i] = std::nan("");
+  }
+  const FailureEvent a = failure_excursion(every_row, 150.0), b = failure_excursion(fixes, 150.0);
+  ASSERT_TRUE(a.footprint_m && b.footprint_m && a.peak_excursion_m && b.peak_excursion_m);
+  EXPECT_NEAR(*b.footprint_m, *a.footprint_m, 0.005 * *a.footprint_m);
+  EXPECT_NEAR(*b.peak_excursion_m, *a.peak_excursion_m, 0.005 * *a.peak_excursion_m);
+  FailureTestOptions no_fill;
+  no_fill.fix_gap_s = 0.0;
+  EXPECT_LT(*failure_excursion(fixes, 150.0, no_fill).footprint_m, 0.99 * *a.footprint_m);
 }
 
 TEST(FailureTest, BadInputAndOptions) {

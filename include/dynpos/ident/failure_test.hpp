@@ -17,20 +17,23 @@
 ///     at most `max_fall_s` before t_z (a commanded ramp to zero over tens of seconds is not a
 ///     trip: its level `max_fall_s` + `level_window_s`/2 before t_z is too low for that);
 ///   - it was not ordered: with the unit's order logged, when the feedback has fallen below
-///     half its value of the 2 s before t_f, the order (its median over the 0.5 s up to then,
-///     `commanded_within_s` later) is still above a fifth of its value from 5 s to 2 s before
-///     t_f (an order the feedback follows drops first; a tripped unit's holds or drifts);
+///     half its value of the 2 s before t_f, the order (its mean |order| over the 1 s up to
+///     then, `commanded_within_s` later) is still above a third of its mean from 5 s to 2 s
+///     t_f (an order the feedback follows leads the fall; a tripped unit's holds or drifts;
+///     means: an order chattering at the control rate is followed as its mean);
 ///   - another unit takes over: its mean |feedback| over `redistribution_window_s` after the
 ///     failure differs from the mean over as long before by ≥ max(takeover_fraction·S', 3σ̂')
 ///     with S', σ̂' its own scale and noise (not required when no other unit is logged, nor
 ///     when the tripped unit's order is: the order tells a trip from a stop, and after a bus
 ///     failure no unit may be left to take over).
-/// - the failure instant t_f is the start of the fall: the step time plus the dead time of a
-///   first-order-plus-dead-time fit of the fall (fopdt_fit.hpp) over the level window and
-///   `max_fall_s` on either side of the fall; when that fit fails or puts the start outside
-///   the fall, the last sample before the fall still at the level: smoothed a ≥ L − max(0.1·L,
-///   3σ̂).
-///   Either way t_f lags the trip itself by the dead time of the unit's feedback.
+/// - the failure instant t_f is the start of the fall, timed between the feedback's samples:
+///   on the shaft speed (a^(1/shaft_speed_exponent)), a level line before t_f and the unit's
+///   speed control decaying to zero after it (an acceleration limit, then first order), fitted
+///   by least squares over onsets from 0.4·`max_fall_s` before the last sample at
+///   fall_from_fraction·L to the next sample, each with its best time constant and limit; t_f
+///   is the middle of the onsets that fit within 4σ² of the best (fall_onset.hpp). Without
+///   samples for it, the last sample before the fall still at the level: smoothed
+///   a ≥ L − max(0.1·L, 3σ̂). A unit whose feedback lags its shaft has t_f that much late.
 /// Trips of several units starting within `max_fall_s` of each other are one event (a bus
 /// failure), named after the first.
 ///
@@ -41,10 +44,14 @@
 /// - the response span: from t_f to the first of t_f + response_window_s, the next event and
 ///   the end of the log; in it the peak excursion (largest distance from the pre-failure mean)
 ///   and its time after t_f, and the largest |heading − pre-failure mean|;
+/// - the position at every row: fixes at most `fix_gap_s` apart joined by a natural cubic
+///   spline (a 1 Hz position reference in a 10 Hz log), so that the footprint, the peak and the
+///   recovery are those of the motion, not of where the fixes fell on its waves;
 /// - recovery: from t_f to the first sample at or after the peak from which the distance,
 ///   through a centered running median over `recovery_median_s` (a single noisy fix above the
 ///   footprint does not hold it back), stays within the footprint for `hold_s`, inside the
-///   response span; missing when there is none; 0 when the peak is within the footprint;
+///   response span; missing when there is none; 0 when that median distance never leaves the
+///   footprint (a single wave crest or fix above it is no departure);
 /// - redistribution: per other unit the mean |feedback| over `redistribution_window_s` before
 ///   t_f (cut at the previous event) and after it (cut at the next one), and the change.
 
@@ -61,6 +68,9 @@ struct UnitFeedback {
   /// The unit's order as logged (its thrust or shaft speed command, the feedback's kind), NaN
   /// = missing; empty: not logged.
   std::vector<double> order = {};
+  /// |values| ∝ |shaft speed|^this: 1 for a shaft speed, 2 for a thrust (the fall is timed on
+  /// the shaft speed, whose speed control decays at first order).
+  double shaft_speed_exponent = 1.0;
 };
 
 /// The logged channels, SI, on one time axis; NaN = missing sample, empty = not logged.
@@ -81,13 +91,16 @@ struct FailureTestOptions {
   double level_window_s = 20.0;           ///< the level before the fall [s], > 0
   double median_window_s = 1.0;           ///< running median of the feedback [s], ≥ 0
   double recovery_median_s = 3.0;         ///< … of the distance, for the recovery [s], ≥ 0
-  double zero_fraction = 0.05;            ///< near zero: of the full scale, in (0, 1)
-  double min_level_fraction = 0.2;        ///< clearly non-zero: of the full scale, in (0, 1)
-  double fall_from_fraction = 0.6;        ///< the fall is timed from this share of the level
-  double takeover_fraction = 0.05;        ///< another unit's change, of its full scale, ≥ 0
-  /// With the unit's order logged: a fall whose order had dropped below a fifth of its value
-  /// before the fall when the feedback had halved (or at most this long after [s]) was ordered
-  /// (a stop), not a trip. A DP system keeps ordering a tripped unit until it flags the fault
+  /// Fixes at most this far apart are joined at the rows between them by a cubic spline [s],
+  /// ≥ 0; a longer gap (a dropout) stays missing.
+  double fix_gap_s = 2.0;
+  double zero_fraction = 0.05;      ///< near zero: of the full scale, in (0, 1)
+  double min_level_fraction = 0.2;  ///< clearly non-zero: of the full scale, in (0, 1)
+  double fall_from_fraction = 0.6;  ///< the fall is timed from this share of the level
+  double takeover_fraction = 0.05;  ///< another unit's change, of its full scale, ≥ 0
+  /// With the unit's order logged: a fall whose order had dropped below a third of its value
+  /// the fall when the feedback had halved (or at most this long after [s]) was ordered (a
+  /// stop), not a trip. A DP system keeps ordering a tripped unit until it flags the fault
   /// from the feedback, seconds later. ≥ 0.
   double commanded_within_s = 0.0;
 
@@ -99,7 +112,7 @@ struct FailureTestOptions {
 
 /// How the failure instant was found.
 enum class OnsetMethod {
-  kFopdtFit,   ///< start of the fall of a first-order-plus-dead-time fit
+  kFallFit,    ///< start of a fit of the unit's fall (its speed control's decay)
   kLastLevel,  ///< last sample still at the pre-failure level
 };
 
@@ -127,7 +140,7 @@ struct FailureEvent {
   std::vector<std::string> units;  ///< every unit that tripped in this event
   OnsetMethod onset = OnsetMethod::kLastLevel;
   double level_before = 0.0;                      ///< L of `unit` (SI, its feedback's unit)
-  std::optional<double> fall_time_constant_s;     ///< of the fit, when it gave t_f
+  std::optional<double> fall_time_constant_s;     ///< of the shaft speed's fall, when fitted
   double near_zero_s = 0.0;                       ///< t_z: first sample near zero [s]
   double pre_from_s = 0.0, pre_to_s = 0.0;        ///< the pre-failure window [s]
   double response_to_s = 0.0;                     ///< the end of the response span [s]
