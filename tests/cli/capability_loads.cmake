@@ -74,7 +74,7 @@ dynpos_cli_test(capability_transient
           --rows 3 --settle 60 --after 60 --json -
   PASS "\"analysis\": \"capability-transient\".*\"failure\": \"tunnel\".*\"holds\": false")
 dynpos_cli_test(capability_transient_option_without_it
-  COMMAND bash ${EXPECT_EXIT} 2 "\\(--rows\\): --rows is an option of --transient; add --level 3 --transient --failure NAME"
+  COMMAND bash ${EXPECT_EXIT} 2 "\\(--rows\\): --rows is an option of --transient.*add --level 3 --transient --failure NAME"
           ${DYNPOS_EXE} capability --rows 3)
 dynpos_cli_test(capability_transient_refuses_the_wind_search
   COMMAND bash ${EXPECT_EXIT} 2 "\\(--wind-tolerance\\): --wind-tolerance is not an option of --transient"
