@@ -128,6 +128,10 @@ void ObserverRunOptions::validate() const {
   if (!(std::isfinite(max_hold_s) && max_hold_s > 0.0)) {
     throw std::invalid_argument("observer run: the longest hold must be finite and > 0");
   }
+  if (kind == ObserverKind::kPassive && hold_measurements == false) {
+    // Continuous in time, it takes a step without a measurement for a loss (passive_observer.hpp).
+    throw std::invalid_argument("observer run: the passive observer runs on held measurements");
+  }
 }
 
 bool ObserverRunOptions::holds_measurements() const noexcept {

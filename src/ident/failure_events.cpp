@@ -34,18 +34,22 @@ void heading_figures(const FailureTestInput& in, FailureEvent& e) {
   }
 }
 
-// The pre-failure mean position and footprint; false with fewer than 3 fixes in the window.
-bool pre_failure_position(const std::vector<double>& t, const std::vector<double>& north,
+// The pre-failure mean position and footprint over the rows of the joined fixes (north, east);
+// false with fewer than 3 logged fixes (fix_north, fix_east) in the window.
+bool pre_failure_position(const std::vector<double>& t, const std::vector<double>& fix_north,
+                          const std::vector<double>& fix_east, const std::vector<double>& north,
                           const std::vector<double>& east, FailureEvent& e) {
   double sn = 0.0, se = 0.0;
   std::vector<std::size_t> fixes;
+  std::size_t logged = 0;
   for (std::size_t i = first_at(t, e.pre_from_s); i < t.size() && t[i] <= e.pre_to_s; ++i) {
+    if (!std::isnan(fix_north[i]) && !std::isnan(fix_east[i])) ++logged;
     if (std::isnan(north[i]) || std::isnan(east[i])) continue;
     sn += north[i];
     se += east[i];
     fixes.push_back(i);
   }
-  if (fixes.size() < 3) return false;
+  if (logged < 3) return false;
   const auto n = static_cast<double>(fixes.size());
   e.pre_north_m = sn / n;
   e.pre_east_m = se / n;
@@ -164,7 +168,7 @@ void excursion(const FailureTestInput& in, const Neighbours& around, const Failu
   // The position at every row of the log, the fixes joined (fix_spline.hpp).
   const std::vector<double> north = fill_between_fixes(t, in.north_m, o.fix_gap_s);
   const std::vector<double> east = fill_between_fixes(t, in.east_m, o.fix_gap_s);
-  if (!pre_failure_position(t, north, east, e)) return;
+  if (!pre_failure_position(t, in.north_m, in.east_m, north, east, e)) return;
   // Distances from the pre-failure mean over the response span.
   const std::size_t i0 = first_at(t, e.time_s);
   std::vector<double> span_t, d;
@@ -181,14 +185,19 @@ void excursion(const FailureTestInput& in, const Neighbours& around, const Failu
   // noisy fix or wave crest neither takes the vessel out nor holds the recovery back, and a
   // monotone return is not moved by it.
   const std::vector<double> smooth = running_median(span_t, d, o.recovery_median_s);
-  const bool left = std::any_of(smooth.begin(), smooth.end(),
-                                [&](double v) { return !std::isnan(v) && v > *e.footprint_m; });
-  if (!left) {
+  std::optional<std::size_t> smooth_peak;
+  for (std::size_t k = 0; k < smooth.size(); ++k) {
+    if (!std::isnan(smooth[k]) && (!smooth_peak || smooth[k] > smooth[*smooth_peak])) {
+      smooth_peak = k;
+    }
+  }
+  if (!smooth_peak || !(smooth[*smooth_peak] > *e.footprint_m)) {
     e.recovery_s = 0.0;  // never left the footprint
     return;
   }
+  // Back from the median's peak: a single fix before or after it moves no recovery.
   if (const auto back =
-          back_within(span_t, smooth, *peak, *e.footprint_m, o.hold_s, e.response_to_s)) {
+          back_within(span_t, smooth, *smooth_peak, *e.footprint_m, o.hold_s, e.response_to_s)) {
     e.recovery_s = *back - e.time_s;
   }
 }

@@ -77,8 +77,10 @@ std::optional<OnsetFit> fit_at(std::span<const double> t, std::span<const double
   for (int k = 0; k < 200 && step > 1e-3; ++k) {
     bool moved = false;
     for (const auto& [f_tau, f_rho] : {std::pair{1.0, 0.0}, {-1.0, 0.0}, {0.0, 1.0}, {0.0, -1.0}}) {
-      const double tau = best.time_constant_s * std::exp(f_tau * step);
-      const double rho = best_rho * std::exp(f_rho * step);
+      // Within the grid's range (fall_onset.hpp).
+      const double tau =
+          std::clamp(best.time_constant_s * std::exp(f_tau * step), taus.front(), taus.back());
+      const double rho = std::clamp(best_rho * std::exp(f_rho * step), rhos.front(), rhos.back());
       const double sse = sse_of(tau, rho, best.sse);
       if (sse < best.sse) {
         best = {sse, tau, line.a};
@@ -128,6 +130,17 @@ std::optional<FallOnset> fit_fall_onset(const std::vector<double>& t, const std:
     if (f.sse > within) continue;
     o.earliest_s = std::min(o.earliest_s, t_f);
     o.latest_s = std::max(o.latest_s, t_f);
+  }
+  // An onset as good as the best at the search's start may lie before it, and onsets that fit
+  // as well over more than 1.5 sample intervals (a slow fall the line before it takes for a
+  // swing) place none: not timed here.
+  std::vector<double> gaps(ts.size() > 1 ? ts.size() - 1 : 0);
+  for (std::size_t i = 0; i < gaps.size(); ++i) gaps[i] = ts[i + 1] - ts[i];
+  std::nth_element(gaps.begin(), gaps.begin() + static_cast<std::ptrdiff_t>(gaps.size() / 2),
+                   gaps.end());
+  const double spacing_s = gaps.empty() ? 0.0 : gaps[gaps.size() / 2];
+  if (o.earliest_s < q.from_s + 0.5 * q.step_s || o.latest_s - o.earliest_s > 1.5 * spacing_s) {
+    return std::nullopt;
   }
   o.t_s = 0.5 * (o.earliest_s + o.latest_s);
   o.time_constant_s = best->second.time_constant_s;

@@ -34,7 +34,10 @@ struct FallOnset {
 /// [from_s, to_s] (step_s), each with its best T (0.05–5 s) and r (0.05–50 L/s); the onsets
 /// whose residual sum of squares is within 4σ² of the least are those that fit as well (a rate
 /// limit no sample shows leaves the onset between the last sample at the level and the first
-/// fallen one). nullopt without a sample before from_s or two after to_s in the windows.
+/// fallen one). nullopt without a sample before from_s or two after to_s in the windows, when
+/// an onset at from_s fits as well (the fall may have begun before the search) and when the
+/// onsets that fit as well span more than 1.5 sample intervals (a fall slower than the search
+/// was set for, which the line before it takes for a swing): the onset is not determined.
 std::optional<FallOnset> fit_fall_onset(const std::vector<double>& t, const std::vector<double>& s,
                                         const FallSearch& search);
 

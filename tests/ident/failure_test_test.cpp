@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -221,6 +222,34 @@ TEST(FailureTest, NoRecoveryBeforeTheLogEnds) {
   EXPECT_FALSE(r.events[0].recovery_s);
   EXPECT_NEAR(*r.events[0].peak_excursion_m, 3.0 * std::sin(kPi * 100.0 / 200.0), 0.15);
   EXPECT_NEAR(r.events[0].response_to_s, 400.0, 1e-9);
+}
+
+// Two fixes in the pre-failure minute are no footprint, however many rows joining them fills.
+TEST(FailureTest, TwoFixesBeforeTheFailureAreNoFootprint) {
+  Series s = one_trip();
+  for (std::size_t i = 0; i < s.t.size(); ++i) {
+    const bool kept =
+        s.t[i] > 301.0 || std::abs(s.t[i] - 250.0) < 0.05 || std::abs(s.t[i] - 251.0) < 0.05;
+    if (!kept) s.in.north_m[i] = s.in.east_m[i] = std::numeric_limits<double>::quiet_NaN();
+  }
+  const FailureTestResult r = analyse_failure_test(s.in);
+  ASSERT_EQ(r.events.size(), 1u);
+  EXPECT_FALSE(r.events[0].footprint_m);
+  EXPECT_FALSE(r.events[0].recovery_s);
+}
+
+// A single wild fix 10 s after the vessel is back (the bump ends at 330 s) does not hold the
+// recovery back to it: the return is sought from the median distance's peak, not the raw one.
+TEST(FailureTest, AWildFixAfterTheReturnMovesNoRecovery) {
+  const Bump bump;
+  Series s = one_trip(bump);
+  const std::size_t i = static_cast<std::size_t>(std::lround(340.0 / 0.1));
+  s.in.north_m[i] += 20.0;
+  const FailureTestResult r = analyse_failure_test(s.in);
+  ASSERT_EQ(r.events.size(), 1u);
+  const FailureEvent& e = r.events.front();
+  ASSERT_TRUE(e.recovery_s && e.footprint_m);
+  EXPECT_NEAR(e.time_s + *e.recovery_s, bump.back_within(*e.footprint_m), 2.0);
 }
 
 TEST(FailureTest, WithoutPositionOnlyThePositionFiguresAreMissing) {

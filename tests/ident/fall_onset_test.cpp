@@ -71,6 +71,26 @@ TEST(FallOnset, TimedBetweenOneHertzSamplesAtEveryPhaseAndLevel) {
   }
 }
 
+// A fall slower than the search was set for (r = 0.5 rps/s: 4.3 s from the level to 0.6 of it,
+// the search reaching 2 s back) began before the search: not timed, rather than 3.6 s late (a
+// line through its first falling samples taken for a swing).
+TEST(FallOnset, AFallThatBeganBeforeTheSearchIsNotTimed) {
+  Sampled x;
+  for (int k = 0; k <= 250; ++k) {
+    const double t = 590.0 + 0.1 * k;
+    x.t.push_back(t);
+    x.s.push_back(k % 10 == 0 ? shaft(t, 5.42, 600.0, 1.0, 0.5)
+                              : std::numeric_limits<double>::quiet_NaN());
+  }
+  EXPECT_FALSE(fit_fall_onset(x.t, x.s, search(x, 5.42, 1.0)));
+  // The same fall, searched from far enough back, is timed.
+  FallSearch wide = search(x, 5.42, 1.0);
+  wide.from_s -= 4.0;
+  const auto o = fit_fall_onset(x.t, x.s, wide);
+  ASSERT_TRUE(o);
+  EXPECT_NEAR(o->t_s, 600.0, 0.3);
+}
+
 TEST(FallOnset, ADriftingLevelIsTheLineBeforeTheFall) {
   // The DP system swings the unit at 0.1 rps/s up or down until the trip.
   for (const double slope : {-0.1, 0.1}) {

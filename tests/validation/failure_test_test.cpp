@@ -7,9 +7,9 @@
 // spline, and the units' thrust feedback (the tunnel's at 1 Hz, as the Gunnerus' was); the
 // truth sees the control origin at every 10 Hz row. The bounds: the failure instant within
 // ±0.5 s, the peak excursion within max(5 %, 0.1 m), the recovery within ±2 s, no event in the
-// other scenarios. Measured (seeds 1–3): instant −0.16, +0.27, +0.06 s (the fit of the
+// other scenarios. Measured (seeds 1–3): instant −0.13, +0.17, +0.09 s (the fit of the
 // tunnel's fall on its shaft speed); peak −0.8 to +0.5 %; recovery 0 and 0 s (seed 1: the
-// median distance never leaves the footprint), −0.3 s, never and never.
+// median distance never leaves the footprint), −0.2 s, never and never.
 
 #include <gtest/gtest.h>
 

@@ -57,7 +57,7 @@ struct ObserverRunOptions {
   PassiveObserverTuning passive;
   EkfObserverTuning ekf;
   /// Throws std::invalid_argument unless the kind is passive or ekf, the rate and the hold are
-  /// finite and > 0.
+  /// finite and > 0, and the passive observer's measurements are held.
   void validate() const;
   /// hold_measurements, or the kind's default.
   bool holds_measurements() const noexcept;

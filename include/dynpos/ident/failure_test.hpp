@@ -19,7 +19,7 @@
 ///   - it was not ordered: with the unit's order logged, when the feedback has fallen below
 ///     half its value of the 2 s before t_f, the order (its mean |order| over the 1 s up to
 ///     then, `commanded_within_s` later) is still above a third of its mean from 5 s to 2 s
-///     t_f (an order the feedback follows leads the fall; a tripped unit's holds or drifts;
+///     before t_f (an order the feedback follows leads the fall; a tripped unit's holds or drifts;
 ///     means: an order chattering at the control rate is followed as its mean);
 ///   - another unit takes over: its mean |feedback| over `redistribution_window_s` after the
 ///     failure differs from the mean over as long before by ≥ max(takeover_fraction·S', 3σ̂')
@@ -99,7 +99,7 @@ struct FailureTestOptions {
   double fall_from_fraction = 0.6;  ///< the fall is timed from this share of the level
   double takeover_fraction = 0.05;  ///< another unit's change, of its full scale, ≥ 0
   /// With the unit's order logged: a fall whose order had dropped below a third of its value
-  /// the fall when the feedback had halved (or at most this long after [s]) was ordered (a
+  /// before the fall when the feedback had halved (or at most this long after [s]) was ordered (a
   /// stop), not a trip. A DP system keeps ordering a tripped unit until it flags the fault
   /// from the feedback, seconds later. ≥ 0.
   double commanded_within_s = 0.0;
