@@ -81,8 +81,15 @@ bool has_header_stamp(const Ros2Schema& schema) {
   const auto header = nested(0, "header");
   const auto stamp = header ? nested(*header, "stamp") : std::nullopt;
   if (!stamp) return false;
-  const auto& fields = schema.types[*stamp].fields;
-  return fields.size() == 2 && fields[0].name == "sec" && fields[1].name == "nanosec";
+  // builtin_interfaces/Time: int32 sec (uint32 in older definitions), uint32 nanosec.
+  const auto& f = schema.types[*stamp].fields;
+  const auto is = [](const Ros2Field& field, std::string_view name, Ros2Primitive type) {
+    return field.name == name && field.primitive == type &&
+           field.array == Ros2Field::Array::kNone;
+  };
+  return f.size() == 2 &&
+         (is(f[0], "sec", Ros2Primitive::kInt32) || is(f[0], "sec", Ros2Primitive::kUint32)) &&
+         is(f[1], "nanosec", Ros2Primitive::kUint32);
 }
 
 // Reads the bag's messages into `topics`, with a decoder per channel made at its first message.
@@ -173,30 +180,43 @@ class BagRead {
   BagTime time_;
 };
 
+// The indices of the topic's messages in time order, a repeated time kept once; empty when
+// they are in strictly increasing order already (the usual case: no copy then).
+std::vector<std::size_t> time_order(const std::vector<std::int64_t>& time_ns) {
+  if (std::adjacent_find(time_ns.begin(), time_ns.end(), std::greater_equal<>()) == time_ns.end()) {
+    return {};
+  }
+  std::vector<std::size_t> order(time_ns.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return time_ns[a] < time_ns[b]; });
+  const auto repeated = std::unique(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return time_ns[a] == time_ns[b];
+  });
+  order.erase(repeated, order.end());
+  return order;
+}
+
 // The topic's messages as a FileLog: ordered by time, repeated times dropped.
 FileLog topic_log(const std::string& path, const std::string& topic, TopicRead& read) {
-  std::vector<std::size_t> order(read.time_ns.size());
-  std::iota(order.begin(), order.end(), 0);
-  if (!std::is_sorted(read.time_ns.begin(), read.time_ns.end())) {
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return read.time_ns[a] < read.time_ns[b];
-    });
-  }
-  std::vector<std::size_t> keep;
-  keep.reserve(order.size());
-  for (const std::size_t i : order) {
-    if (keep.empty() || read.time_ns[i] != read.time_ns[keep.back()]) keep.push_back(i);
-  }
-  const std::int64_t origin = read.time_ns[keep.front()];
-  std::vector<double> t(keep.size());
-  for (std::size_t k = 0; k < keep.size(); ++k) {
-    t[k] = static_cast<double>(read.time_ns[keep[k]] - origin) * 1e-9;
-  }
+  const std::size_t messages = read.time_ns.size();
+  const std::vector<std::size_t> order = time_order(read.time_ns);
+  const std::size_t n = order.empty() ? messages : order.size();
+  const auto at = [&](std::size_t k) { return order.empty() ? k : order[k]; };
+  const std::int64_t origin = read.time_ns[at(0)];
+  std::vector<double> t(n);
+  for (std::size_t k = 0; k < n; ++k)
+    t[k] = static_cast<double>(read.time_ns[at(k)] - origin) * 1e-9;
+  std::vector<std::int64_t>().swap(read.time_ns);
   FileLog out;
   out.log = core::Log(std::move(t));
   for (std::size_t r = 0; r < read.roles.size(); ++r) {
-    std::vector<double> v(keep.size());
-    for (std::size_t k = 0; k < keep.size(); ++k) v[k] = read.values[r][keep[k]];
+    std::vector<double> v = std::move(read.values[r]);
+    if (!order.empty()) {
+      std::vector<double> ordered(n);
+      for (std::size_t k = 0; k < n; ++k) ordered[k] = v[order[k]];
+      v = std::move(ordered);
+    }
     const RolePlan& plan = read.roles[r];
     out.log.add_channel(plan.role, core::si_unit(plan.unit.quantity).symbol, std::move(v),
                         plan.interp);
@@ -207,9 +227,8 @@ FileLog topic_log(const std::string& path, const std::string& topic, TopicRead& 
   const bool header = std::any_of(read.header_time.begin(), read.header_time.end(),
                                   [](const auto& c) { return c.second; });
   out.report.time_format = header ? "header.stamp" : "receive time";
-  out.report.records = keep.size();
-  if (keep.size() < order.size())
-    out.report.skipped.add("repeated time", order.size() - keep.size());
+  out.report.records = n;
+  if (n < messages) out.report.skipped.add("repeated time", messages - n);
   out.origin_ns = origin;
   out.origin = format_iso8601(origin, 0);
   out.origin_zone = "UTC";

@@ -140,10 +140,10 @@ std::map<std::string, RawType> split_sections(const std::string& root, std::stri
     if (line.size() >= 3 && line.find_first_not_of('=') == std::string_view::npos) {
       close(start);
       name.clear();
-      section = end + 1;
+      section = std::min(end + 1, text.size());
     } else if (name.empty() && line.starts_with("MSG:")) {
       name = ros2_type_name(detail::trim(line.substr(4)));
-      section = end + 1;
+      section = std::min(end + 1, text.size());
     }
     start = end + 1;
   }

@@ -142,6 +142,9 @@ TEST(Ros2Schema, BadDefinitionsAreErrors) {
   EXPECT_THROW(Ros2Schema::parse("a/B", "B b\n"), Ros2MsgError);    // recursive
   EXPECT_THROW(Ros2Schema::parse("a/B", "float64[0] x\n"), Ros2MsgError);
   EXPECT_THROW(Ros2Schema::parse("a/B", "float64\n"), Ros2MsgError);
+  // A separator or MSG line last, without a line end (a fuzz finding): no type follows it.
+  EXPECT_EQ(Ros2Schema::parse("a/B", "float64 x\n===").types.size(), 1u);
+  EXPECT_EQ(Ros2Schema::parse("a/B", "float64 x\n===\nMSG: a/C").types.size(), 1u);
   // Time is known without its definition; an empty message has one byte.
   const Ros2Schema s =
       Ros2Schema::parse("a/msg/B", "builtin_interfaces/Time t\nE e\n===\nMSG: a/E\n");

@@ -154,7 +154,9 @@ class McapWriter {
   }
 
   static Bytes record(std::uint8_t op, const Bytes& content) {
-    Bytes r{op};
+    Bytes r;
+    r.reserve(9 + content.size());
+    r.push_back(op);
     u64(r, content.size());
     append(r, content);
     return r;
