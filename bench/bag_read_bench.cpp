@@ -161,7 +161,8 @@ void BM_ReadImuBag(benchmark::State& state) {
   map.set_column("output", "/imu.orientation_covariance[8]");
   std::size_t rows = 0;
   for (auto _ : state) {
-    const dynpos::io::FileLog log = dynpos::io::read_bag_file(path, map, dynpos::io::BagTime::kAuto);
+    const dynpos::io::FileLog log =
+        dynpos::io::read_bag_file(path, map, dynpos::io::BagTime::kAuto);
     rows = log.log.size();
     benchmark::DoNotOptimize(rows);
   }
@@ -171,8 +172,8 @@ void BM_ReadImuBag(benchmark::State& state) {
                           state.iterations());
   state.counters["uncompressed_B/s"] = benchmark::Counter(
       static_cast<double>(g_uncompressed) * iterations, benchmark::Counter::kIsRate);
-  state.counters["messages/s"] = benchmark::Counter(static_cast<double>(g_messages) * iterations,
-                                                    benchmark::Counter::kIsRate);
+  state.counters["messages/s"] =
+      benchmark::Counter(static_cast<double>(g_messages) * iterations, benchmark::Counter::kIsRate);
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   state.counters["peak_MB"] = static_cast<double>(usage.ru_maxrss) / 1024.0;

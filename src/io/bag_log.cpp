@@ -84,8 +84,7 @@ bool has_header_stamp(const Ros2Schema& schema) {
   // builtin_interfaces/Time: int32 sec (uint32 in older definitions), uint32 nanosec.
   const auto& f = schema.types[*stamp].fields;
   const auto is = [](const Ros2Field& field, std::string_view name, Ros2Primitive type) {
-    return field.name == name && field.primitive == type &&
-           field.array == Ros2Field::Array::kNone;
+    return field.name == name && field.primitive == type && field.array == Ros2Field::Array::kNone;
   };
   return f.size() == 2 &&
          (is(f[0], "sec", Ros2Primitive::kInt32) || is(f[0], "sec", Ros2Primitive::kUint32)) &&
