@@ -6,7 +6,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 dir="${1:?usage: fuzz/gather-seeds.sh DIR}"
 rm -rf "$dir"
-for t in csv_reader nmea_reader column_map time_stamp scenario vessel compare_json load_table; do
+for t in csv_reader nmea_reader column_map time_stamp scenario vessel compare_json load_table \
+    mcap_reader cdr_decoder; do
   mkdir -p "$dir/$t"
   [ -d "fuzz/corpus/$t" ] && cp fuzz/corpus/"$t"/* "$dir/$t/"
 done

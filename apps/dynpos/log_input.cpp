@@ -14,8 +14,8 @@ namespace {
 void add_log_argument(CLI::App& sub, analysis::LogSource& source) {
   auto copy = std::make_shared<std::unique_ptr<io::SpooledInput>>();
   sub.add_option("log", source.log,
-                 "Log: CSV, or an NMEA 0183 capture (detected by content); - reads standard "
-                 "input (a pipe, e.g. from zcat)")
+                 "Log: CSV, an NMEA 0183 capture or a ROS 2 bag (MCAP; detected by content); "
+                 "- reads standard input (a pipe, e.g. from zcat)")
       ->required()
       ->check([](const std::string& value) {
         return value == "-" ? std::string() : CLI::ExistingFile(value);
@@ -46,7 +46,8 @@ void add_log_options(CLI::App& sub, analysis::LogSource& source, const std::stri
       ->check(CLI::ExistingFile);
   sub.add_option("--col", source.columns,
                  "ROLE=COLUMN or ROLE=COLUMN@FILE for a column of another file (repeatable; "
-                 "time=COLUMN@FILE names FILE's time column). Roles: " +
+                 "time=COLUMN@FILE names FILE's time column; a bag's column is TOPIC.FIELD, "
+                 "e.g. /gps/fix.latitude). Roles: " +
                      roles_help);
   sub.add_option("--unit", source.units, "ROLE=UNIT (repeatable), e.g. thrust.port=kN");
   sub.add_option("--clock-offset", source.clock_offsets,
@@ -55,7 +56,12 @@ void add_log_options(CLI::App& sub, analysis::LogSource& source, const std::stri
                  "Largest gap [s] bridged when a role of another file is put on LOG's time "
                  "axis (default: 2.5 x that role's median spacing)")
       ->check(CLI::NonNegativeNumber);
-  sub.add_option("--format", source.format, "Log format: auto (by content), csv or nmea")
+  sub.add_option("--format", source.format,
+                 "Log format: auto (by content), csv, nmea or mcap (ROS 2 bag)")
+      ->default_str("auto");
+  sub.add_option("--bag-time", source.bag_time,
+                 "Time of a ROS 2 bag's messages: auto (header.stamp when the message has one, "
+                 "else the receive time), header or receive")
       ->default_str("auto");
   sub.add_flag("--strict", source.strict,
                "An NMEA line that cannot be used is an error (file:line)");

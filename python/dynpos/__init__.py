@@ -209,8 +209,8 @@ def _is_frame(value) -> bool:
     return type(value).__name__ == "DataFrame" and hasattr(value, "columns")
 
 
-_LOG_OPTIONS = ("clock_offset", "max_gap", "format", "strict", "time_format", "date",
-                "time_order", "jobs")
+_LOG_OPTIONS = ("clock_offset", "max_gap", "format", "bag_time", "strict", "time_format",
+                "date", "time_order", "jobs")
 # Options given as ROLE=VALUE (or NAME=FILE) pairs: a dict or a list of strings.
 _PAIR_OPTIONS = ("clock_offset",)
 # Options taken as a dict by name (gnssK, mruK); a list of "NAME=VALUE" strings is read as one.

@@ -75,7 +75,36 @@ io::LogFileRead other_file(const io::LogFileRead& how) {
   io::LogFileRead other;
   other.strict = how.strict;
   other.jobs = how.jobs;
+  other.bag_time = how.bag_time;
   return other;
+}
+
+// Puts `part` (a file, or a topic of a bag) on out.log's time axis, `user_offset_s` added to
+// its times, and adds its report and roles to out.input.
+void add_part(LoadedLog& out, std::optional<std::int64_t> main_origin_ns, io::FileLog part,
+              double user_offset_s, const core::ResampleOptions& options,
+              const io::LogFileRead& how) {
+  const int cycles = rollover_cycles(out.log, part, main_origin_ns, user_offset_s, how.strict);
+  const double offset_s = clock_offset_s(main_origin_ns, part, user_offset_s, cycles);
+  part.report.clock_offset_s = offset_s;
+  check_overlap(out.log, part, offset_s);
+  const std::size_t first_channel = out.log.channels().size();
+  core::add_aligned(out.log, part.log, offset_s, options);
+  for (std::size_t i = first_channel; i < out.log.channels().size(); ++i) {
+    const core::Channel& c = out.log.channels()[i];
+    if (std::all_of(c.values.begin(), c.values.end(), core::is_missing)) {
+      part.report.notes.push_back(
+          fmt::format("role '{}' has no sample on the main log's time axis (no valid value "
+                      "inside it, or only gaps wider than the largest gap)",
+                      c.name));
+    }
+  }
+  // Rates on the file's own clock: a 1 Hz role stays 1 Hz on a 10 Hz main log.
+  const std::string part_path = part.report.path;
+  io::InputReport part_input =
+      describe_input(part.log, part_path, std::move(part.report), how.jobs);
+  out.input.files.push_back(std::move(part_input.files.front()));
+  for (io::RoleOrigin& role : part_input.roles) out.input.roles.push_back(std::move(role));
 }
 
 }  // namespace
@@ -84,11 +113,15 @@ LoadedLog read_log_files(const std::filesystem::path& main_log, const io::Column
                          const core::ResampleOptions& options, const io::LogFileRead& how) {
   map.validate();
   io::FileLog main = io::read_log_file(main_log, map.for_file(""), how);
+  std::vector<io::FileLog> topics = std::move(main.more);
   LoadedLog out{std::move(main.log), {}, main.first_row_s, main.last_row_read_s};
   const std::string main_path = main.report.path;
   out.input = describe_input(out.log, main_path, std::move(main.report), how.jobs);
   out.input.origin = main.origin;
   out.input.origin_zone = main.origin_zone;
+  // A bag's other topics: on the bag's clock, by their absolute time stamps.
+  for (io::FileLog& topic : topics)
+    add_part(out, main.origin_ns, std::move(topic), 0.0, options, how);
   add_log_files(out, main.origin_ns, map, options, how);
   return out;
 }
@@ -99,29 +132,11 @@ void add_log_files(LoadedLog& out, std::optional<std::int64_t> main_origin_ns,
   for (const std::string& file : map.other_files()) {
     const io::LogFileOptions file_options = map.file_options(file);
     io::FileLog part = io::read_log_file(file, map.for_file(file), other_file(how));
-    const int cycles =
-        rollover_cycles(out.log, part, main_origin_ns, file_options.clock_offset_s, how.strict);
-    const double offset_s =
-        clock_offset_s(main_origin_ns, part, file_options.clock_offset_s, cycles);
-    part.report.clock_offset_s = offset_s;
-    check_overlap(out.log, part, offset_s);
-    const std::size_t first_channel = out.log.channels().size();
-    core::add_aligned(out.log, part.log, offset_s, options);
-    for (std::size_t i = first_channel; i < out.log.channels().size(); ++i) {
-      const core::Channel& c = out.log.channels()[i];
-      if (std::all_of(c.values.begin(), c.values.end(), core::is_missing)) {
-        part.report.notes.push_back(
-            fmt::format("role '{}' has no sample on the main log's time axis (no valid value "
-                        "inside it, or only gaps wider than the largest gap)",
-                        c.name));
-      }
+    std::vector<io::FileLog> topics = std::move(part.more);
+    add_part(out, main_origin_ns, std::move(part), file_options.clock_offset_s, options, how);
+    for (io::FileLog& topic : topics) {
+      add_part(out, main_origin_ns, std::move(topic), file_options.clock_offset_s, options, how);
     }
-    // Rates on the file's own clock: a 1 Hz role stays 1 Hz on a 10 Hz main log.
-    const std::string part_path = part.report.path;
-    io::InputReport part_input =
-        describe_input(part.log, part_path, std::move(part.report), how.jobs);
-    out.input.files.push_back(std::move(part_input.files.front()));
-    for (io::RoleOrigin& role : part_input.roles) out.input.roles.push_back(std::move(role));
   }
 }
 

@@ -7,6 +7,7 @@
 #include "dynpos/analysis/options.hpp"
 #include "dynpos/core/time_spacing.hpp"
 #include "dynpos/io/csv_reader.hpp"
+#include "dynpos/io/mcap_reader.hpp"
 #include "dynpos/io/roles.hpp"
 #include "log_source_nmea.hpp"
 
@@ -47,9 +48,16 @@ auto naming_the_log(const LogSource& source, Read&& read) -> decltype(read()) {
   }
 }
 
+// Whether the source is a ROS 2 bag: format "mcap", or "auto" and io::looks_like_mcap.
+bool reads_bag(const LogSource& source) {
+  return source.format == "mcap" || (source.format == "auto" && source.memory == nullptr &&
+                                     io::looks_like_mcap(source.file()));
+}
+
 // LogSource::column_map without the renaming of errors.
 io::ColumnMap column_map_of(const LogSource& source, const RoleFilter& wanted) {
   io::ColumnMap map = source.base_map();
+  if (reads_bag(source)) return map;  // a bag's fields are named by the map only
   std::vector<std::string> mapped_columns;
   for (const auto& [role, entry] : map.roles()) {
     if (entry.file.empty()) mapped_columns.push_back(entry.column);
@@ -110,8 +118,9 @@ io::InputReport describe_input(const core::Log& log, const std::string& file,
   std::optional<std::optional<double>> all_valid_hz;
   for (const core::Channel& channel : channels) {
     const std::size_t missing = core::missing_count(channel.values, jobs);
-    input.roles.push_back(
-        {channel.name, file, median_rate_hz(log, channel, missing, all_valid_hz, jobs)});
+    input.roles.push_back({channel.name, file,
+                           median_rate_hz(log, channel, missing, all_valid_hz, jobs),
+                           input.files.front().topic});
   }
   return input;
 }
@@ -156,15 +165,31 @@ LoadedLog load_memory(const LogSource& source) {
   return out;
 }
 
-// A log file (CSV or NMEA), with its other files, read from source.file().
+// --bag-time, checked.
+io::BagTime bag_time_of(const LogSource& source) {
+  const std::optional<io::BagTime> time = io::find_bag_time(source.bag_time);
+  if (!time) {
+    throw core::InputError::for_option(
+        "bag_time", "unknown bag time '" + source.bag_time + "'",
+        "use auto (header.stamp when the message has one, else the receive time), header or "
+        "receive");
+  }
+  return *time;
+}
+
+// A log file (CSV, NMEA or a ROS 2 bag), with its other files, read from source.file().
 LoadedLog load_file(const LogSource& source, const RoleFilter& wanted) {
-  if (reads_nmea(source)) return load_nmea(source, wanted);
-  return read_log_files(source.file(), column_map_of(source, wanted), source.resample_options(),
-                        {.format = io::LogFileRead::Format::kCsv,
-                         .strict = source.strict,
-                         .jobs = source.jobs,
-                         .t_from_s = source.window_from_s,
-                         .t_to_s = source.window_to_s});
+  const io::BagTime bag_time = bag_time_of(source);
+  const bool bag = reads_bag(source);
+  if (!bag && reads_nmea(source)) return load_nmea(source, wanted);
+  return read_log_files(
+      source.file(), column_map_of(source, wanted), source.resample_options(),
+      {.format = bag ? io::LogFileRead::Format::kMcap : io::LogFileRead::Format::kCsv,
+       .strict = source.strict,
+       .jobs = source.jobs,
+       .t_from_s = source.window_from_s,
+       .t_to_s = source.window_to_s,
+       .bag_time = bag_time});
 }
 
 }  // namespace

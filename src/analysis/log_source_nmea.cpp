@@ -9,10 +9,12 @@ namespace dynpos::analysis {
 bool reads_nmea(const LogSource& source) {
   if (source.format == "nmea") return true;
   if (source.format == "csv") return false;
+  if (source.format == "mcap") return false;
   if (source.format != "auto") {
     throw core::InputError::for_option(
         "format", "unknown log format '" + source.format + "'",
-        "use auto (detected from the content), csv or nmea (NMEA 0183 capture)");
+        "use auto (detected from the content), csv, nmea (NMEA 0183 capture) or mcap (ROS 2 "
+        "bag)");
   }
   return io::looks_like_nmea(source.file());
 }
@@ -56,9 +58,13 @@ LoadedLog load_nmea(const LogSource& source, const RoleFilter& wanted) {
     out.log_end_s = out.log.time().back();
   }
   if (more_files) {
-    add_log_files(
-        out, read.origin_ns, map, source.resample_options(),
-        io::LogFileRead{io::LogFileRead::Format::kAuto, source.strict, source.jobs, {}, {}});
+    add_log_files(out, read.origin_ns, map, source.resample_options(),
+                  io::LogFileRead{io::LogFileRead::Format::kAuto,
+                                  source.strict,
+                                  source.jobs,
+                                  {},
+                                  {},
+                                  io::find_bag_time(source.bag_time).value_or(io::BagTime::kAuto)});
   }
   return out;
 }

@@ -66,12 +66,14 @@ nlohmann::json to_json(const InputReport& report) {
                      {"skipped", counts_json(f.skipped)},
                      {"accepted", counts_json(f.accepted)},
                      {"notes", f.notes}});
+    if (!f.topic.empty()) files.back()["topic"] = f.topic;
   }
   nlohmann::json roles = nlohmann::json::array();
   for (const RoleOrigin& r : report.roles) {
     roles.push_back({{"role", r.role},
                      {"file", r.file},
                      {"rate_hz", r.rate_hz ? nlohmann::json(*r.rate_hz) : nlohmann::json()}});
+    if (!r.topic.empty()) roles.back()["topic"] = r.topic;
   }
   return {{"files", files},
           {"roles", roles},
@@ -82,15 +84,15 @@ nlohmann::json to_json(const InputReport& report) {
 std::string to_text(const InputReport& report) {
   std::string out;
   for (const FileReport& f : report.files) {
-    out += fmt::format("input: {} ({}, time stamps: {}, {} records", f.path, f.format,
-                       f.time_format, f.records);
+    out += fmt::format("input: {}{} ({}, time stamps: {}, {} records", f.path,
+                       f.topic.empty() ? "" : " " + f.topic, f.format, f.time_format, f.records);
     if (f.clock_offset_s != 0.0) out += fmt::format(", clock offset {:+.3f} s", f.clock_offset_s);
     if (!f.skipped.empty()) out += ", skipped: " + counts_text(f.skipped);
     if (!f.accepted.empty()) out += ", accepted: " + counts_text(f.accepted);
     out += ")";
     std::string roles;
     for (const RoleOrigin& r : report.roles) {
-      if (r.file != f.path) continue;
+      if (r.file != f.path || r.topic != f.topic) continue;
       roles += roles.empty() ? ": " : ", ";
       roles += r.rate_hz ? fmt::format("{} {:.3g} Hz", r.role, *r.rate_hz) : r.role;
     }

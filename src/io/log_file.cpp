@@ -6,7 +6,9 @@
 #include <fmt/ranges.h>
 
 #include "dynpos/core/error.hpp"
+#include "dynpos/io/bag_log.hpp"
 #include "dynpos/io/csv_reader.hpp"
+#include "dynpos/io/mcap_reader.hpp"
 #include "dynpos/io/nmea_log.hpp"
 
 namespace dynpos::io {
@@ -35,8 +37,14 @@ FileLog read_nmea_file(const std::filesystem::path& path, const ColumnMap& map, 
                        [&](const auto& r) { return r.second->column == channel; });
   };
   NmeaLog read = read_nmea_log(path, options);
-  FileLog out{core::Log(read.log.time()), std::move(read.report), read.origin_ns,
-              std::move(read.origin), read.origin_ns ? "UTC" : ""};
+  FileLog out{core::Log(read.log.time()),
+              std::move(read.report),
+              read.origin_ns,
+              std::move(read.origin),
+              read.origin_ns ? "UTC" : "",
+              0.0,
+              0.0,
+              {}};
   if (!read.log.time().empty()) {
     out.first_row_s = read.log.time().front();
     out.last_row_read_s = read.log.time().back();
@@ -64,6 +72,9 @@ FileLog read_nmea_file(const std::filesystem::path& path, const ColumnMap& map, 
 FileLog read_log_file(const std::filesystem::path& path, const ColumnMap& map,
                       const LogFileRead& how) {
   using Format = LogFileRead::Format;
+  if (how.format == Format::kMcap || (how.format == Format::kAuto && looks_like_mcap(path))) {
+    return read_bag_file(path, map, how.bag_time);
+  }
   if (how.format == Format::kNmea || (how.format == Format::kAuto && looks_like_nmea(path))) {
     return read_nmea_file(path, map, how.strict);
   }
@@ -75,7 +86,7 @@ FileLog read_log_file(const std::filesystem::path& path, const ColumnMap& map,
   FileLog out{std::move(csv.log),   {},
               csv.time.origin_ns,   csv.time.origin,
               csv.time.origin_zone, csv.first_row_s,
-              csv.last_row_read_s};
+              csv.last_row_read_s,  {}};
   out.report.path = path.string();
   out.report.format = "csv";
   out.report.time_format = csv.time.format;

@@ -37,7 +37,7 @@ struct LoadedLog {
 };
 
 struct LogSource {
-  std::filesystem::path log;  ///< the CSV log (or NMEA capture), as the user named it
+  std::filesystem::path log;  ///< the CSV log (NMEA capture, ROS 2 bag), as the user named it
   /// Where the bytes of `log` are read from when `log` can be read only once (standard input
   /// "-", a pipe, a FIFO): a copy made once (io::SpooledInput). Empty: `log` itself. Messages
   /// and reports name `log` either way.
@@ -50,7 +50,12 @@ struct LogSource {
   /// Largest gap [s] between two samples of a role from another file that is bridged when it
   /// is put on the main log's time axis; 0 = automatic (2.5 × that role's median spacing).
   double max_gap_s = 0.0;
-  std::string format = "auto";  ///< "auto" (by content), "csv" or "nmea" (NMEA 0183 capture)
+  /// "auto" (by content), "csv", "nmea" (NMEA 0183 capture) or "mcap" (ROS 2 bag: a role's
+  /// column is TOPIC.FIELD, io/bag_log.hpp).
+  std::string format = "auto";
+  /// The time of a bag's messages: "auto" (header.stamp when the type has one, else the
+  /// receive time), "header" or "receive" (io/bag_time.hpp).
+  std::string bag_time = "auto";
   /// An NMEA line that cannot be used is an error, and so are files whose absolute stamps are
   /// whole GPS week cycles apart (a receiver's week-number rollover; else aligned and noted).
   bool strict = false;

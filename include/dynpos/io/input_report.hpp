@@ -35,7 +35,8 @@ class LineCounts {
 /// One file read for the log.
 struct FileReport {
   std::string path;                ///< as the user gave it
-  std::string format;              ///< "csv" or "nmea"
+  std::string format;              ///< "csv", "nmea" or "mcap"
+  std::string topic;               ///< a bag's topic this entry is about; empty for other files
   std::string time_format;         ///< how its time stamps were read, e.g. "seconds", "iso8601"
   double clock_offset_s = 0.0;     ///< added to this file's times to put it on the log's clock
   std::size_t records = 0;         ///< data rows or sentences used
@@ -49,6 +50,7 @@ struct RoleOrigin {
   std::string role;
   std::string file;               ///< the FileReport::path it was read from
   std::optional<double> rate_hz;  ///< median rate of its valid samples; absent with < 2
+  std::string topic = {};         ///< and its FileReport::topic (a bag's), else empty
 };
 
 /// Everything read to make one log.
@@ -69,8 +71,9 @@ struct InputReport {
   void append(InputReport other);
 };
 
-/// {files: [{path, format, time_format, clock_offset_s, records, skipped: {kind: n},
-/// accepted: {kind: n}, notes: [...]}], roles: [{role, file, rate_hz}], origin, origin_zone}.
+/// {files: [{path, topic (a bag's only), format, time_format, clock_offset_s, records, skipped:
+/// {kind: n}, accepted: {kind: n}, notes: [...]}], roles: [{role, file, topic (a bag's only),
+/// rate_hz}], origin, origin_zone}.
 nlohmann::json to_json(const InputReport& report);
 
 /// "input: FILE (format, time stamps: ..., N records, skipped: 3 bad checksum, ...)" lines, one

@@ -10,8 +10,10 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "dynpos/core/log.hpp"
+#include "dynpos/io/bag_time.hpp"
 #include "dynpos/io/column_map.hpp"
 #include "dynpos/io/input_report.hpp"
 
@@ -30,18 +32,23 @@ struct FileLog {
   /// the first row after it when the file goes on.
   double first_row_s = 0.0;
   double last_row_read_s = 0.0;
+  /// A bag's other topics, each like a file of its own (io/bag_log.hpp); empty for others.
+  std::vector<FileLog> more;
 };
 
 /// How read_log_file() takes a file.
 struct LogFileRead {
-  enum class Format { kAuto, kCsv, kNmea };
-  Format format = Format::kAuto;  ///< kAuto: an NMEA capture when io::looks_like_nmea, else CSV
-  bool strict = false;            ///< an NMEA line that cannot be used is an error
-  unsigned jobs = 0;  ///< threads for reading a CSV file and describing it, 0 = every core
+  enum class Format { kAuto, kCsv, kNmea, kMcap };
+  /// kAuto: a ROS 2 bag when io::looks_like_mcap, an NMEA capture when io::looks_like_nmea,
+  /// else CSV.
+  Format format = Format::kAuto;
+  bool strict = false;  ///< an NMEA line that cannot be used is an error
+  unsigned jobs = 0;    ///< threads for reading a CSV file and describing it, 0 = every core
   /// Only the rows of a CSV file with time in [t_from_s, t_to_s] (its own axis) are read
   /// (CsvReadOptions); an NMEA capture is read whole.
   std::optional<double> t_from_s;
   std::optional<double> t_to_s;
+  BagTime bag_time = BagTime::kAuto;  ///< the time of a bag's messages
 };
 
 /// Reads the roles of `map` (one file's map, e.g. ColumnMap::for_file) from `path`, with `time`
@@ -49,7 +56,8 @@ struct LogFileRead {
 /// NMEA 0183 capture (`how`) is read by io::read_nmea_log, strict as `how` says: its
 /// time is that of its sentences (or logger stamps), a role's column names a channel of the
 /// capture (lat, lon, height, heading, roll, pitch, down, r; SI, so no unit or scale), and
-/// `time` is not read. Throws core::InputError naming the file, line and column.
+/// `time` is not read. A ROS 2 bag (MCAP) is read by io::read_bag_file, its topics in
+/// FileLog::more. Throws core::InputError naming the file, line and column.
 FileLog read_log_file(const std::filesystem::path& path, const ColumnMap& map,
                       const LogFileRead& how = {});
 

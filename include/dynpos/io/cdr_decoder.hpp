@@ -1,0 +1,74 @@
+#pragma once
+/// \file
+/// CdrDecoder: numbers picked by field path from ROS 2 messages serialised as CDR.
+///
+/// A message is the 4-byte encapsulation header (XCDR1 big or little endian: 00 00 / 00 01;
+/// plain XCDR2: 00 06 / 00 07) then the fields in order, each aligned to its size (at most 8
+/// bytes in XCDR1, 4 in XCDR2) counted from the byte after the header; a string is a uint32
+/// length (with its terminating NUL) and the bytes, a sequence a uint32 count and the elements,
+/// a fixed array its elements only. Every count and length is checked against the bytes left
+/// before it is used. Only the fields up to the last wanted one are walked.
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "dynpos/io/ros2_msg.hpp"
+
+namespace dynpos::io {
+
+/// A message whose bytes do not hold what its type declares: the problem and the byte offset
+/// in the message (its header included).
+class CdrError : public std::runtime_error {
+ public:
+  CdrError(const std::string& problem, std::uint64_t offset)
+      : std::runtime_error(problem), offset(offset) {}
+  std::uint64_t offset;
+};
+
+class CdrDecoder {
+ public:
+  /// Picks the fields `paths` of schema.types[0]: "a.b.c", an element "a[2]" or "a[2].b".
+  /// Throws Ros2MsgError for an unknown field (naming the fields there), a path that ends at a
+  /// message or a string, an element of a field that is not an array or out of a fixed array.
+  CdrDecoder(Ros2Schema schema, const std::vector<std::string>& paths);
+
+  /// Decodes `message` into values[i] for paths[i] (values.size() == paths.size()), NaN for an
+  /// element past the end of its sequence. Throws CdrError.
+  void decode(std::span<const std::uint8_t> message, std::span<double> values) const;
+
+  const Ros2Schema& schema() const noexcept { return schema_; }
+
+  /// The numeric fields of schema.types[0] as paths, an array by its first element ("a[0]"),
+  /// at most `max` of them.
+  static std::vector<std::string> numeric_fields(const Ros2Schema& schema, std::size_t max);
+
+  struct Want {
+    std::uint32_t field = 0;
+    std::uint32_t element = kWhole;  ///< of an array field; kWhole for a field that is not one
+    std::int32_t slot = -1;          ///< a number: its index in values
+    std::int32_t node = -1;          ///< a message: what is wanted inside it
+    static constexpr std::uint32_t kWhole = 0xFFFFFFFFU;
+  };
+  /// What is wanted of one message value: sorted by field and element.
+  struct Node {
+    std::vector<Want> wants;
+  };
+
+ private:
+  struct Reader;
+  void walk(std::size_t type, const Node* node, Reader& r, std::span<double> values) const;
+  void read_array(const Ros2Field& field, const Want* want, const Want* end, Reader& r,
+                  std::span<double> values) const;
+  void skip(const Ros2Field& field, std::uint64_t n, Reader& r) const;
+  std::int32_t add_path(const std::string& path, std::int32_t slot);
+
+  Ros2Schema schema_;
+  std::vector<Node> nodes_;                                    // nodes_[0]: the root
+  std::vector<std::pair<std::int32_t, std::int32_t>> copies_;  // a repeated path: to ← from
+};
+
+}  // namespace dynpos::io

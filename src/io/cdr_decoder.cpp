@@ -1,0 +1,330 @@
+#include "dynpos/io/cdr_decoder.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <charconv>
+#include <cstring>
+#include <limits>
+
+#include <fmt/format.h>
+
+namespace dynpos::io {
+namespace {
+
+constexpr std::size_t kHeaderBytes = 4;
+
+std::vector<std::string> split_path(const std::string& path) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (true) {
+    const auto dot = path.find('.', start);
+    out.push_back(path.substr(start, dot - start));
+    if (dot == std::string::npos) return out;
+    start = dot + 1;
+  }
+}
+
+std::string field_list(const Ros2Type& type) {
+  std::string out;
+  for (const Ros2Field& f : type.fields) out += (out.empty() ? "" : ", ") + f.name;
+  return out;
+}
+
+bool is_array(const Ros2Field& f) { return f.array != Ros2Field::Array::kNone; }
+
+}  // namespace
+
+struct CdrDecoder::Reader {
+  const std::uint8_t* data;  // after the encapsulation header
+  std::size_t size;
+  std::size_t pos = 0;
+  bool swap = false;
+  std::size_t max_align = 8;
+
+  [[noreturn]] void fail(const std::string& problem) const {
+    throw CdrError(problem, pos + kHeaderBytes);
+  }
+  void align(std::size_t n) {
+    const std::size_t a = std::min(n, max_align);
+    pos = (pos + a - 1) & ~(a - 1);
+  }
+  void need(std::uint64_t n, const char* what) const {
+    if (pos > size || n > size - pos) {
+      fail(
+          fmt::format("{} needs {} bytes, only {} are left", what, n, pos > size ? 0 : size - pos));
+    }
+  }
+  template <class T>
+  T number(const char* what) {
+    align(sizeof(T));
+    need(sizeof(T), what);
+    T v;
+    std::memcpy(&v, data + pos, sizeof(T));
+    pos += sizeof(T);
+    if constexpr (sizeof(T) > 1) {
+      if (swap) v = std::bit_cast<T>(byteswap(std::bit_cast<unsigned_of<T>>(v)));
+    }
+    return v;
+  }
+  template <class T>
+  using unsigned_of =
+      std::conditional_t<sizeof(T) == 2, std::uint16_t,
+                         std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>>;
+  template <class U>
+  static U byteswap(U v) {
+    U out = 0;
+    for (std::size_t i = 0; i < sizeof(U); ++i) {
+      out = static_cast<U>((out << 8) | ((v >> (8 * i)) & 0xFF));
+    }
+    return out;
+  }
+  // A count of elements of at least `min_bytes` each, checked against the bytes left.
+  std::uint32_t count(std::size_t min_bytes, const char* what) {
+    const std::uint32_t n = number<std::uint32_t>(what);
+    if (static_cast<std::uint64_t>(n) * min_bytes > size - std::min(size, pos)) {
+      fail(fmt::format("{} declares {} elements, more than the {} bytes left hold", what, n,
+                       size - std::min(size, pos)));
+    }
+    return n;
+  }
+  double primitive(Ros2Primitive p) {
+    switch (p) {
+      case Ros2Primitive::kBool:
+        return number<std::uint8_t>("a bool") != 0 ? 1.0 : 0.0;
+      case Ros2Primitive::kByte:
+      case Ros2Primitive::kChar:
+      case Ros2Primitive::kUint8:
+        return number<std::uint8_t>("a uint8");
+      case Ros2Primitive::kInt8:
+        return number<std::int8_t>("an int8");
+      case Ros2Primitive::kInt16:
+        return number<std::int16_t>("an int16");
+      case Ros2Primitive::kUint16:
+        return number<std::uint16_t>("a uint16");
+      case Ros2Primitive::kInt32:
+        return number<std::int32_t>("an int32");
+      case Ros2Primitive::kUint32:
+        return number<std::uint32_t>("a uint32");
+      case Ros2Primitive::kInt64:
+        return static_cast<double>(number<std::int64_t>("an int64"));
+      case Ros2Primitive::kUint64:
+        return static_cast<double>(number<std::uint64_t>("a uint64"));
+      case Ros2Primitive::kFloat32:
+        return number<float>("a float32");
+      case Ros2Primitive::kFloat64:
+        return number<double>("a float64");
+      case Ros2Primitive::kString:
+      case Ros2Primitive::kWstring:
+        skip_string(p);
+        return 0.0;
+    }
+    return 0.0;
+  }
+  void skip_string(Ros2Primitive p) {
+    const std::size_t unit = p == Ros2Primitive::kWstring ? 4 : 1;
+    const std::uint32_t n = count(unit, "a string's length");
+    pos += std::size_t{n} * unit;
+  }
+};
+
+std::int32_t CdrDecoder::add_path(const std::string& path, std::int32_t slot) {
+  std::size_t type = 0;
+  std::size_t node = 0;
+  const std::vector<std::string> parts = split_path(path);
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    std::string name = parts[k];
+    std::uint32_t element = Want::kWhole;
+    if (const auto open = name.find('['); open != std::string::npos && name.ends_with(']')) {
+      const std::string digits = name.substr(open + 1, name.size() - open - 2);
+      const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), element);
+      if (ec != std::errc() || end != digits.data() + digits.size() || element == Want::kWhole) {
+        throw Ros2MsgError(fmt::format("'{}': '{}' is not an element index", path, digits));
+      }
+      name.resize(open);
+    }
+    const Ros2Type& t = schema_.types[type];
+    const auto f = std::find_if(t.fields.begin(), t.fields.end(),
+                                [&](const Ros2Field& x) { return x.name == name; });
+    if (f == t.fields.end()) {
+      throw Ros2MsgError(fmt::format("'{}': {} has no field '{}' (its fields: {})", path, t.name,
+                                     name, field_list(t)));
+    }
+    if (is_array(*f) != (element != Want::kWhole)) {
+      throw Ros2MsgError(is_array(*f) ? fmt::format("'{}': {} is an array; give an element, "
+                                                    "e.g. {}[0]",
+                                                    path, name, name)
+                                      : fmt::format("'{}': {} is not an array", path, name));
+    }
+    if (f->array != Ros2Field::Array::kUnbounded && is_array(*f) && element >= f->size) {
+      throw Ros2MsgError(fmt::format("'{}': {} has at most {} elements", path, name, f->size));
+    }
+    const bool last = k + 1 == parts.size();
+    if (last != f->primitive.has_value() || f->primitive == Ros2Primitive::kString ||
+        f->primitive == Ros2Primitive::kWstring) {
+      throw Ros2MsgError(
+          fmt::format("'{}': {} is {}, not a number", path, name,
+                      f->primitive ? "text" : "a message " + schema_.types[f->nested].name));
+    }
+    const auto field = static_cast<std::uint32_t>(f - t.fields.begin());
+    std::vector<Want>& wants = nodes_[node].wants;
+    auto w = std::find_if(wants.begin(), wants.end(),
+                          [&](const Want& x) { return x.field == field && x.element == element; });
+    if (w == wants.end()) {
+      wants.push_back({field, element, -1, -1});
+      std::sort(wants.begin(), wants.end(), [](const Want& a, const Want& b) {
+        return a.field != b.field ? a.field < b.field : a.element < b.element;
+      });
+      w = std::find_if(wants.begin(), wants.end(),
+                       [&](const Want& x) { return x.field == field && x.element == element; });
+    }
+    if (last) {
+      if (w->slot >= 0) return w->slot;  // a repeated path
+      w->slot = slot;
+      return slot;
+    }
+    if (w->node < 0) {
+      w->node = static_cast<std::int32_t>(nodes_.size());
+      const std::size_t next = nodes_.size();
+      nodes_.emplace_back();  // invalidates `wants` and `w`
+      node = next;
+    } else {
+      node = static_cast<std::size_t>(w->node);
+    }
+    type = f->nested;
+  }
+  return slot;
+}
+
+CdrDecoder::CdrDecoder(Ros2Schema schema, const std::vector<std::string>& paths)
+    : schema_(std::move(schema)), nodes_(1) {
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    const auto slot = static_cast<std::int32_t>(i);
+    const std::int32_t from = add_path(paths[i], slot);
+    if (from != slot) copies_.emplace_back(slot, from);
+  }
+}
+
+void CdrDecoder::skip(const Ros2Field& field, std::uint64_t n, Reader& r) const {
+  if (field.primitive && *field.primitive != Ros2Primitive::kString &&
+      *field.primitive != Ros2Primitive::kWstring) {
+    const std::size_t bytes = ros2_primitive_bytes(*field.primitive);
+    r.align(bytes);
+    r.need(n * bytes, "an array");
+    r.pos += static_cast<std::size_t>(n * bytes);
+    return;
+  }
+  for (std::uint64_t i = 0; i < n; ++i) {
+    if (field.primitive) {
+      r.skip_string(*field.primitive);
+    } else {
+      walk(field.nested, nullptr, r, {});
+    }
+  }
+}
+
+void CdrDecoder::read_array(const Ros2Field& field, const Want* want, const Want* end, Reader& r,
+                            std::span<double> values) const {
+  const std::size_t min_bytes = field.primitive ? ros2_primitive_bytes(*field.primitive)
+                                                : schema_.types[field.nested].min_bytes;
+  std::uint64_t n = field.size;
+  if (field.array == Ros2Field::Array::kFixed) {
+    if (n * min_bytes > r.size - std::min(r.size, r.pos)) {
+      r.fail(fmt::format("the array {}[{}] needs more than the bytes left", field.name, n));
+    }
+  } else {
+    n = r.count(min_bytes, "a sequence");
+    if (field.array == Ros2Field::Array::kBounded && n > field.size) {
+      r.fail(fmt::format("the sequence {} has {} elements, more than its bound {}", field.name, n,
+                         field.size));
+    }
+  }
+  std::uint64_t at = 0;
+  for (; want != end && want->element < n; ++want) {
+    skip(field, want->element - at, r);
+    if (want->slot >= 0) {
+      values[static_cast<std::size_t>(want->slot)] = r.primitive(*field.primitive);
+    } else {
+      walk(field.nested, &nodes_[static_cast<std::size_t>(want->node)], r, values);
+    }
+    at = want->element + 1;
+  }
+  skip(field, n - at, r);
+}
+
+void CdrDecoder::walk(std::size_t type, const Node* node, Reader& r,
+                      std::span<double> values) const {
+  const Ros2Type& t = schema_.types[type];
+  const Want* want = node != nullptr ? node->wants.data() : nullptr;
+  const Want* const end = node != nullptr ? want + node->wants.size() : nullptr;
+  // The root stops after its last wanted field; a nested value is walked whole.
+  const bool root = node == nodes_.data();
+  const std::size_t fields =
+      root ? (node->wants.empty() ? 0 : node->wants.back().field + 1) : t.fields.size();
+  for (std::uint32_t i = 0; i < fields; ++i) {
+    const Ros2Field& field = t.fields[i];
+    const Want* first = want;
+    while (want != end && want->field == i) ++want;
+    if (is_array(field)) {
+      if (first == want) {
+        const std::uint64_t n =
+            field.array == Ros2Field::Array::kFixed
+                ? field.size
+                : r.count(field.primitive ? ros2_primitive_bytes(*field.primitive)
+                                          : schema_.types[field.nested].min_bytes,
+                          "a sequence");
+        skip(field, n, r);
+      } else {
+        read_array(field, first, want, r, values);
+      }
+    } else if (field.primitive) {
+      const double v = r.primitive(*field.primitive);
+      if (first != want) values[static_cast<std::size_t>(first->slot)] = v;
+    } else {
+      walk(field.nested, first != want ? &nodes_[static_cast<std::size_t>(first->node)] : nullptr,
+           r, values);
+    }
+  }
+}
+
+void CdrDecoder::decode(std::span<const std::uint8_t> message, std::span<double> values) const {
+  if (message.size() < kHeaderBytes) {
+    throw CdrError(
+        fmt::format("a message of {} bytes, without its 4-byte CDR header", message.size()), 0);
+  }
+  Reader r{message.data() + kHeaderBytes, message.size() - kHeaderBytes};
+  const std::uint8_t kind = message[1];
+  if (message[0] != 0 || (kind != 0 && kind != 1 && kind != 6 && kind != 7)) {
+    throw CdrError(fmt::format("the CDR encapsulation {:02x} {:02x} is not XCDR1 or plain XCDR2",
+                               message[0], message[1]),
+                   0);
+  }
+  r.swap = (kind & 1) == 0;  // big endian on this little-endian host
+  r.max_align = kind >= 6 ? 4 : 8;
+  std::fill(values.begin(), values.end(), std::numeric_limits<double>::quiet_NaN());
+  walk(0, nodes_.data(), r, values);
+  for (const auto& [to, from] : copies_) {
+    values[static_cast<std::size_t>(to)] = values[static_cast<std::size_t>(from)];
+  }
+}
+
+std::vector<std::string> CdrDecoder::numeric_fields(const Ros2Schema& schema, std::size_t max) {
+  std::vector<std::string> out;
+  const auto visit = [&](const auto& self, std::size_t type, const std::string& prefix,
+                         int depth) -> void {
+    if (depth > 64) return;
+    for (const Ros2Field& f : schema.types[type].fields) {
+      if (out.size() >= max) return;
+      const std::string name = prefix + f.name + (is_array(f) ? "[0]" : "");
+      if (!f.primitive) {
+        self(self, f.nested, name + ".", depth + 1);
+      } else if (*f.primitive != Ros2Primitive::kString &&
+                 *f.primitive != Ros2Primitive::kWstring) {
+        out.push_back(name);
+      }
+    }
+  };
+  visit(visit, 0, "", 0);
+  return out;
+}
+
+}  // namespace dynpos::io

@@ -1,0 +1,241 @@
+#include "dynpos/io/mcap_reader.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "io_test_util.hpp"
+#include "mcap_test_writer.hpp"
+
+namespace dynpos::io {
+namespace {
+
+using io::testing::caught_input_error;
+using io::testing::TempDir;
+using testing::Bytes;
+using testing::CdrWriter;
+using ::testing::HasSubstr;
+using testing::McapLayout;
+using testing::McapWriter;
+
+McapLayout layout(bool chunked, std::string compression, std::size_t per_chunk, bool summary = true,
+                  bool crc = true) {
+  return {chunked, std::move(compression), per_chunk, summary, crc};
+}
+
+// Two topics: /cmd (Float64) at every step, /speed (Float64) at every other one.
+McapWriter two_topics(const McapLayout& layout, int steps = 50) {
+  McapWriter w(layout);
+  const std::uint16_t s = w.schema("std_msgs/msg/Float64", std::string(testing::kFloat64Msg));
+  const std::uint16_t cmd = w.channel(s, "/cmd");
+  const std::uint16_t speed = w.channel(s, "/speed");
+  for (int k = 0; k < steps; ++k) {
+    const std::uint64_t t = 1'700'000'000'000'000'000ULL + 100'000'000ULL * k;
+    w.message(cmd, t, CdrWriter().put(1000.0 + k).bytes());
+    if (k % 2 == 0) w.message(speed, t, CdrWriter().put(-1.0 * k).bytes());
+  }
+  return w;
+}
+
+std::filesystem::path write_bytes(const TempDir& dir, const std::string& name, const Bytes& b) {
+  return dir.write(name, std::string_view(reinterpret_cast<const char*>(b.data()), b.size()));
+}
+
+struct Read {
+  std::vector<std::string> topics;
+  std::vector<double> values;
+};
+
+Read read_all(const std::filesystem::path& path, const std::string& only = {}) {
+  McapReader reader(path);
+  Read out;
+  reader.read_messages([&](const McapChannel& c) { return only.empty() || c.topic == only; },
+                       [&](const McapMessage& m) {
+                         out.topics.push_back(reader.channels().at(m.channel_id).topic);
+                         double v = 0;
+                         EXPECT_EQ(m.data.size(), 12u);
+                         std::memcpy(&v, m.data.data() + 4, 8);
+                         out.values.push_back(v);
+                       });
+  return out;
+}
+
+TEST(McapReader, ReadsEveryLayoutAlike) {
+  const TempDir dir;
+  const std::vector<McapLayout> layouts = {
+      layout(false, "", 0, false),
+      layout(false, "", 0, true),
+      layout(true, "", 7),
+      layout(true, "zstd", 10),
+      layout(true, "lz4", 1000),
+      layout(true, "zstd", 9, false),
+      layout(true, "lz4", 4, true, false),
+  };
+  for (std::size_t i = 0; i < layouts.size(); ++i) {
+    const auto path =
+        write_bytes(dir, "run" + std::to_string(i) + ".mcap", two_topics(layouts[i]).finish());
+    EXPECT_TRUE(looks_like_mcap(path));
+    const Read all = read_all(path);
+    ASSERT_EQ(all.values.size(), 75u) << i;
+    EXPECT_EQ(all.topics[0], "/cmd");
+    EXPECT_EQ(all.values[0], 1000.0);
+    EXPECT_EQ(all.topics[1], "/speed");
+    EXPECT_EQ(all.values.back(), 1049.0);
+    const Read speed = read_all(path, "/speed");
+    ASSERT_EQ(speed.values.size(), 25u) << i;
+    EXPECT_EQ(speed.values[3], -6.0);
+  }
+}
+
+TEST(McapReader, SkipsChunksWithoutAWantedChannelByTheIndex) {
+  const TempDir dir;
+  McapWriter w(layout(true, "zstd", 5));
+  const std::uint16_t s = w.schema("std_msgs/msg/Float64", std::string(testing::kFloat64Msg));
+  const std::uint16_t a = w.channel(s, "/a");
+  const std::uint16_t b = w.channel(s, "/b");
+  for (int k = 0; k < 10; ++k) w.message(a, k, CdrWriter().put(1.0 * k).bytes());
+  for (int k = 0; k < 10; ++k) w.message(b, 100 + k, CdrWriter().put(2.0 * k).bytes());
+  Bytes bytes = w.finish();
+  // Damage the first chunk's data: a chunk of /a only, never read for /b.
+  bytes[74] ^= 0xFF;  // the CRC of the first chunk (after magic, header record, chunk times, size)
+  const auto path = write_bytes(dir, "skip.mcap", bytes);
+  EXPECT_EQ(read_all(path, "/b").values.size(), 10u);
+  EXPECT_TRUE(caught_input_error([&] { read_all(path, "/a"); }));
+}
+
+TEST(McapReader, NotMcapIsAnError) {
+  const TempDir dir;
+  const auto path = dir.write("x.mcap", "time,a\n0,1\n");
+  EXPECT_FALSE(looks_like_mcap(path));
+  const auto e = caught_input_error([&] { McapReader r(path); });
+  ASSERT_TRUE(e);
+  EXPECT_THAT(e->what(), HasSubstr("not an MCAP file"));
+}
+
+TEST(McapReader, TruncatedChunkNamesItsOffset) {
+  const TempDir dir;
+  Bytes bytes = two_topics(layout(true, "zstd", 30)).finish();
+  bytes.resize(bytes.size() / 2);  // no footer: read linearly, into a cut chunk
+  const auto path = write_bytes(dir, "cut.mcap", bytes);
+  const auto e = caught_input_error([&] { read_all(path); });
+  ASSERT_TRUE(e);
+  EXPECT_THAT(e->what(), HasSubstr("cut.mcap"));
+  EXPECT_THAT(e->what(), ::testing::MatchesRegex(".*at byte [0-9]+: the record \\(opcode "
+                                                 "0x06\\) declares [0-9]+ bytes, only [0-9]+ "
+                                                 "are left.*"));
+}
+
+TEST(McapReader, BadCrcIsAnError) {
+  const TempDir dir;
+  Bytes bytes = two_topics(layout(true, "", 20)).finish();
+  const double wanted = 1010.0;  // a /cmd value inside the first chunk
+  std::uint8_t pattern[8];
+  std::memcpy(pattern, &wanted, 8);
+  const auto at = std::search(bytes.begin(), bytes.end(), pattern, pattern + 8);
+  ASSERT_NE(at, bytes.end());
+  at[7] ^= 0x01;
+  const auto path = write_bytes(dir, "crc.mcap", bytes);
+  const auto e = caught_input_error([&] { read_all(path); });
+  ASSERT_TRUE(e);
+  EXPECT_THAT(e->what(), HasSubstr("the chunk's CRC is"));
+  EXPECT_THAT(e->what(), HasSubstr("crc.mcap"));
+}
+
+Bytes magic() { return {0x89, 'M', 'C', 'A', 'P', '0', '\r', '\n'}; }
+
+TEST(McapReader, HugeDeclaredSizesAreErrorsBeforeAnyAllocation) {
+  const TempDir dir;
+  {  // a record far longer than the file
+    Bytes b = magic();
+    b.push_back(0x05);
+    McapWriter::u64(b, std::uint64_t{1} << 60);
+    b.resize(b.size() + 30);
+    const auto e = caught_input_error([&] { read_all(write_bytes(dir, "rec.mcap", b)); });
+    ASSERT_TRUE(e);
+    EXPECT_THAT(e->what(), HasSubstr("rec.mcap: at byte 8: the record (opcode 0x05) declares "
+                                     "1152921504606846976 bytes, only 30 are left"));
+  }
+  {  // a chunk of 1 TiB uncompressed
+    Bytes c;
+    McapWriter::u64(c, 0);
+    McapWriter::u64(c, 0);
+    McapWriter::u64(c, std::uint64_t{1} << 40);
+    McapWriter::u32(c, 0);
+    McapWriter::str(c, "zstd");
+    McapWriter::u64(c, 4);
+    McapWriter::u32(c, 0);
+    Bytes b = magic();
+    McapWriter::append(b, McapWriter::record(0x06, c));
+    const auto e = caught_input_error([&] { read_all(write_bytes(dir, "big.mcap", b)); });
+    ASSERT_TRUE(e);
+    EXPECT_THAT(e->what(), HasSubstr("at byte 8: a chunk declares 1099511627776 uncompressed "
+                                     "bytes, more than the"));
+  }
+  {  // a chunk whose records length runs past the record; a schema name of 2 GiB
+    Bytes c;
+    McapWriter::u64(c, 0);
+    McapWriter::u64(c, 0);
+    McapWriter::u64(c, 10);
+    McapWriter::u32(c, 0);
+    McapWriter::str(c, "");
+    McapWriter::u64(c, std::uint64_t{1} << 50);
+    Bytes b = magic();
+    McapWriter::append(b, McapWriter::record(0x06, c));
+    Bytes s;
+    McapWriter::u16(s, 1);
+    McapWriter::u32(s, 0x80000000U);
+    McapWriter::append(b, McapWriter::record(0x03, s));
+    const auto e = caught_input_error([&] { read_all(write_bytes(dir, "len.mcap", b)); });
+    ASSERT_TRUE(e);
+    EXPECT_THAT(e->what(), HasSubstr("the chunk's records needs 1125899906842624 bytes"));
+    b.erase(b.begin() + 8, b.begin() + 8 + 9 + static_cast<std::ptrdiff_t>(c.size()));
+    const auto s_error = caught_input_error([&] { read_all(write_bytes(dir, "name.mcap", b)); });
+    ASSERT_TRUE(s_error);
+    EXPECT_THAT(s_error->what(), HasSubstr("the schema name needs 2147483648 bytes, only 0"));
+  }
+}
+
+TEST(McapReader, BadCompressedDataIsAnError) {
+  const TempDir dir;
+  for (const char* compression : {"zstd", "lz4", "brotli"}) {
+    Bytes c;
+    McapWriter::u64(c, 0);
+    McapWriter::u64(c, 0);
+    McapWriter::u64(c, 100'000'000);
+    McapWriter::u32(c, 0);
+    McapWriter::str(c, compression);
+    McapWriter::u64(c, 16);
+    c.resize(c.size() + 16, 0x5A);
+    Bytes b = magic();
+    McapWriter::append(b, McapWriter::record(0x06, c));
+    const auto e = caught_input_error([&] { read_all(write_bytes(dir, "z.mcap", b)); });
+    ASSERT_TRUE(e) << compression;
+    EXPECT_THAT(e->what(), HasSubstr("z.mcap: at byte 8: the chunk's"));
+    if (std::string(compression) == "brotli") {
+      EXPECT_THAT(e->what(), HasSubstr("unknown compression 'brotli'"));
+    }
+  }
+  // Valid zstd data of another size than declared.
+  const std::vector<std::uint8_t> plain(1000, 7);
+  Bytes packed(ZSTD_compressBound(plain.size()));
+  packed.resize(ZSTD_compress(packed.data(), packed.size(), plain.data(), plain.size(), 1));
+  Bytes c;
+  McapWriter::u64(c, 0);
+  McapWriter::u64(c, 0);
+  McapWriter::u64(c, 999);
+  McapWriter::u32(c, 0);
+  McapWriter::str(c, "zstd");
+  McapWriter::u64(c, packed.size());
+  McapWriter::append(c, packed);
+  Bytes b = magic();
+  McapWriter::append(b, McapWriter::record(0x06, c));
+  const auto e = caught_input_error([&] { read_all(write_bytes(dir, "n.mcap", b)); });
+  ASSERT_TRUE(e);
+  EXPECT_THAT(e->what(), HasSubstr("more than the declared 999 bytes"));
+}
+
+}  // namespace
+}  // namespace dynpos::io
