@@ -71,6 +71,10 @@ void add_identify_vessel(CLI::App& identify) {
   sub->add_option("--max-rel-sigma", o->request.max_rel_sigma,
                   "Largest σ/|value| of a determined value")
       ->capture_default_str();
+  sub->add_option("--max-rel-sigma-fitted", o->request.max_rel_sigma_fitted,
+                  "Largest σ/|value| of a value fitted at all (between the two: weakly "
+                  "determined, fitted and written but not counted as determined)")
+      ->capture_default_str();
   sub->add_option("--step", o->request.step_s, "Re-simulation step [s]")->capture_default_str();
   sub->add_option("--sample", o->request.sample_s, "Spacing of the fitted u, v, r samples [s]")
       ->capture_default_str();

@@ -354,8 +354,8 @@ def identify_vessel(logs, col=None, unit=None, map=None, *, out=None, json=None,
     output-error fit of the simulator's own model driven by each log's thrust and rudder
     feedback to the logged u, v, r. ``logs``: one log per test (paths, Logs or DataFrames; the
     log options apply to each). Options: ``vessel`` (the starting vessel file), ``holdout``
-    (the LOG held out and scored, ``"none"``), ``max_rel_sigma``, ``step``, ``sample`` [s],
-    ``jobs``; ``out`` (the identified vessel file), ``report`` (folder). Table:
+    (the LOG held out and scored, ``"none"``), ``max_rel_sigma``, ``max_rel_sigma_fitted``,
+    ``step``, ``sample``, ``stretch`` [s], ``jobs``; ``out`` (the identified vessel file), ``report`` (folder). Table:
     ``parameters`` (``key``, ``value``, ``sigma``, ``determined``)."""
     if isinstance(logs, (str, os.PathLike, Log)) or _is_frame(logs):
         logs = [logs]
@@ -373,7 +373,7 @@ def compare_trial(log, col=None, unit=None, map=None, *, json=None, plot=None,
                   **options) -> Result:
     """One logged test re-simulated with its logged feedback and a vessel file
     (``dynpos compare-trial``): NRMSE of u, v, r and of the track. Options: ``vessel``,
-    ``step``, ``sample`` [s]; ``plot`` (SVG)."""
+    ``step``, ``sample``, ``stretch`` [s]; ``plot`` (SVG)."""
     q = _request(_dynpos.CompareTrialRequest, log, col, unit, map, options)
     return Result(_json.loads(_dynpos.run_compare_trial(q, _path(json), _path(plot, "plot"))))
 

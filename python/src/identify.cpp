@@ -207,6 +207,7 @@ void bind_vessel_id(py::module_& m) {
       .def_readwrite("vessel", &VesselIdRequest::vessel_file)
       .def_readwrite("holdout", &VesselIdRequest::holdout)
       .def_readwrite("max_rel_sigma", &VesselIdRequest::max_rel_sigma)
+      .def_readwrite("max_rel_sigma_fitted", &VesselIdRequest::max_rel_sigma_fitted)
       .def_readwrite("step", &VesselIdRequest::step_s)
       .def_readwrite("sample", &VesselIdRequest::sample_s)
       .def_readwrite("stretch", &VesselIdRequest::stretch_s)

@@ -110,7 +110,7 @@ Setup setup(const scenario::VesselConfig& start, bool wind) {
     if (value == 0.0) {
       double to_si = 1.0;
       const std::string unit = unit_of(s.start, c.key, &to_si);
-      s.kept.push_back({c.key, unit, 0.0, 0.0, kNan, false,
+      s.kept.push_back({c.key, unit, 0.0, 0.0, kNan, false, false,
                         std::string("the starting value is 0; to determine it: ") + c.excitation});
       continue;
     }
@@ -121,7 +121,7 @@ Setup setup(const scenario::VesselConfig& start, bool wind) {
     double to_si = 1.0;
     const std::string unit = unit_of(s.start, key, &to_si);
     const double v = *vessel_fit::field(s.start, key) / to_si;
-    s.kept.push_back({key, unit, v, v, kNan, false, why});
+    s.kept.push_back({key, unit, v, v, kNan, false, false, why});
   }
   return s;
 }
@@ -337,7 +337,7 @@ std::string read_text(const std::filesystem::path& path) {
 // The parameter table of the final fit.
 std::vector<VesselParameter> parameters(Setup& s, const FitOutcome& o,
                                         const std::vector<Eigen::VectorXd>& information,
-                                        double max_rel) {
+                                        double max_rel, double max_rel_fitted) {
   std::vector<VesselParameter> out;
   for (std::size_t i = 0; i < s.params.size(); ++i) {
     const FitParameter& p = s.params[i];
@@ -346,11 +346,12 @@ std::vector<VesselParameter> parameters(Setup& s, const FitOutcome& o,
     v.key = p.key;
     v.unit = unit_of(s.start, p.key, &to_si);
     v.start = p.start / to_si;
-    v.determined = o.free[i];
+    v.fitted = o.free[i];
     const double theta = o.fit->theta[i];
     v.value = p.value(theta) / to_si;
     v.sigma = std::abs(p.slope(theta)) * o.sigma_theta[i] / to_si;
-    if (v.determined) {
+    v.determined = v.fitted && v.sigma <= max_rel * std::abs(v.value);
+    if (v.fitted) {
       double total = 0.0;
       std::vector<std::pair<std::string, double>> by_log;  // in the logs' order
       for (std::size_t k = 0; k < information.size(); ++k) {
@@ -365,11 +366,15 @@ std::vector<VesselParameter> parameters(Setup& s, const FitOutcome& o,
         if (info >= 0.1 * total) from.push_back(name);
       }
       v.note = "from " + fmt::format("{}", fmt::join(from, ", "));
+      if (!v.determined) {
+        v.note = fmt::format("weakly determined (σ/|value| over {:.1f} %), {}; to determine it: {}",
+                             100.0 * max_rel, v.note, s.excitation[i]);
+      }
     } else {
       v.value = v.start;
       v.sigma = kNan;
-      v.note = fmt::format("σ/|value| would exceed {:.1f} % with these tests; to determine it: {}",
-                           100.0 * max_rel, s.excitation[i]);
+      v.note = fmt::format("σ/|value| would exceed {:.0f} % with these tests; to determine it: {}",
+                           100.0 * max_rel_fitted, s.excitation[i]);
     }
     out.push_back(v);
   }
@@ -383,6 +388,10 @@ void VesselIdRequest::validate() const {
   if (logs.empty()) throw option_error("logs", "no log given", "name one log per test");
   if (!(max_rel_sigma > 0.0 && max_rel_sigma <= 1.0)) {
     throw option_error("max_rel_sigma", fmt::format("{} is not in (0, 1]", max_rel_sigma));
+  }
+  if (!(max_rel_sigma_fitted >= max_rel_sigma && max_rel_sigma_fitted <= 1.0)) {
+    throw option_error("max_rel_sigma_fitted",
+                       fmt::format("{} is not in [max_rel_sigma, 1]", max_rel_sigma_fitted));
   }
   if (!(step_s >= 0.01 && step_s <= 1.0)) {
     throw option_error("step", fmt::format("{} s is not in [0.01, 1] s", step_s));
@@ -429,8 +438,8 @@ VesselIdReport run_vessel_id(const VesselIdRequest& request) {
   std::vector<double> theta0;
   std::optional<TestResponse> held_response;
   if (held < logged.size()) {
-    FitOutcome o =
-        fit_tests(s, stretches(logged, held, nullptr), {}, request.max_rel_sigma, request.jobs);
+    FitOutcome o = fit_tests(s, stretches(logged, held, nullptr), {}, request.max_rel_sigma_fitted,
+                             request.jobs);
     theta0 = o.fit->theta;
     std::vector<const FitTest*> own;
     for (const FitTest& t : logged[held].stretches) own.push_back(&t);
@@ -444,10 +453,11 @@ VesselIdReport run_vessel_id(const VesselIdRequest& request) {
   }
   std::vector<std::size_t> starts;
   FitOutcome o = fit_tests(s, stretches(logged, logged.size(), &starts), theta0,
-                           request.max_rel_sigma, request.jobs);
+                           request.max_rel_sigma_fitted, request.jobs);
   std::vector<Eigen::VectorXd> information;
   o.fit->normal_matrix(&information);
-  report.parameters = parameters(s, o, information, request.max_rel_sigma);
+  report.parameters =
+      parameters(s, o, information, request.max_rel_sigma, request.max_rel_sigma_fitted);
   for (std::size_t k = 0; k < logged.size(); ++k) {
     report.tests.push_back(response(*o.fit, starts[k], starts[k + 1] - starts[k], logged[k]));
   }

@@ -13,6 +13,7 @@
 #include "dynpos/io/atomic_file.hpp"
 #include "dynpos/io/json_writer.hpp"
 #include "dynpos/io/markup.hpp"
+#include "dynpos/report/decimate.hpp"
 #include "dynpos/report/svg_plot.hpp"
 #include "dynpos/report/table.hpp"
 
@@ -39,9 +40,9 @@ std::string percent_cell(double v) {
 // "KEY = VALUE  # identified: …" for a determined parameter.
 std::string value_line(const std::string& indent, const std::string& key,
                        const VesselParameter& p) {
-  return fmt::format("{}{} = {}  # identified: sigma {:.3g} ({:.1f} %), {}; start {}", indent, key,
-                     toml_number(p.value), p.sigma, 100.0 * p.sigma / std::abs(p.value), p.note,
-                     toml_number(p.start));
+  return fmt::format("{}{} = {}  # {}: sigma {:.3g} ({:.1f} %), {}; start {}", indent, key,
+                     toml_number(p.value), p.determined ? "identified" : "fitted", p.sigma,
+                     100.0 * p.sigma / std::abs(p.value), p.note, toml_number(p.start));
 }
 
 std::vector<std::string> split_lines(const std::string& text) {
@@ -86,6 +87,18 @@ nlohmann::json response_json(const TestResponse& r) {
           {"current_n_mps", {r.current_n.x(), r.current_n.y()}}};
 }
 
+// The points of (x, y) a figure 900 px wide can show (min and max per pixel column).
+report::Series drawn(const std::string& label, const std::vector<double>& x,
+                     const std::vector<double>& y, const char* color, double width) {
+  report::Series out{label, {}, {}, color, width};
+  if (x.size() < 2) return out;
+  for (std::size_t i : report::minmax_decimate(x, y, x.front(), x.back(), 800)) {
+    out.x.push_back(x[i]);
+    out.y.push_back(y[i]);
+  }
+  return out;
+}
+
 // Measured dots and re-simulated line of u, v, r (deg/s), and the track when logged.
 report::Figure response_figure(const TestResponse& r, const std::string& title) {
   report::Figure f;
@@ -106,8 +119,8 @@ report::Figure response_figure(const TestResponse& r, const std::string& title) 
     p.title = fmt::format("{} (NRMSE {} %)", labels[c], percent_cell(r.nrmse[c]));
     p.x_axis = {"Time", "s", {}, {}};
     p.y_axis = {kChannels[c], units[c], {}, {}};
-    p.series.push_back({"measured", tm, ym, "#999999", 1.0});
-    p.series.push_back({"re-simulated", r.time_s, ys, "#d62728", 1.5});
+    p.series.push_back(drawn("measured", tm, ym, "#999999", 1.0));
+    p.series.push_back(drawn("re-simulated", r.time_s, ys, "#d62728", 1.5));
     f.panels.push_back(p);
   }
   if (!r.north_m.empty()) {
@@ -135,7 +148,7 @@ std::string svg_name(std::size_t k) { return fmt::format("test-{}.svg", k + 1); 
 std::string identified_vessel_text(const VesselIdReport& report) {
   std::map<std::string, const VesselParameter*> pending;  // determined, not yet written
   for (const VesselParameter& p : report.parameters) {
-    if (p.determined) pending[p.key] = &p;
+    if (p.fitted) pending[p.key] = &p;
   }
   static const std::regex key_line(R"(^(\s*)([A-Za-z0-9_]+)\s*=.*$)");
   static const std::regex table_line(R"(^\s*\[\s*([A-Za-z0-9_]+)\s*\]\s*(#.*)?$)");
@@ -199,6 +212,7 @@ nlohmann::json to_json(const VesselIdReport& r) {
                                  {"value", p.value},
                                  {"sigma", number(p.sigma)},
                                  {"determined", p.determined},
+                                 {"fitted", p.fitted},
                                  {"note", p.note}});
   }
   doc["tests"] = nlohmann::json::array();

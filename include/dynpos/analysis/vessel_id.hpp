@@ -37,6 +37,10 @@ struct VesselIdRequest {
   std::string holdout;
   /// The largest σ/|value| of a determined value (max_rel_sigma), in (0, 1].
   double max_rel_sigma = 0.033;
+  /// The largest σ/|value| of a value that is fitted at all (max_rel_sigma_fitted), in
+  /// [max_rel_sigma, 1]: one between the two is weakly determined — fitted with the others (a
+  /// wrong starting value held would pull them) and written, but not counted as determined.
+  double max_rel_sigma_fitted = 0.25;
   /// Step of the re-simulation [s] (step), in [0.01, 1]; the log's rows are thinned to it.
   double step_s = 0.2;
   /// Spacing of the residuals [s] (sample), ≥ step_s: u, v and r at most this often.
@@ -53,13 +57,14 @@ struct VesselIdRequest {
 
 /// One value of the vessel file.
 struct VesselParameter {
-  std::string key;     ///< "hull.x_u_Ns_m": the vessel file's table.key
-  std::string unit;    ///< the key's unit
-  double start = 0.0;  ///< the starting file's value [unit]
-  double value = 0.0;  ///< identified, or the start when not determined [unit]
-  double sigma = 0.0;  ///< 1σ [unit]; NaN when not determined
-  bool determined = false;
-  /// Determined: the tests it came from. Not determined: why, and the excitation a trial would
+  std::string key;          ///< "hull.x_u_Ns_m": the vessel file's table.key
+  std::string unit;         ///< the key's unit
+  double start = 0.0;       ///< the starting file's value [unit]
+  double value = 0.0;       ///< identified, or the start when not determined [unit]
+  double sigma = 0.0;       ///< 1σ [unit]; NaN when not fitted
+  bool determined = false;  ///< σ/|value| ≤ max_rel_sigma
+  bool fitted = false;      ///< σ/|value| ≤ max_rel_sigma_fitted: the value is the fit's
+  /// Fitted: the tests it came from. Not determined: why, and the excitation a trial would
   /// need to determine it.
   std::string note;
 };
