@@ -1,7 +1,8 @@
 #pragma once
 // The output-error fit of `identify vessel` (private to the module): the vessel's hull driven by
 // each test's logged feedback (scenario::HullDrive) set against the logged u, v, r by Ceres over
-// the free vessel-file values, each test with its own start velocity and constant current.
+// the free vessel-file values, each test (a stretch of a log) with its own start velocity and
+// drifting current.
 
 #include <Eigen/Core>
 #include <array>
@@ -68,8 +69,9 @@ class HullFit {
   const std::vector<FitParameter>& parameters() const noexcept { return parameters_; }
   const std::vector<const FitTest*>& tests() const noexcept { return tests_; }
 
-  /// Solves with the parameters of `free` (others held at theta) and, unless hull_fixed, ...;
-  /// returns the number of iterations; `message` gets Ceres' report when it did not converge.
+  /// Solves for the nuisance and the parameters of `free` (the others held at theta; all of them
+  /// when hull_fixed); returns the number of iterations; `message` gets Ceres' report when it did
+  /// not converge.
   int solve(const std::vector<bool>& free, bool hull_fixed, int max_iterations,
             std::string* message);
 

@@ -10,7 +10,7 @@
 /// hull's velocity through the water (rudder inflow, propeller advance speed and the tunnel's
 /// speed loss from the thrust the feedback gives at rest, as the logger computes it), a
 /// [[thruster]] layout through ThrustFeedback; the wind through model::relative_wind_force_b;
-/// ν̇ through model::Hull::derivatives with a constant current. The heading is the logged one
+/// ν̇ through model::Hull::derivatives in a given current. The heading is the logged one
 /// (an input, so a slow heading drift of the model does not turn the current and the wind).
 
 #include <Eigen/Core>
