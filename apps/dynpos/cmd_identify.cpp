@@ -73,6 +73,7 @@ void register_identify(CLI::App& app) {
   add_identify_four_corner(*identify);
   add_identify_station_keeping(*identify);
   add_identify_failure_test(*identify);
+  add_identify_vessel_command(*identify);
 }
 
 }  // namespace dynpos::cli

@@ -72,10 +72,12 @@ void add_identify_thrust_map(CLI::App& identify);       // cmd_identify_thrust_m
 void add_identify_four_corner(CLI::App& identify);      // cmd_identify_four_corner.cpp
 void add_identify_station_keeping(CLI::App& identify);  // cmd_identify_station_keeping.cpp
 void add_identify_failure_test(CLI::App& identify);     // cmd_identify_failure_test.cpp
+void add_identify_vessel_command(CLI::App& identify);   // cmd_identify_vessel.cpp
 void add_leverarm_gnss(CLI::App& leverarm);             // cmd_leverarm_gnss.cpp
 void add_leverarm_mru(CLI::App& leverarm);              // cmd_leverarm_mru.cpp
 
 void register_simulate(CLI::App& app);
+void register_compare_trial(CLI::App& app);  // cmd_identify_vessel.cpp
 void register_identify(CLI::App& app);
 void register_leverarm(CLI::App& app);
 void register_hybrid(CLI::App& app);

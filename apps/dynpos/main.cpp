@@ -85,6 +85,7 @@ int main(int argc, char** argv) {
   register_leverarm(app);
   register_hybrid(app);
   register_compare(app);
+  register_compare_trial(app);
   register_capability(app);
   register_montecarlo(app);
   register_estimate(app);

@@ -26,7 +26,8 @@ __version__: str = _dynpos.__version__
 __all__ = [
     "InputError", "Log", "Result", "Estimate", "Simulation", "read_log", "identify_step",
     "identify_thrust_map", "identify_agility", "identify_four_corner",
-    "identify_station_keeping", "identify_failure_test", "leverarm_gnss", "leverarm_mru",
+    "identify_station_keeping", "identify_failure_test", "identify_vessel", "compare_trial",
+    "leverarm_gnss", "leverarm_mru",
     "estimate", "consequence", "hybrid_case", "hybrid_vessel", "compare", "capability",
     "capability_loads", "montecarlo", "simulate", "scenarios",
 ]
@@ -345,6 +346,36 @@ def identify_four_corner(log, col=None, unit=None, map=None, *, json=None, plot=
         options["arm"] = [float(v) for v in options["arm"].split(",")]
     q = _request(_dynpos.FourCornerRequest, log, col, unit, map, options)
     return Result(_json.loads(_dynpos.run_four_corner(q, _path(json), _path(plot, "plot"))), "legs")
+
+
+def identify_vessel(logs, col=None, unit=None, map=None, *, out=None, json=None, report=None,
+                    **options) -> Result:
+    """The hull model of a vessel file fitted to logged tests (``dynpos identify vessel``): an
+    output-error fit of the simulator's own model driven by each log's thrust and rudder
+    feedback to the logged u, v, r. ``logs``: one log per test (paths, Logs or DataFrames; the
+    log options apply to each). Options: ``vessel`` (the starting vessel file), ``holdout``
+    (the LOG held out and scored, ``"none"``), ``max_rel_sigma``, ``max_rel_sigma_fitted``,
+    ``step``, ``sample``, ``stretch`` [s], ``jobs``; ``out`` (the identified vessel file), ``report`` (folder). Table:
+    ``parameters`` (``key``, ``value``, ``sigma``, ``determined``)."""
+    if isinstance(logs, (str, os.PathLike, Log)) or _is_frame(logs):
+        logs = [logs]
+    log_options = {k: v for k, v in options.items() if k in _LOG_OPTIONS}
+    q = _dynpos.VesselIdRequest()
+    q.logs = [_source(log, col, unit, map, **log_options) for log in logs]
+    for key, value in options.items():
+        if key not in _LOG_OPTIONS or key == "jobs":
+            _set(q, key, value)
+    doc = _dynpos.run_vessel_id(q, _path(out, "out"), _path(json), _path(report, "report"))
+    return Result(_json.loads(doc), "parameters")
+
+
+def compare_trial(log, col=None, unit=None, map=None, *, json=None, plot=None,
+                  **options) -> Result:
+    """One logged test re-simulated with its logged feedback and a vessel file
+    (``dynpos compare-trial``): NRMSE of u, v, r and of the track. Options: ``vessel``,
+    ``step``, ``sample``, ``stretch`` [s]; ``plot`` (SVG)."""
+    q = _request(_dynpos.CompareTrialRequest, log, col, unit, map, options)
+    return Result(_json.loads(_dynpos.run_compare_trial(q, _path(json), _path(plot, "plot"))))
 
 
 def identify_station_keeping(log, col=None, unit=None, map=None, *, json=None,

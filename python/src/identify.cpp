@@ -19,6 +19,7 @@
 #include "dynpos/analysis/station_keeping.hpp"
 #include "dynpos/analysis/step.hpp"
 #include "dynpos/analysis/thrust_map.hpp"
+#include "dynpos/analysis/vessel_id.hpp"
 #include "dynpos/io/csv_writer.hpp"
 
 namespace dynpos::python {
@@ -199,9 +200,52 @@ void bind_failure_test(py::module_& m) {
       py::arg("request"), py::arg("json") = "");
 }
 
+void bind_vessel_id(py::module_& m) {
+  py::class_<VesselIdRequest>(m, "VesselIdRequest")
+      .def(py::init<>())
+      .def_readwrite("logs", &VesselIdRequest::logs)
+      .def_readwrite("vessel", &VesselIdRequest::vessel_file)
+      .def_readwrite("holdout", &VesselIdRequest::holdout)
+      .def_readwrite("max_rel_sigma", &VesselIdRequest::max_rel_sigma)
+      .def_readwrite("max_rel_sigma_fitted", &VesselIdRequest::max_rel_sigma_fitted)
+      .def_readwrite("step", &VesselIdRequest::step_s)
+      .def_readwrite("sample", &VesselIdRequest::sample_s)
+      .def_readwrite("stretch", &VesselIdRequest::stretch_s)
+      .def_readwrite("jobs", &VesselIdRequest::jobs);
+  m.def(
+      "run_vessel_id",
+      [](const VesselIdRequest& q, const std::string& out, const std::string& json,
+         const std::string& report) {
+        const Outputs outputs{.json = json, .figures = report};
+        outputs.check("report", true);
+        check_output_file("out", out);
+        py::gil_scoped_release release;
+        const VesselIdReport r = run_vessel_id(q);
+        write_outputs(r, out, outputs);
+        return to_json(r).dump();
+      },
+      py::arg("request"), py::arg("out") = "", py::arg("json") = "", py::arg("report") = "");
+  py::class_<CompareTrialRequest>(m, "CompareTrialRequest")
+      .def(py::init<>())
+      .def_readwrite("source", &CompareTrialRequest::source)
+      .def_readwrite("vessel", &CompareTrialRequest::vessel_file)
+      .def_readwrite("step", &CompareTrialRequest::step_s)
+      .def_readwrite("sample", &CompareTrialRequest::sample_s)
+      .def_readwrite("stretch", &CompareTrialRequest::stretch_s);
+  m.def(
+      "run_compare_trial",
+      [](const CompareTrialRequest& q, const std::string& json, const std::string& plot) {
+        const Outputs outputs{.json = json, .figures = plot};
+        outputs.check("plot", false);
+        return run_and_write(q, outputs, run_compare_trial);
+      },
+      py::arg("request"), py::arg("json") = "", py::arg("plot") = "");
+}
+
 }  // namespace
 
 void bind_identify(py::module_& m) {
+  bind_vessel_id(m);
   bind_step(m);
   bind_thrust_map(m);
   bind_agility(m);

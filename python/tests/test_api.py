@@ -158,3 +158,21 @@ def test_the_version_is_the_commands():
     cli = subprocess.run([BIN, "--version"], capture_output=True, text=True, check=True)
     assert dynpos.__version__ == cli.stdout.strip()
     assert dynpos.__version__.count(".") == 2
+
+
+def test_identify_vessel_and_compare_trial_equal_the_cli(tmp_path):
+    dynpos.simulate("zig-zag", seed=2, duration=200, out=tmp_path / "zz")
+    log = str(tmp_path / "zz" / "log.csv")
+    r = dynpos.identify_vessel([log], holdout="none", out=tmp_path / "py.toml", jobs=1)
+    expected = cli_json(tmp_path, "identify", "vessel", log, "--holdout", "none", "--out",
+                        str(tmp_path / "cli.toml"), "--jobs", "1")
+    got = r.to_dict()
+    got.pop("run_time_s")
+    expected.pop("run_time_s")
+    assert got == expected
+    assert any(p.determined for p in r.parameters)
+    assert (tmp_path / "py.toml").read_text() == (tmp_path / "cli.toml").read_text()
+    c = dynpos.compare_trial(log, vessel=tmp_path / "py.toml")
+    assert c.nrmse.u < 0.05 and c.nrmse.r < 0.05
+    with pytest.raises(dynpos.InputError, match="holdout"):
+        dynpos.identify_vessel([log], holdout="other.csv")

@@ -134,12 +134,11 @@ Eigen::Vector3d wind_force_b(const WindParams& params, double speed_mps,
   return wind_force_at_pressure(params, 0.5 * params.rho_air * speed_mps * speed_mps, gamma_rad);
 }
 
-Eigen::Vector3d Wind::force_b(double heading_rad,
-                              const Eigen::Vector2d& velocity_n) const noexcept {
-  const double speed = speed_mps();
-  const double from = from_rad();
+Eigen::Vector3d relative_wind_force_b(const WindParams& params, double speed_mps, double from_rad,
+                                      double heading_rad,
+                                      const Eigen::Vector2d& velocity_n) noexcept {
   // Air velocity over ground (it blows towards from + π), minus the vessel's velocity.
-  const Eigen::Vector2d air_n(-speed * std::cos(from), -speed * std::sin(from));
+  const Eigen::Vector2d air_n(-speed_mps * std::cos(from_rad), -speed_mps * std::sin(from_rad));
   const Eigen::Vector2d rel_n = air_n - velocity_n;
   const double c = std::cos(heading_rad), s = std::sin(heading_rad);
   const double ux = c * rel_n.x() + s * rel_n.y();  // relative air velocity in BODY
@@ -147,7 +146,12 @@ Eigen::Vector3d Wind::force_b(double heading_rad,
   const double v2 = ux * ux + uy * uy;
   if (v2 == 0.0) return Eigen::Vector3d::Zero();
   // The angle the relative wind comes from, off the bow.
-  return wind_force_at_pressure(params_, 0.5 * params_.rho_air * v2, std::atan2(-uy, -ux));
+  return wind_force_at_pressure(params, 0.5 * params.rho_air * v2, std::atan2(-uy, -ux));
+}
+
+Eigen::Vector3d Wind::force_b(double heading_rad,
+                              const Eigen::Vector2d& velocity_n) const noexcept {
+  return relative_wind_force_b(params_, speed_mps(), from_rad(), heading_rad, velocity_n);
 }
 
 void BiasParams::validate() const { core::check_ranges("bias", bias_fields(*this)); }

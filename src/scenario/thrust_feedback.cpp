@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "dynpos/model/model_unit_forces.hpp"
+
 namespace dynpos::scenario {
 namespace {
 
@@ -52,13 +54,10 @@ Eigen::Vector3d ThrustFeedback::model_tau_b(std::span<const double> thrust_N,
                                             std::span<const double> angle_rad) const {
   // The order of channels_: port, stb, tunnel. At rest in the water only the slipstream flows
   // past the rudders (see the file comment).
-  model::ActuatorForces f;
-  f.thrust_port = thrust_N[0];
-  f.thrust_stb = thrust_N[1];
-  f.tunnel = thrust_N[2];
-  f.rudder_port_b = rudder_.force(angle_rad[0], {0.0, 0.0, thrust_N[0]}).f_b;
-  f.rudder_stb_b = rudder_.force(angle_rad[1], {0.0, 0.0, thrust_N[1]}).f_b;
-  return layout_.tau(f);  // (2.37)
+  return model::model_unit_forces(
+             rudder_, layout_, {thrust_N[0], thrust_N[1], angle_rad[0], angle_rad[1], thrust_N[2]},
+             Eigen::Vector3d::Zero())
+      .tau_b;
 }
 
 }  // namespace dynpos::scenario

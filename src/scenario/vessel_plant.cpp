@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "dynpos/core/error.hpp"
+#include "dynpos/model/model_unit_forces.hpp"
 #include "dynpos/scenario/unit_failure.hpp"
 
 namespace dynpos::scenario {
@@ -75,19 +76,12 @@ ActuatorState VesselPlant::actuators(const sim::ConstVectorRef& x, const Eigen::
   a.port = propeller_.outputs(port, nu_r.x());
   a.stb = propeller_.outputs(stb, nu_r.x());
   a.tunnel = tunnel_.outputs(x[kTunnel], nu_r.x());
-  const Eigen::Vector2d v_port =
-      model::ThrustConfiguration::velocity_at(nu_r, layout_.params().p_port_rudder_b);
-  const Eigen::Vector2d v_stb =
-      model::ThrustConfiguration::velocity_at(nu_r, layout_.params().p_stb_rudder_b);
-  a.rudder_port = rudder_.force(x[kRudderPort], {v_port.x(), v_port.y(), a.port.thrust});
-  a.rudder_stb = rudder_.force(x[kRudderStb], {v_stb.x(), v_stb.y(), a.stb.thrust});
-  model::ActuatorForces f;
-  f.thrust_port = a.port.thrust;
-  f.thrust_stb = a.stb.thrust;
-  f.rudder_port_b = a.rudder_port.f_b;
-  f.rudder_stb_b = a.rudder_stb.f_b;
-  f.tunnel = a.tunnel.thrust;
-  a.tau_b = layout_.tau(f);  // (2.37)
+  const model::ModelUnitForces f = model::model_unit_forces(
+      rudder_, layout_,
+      {a.port.thrust, a.stb.thrust, x[kRudderPort], x[kRudderStb], a.tunnel.thrust}, nu_r);
+  a.rudder_port = f.rudder_port;
+  a.rudder_stb = f.rudder_stb;
+  a.tau_b = f.tau_b;
   return a;
 }
 

@@ -83,6 +83,14 @@ std::vector<core::ParamField> param_fields(WindParams& params);
 /// ½ρ_a V² (−c_x cos γ·A_F, −c_y sin γ·A_L, −c_n sin 2γ·A_L·L).
 Eigen::Vector3d wind_force_b(const WindParams& params, double speed_mps, double gamma_rad) noexcept;
 
+/// The wind force and moment in BODY (X, Y, N) [N, N, N·m] on a vessel with heading ψ [rad]
+/// moving at velocity_n over ground (NED) [m/s] in a wind of speed_mps [m/s] coming from
+/// from_rad [rad]: wind_force_b of the relative wind. The one home of the relative wind, for
+/// Wind::force_b and for a fit driven by a logged wind.
+Eigen::Vector3d relative_wind_force_b(const WindParams& params, double speed_mps, double from_rad,
+                                      double heading_rad,
+                                      const Eigen::Vector2d& velocity_n) noexcept;
+
 /// Wind with Gauss–Markov gusts; forces by smooth coefficient curves of the relative angle.
 class Wind {
  public:
