@@ -3,10 +3,14 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <map>
-#include <regex>
+#include <optional>
 #include <sstream>
+#include <string>
+#include <utility>
 
 #include "dynpos/analysis/json_fields.hpp"
 #include "dynpos/analysis/vessel_id.hpp"
@@ -143,6 +147,35 @@ void write_text_file(const std::filesystem::path& path, const std::string& text)
 
 std::string svg_name(std::size_t k) { return fmt::format("test-{}.svg", k + 1); }
 
+bool is_name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; }
+
+// A table header line ("[name]", a comment may follow): the table's name; an array of tables
+// ("[[…") or a dotted name: empty (no key of it is written); any other line: nullopt.
+std::optional<std::string> table_header(const std::string& line) {
+  std::size_t i = line.find_first_not_of(" \t");
+  if (i == std::string::npos || line[i] != '[') return std::nullopt;
+  if (line.compare(i, 2, "[[") == 0) return std::string();
+  i = line.find_first_not_of(" \t", i + 1);
+  const std::size_t begin = std::min(i, line.size());
+  while (i < line.size() && is_name_char(line[i])) ++i;
+  const std::string name = line.substr(begin, i - begin);
+  i = line.find_first_not_of(" \t", i);
+  if (name.empty() || i == std::string::npos || line[i] != ']') return std::string();
+  i = line.find_first_not_of(" \t", i + 1);
+  return (i == std::string::npos || line[i] == '#') ? name : std::string();
+}
+
+// A "key = value" line: its indent and key; nullopt for any other line.
+std::optional<std::pair<std::string, std::string>> key_line(const std::string& line) {
+  const std::size_t begin = std::min(line.find_first_not_of(" \t"), line.size());
+  std::size_t i = begin;
+  while (i < line.size() && is_name_char(line[i])) ++i;
+  if (i == begin) return std::nullopt;
+  const std::size_t eq = line.find_first_not_of(" \t", i);
+  if (eq == std::string::npos || line[eq] != '=') return std::nullopt;
+  return std::pair{line.substr(0, begin), line.substr(begin, i - begin)};
+}
+
 }  // namespace
 
 std::string identified_vessel_text(const VesselIdReport& report) {
@@ -150,9 +183,6 @@ std::string identified_vessel_text(const VesselIdReport& report) {
   for (const VesselParameter& p : report.parameters) {
     if (p.fitted) pending[p.key] = &p;
   }
-  static const std::regex key_line(R"(^(\s*)([A-Za-z0-9_]+)\s*=.*$)");
-  static const std::regex table_line(R"(^\s*\[\s*([A-Za-z0-9_]+)\s*\]\s*(#.*)?$)");
-  static const std::regex array_table(R"(^\s*\[\[)");
   std::vector<std::string> lines = split_lines(report.vessel_text), out;
   std::string section;
   std::size_t last_key = 0;  // where the section's missing keys go (index in out)
@@ -169,17 +199,17 @@ std::string identified_vessel_text(const VesselIdReport& report) {
     out.insert(out.begin() + static_cast<std::ptrdiff_t>(last_key), add.begin(), add.end());
   };
   for (const std::string& line : lines) {
-    std::smatch m;
-    if (std::regex_match(line, m, table_line) || std::regex_search(line, array_table)) {
+    if (const auto table = table_header(line)) {
       flush();
-      section = std::regex_match(line, m, table_line) ? m[1].str() : std::string();
+      section = *table;
       out.push_back(line);
       last_key = out.size();
       continue;
     }
-    if (!section.empty() && std::regex_match(line, m, key_line)) {
-      const auto it = pending.find(section + "." + m[2].str());
-      out.push_back(it == pending.end() ? line : value_line(m[1].str(), m[2].str(), *it->second));
+    const auto key = section.empty() ? std::nullopt : key_line(line);
+    if (key) {
+      const auto it = pending.find(section + "." + key->second);
+      out.push_back(it == pending.end() ? line : value_line(key->first, key->second, *it->second));
       if (it != pending.end()) pending.erase(it);
       last_key = out.size();
       continue;
