@@ -4,42 +4,23 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "commands.hpp"
 #include "dynpos/analysis/vessel_id.hpp"
+#include "log_input.hpp"
 
 namespace dynpos::cli {
 namespace {
 
-// The log options shared by every LOG of the command: --map, --col, --unit.
-struct SharedLogOptions {
-  std::filesystem::path map_file;
-  std::vector<std::string> columns, units;
-
-  void add(CLI::App& sub) {
-    sub.add_option("--map", map_file, "Column map (TOML) of every LOG: roles → columns, units")
-        ->check(CLI::ExistingFile);
-    sub.add_option("--col", columns,
-                   "ROLE=COLUMN (repeatable) for every LOG. Roles: time, heading, u, v, r (or "
-                   "mruK.r), thrust.NAME, rudder.NAME / azimuth.NAME of every unit; wind_speed, "
-                   "wind_dir and north, east (or gnss1.north/east) when logged");
-    sub.add_option("--unit", units, "ROLE=UNIT (repeatable), e.g. thrust.port=kN");
-  }
-  analysis::LogSource source(const std::string& log, unsigned jobs) const {
-    analysis::LogSource s;
-    s.log = log;
-    s.map_file = map_file;
-    s.columns = columns;
-    s.units = units;
-    s.jobs = jobs;
-    return s;
-  }
-};
+constexpr const char* kRoles =
+    "time, heading, u, v, r (or mruK.r), thrust.NAME, rudder.NAME / azimuth.NAME of every unit; "
+    "wind_speed, wind_dir and north, east (or gnss1.north/east) when logged";
 
 struct VesselIdOptions {
   std::vector<std::string> logs;
-  SharedLogOptions log_options;
+  analysis::LogSource log_options;  // every LOG's, but its path
   analysis::VesselIdRequest request;
   std::string out;
   std::string report;
@@ -55,7 +36,7 @@ void add_identify_vessel(CLI::App& identify) {
                   "station-keeping (CSV as the other analyses read them)")
       ->required()
       ->check(CLI::ExistingFile);
-  o->log_options.add(*sub);
+  add_log_source_options(*sub, o->log_options, kRoles);
   sub->add_option("--vessel", o->request.vessel_file,
                   "Starting vessel file: its values start the fit and are kept where the logs do "
                   "not determine them (default: the built-in Gunnerus)")
@@ -82,8 +63,6 @@ void add_identify_vessel(CLI::App& identify) {
                   "Length [s] of the stretches a log is cut into, each with its own start "
                   "velocity and drifting current")
       ->capture_default_str();
-  sub->add_option("--jobs", o->request.jobs, "Threads (0: every core)")
-      ->check(CLI::Range(0u, 256u));
   sub->footer(
       "Fits the hull keys of the vessel file by an output-error fit of the simulator's own model "
       "driven by each log's thrust and rudder feedback to the logged u, v and r (Ceres), each "
@@ -93,8 +72,11 @@ void add_identify_vessel(CLI::App& identify) {
       "dynpos identify vessel RUN/surge-steps-forward/log.csv RUN/yaw-steps/log.csv "
       "RUN/zig-zag/log.csv --out my-vessel.toml --report vessel-report");
   sub->callback([o] {
+    o->request.jobs = o->log_options.jobs;
     for (const std::string& log : o->logs) {
-      o->request.logs.push_back(o->log_options.source(log, o->request.jobs));
+      analysis::LogSource source = o->log_options;
+      source.log = log;
+      o->request.logs.push_back(std::move(source));
     }
     o->outputs.figures = o->report;
     const analysis::VesselIdReport report = analysis::run_vessel_id(o->request);
@@ -106,8 +88,7 @@ void add_identify_vessel(CLI::App& identify) {
 }
 
 struct CompareTrialOptions {
-  std::string log;
-  SharedLogOptions log_options;
+  LogInput log;
   analysis::CompareTrialRequest request;
   std::string plot;
   analysis::Outputs outputs;
@@ -121,8 +102,7 @@ void register_compare_trial(CLI::App& app) {
   auto o = std::make_shared<CompareTrialOptions>();
   CLI::App* sub = app.add_subcommand(
       "compare-trial", "Re-simulate a logged test with its logged feedback and a vessel file");
-  sub->add_option("log", o->log, "The test's log (CSV)")->required()->check(CLI::ExistingFile);
-  o->log_options.add(*sub);
+  o->log.add_options(*sub, kRoles);
   sub->add_option("--vessel", o->request.vessel_file,
                   "Vessel file (default: the built-in Gunnerus)")
       ->check(CLI::ExistingFile);
@@ -139,7 +119,7 @@ void register_compare_trial(CLI::App& app) {
       "fitted; the vessel is the file's. Example: dynpos compare-trial RUN/zig-zag/log.csv "
       "--vessel my-vessel.toml");
   sub->callback([o] {
-    o->request.source = o->log_options.source(o->log, 0);
+    o->request.source = o->log;
     o->outputs.figures = o->plot;
     write_and_print(analysis::run_compare_trial(o->request), o->outputs);
   });

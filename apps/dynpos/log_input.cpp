@@ -42,6 +42,11 @@ void add_time_options(CLI::App& sub, analysis::LogSource& source) {
 
 void add_log_options(CLI::App& sub, analysis::LogSource& source, const std::string& roles_help) {
   add_log_argument(sub, source);
+  add_log_source_options(sub, source, roles_help);
+}
+
+void add_log_source_options(CLI::App& sub, analysis::LogSource& source,
+                            const std::string& roles_help) {
   sub.add_option("--map", source.map_file, "Column map (TOML): roles → columns, units, scales")
       ->check(CLI::ExistingFile);
   sub.add_option("--col", source.columns,

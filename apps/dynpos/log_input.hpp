@@ -20,6 +20,9 @@ struct LogInput : analysis::LogSource {
 /// --clock-offset, --max-gap, --format, --strict and the time-stamp options to `sub`, filling
 /// `source`.
 void add_log_options(CLI::App& sub, analysis::LogSource& source, const std::string& roles_help);
+/// The options of add_log_options but LOG, for a command that reads several logs alike.
+void add_log_source_options(CLI::App& sub, analysis::LogSource& source,
+                            const std::string& roles_help);
 
 using analysis::thruster_names;
 
