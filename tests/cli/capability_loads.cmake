@@ -37,7 +37,7 @@ dynpos_cli_test(capability_layout_unknown_case
 # which name the model's two rudders, are refused.
 dynpos_cli_test(capability_layout_level_3
   COMMAND ${DYNPOS_EXE} capability --vessel ${LOADS_DATA}/azimuth_layout.toml --level 3
-          --direction-step 180 --duration 120 --settle 60 --json -
+          --direction-step 180 --duration 60 --settle 30 --json -
   PASS "\"layout\": \"\\[\\[thruster\\]\\]\".*\"level\": 3")
 dynpos_cli_test(simulate_layout
   COMMAND ${DYNPOS_EXE} simulate pure-dp --vessel ${LOADS_DATA}/azimuth_layout.toml --duration 30
