@@ -21,6 +21,8 @@ struct ChunkDecompressor::Contexts {
 
 ChunkDecompressor::ChunkDecompressor() : contexts_(std::make_unique<Contexts>()) {}
 ChunkDecompressor::~ChunkDecompressor() = default;
+ChunkDecompressor::ChunkDecompressor(ChunkDecompressor&&) noexcept = default;
+ChunkDecompressor& ChunkDecompressor::operator=(ChunkDecompressor&&) noexcept = default;
 
 namespace {
 

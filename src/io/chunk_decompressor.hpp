@@ -17,6 +17,8 @@ class ChunkDecompressor {
   ~ChunkDecompressor();
   ChunkDecompressor(const ChunkDecompressor&) = delete;
   ChunkDecompressor& operator=(const ChunkDecompressor&) = delete;
+  ChunkDecompressor(ChunkDecompressor&&) noexcept;
+  ChunkDecompressor& operator=(ChunkDecompressor&&) noexcept;
 
   /// The `size` bytes that `in` decompresses to with `compression` ("" = none, "zstd", "lz4"),
   /// valid until the next call. Throws ByteError (offset in `in`) for an unknown compression,
