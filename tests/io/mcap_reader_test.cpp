@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "../source_dir.hpp"
 #include "io_test_util.hpp"
 #include "mcap_test_writer.hpp"
 
@@ -239,6 +240,21 @@ TEST(McapReader, TheFirstBadChunkInFileOrderIsTheErrorOnAnyNumberOfThreads) {
       ASSERT_TRUE(e);
       EXPECT_THAT(e->what(), HasSubstr(fmt::format("at byte {}: the chunk's CRC", chunks[1])));
     }
+  }
+}
+
+// A fuzz finding: zstd's error for bad data depended on the room the decompressor had left
+// from the chunk before, so one thread and several named the same chunk's problem differently.
+TEST(McapReader, AChunksErrorDoesNotDependOnTheChunksBeforeIt) {
+  const std::string path = std::string(DYNPOS_SOURCE_DIR) +
+                           "/fuzz/regressions/mcap_reader/zstd_error_after_a_larger_chunk.mcap";
+  const auto alone = caught_input_error([&] { every_message(path, 1); });
+  ASSERT_TRUE(alone);
+  EXPECT_THAT(alone->what(), HasSubstr("at byte 411: the chunk's zstd data: zstd:"));
+  for (const unsigned jobs : {2u, 3u}) {
+    const auto threads = caught_input_error([&] { every_message(path, jobs); });
+    ASSERT_TRUE(threads);
+    EXPECT_EQ(std::string(threads->what()), std::string(alone->what())) << jobs << " jobs";
   }
 }
 
