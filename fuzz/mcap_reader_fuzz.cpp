@@ -1,6 +1,11 @@
 // libFuzzer target: the MCAP reader (records, chunks in every compression, summary and chunk
 // indexes), then the bag reader on top of it (ros2msg schemas, CDR messages) with a role on a
-// field of topic /a. Bad input must end in core::InputError.
+// field of topic /a. Bad input must end in core::InputError. The reader must hand on the same
+// messages at the same positions, or throw the same error, on worker threads as on the calling
+// thread alone.
+
+#include <string>
+#include <vector>
 
 #include "dynpos/core/error.hpp"
 #include "dynpos/io/bag_log.hpp"
@@ -9,23 +14,43 @@
 
 namespace io = dynpos::io;
 
+namespace {
+
+// What a read hands on: per message its channel, log time, size, first byte and position; then
+// the error, if any.
+std::string read_all(const std::filesystem::path& path, unsigned jobs, std::size_t& bytes) {
+  std::string out;
+  try {
+    io::McapReader reader(path, jobs);
+    reader.read_messages(
+        [](const io::McapChannel& c) { return c.topic != "/b"; },
+        [&](const io::McapMessage& m) {
+          bytes += m.data.size();
+          out += std::to_string(m.channel_id) + ' ' + std::to_string(m.log_time_ns) + ' ' +
+                 std::to_string(m.data.size()) + ' ' +
+                 std::to_string(m.data.empty() ? 0 : m.data[0]) + ' ' + m.position() + '\n';
+        });
+  } catch (const dynpos::core::InputError& e) {
+    out += e.what();
+  }
+  return out;
+}
+
+}  // namespace
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static dynpos::fuzz::InputFile file("bag.mcap");
   const auto& path = file.write(std::string_view(reinterpret_cast<const char*>(data), size));
-  try {
-    io::McapReader reader(path);
-    std::size_t bytes = 0;
-    reader.read_messages([](const io::McapChannel&) { return true; },
-                         [&](const io::McapMessage& m) { bytes += m.data.size(); });
-    if (bytes > size * 4096 + (std::size_t{1} << 24)) __builtin_trap();
-  } catch (const dynpos::core::InputError&) {
-  }
+  std::size_t bytes = 0;
+  const std::string alone = read_all(path, 1, bytes);
+  if (bytes > size * 4096 + (std::size_t{1} << 24)) __builtin_trap();
+  if (read_all(path, 3, bytes) != alone) __builtin_trap();
   for (const char* column : {"/a.data", "/a.header.stamp.sec", "/a.v[1]"}) {
     try {
       io::ColumnMap map;
       map.set_column("time", "time");
       map.set_column("input", column);
-      (void)io::read_bag_file(path, map, io::BagTime::kAuto);
+      (void)io::read_bag_file(path, map, io::BagTime::kAuto, 2);
     } catch (const dynpos::core::InputError&) {
     }
   }

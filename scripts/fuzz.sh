@@ -20,6 +20,9 @@ all_targets=(csv_reader nmea_reader column_map time_stamp scenario vessel compar
   mcap_reader cdr_decoder)
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=("${all_targets[@]}")
+for t in "${targets[@]}"; do
+  [[ " ${all_targets[*]} " == *" $t "* ]] || { echo "unknown target '$t' (${all_targets[*]})" >&2; exit 2; }
+done
 case "$mode" in
   brief) limit=(-max_total_time="${DYNPOS_FUZZ_SECONDS:-15}") ;;
   runs) limit=(-runs="${amount:?give the number of executions}") ;;
@@ -39,7 +42,8 @@ if [ ${#need[@]} -gt 0 ]; then
 fi
 source scripts/ccache-env.sh
 cmake --preset fuzz "${launcher[@]}" >/dev/null
-cmake --build --preset fuzz -j "$(nproc)"
+# Only the targets to run (all of them without names).
+cmake --build --preset fuzz -j "$(nproc)" --target "${targets[@]/#/fuzz_}"
 
 out=build/fuzz
 bash fuzz/gather-seeds.sh "$out/seeds"

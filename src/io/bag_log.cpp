@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "column_blocks.hpp"
 #include "csv_cell.hpp"
 #include "dynpos/io/cdr_decoder.hpp"
 #include "dynpos/io/mcap_reader.hpp"
@@ -35,8 +36,8 @@ struct TopicRead {
   std::vector<RolePlan> roles;
   std::map<std::uint16_t, std::unique_ptr<CdrDecoder>> decoders;  // by channel
   std::map<std::uint16_t, bool> header_time;                      // by channel
-  std::vector<std::int64_t> time_ns;
-  std::vector<std::vector<double>> values;  // by role
+  detail::ColumnBlocks<std::int64_t> time_ns;
+  std::vector<detail::ColumnBlocks<double>> values;  // by role
   std::vector<double> scratch;
 };
 
@@ -103,21 +104,35 @@ class BagRead {
   }
 
  private:
+  // Where a channel's messages go, found once.
+  struct Route {
+    const McapChannel* channel = nullptr;
+    TopicRead* topic = nullptr;
+    const CdrDecoder* decoder = nullptr;
+    bool header = false;
+  };
+
   void message(const McapMessage& m) {
-    const McapChannel& channel = reader_.channels().at(m.channel_id);
-    TopicRead& topic = topics_.at(channel.topic);
-    auto decoder = topic.decoders.find(m.channel_id);
-    if (decoder == topic.decoders.end()) decoder = add_decoder(topic, channel, m);
+    if (m.channel_id >= routes_.size()) routes_.resize(std::size_t{m.channel_id} + 1);
+    Route& route = routes_[m.channel_id];
+    if (route.decoder == nullptr) {
+      const McapChannel& channel = reader_.channels().at(m.channel_id);
+      TopicRead& topic = topics_.at(channel.topic);
+      auto decoder = topic.decoders.find(m.channel_id);
+      if (decoder == topic.decoders.end()) decoder = add_decoder(topic, channel, m);
+      route = {&channel, &topic, decoder->second.get(), topic.header_time.at(m.channel_id)};
+    }
+    TopicRead& topic = *route.topic;
     std::vector<double>& v = topic.scratch;
     try {
-      decoder->second->decode(m.data, v);
+      route.decoder->decode(m.data, v);
     } catch (const CdrError& e) {
       throw reader_.error(m.position(),
                           fmt::format("the message: {} (byte {} of it)", e.what(), e.offset),
-                          channel.topic, "the message does not match its schema");
+                          route.channel->topic, "the message does not match its schema");
     }
     std::int64_t ns = 0;
-    if (topic.header_time.at(m.channel_id)) {
+    if (route.header) {
       const std::size_t n = topic.roles.size();
       ns = static_cast<std::int64_t>(v[n]) * 1'000'000'000 + static_cast<std::int64_t>(v[n + 1]);
     } else if (m.log_time_ns <= static_cast<std::uint64_t>(INT64_MAX)) {
@@ -125,7 +140,7 @@ class BagRead {
     } else {
       throw reader_.error(m.position(),
                           fmt::format("the log time {} ns is past 2262", m.log_time_ns),
-                          channel.topic);
+                          route.channel->topic);
     }
     topic.time_ns.push_back(ns);
     for (std::size_t i = 0; i < topic.roles.size(); ++i) {
@@ -177,14 +192,17 @@ class BagRead {
   McapReader& reader_;
   std::map<std::string, TopicRead>& topics_;
   BagTime time_;
+  std::vector<Route> routes_;  // by channel id
 };
 
 // The indices of the topic's messages in time order, a repeated time kept once; empty when
 // they are in strictly increasing order already (the usual case: no copy then).
-std::vector<std::size_t> time_order(const std::vector<std::int64_t>& time_ns) {
-  if (std::adjacent_find(time_ns.begin(), time_ns.end(), std::greater_equal<>()) == time_ns.end()) {
-    return {};
+std::vector<std::size_t> time_order(const detail::ColumnBlocks<std::int64_t>& time_ns) {
+  bool increasing = true;
+  for (std::size_t k = 1; k < time_ns.size() && increasing; ++k) {
+    increasing = time_ns[k - 1] < time_ns[k];
   }
+  if (increasing) return {};
   std::vector<std::size_t> order(time_ns.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(),
@@ -203,18 +221,27 @@ FileLog topic_log(const std::string& path, const std::string& topic, TopicRead& 
   const std::size_t n = order.empty() ? messages : order.size();
   const auto at = [&](std::size_t k) { return order.empty() ? k : order[k]; };
   const std::int64_t origin = read.time_ns[at(0)];
-  std::vector<double> t(n);
-  for (std::size_t k = 0; k < n; ++k)
-    t[k] = static_cast<double>(read.time_ns[at(k)] - origin) * 1e-9;
-  std::vector<std::int64_t>().swap(read.time_ns);
+  const auto seconds = [origin](std::int64_t ns) {
+    return static_cast<double>(ns - origin) * 1e-9;
+  };
+  std::vector<double> t;
+  if (order.empty()) {
+    t = read.time_ns.take<double>(seconds);
+  } else {
+    t.resize(n);
+    for (std::size_t k = 0; k < n; ++k) t[k] = seconds(read.time_ns[order[k]]);
+    read.time_ns.clear();
+  }
   FileLog out;
   out.log = core::Log(std::move(t));
   for (std::size_t r = 0; r < read.roles.size(); ++r) {
-    std::vector<double> v = std::move(read.values[r]);
-    if (!order.empty()) {
-      std::vector<double> ordered(n);
-      for (std::size_t k = 0; k < n; ++k) ordered[k] = v[order[k]];
-      v = std::move(ordered);
+    std::vector<double> v;
+    if (order.empty()) {
+      v = read.values[r].take<double>([](double x) { return x; });
+    } else {
+      v.resize(n);
+      for (std::size_t k = 0; k < n; ++k) v[k] = read.values[r][order[k]];
+      read.values[r].clear();
     }
     const RolePlan& plan = read.roles[r];
     out.log.add_channel(plan.role, core::si_unit(plan.unit.quantity).symbol, std::move(v),
@@ -263,10 +290,11 @@ void check_read(const std::string& path, const McapReader& reader,
 
 }  // namespace
 
-FileLog read_bag_file(const std::filesystem::path& path, const ColumnMap& map, BagTime time) {
+FileLog read_bag_file(const std::filesystem::path& path, const ColumnMap& map, BagTime time,
+                      unsigned jobs) {
   const std::string file = path.string();
   std::map<std::string, TopicRead> topics = plan_topics(map, file);
-  McapReader reader(path);
+  McapReader reader(path, jobs);
   std::string axis;
   if (const RoleColumn* t = map.find("time"); t != nullptr) {
     const std::vector<std::string> names = topic_names(reader);

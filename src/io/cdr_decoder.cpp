@@ -32,6 +32,10 @@ std::string field_list(const Ros2Type& type) {
 
 bool is_array(const Ros2Field& f) { return f.array != Ros2Field::Array::kNone; }
 
+bool is_text(Ros2Primitive p) {
+  return p == Ros2Primitive::kString || p == Ros2Primitive::kWstring;
+}
+
 }  // namespace
 
 struct CdrDecoder::Reader {
@@ -202,6 +206,103 @@ CdrDecoder::CdrDecoder(Ros2Schema schema, const std::vector<std::string>& paths)
     const std::int32_t from = add_path(paths[i], slot);
     if (from != slot) copies_.emplace_back(slot, from);
   }
+  const std::vector<Want>& root = nodes_[0].wants;
+  compile(0, 0, root.empty() ? 0 : root.back().field + 1);
+}
+
+void CdrDecoder::add_skip(std::size_t align, std::uint64_t bytes) {
+  // After a skip that starts aligned to `a` and covers a multiple of `align` bytes, with
+  // align <= a, the position is aligned to `align` (for either maximum alignment) already.
+  if (!plan_.empty() && plan_.back().kind == Op::Kind::kSkip && align <= plan_.back().align &&
+      plan_.back().bytes % align == 0) {
+    plan_.back().bytes += bytes;
+    return;
+  }
+  Op op;
+  op.align = static_cast<std::uint8_t>(align);
+  op.bytes = bytes;
+  plan_.push_back(op);
+}
+
+// The steps of walk(type, node) over its first `fields` fields.
+void CdrDecoder::compile(std::size_t type, std::int32_t node, std::size_t fields) {
+  const std::vector<Want> none;
+  const std::vector<Want>& wants = node >= 0 ? nodes_[static_cast<std::size_t>(node)].wants : none;
+  std::size_t want = 0;
+  for (std::uint32_t i = 0; i < fields; ++i) {
+    const Ros2Field& field = schema_.types[type].fields[i];
+    const std::size_t first = want;
+    while (want < wants.size() && wants[want].field == i) ++want;
+    const bool wanted = first != want;
+    const bool number = field.primitive && !is_text(*field.primitive);
+    const std::size_t bytes = number ? ros2_primitive_bytes(*field.primitive) : 0;
+    if (is_array(field) && number && field.array == Ros2Field::Array::kFixed) {
+      std::uint64_t at = 0;  // as read_array: skip to each wanted element, read it, skip the rest
+      for (std::size_t w = first; w < want; ++w) {
+        add_skip(bytes, (wants[w].element - at) * bytes);
+        Op read;
+        read.kind = Op::Kind::kRead;
+        read.primitive = *field.primitive;
+        read.slot = wants[w].slot;
+        plan_.push_back(read);
+        at = wants[w].element + 1;
+      }
+      add_skip(bytes, (field.size - at) * bytes);
+    } else if (is_array(field)) {
+      Op walked;
+      walked.kind = Op::Kind::kField;
+      walked.type = static_cast<std::uint32_t>(type);
+      walked.field = i;
+      walked.node = wanted ? node : -1;
+      walked.first = static_cast<std::uint32_t>(first);
+      walked.end = static_cast<std::uint32_t>(want);
+      plan_.push_back(walked);
+    } else if (field.primitive && !number) {
+      Op text;
+      text.kind = Op::Kind::kString;
+      text.primitive = *field.primitive;
+      plan_.push_back(text);
+    } else if (field.primitive && wanted) {
+      Op read;
+      read.kind = Op::Kind::kRead;
+      read.primitive = *field.primitive;
+      read.slot = wants[first].slot;
+      plan_.push_back(read);
+    } else if (field.primitive) {
+      add_skip(bytes, bytes);
+    } else {  // a nested message, walked whole
+      compile(field.nested, wanted ? wants[first].node : -1,
+              schema_.types[field.nested].fields.size());
+    }
+  }
+}
+
+void CdrDecoder::run(Reader& r, std::span<double> values) const {
+  for (const Op& op : plan_) {
+    switch (op.kind) {
+      case Op::Kind::kSkip:
+        r.align(op.align);
+        r.need(op.bytes, "a field");
+        r.pos += static_cast<std::size_t>(op.bytes);
+        break;
+      case Op::Kind::kRead:
+        values[static_cast<std::size_t>(op.slot)] = r.primitive(op.primitive);
+        break;
+      case Op::Kind::kString:
+        r.skip_string(op.primitive);
+        break;
+      case Op::Kind::kField: {
+        const Ros2Field& field = schema_.types[op.type].fields[op.field];
+        if (op.node < 0) {
+          skip_array(field, r);
+        } else {
+          const Want* wants = nodes_[static_cast<std::size_t>(op.node)].wants.data();
+          read_array(field, wants + op.first, wants + op.end, r, values);
+        }
+        break;
+      }
+    }
+  }
 }
 
 void CdrDecoder::skip(const Ros2Field& field, std::uint64_t n, Reader& r) const {
@@ -251,6 +352,15 @@ void CdrDecoder::read_array(const Ros2Field& field, const Want* want, const Want
   skip(field, n - at, r);
 }
 
+void CdrDecoder::skip_array(const Ros2Field& field, Reader& r) const {
+  const std::uint64_t n = field.array == Ros2Field::Array::kFixed
+                              ? field.size
+                              : r.count(field.primitive ? ros2_primitive_bytes(*field.primitive)
+                                                        : schema_.types[field.nested].min_bytes,
+                                        "a sequence");
+  skip(field, n, r);
+}
+
 void CdrDecoder::walk(std::size_t type, const Node* node, Reader& r,
                       std::span<double> values) const {
   const Ros2Type& t = schema_.types[type];
@@ -266,13 +376,7 @@ void CdrDecoder::walk(std::size_t type, const Node* node, Reader& r,
     while (want != end && want->field == i) ++want;
     if (is_array(field)) {
       if (first == want) {
-        const std::uint64_t n =
-            field.array == Ros2Field::Array::kFixed
-                ? field.size
-                : r.count(field.primitive ? ros2_primitive_bytes(*field.primitive)
-                                          : schema_.types[field.nested].min_bytes,
-                          "a sequence");
-        skip(field, n, r);
+        skip_array(field, r);
       } else {
         read_array(field, first, want, r, values);
       }
@@ -286,7 +390,8 @@ void CdrDecoder::walk(std::size_t type, const Node* node, Reader& r,
   }
 }
 
-void CdrDecoder::decode(std::span<const std::uint8_t> message, std::span<double> values) const {
+CdrDecoder::Reader CdrDecoder::start(std::span<const std::uint8_t> message,
+                                     std::span<double> values) const {
   if (message.size() < kHeaderBytes) {
     throw CdrError(
         fmt::format("a message of {} bytes, without its 4-byte CDR header", message.size()), 0);
@@ -301,10 +406,31 @@ void CdrDecoder::decode(std::span<const std::uint8_t> message, std::span<double>
   r.swap = (kind & 1) == 0;  // big endian on this little-endian host
   r.max_align = kind >= 6 ? 4 : 8;
   std::fill(values.begin(), values.end(), std::numeric_limits<double>::quiet_NaN());
-  walk(0, nodes_.data(), r, values);
+  return r;
+}
+
+void CdrDecoder::finish(std::span<double> values) const {
   for (const auto& [to, from] : copies_) {
     values[static_cast<std::size_t>(to)] = values[static_cast<std::size_t>(from)];
   }
+}
+
+void CdrDecoder::decode(std::span<const std::uint8_t> message, std::span<double> values) const {
+  Reader r = start(message, values);
+  try {
+    run(r, values);
+  } catch (const CdrError&) {
+    decode_by_walking(message, values);  // the walk's own error
+    return;
+  }
+  finish(values);
+}
+
+void CdrDecoder::decode_by_walking(std::span<const std::uint8_t> message,
+                                   std::span<double> values) const {
+  Reader r = start(message, values);
+  walk(0, nodes_.data(), r, values);
+  finish(values);
 }
 
 std::vector<std::string> CdrDecoder::numeric_fields(const Ros2Schema& schema, std::size_t max) {

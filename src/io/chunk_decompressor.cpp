@@ -21,6 +21,8 @@ struct ChunkDecompressor::Contexts {
 
 ChunkDecompressor::ChunkDecompressor() : contexts_(std::make_unique<Contexts>()) {}
 ChunkDecompressor::~ChunkDecompressor() = default;
+ChunkDecompressor::ChunkDecompressor(ChunkDecompressor&&) noexcept = default;
+ChunkDecompressor& ChunkDecompressor::operator=(ChunkDecompressor&&) noexcept = default;
 
 namespace {
 
@@ -38,8 +40,9 @@ std::uint64_t first_guess(std::span<const std::uint8_t> in, std::uint64_t size) 
 }  // namespace
 
 bool ChunkDecompressor::grow(std::uint64_t size) {
-  if (buffer_.size() >= size) return false;
-  buffer_.resize(static_cast<std::size_t>(std::min<std::uint64_t>(size, 2 * buffer_.size())));
+  if (room_ >= size) return false;
+  room_ = static_cast<std::size_t>(std::min<std::uint64_t>(size, 2 * std::uint64_t{room_}));
+  if (buffer_.size() < room_) buffer_.resize(room_);
   return true;
 }
 
@@ -55,7 +58,8 @@ std::span<const std::uint8_t> ChunkDecompressor::decompress(std::string_view com
   }
   if (in.empty() && size == 0) return {};
   const std::uint64_t guess = first_guess(in, size);
-  if (buffer_.size() < guess) buffer_.resize(static_cast<std::size_t>(guess));
+  room_ = static_cast<std::size_t>(guess);
+  if (buffer_.size() < room_) buffer_.resize(room_);
   if (compression == "zstd") {
     zstd(in, size);
   } else if (compression == "lz4") {
@@ -77,9 +81,9 @@ void ChunkDecompressor::zstd(std::span<const std::uint8_t> in, std::uint64_t siz
   std::size_t pending = 1;  // ZSTD_decompressStream: 0 once a frame is complete
   while (src.pos < src.size || pending != 0) {
     std::uint8_t spare = 0;  // past `size`: one byte tells whether there is more
-    const bool full = produced == buffer_.size() && !grow(size);
-    ZSTD_outBuffer dst = full ? ZSTD_outBuffer{&spare, 1, 0}
-                              : ZSTD_outBuffer{buffer_.data(), buffer_.size(), produced};
+    const bool full = produced == room_ && !grow(size);
+    ZSTD_outBuffer dst =
+        full ? ZSTD_outBuffer{&spare, 1, 0} : ZSTD_outBuffer{buffer_.data(), room_, produced};
     const std::size_t before_in = src.pos;
     pending = ZSTD_decompressStream(contexts_->zstd, &dst, &src);
     if (ZSTD_isError(pending)) {
@@ -89,7 +93,7 @@ void ChunkDecompressor::zstd(std::span<const std::uint8_t> in, std::uint64_t siz
     if (!full) {
       const bool progress = dst.pos > produced || src.pos > before_in;
       produced = dst.pos;
-      if (!progress && produced < buffer_.size()) break;  // input ends inside a frame
+      if (!progress && produced < room_) break;  // input ends inside a frame
     } else if (src.pos == before_in) {
       break;
     }
@@ -113,8 +117,8 @@ void ChunkDecompressor::lz4(std::span<const std::uint8_t> in, std::uint64_t size
   std::size_t pending = 1;  // LZ4F_decompress: 0 once a frame is complete
   while (consumed < in.size() || pending != 0) {
     std::uint8_t spare = 0;
-    const bool full = produced == buffer_.size() && !grow(size);
-    std::size_t dst_size = full ? 1 : buffer_.size() - produced;
+    const bool full = produced == room_ && !grow(size);
+    std::size_t dst_size = full ? 1 : room_ - produced;
     std::size_t src_size = in.size() - consumed;
     pending = LZ4F_decompress(contexts_->lz4, full ? &spare : buffer_.data() + produced, &dst_size,
                               in.data() + consumed, &src_size, nullptr);

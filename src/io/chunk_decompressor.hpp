@@ -10,13 +10,18 @@
 namespace dynpos::io::detail {
 
 /// Decompresses one chunk after another into one buffer, which only grows: to the bytes the
-/// data actually gives, never to a declared size up front.
+/// data actually gives, never to a declared size up front. Each chunk is decompressed into room
+/// sized as if the buffer were new (the buffer's size left by earlier chunks is not used), so
+/// that what a chunk gives, errors included, does not depend on the chunks before it, nor on
+/// which thread's decompressor took it.
 class ChunkDecompressor {
  public:
   ChunkDecompressor();
   ~ChunkDecompressor();
   ChunkDecompressor(const ChunkDecompressor&) = delete;
   ChunkDecompressor& operator=(const ChunkDecompressor&) = delete;
+  ChunkDecompressor(ChunkDecompressor&&) noexcept;
+  ChunkDecompressor& operator=(ChunkDecompressor&&) noexcept;
 
   /// The `size` bytes that `in` decompresses to with `compression` ("" = none, "zstd", "lz4"),
   /// valid until the next call. Throws ByteError (offset in `in`) for an unknown compression,
@@ -33,6 +38,7 @@ class ChunkDecompressor {
   struct Contexts;
   std::unique_ptr<Contexts> contexts_;
   std::vector<std::uint8_t> buffer_;
+  std::size_t room_ = 0;  // of buffer_, for the chunk being decompressed
 };
 
 }  // namespace dynpos::io::detail

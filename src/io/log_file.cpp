@@ -73,7 +73,7 @@ FileLog read_log_file(const std::filesystem::path& path, const ColumnMap& map,
                       const LogFileRead& how) {
   using Format = LogFileRead::Format;
   if (how.format == Format::kMcap || (how.format == Format::kAuto && looks_like_mcap(path))) {
-    return read_bag_file(path, map, how.bag_time);
+    return read_bag_file(path, map, how.bag_time, how.jobs);
   }
   if (how.format == Format::kNmea || (how.format == Format::kAuto && looks_like_nmea(path))) {
     return read_nmea_file(path, map, how.strict);

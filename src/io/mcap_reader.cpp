@@ -1,14 +1,22 @@
 #include "dynpos/io/mcap_reader.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <cstring>
+#include <deque>
+#include <exception>
 
 #include <fmt/format.h>
 
 #include "byte_cursor.hpp"
 #include "chunk_decompressor.hpp"
 #include "crc32.hpp"
+#include "dynpos/core/parallel_for.hpp"
+#include "ordered_work.hpp"
 
 namespace dynpos::io {
 namespace {
@@ -56,25 +64,45 @@ bool looks_like_mcap(const std::filesystem::path& path) {
   return magic;
 }
 
+// One chunk read, decompressed and checked off the thread that hands its messages on.
+struct ChunkSlot {
+  std::uint64_t offset = 0;  // the chunk record's
+  std::uint64_t length = 0;  // from a chunk index: the record's bytes; else its content's
+  bool indexed = false;      // found through a chunk index (whose bounds are still to check)
+  std::vector<std::uint8_t> bytes;
+  detail::ChunkDecompressor decompressor;
+  std::span<const std::uint8_t> plain;  // its records, decompressed and checked
+};
+
+// What comes next in file order: a chunk (in a slot), another record, or the error found there.
+struct Unit {
+  std::uint8_t op = 0;
+  std::uint64_t offset = 0;
+  std::uint64_t length = 0;  // of the content
+  std::size_t slot = 0;
+  std::exception_ptr error;
+};
+
 struct McapReader::State {
   std::string name;
-  std::FILE* file = nullptr;
+  int fd = -1;
+  unsigned jobs = 1;
   std::uint64_t size = 0;
-  std::uint64_t pos = 0;  // of the FILE
   std::uint64_t data_end = 0;
   std::map<std::uint16_t, McapSchema> schemas;
   std::map<std::uint16_t, McapChannel> channels;
   std::vector<ChunkIndex> chunk_indexes;
   bool summary = false;
   std::vector<std::uint8_t> record;
-  std::vector<std::uint8_t> chunk_records;
-  detail::ChunkDecompressor decompressor;
-  std::map<std::uint16_t, bool> wanted;
+  std::vector<std::uint8_t> window;  // bytes [window_at, +size) of the file, for small reads
+  std::uint64_t window_at = 0;
+  std::vector<ChunkSlot> slots;
+  std::vector<signed char> wanted;  // by channel id: -1 not asked yet, else 0 or 1
   const std::function<bool(const McapChannel&)>* want = nullptr;
   const std::function<void(const McapMessage&)>* on_message = nullptr;
 
   ~State() {
-    if (file != nullptr) std::fclose(file);
+    if (fd >= 0) ::close(fd);
   }
 
   core::InputError error(std::uint64_t offset, const std::string& problem,
@@ -84,26 +112,52 @@ struct McapReader::State {
                             "the file is not a complete MCAP file (cut short or damaged?)");
   }
 
-  // Reads n bytes at `offset` into `out` (resized), checked against the file's size.
-  void read_at(std::uint64_t offset, std::uint64_t n, std::vector<std::uint8_t>& out) {
+  // Throws unless the file holds n bytes at `offset`.
+  void check_span(std::uint64_t offset, std::uint64_t n) const {
     if (offset > size || n > size - offset) {
       throw error(offset, fmt::format("{} bytes are declared, only {} are left in the file", n,
                                       offset > size ? 0 : size - offset));
     }
-    if (pos != offset && ::fseeko(file, static_cast<off_t>(offset), SEEK_SET) != 0) {
-      throw error(offset, "cannot seek there");
-    }
+  }
+
+  // Reads n bytes at `offset` into `out` (resized), checked against the file's size; safe on
+  // any thread.
+  void pread_at(std::uint64_t offset, std::uint64_t n, std::vector<std::uint8_t>& out) const {
+    check_span(offset, n);
     out.resize(static_cast<std::size_t>(n));
-    if (std::fread(out.data(), 1, out.size(), file) != out.size()) {
-      throw error(offset, "cannot read the file there");
+    std::size_t done = 0;
+    while (done < out.size()) {
+      const ssize_t got =
+          ::pread(fd, out.data() + done, out.size() - done, static_cast<off_t>(offset + done));
+      if (got < 0 && errno == EINTR) continue;
+      if (got <= 0) throw error(offset, "cannot read the file there");
+      done += static_cast<std::size_t>(got);
     }
-    pos = offset + n;
+  }
+
+  // As pread_at, small reads served from a window of the file read ahead (the calling thread's
+  // records one after another).
+  void read_at(std::uint64_t offset, std::uint64_t n, std::vector<std::uint8_t>& out) {
+    constexpr std::uint64_t kWindowBytes = std::uint64_t{1} << 16;
+    check_span(offset, n);
+    if (n > kWindowBytes / 2) return pread_at(offset, n, out);
+    if (offset < window_at || offset + n > window_at + window.size()) {
+      pread_at(offset, std::min(kWindowBytes, size - offset), window);
+      window_at = offset;
+    }
+    const auto* from = window.data() + (offset - window_at);
+    out.assign(from, from + n);
   }
 
   // The opcode and content length of the record at `offset`, which must end by `limit`.
   std::pair<std::uint8_t, std::uint64_t> record_header(std::uint64_t offset, std::uint64_t limit) {
     std::vector<std::uint8_t>& head = record;
     read_at(offset, kRecordHeaderBytes, head);
+    return check_header(head, offset, limit);
+  }
+  std::pair<std::uint8_t, std::uint64_t> check_header(std::span<const std::uint8_t> head,
+                                                      std::uint64_t offset,
+                                                      std::uint64_t limit) const {
     std::uint64_t length = 0;
     std::memcpy(&length, head.data() + 1, 8);
     const std::uint64_t left = limit - offset - kRecordHeaderBytes;
@@ -120,11 +174,15 @@ struct McapReader::State {
   void add_channel(ByteCursor c);
   bool wants(std::uint16_t channel_id);
   void message(ByteCursor c, std::uint64_t offset, std::optional<std::uint64_t> in_chunk);
-  void chunk(std::span<const std::uint8_t> content, std::uint64_t offset);
+  // A chunk's records, decompressed and checked into slot.plain (any thread).
+  void load_chunk(ChunkSlot& slot) const;
+  void unpack_chunk(ChunkSlot& slot, std::span<const std::uint8_t> content) const;
+  void chunk_records(std::span<const std::uint8_t> plain, std::uint64_t offset);
   void chunk_record(std::uint8_t op, std::span<const std::uint8_t> content, std::uint64_t offset,
                     std::uint64_t in_chunk);
-  void read_indexed();
-  void read_linear();
+  std::optional<Unit> next_indexed(std::size_t& next_index, bool settled, bool& later);
+  std::optional<Unit> next_linear(std::uint64_t& at);
+  void read_units(bool indexed);
 };
 
 void McapReader::State::add_schema(ByteCursor c) {
@@ -146,12 +204,13 @@ void McapReader::State::add_channel(ByteCursor c) {
 }
 
 bool McapReader::State::wants(std::uint16_t channel_id) {
-  const auto known = wanted.find(channel_id);
-  if (known != wanted.end()) return known->second;
+  if (channel_id >= wanted.size()) wanted.resize(std::size_t{channel_id} + 1, -1);
+  signed char& known = wanted[channel_id];
+  if (known >= 0) return known != 0;
   const auto ch = channels.find(channel_id);
   if (ch == channels.end()) return false;  // the message reports it
   const bool yes = want == nullptr || (*want)(ch->second);
-  wanted.emplace(channel_id, yes);
+  known = yes ? 1 : 0;
   return yes;
 }
 
@@ -165,29 +224,55 @@ void McapReader::State::message(ByteCursor c, std::uint64_t offset,
   m.data = c.bytes(c.left(), "the message data");
   m.record_offset = offset;
   m.offset_in_chunk = in_chunk;
-  if (!channels.contains(m.channel_id)) {
+  if (wants(m.channel_id)) {
+    (*on_message)(m);
+  } else if (!channels.contains(m.channel_id)) {
     throw core::InputError({name, {}, {}, {}},
                            fmt::format("at {}: a message of channel {}, which no Channel record "
                                        "declared before it",
                                        m.position(), m.channel_id),
                            "the file is not valid MCAP");
   }
-  if (wants(m.channel_id)) (*on_message)(m);
 }
 
 void McapReader::State::chunk_record(std::uint8_t op, std::span<const std::uint8_t> content,
                                      std::uint64_t offset, std::uint64_t in_chunk) {
+  if (op == kMessage) message(ByteCursor(content), offset, in_chunk);
   if (op == kSchema) add_schema(ByteCursor(content));
   if (op == kChannel) add_channel(ByteCursor(content));
-  if (op == kMessage) message(ByteCursor(content), offset, in_chunk);
 }
 
-void McapReader::State::chunk(std::span<const std::uint8_t> content, std::uint64_t offset) {
+void McapReader::State::load_chunk(ChunkSlot& slot) const {
+  std::uint64_t length = slot.length;
+  if (slot.indexed) {
+    if (slot.offset < kMagic.size() || slot.offset > data_end ||
+        slot.length > data_end - slot.offset || slot.length < kRecordHeaderBytes) {
+      throw error(slot.offset, fmt::format("a chunk index points to [{}, +{}), outside the data "
+                                           "section",
+                                           slot.offset, slot.length));
+    }
+    std::array<std::uint8_t, kRecordHeaderBytes> head{};
+    std::vector<std::uint8_t>& bytes = slot.bytes;
+    pread_at(slot.offset, kRecordHeaderBytes, bytes);
+    std::copy(bytes.begin(), bytes.end(), head.begin());
+    const auto [op, declared] = check_header(head, slot.offset, data_end);
+    if (op != kChunk || declared + kRecordHeaderBytes != slot.length) {
+      throw error(slot.offset, "the chunk index does not point to a chunk of its length");
+    }
+    if (declared > kMaxMcapChunkBytes + 64) throw error(slot.offset, "the chunk is too large");
+    length = declared;
+  }
+  pread_at(slot.offset + kRecordHeaderBytes, length, slot.bytes);
+  unpack_chunk(slot, slot.bytes);
+}
+
+void McapReader::State::unpack_chunk(ChunkSlot& slot, std::span<const std::uint8_t> content) const {
+  const std::uint64_t offset = slot.offset;
   ByteCursor c(content);
   std::span<const std::uint8_t> records;
   std::uint64_t size = 0;
   std::uint32_t crc = 0;
-  std::string compression;
+  std::string_view compression;
   try {
     c.skip(16, "the chunk's message times");
     size = c.u64("the chunk's uncompressed size");
@@ -202,18 +287,23 @@ void McapReader::State::chunk(std::span<const std::uint8_t> content, std::uint64
                                     "dynpos reads",
                                     size, kMaxMcapChunkBytes));
   }
-  std::span<const std::uint8_t> plain;
   try {
-    plain = decompressor.decompress(compression, records, size);
+    slot.plain = slot.decompressor.decompress(compression, records, size);
   } catch (const ByteError& e) {
     throw error(offset, fmt::format("the chunk's {} data: {} (byte {} of it)",
                                     compression.empty() ? "uncompressed" : compression, e.what(),
                                     e.offset));
   }
-  if (crc != 0 && detail::crc32(plain) != crc) {
-    throw error(offset, fmt::format("the chunk's CRC is {:08x}, its records give {:08x}", crc,
-                                    detail::crc32(plain)));
+  if (crc != 0) {
+    const std::uint32_t actual = detail::crc32(slot.plain);
+    if (actual != crc) {
+      throw error(offset,
+                  fmt::format("the chunk's CRC is {:08x}, its records give {:08x}", crc, actual));
+    }
   }
+}
+
+void McapReader::State::chunk_records(std::span<const std::uint8_t> plain, std::uint64_t offset) {
   ByteCursor in(plain);
   while (!in.done()) {
     const std::size_t at = in.pos();
@@ -226,7 +316,6 @@ void McapReader::State::chunk(std::span<const std::uint8_t> content, std::uint64
     }
   }
 }
-
 void McapReader::State::open_summary() {
   if (size < kMagic.size() + kFooterBytes + kMagic.size()) return;
   std::vector<std::uint8_t> tail;
@@ -280,65 +369,123 @@ void McapReader::State::open_summary() {
             [](const ChunkIndex& a, const ChunkIndex& b) { return a.start < b.start; });
 }
 
-void McapReader::State::read_indexed() {
-  for (const ChunkIndex& index : chunk_indexes) {
+// The next chunk the index lists that holds a wanted channel. A chunk that lists a channel
+// not known yet (declared in an earlier chunk, not in the summary) is judged once every unit
+// before it is handed on (`settled`); until then `later` is set.
+std::optional<Unit> McapReader::State::next_indexed(std::size_t& next_index, bool settled,
+                                                    bool& later) {
+  while (next_index < chunk_indexes.size()) {
+    const ChunkIndex& index = chunk_indexes[next_index];
+    const auto unknown = [this](std::uint16_t id) { return !channels.contains(id); };
+    if (!settled && std::any_of(index.channels.begin(), index.channels.end(), unknown)) {
+      later = true;
+      return std::nullopt;
+    }
+    ++next_index;
     if (!index.channels.empty() && std::none_of(index.channels.begin(), index.channels.end(),
                                                 [this](std::uint16_t id) { return wants(id); })) {
       continue;
     }
-    if (index.start < kMagic.size() || index.start > data_end ||
-        index.length > data_end - index.start || index.length < kRecordHeaderBytes) {
-      throw error(index.start, fmt::format("a chunk index points to [{}, +{}), outside the data "
-                                           "section",
-                                           index.start, index.length));
-    }
-    const auto [op, length] = record_header(index.start, data_end);
-    if (op != kChunk || length + kRecordHeaderBytes != index.length) {
-      throw error(index.start, "the chunk index does not point to a chunk of its length");
-    }
-    if (length > kMaxMcapChunkBytes + 64) throw error(index.start, "the chunk is too large");
-    read_at(index.start + kRecordHeaderBytes, length, chunk_records);
-    chunk(chunk_records, index.start);
+    return Unit{kChunk, index.start, index.length, 0, nullptr};
   }
+  return std::nullopt;
 }
 
-void McapReader::State::read_linear() {
-  std::uint64_t at = kMagic.size();
+// The next record from `at` on that is read (its header checked), or the error found there.
+std::optional<Unit> McapReader::State::next_linear(std::uint64_t& at) {
   while (at < data_end) {
-    if (data_end - at < kRecordHeaderBytes) {
-      throw error(at, fmt::format("the file ends {} bytes into a record's header (cut short)",
-                                  data_end - at));
-    }
-    const auto [op, length] = record_header(at, data_end);
-    if (op == kFooter || op == kDataEnd) return;
-    if (op == kSchema || op == kChannel || op == kMessage || op == kChunk) {
+    Unit unit{0, at, 0, 0, nullptr};
+    try {
+      if (data_end - at < kRecordHeaderBytes) {
+        throw error(at, fmt::format("the file ends {} bytes into a record's header (cut short)",
+                                    data_end - at));
+      }
+      const auto [op, length] = record_header(at, data_end);
+      if (op == kFooter || op == kDataEnd) {
+        at = data_end;
+        return std::nullopt;
+      }
+      at += kRecordHeaderBytes + length;
+      if (op != kSchema && op != kChannel && op != kMessage && op != kChunk) continue;
       if (length > kMaxMcapChunkBytes + 64) {
-        throw error(at, fmt::format("a record of {} bytes, more than the {} dynpos reads", length,
-                                    kMaxMcapChunkBytes));
+        throw error(unit.offset, fmt::format("a record of {} bytes, more than the {} dynpos reads",
+                                             length, kMaxMcapChunkBytes));
       }
-      std::vector<std::uint8_t>& content = op == kChunk ? chunk_records : record;
-      read_at(at + kRecordHeaderBytes, length, content);
-      if (op == kChunk) {
-        chunk(content, at);
-      } else {
-        try {
-          chunk_record(op, content, at, 0);
-        } catch (const ByteError& e) {
-          throw error(at, fmt::format("a record (opcode 0x{:02x}): {}", op, e.what()));
-        }
-      }
+      unit.op = op;
+      unit.length = length;
+    } catch (const core::InputError&) {
+      unit.error = std::current_exception();
+      at = data_end;
     }
-    at += kRecordHeaderBytes + length;
+    return unit;
+  }
+  return std::nullopt;
+}
+
+// Hands on the messages of the chunks (read ahead on worker threads) and records in file order.
+void McapReader::State::read_units(bool indexed) {
+  // Chunks in flight: two per worker and the one being handed on, within a budget of bytes.
+  constexpr std::uint64_t kAheadBytes = std::uint64_t{64} << 20;
+  const unsigned workers = jobs > 1 ? jobs : 0;
+  if (slots.size() < 2 * std::size_t{workers} + 1) slots.resize(2 * std::size_t{workers} + 1);
+  detail::OrderedWork work(workers, slots.size(), [this](std::size_t k) { load_chunk(slots[k]); });
+  std::deque<Unit> units;
+  std::size_t next_index = 0;
+  std::uint64_t at = kMagic.size();
+  std::size_t next_slot = 0;
+  std::uint64_t ahead = 0;  // bytes of the chunks in flight
+  bool ended = false;
+  const auto fill = [&] {
+    while (!ended && work.in_flight() < work.slots() &&
+           (work.in_flight() == 0 || ahead < kAheadBytes) &&
+           (units.empty() || units.back().op == kChunk)) {
+      bool later = false;
+      std::optional<Unit> unit =
+          indexed ? next_indexed(next_index, units.empty(), later) : next_linear(at);
+      if (later) return;
+      if (!unit || unit->error) ended = true;
+      if (!unit) return;
+      if (unit->op == kChunk && !unit->error) {
+        ChunkSlot& slot = slots[next_slot];
+        slot.offset = unit->offset;
+        slot.length = unit->length;
+        slot.indexed = indexed;
+        unit->slot = next_slot;
+        next_slot = (next_slot + 1) % slots.size();
+        ahead += unit->length;
+        work.queue(unit->slot);
+      }
+      units.push_back(*unit);
+    }
+  };
+  for (fill(); !units.empty(); fill()) {
+    const Unit unit = units.front();
+    units.pop_front();
+    if (unit.error) std::rethrow_exception(unit.error);
+    if (unit.op == kChunk) {
+      work.take(unit.slot);
+      ahead -= unit.length;
+      chunk_records(slots[unit.slot].plain, unit.offset);
+      continue;
+    }
+    read_at(unit.offset + kRecordHeaderBytes, unit.length, record);
+    try {
+      chunk_record(unit.op, record, unit.offset, 0);
+    } catch (const ByteError& e) {
+      throw error(unit.offset, fmt::format("a record (opcode 0x{:02x}): {}", unit.op, e.what()));
+    }
   }
 }
 
-McapReader::McapReader(const std::filesystem::path& path) : state_(std::make_unique<State>()) {
+McapReader::McapReader(const std::filesystem::path& path, unsigned jobs)
+    : state_(std::make_unique<State>()) {
   State& s = *state_;
   s.name = path.string();
+  s.jobs = core::job_count(jobs, 64);
   std::error_code ec;
   s.size = std::filesystem::file_size(path, ec);
-  s.file = ec ? nullptr : std::fopen(path.c_str(), "rb");
-  if (s.file == nullptr) {
+  s.fd = ec ? -1 : ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (s.fd < 0) {
     throw core::InputError({s.name, {}, {}, {}}, "cannot open the file", "check the path");
   }
   std::vector<std::uint8_t> head;
@@ -368,13 +515,17 @@ void McapReader::read_messages(const std::function<bool(const McapChannel&)>& wa
   s.want = &wanted;
   s.on_message = &on_message;
   s.wanted.clear();
-  if (s.summary && !s.chunk_indexes.empty()) {
-    s.read_indexed();
-  } else {
-    s.read_linear();
+  const auto done = [&s] {
+    s.want = nullptr;
+    s.on_message = nullptr;
+  };
+  try {
+    s.read_units(s.summary && !s.chunk_indexes.empty());
+  } catch (...) {
+    done();
+    throw;
   }
-  s.want = nullptr;
-  s.on_message = nullptr;
+  done();
 }
 
 core::InputError McapReader::error(const std::string& where, const std::string& problem,

@@ -1,7 +1,12 @@
 #include "dynpos/io/bag_log.hpp"
 
+#include <fmt/format.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
 
 #include "io_test_util.hpp"
 #include "mcap_test_writer.hpp"
@@ -62,6 +67,85 @@ TEST(ReadBagFile, AStampThatIsNotBuiltinTimeIsNotAHeaderStamp) {
   const FileLog log = read_bag_file(path, map, BagTime::kAuto);
   EXPECT_EQ(log.report.time_format, "receive time");
   EXPECT_EQ(*log.origin_ns, 5);
+}
+
+// Two topics at their own rates over many chunks, /b's messages out of order in places.
+McapWriter two_rates(const McapLayout& layout, int bad_message = -1) {
+  McapWriter w(layout);
+  const std::uint16_t s = w.schema("std_msgs/msg/Float64", "float64 data\n");
+  const std::uint16_t a = w.channel(s, "/a");
+  const std::uint16_t b = w.channel(s, "/b");
+  for (int k = 0; k < 3000; ++k) {
+    const std::uint64_t t = 1'700'000'000'000'000'000ULL + 10'000'000ULL * k;
+    w.message(a, t, CdrWriter().put(std::sin(0.01 * k)).bytes());
+    if (k == bad_message) w.message(b, t, {0x00, 0x01, 0x00, 0x00, 0x01});  // cut short
+    if (k % 4 == 0)
+      w.message(b, k % 40 == 0 ? t + 45'000'000 : t, CdrWriter().put(1.0 * k).bytes());
+  }
+  return w;
+}
+
+ColumnMap two_rates_map() {
+  ColumnMap map;
+  map.set_column("time", "time");
+  map.set_column("input", "/b.data");
+  map.set_column("output", "/a.data");
+  return map;
+}
+
+TEST(ReadBagFile, ColumnsDoNotDependOnTheThreads) {
+  const TempDir dir;
+  for (const bool summary : {true, false}) {
+    const auto path = dir / "rates.mcap";
+    two_rates(McapLayout{true, "zstd", 64, summary, true}).write(path);
+    const FileLog one = read_bag_file(path, two_rates_map(), BagTime::kAuto, 1);
+    ASSERT_EQ(one.log.size(), 3000u);
+    ASSERT_EQ(one.more.size(), 1u);
+    EXPECT_EQ(one.more[0].log.size(), 750u);
+    for (const unsigned jobs : {2u, 4u}) {
+      const FileLog many = read_bag_file(path, two_rates_map(), BagTime::kAuto, jobs);
+      EXPECT_EQ(many.log.time(), one.log.time());
+      EXPECT_EQ(many.log.values("output"), one.log.values("output"));
+      ASSERT_EQ(many.more.size(), 1u);
+      EXPECT_EQ(many.more[0].log.time(), one.more[0].log.time());
+      EXPECT_EQ(many.more[0].log.values("input"), one.more[0].log.values("input"));
+      EXPECT_EQ(*many.more[0].origin_ns, *one.more[0].origin_ns);
+    }
+  }
+}
+
+// A message that does not match its schema, decoded as its chunk is handed on, comes before a
+// damaged chunk after it that a thread may have read long before: the message is the error.
+TEST(ReadBagFile, TheFirstBadMessageOrChunkInFileOrderIsTheError) {
+  const TempDir dir;
+  testing::Bytes bytes = two_rates(McapLayout{true, "zstd", 64, true, true}, 1000).finish();
+  std::vector<std::size_t> chunks;
+  for (std::size_t at = 8; at + 9 <= bytes.size() && bytes[at] != 0x0F;) {
+    std::uint64_t length = 0;
+    std::memcpy(&length, bytes.data() + at + 1, 8);
+    if (bytes[at] == 0x06) chunks.push_back(at);
+    at += 9 + static_cast<std::size_t>(length);
+  }
+  // Message 1000 of /a and its /b neighbours: in chunk (1000 + 250) / 64 = 19.
+  ASSERT_GT(chunks.size(), 30u);
+  bytes[chunks[25] + 9 + 24] ^= 0x01;  // a CRC after it
+  const auto path = dir / "bad.mcap";
+  std::ofstream(path, std::ios::binary)
+      .write(reinterpret_cast<const char*>(bytes.data()),
+             static_cast<std::streamsize>(bytes.size()));
+  std::string first;
+  for (const unsigned jobs : {1u, 2u, 4u}) {
+    for (int run = 0; run < 5; ++run) {
+      const auto e = testing::caught_input_error(
+          [&] { read_bag_file(path, two_rates_map(), BagTime::kAuto, jobs); });
+      ASSERT_TRUE(e);
+      if (first.empty()) first = e->what();
+      EXPECT_EQ(e->what(), first) << jobs << " jobs";
+    }
+  }
+  EXPECT_THAT(first, ::testing::HasSubstr("bad.mcap (/b): at byte "));
+  EXPECT_THAT(
+      first, ::testing::HasSubstr(fmt::format("of the chunk at byte {}: the message", chunks[19])));
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "dynpos/io/cdr_decoder.hpp"
 
+#include <fmt/format.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -70,6 +71,50 @@ TEST(CdrDecoder, PicksFieldsOfANestedMessageInBothByteOrders) {
               ::testing::ElementsAre("header.stamp.sec", "header.stamp.nanosec", "status.status",
                                      "status.service", "latitude", "longitude", "altitude",
                                      "position_covariance[0]", "position_covariance_type"));
+}
+
+// The compiled plan reads what the walk reads: the same values, and for every cut of the
+// message (and XCDR2's alignment) the same error at the same offset.
+TEST(CdrDecoder, ThePlanEqualsTheWalkOnEveryCutOfAMessage) {
+  const Ros2Schema schema = Ros2Schema::parse("sensor_msgs/msg/NavSatFix", kNavSatFix);
+  const std::vector<std::string> paths = {"position_covariance[4]", "header.stamp.nanosec",
+                                          "altitude", "status.service"};
+  const CdrDecoder d(schema, paths);
+  for (const bool big : {false, true}) {
+    for (const std::uint8_t xcdr2 : {0, 6}) {
+      std::vector<std::uint8_t> whole = nav_sat_fix(big);
+      whole[1] = static_cast<std::uint8_t>(whole[1] + xcdr2);
+      for (std::size_t n = 0; n <= whole.size(); ++n) {
+        const std::vector<std::uint8_t> cut(whole.begin(),
+                                            whole.begin() + static_cast<std::ptrdiff_t>(n));
+        std::vector<double> planned(paths.size()), walked(paths.size());
+        std::string plan_error, walk_error;
+        try {
+          d.decode(cut, planned);
+        } catch (const CdrError& e) {
+          plan_error = fmt::format("{} at {}", e.what(), e.offset);
+        }
+        try {
+          d.decode_by_walking(cut, walked);
+        } catch (const CdrError& e) {
+          walk_error = fmt::format("{} at {}", e.what(), e.offset);
+        }
+        EXPECT_EQ(plan_error, walk_error) << n;
+        if (walk_error.empty()) {
+          for (std::size_t i = 0; i < paths.size(); ++i) {
+            EXPECT_TRUE(planned[i] == walked[i] ||
+                        (std::isnan(planned[i]) && std::isnan(walked[i])))
+                << n << " " << paths[i];
+          }
+        }
+      }
+      if (xcdr2 != 0) continue;  // written aligned for XCDR1: read otherwise as XCDR2
+      std::vector<double> v(paths.size());
+      d.decode(whole, v);
+      EXPECT_EQ(v[0], 0.1 * 4);
+      EXPECT_EQ(v[2], 42.5);
+    }
+  }
 }
 
 TEST(CdrDecoder, SequencesAndStrings) {

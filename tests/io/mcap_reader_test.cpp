@@ -1,5 +1,6 @@
 #include "dynpos/io/mcap_reader.hpp"
 
+#include <fmt/format.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -7,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "../source_dir.hpp"
 #include "io_test_util.hpp"
 #include "mcap_test_writer.hpp"
 
@@ -49,8 +51,8 @@ struct Read {
   std::vector<double> values;
 };
 
-Read read_all(const std::filesystem::path& path, const std::string& only = {}) {
-  McapReader reader(path);
+Read read_all(const std::filesystem::path& path, const std::string& only = {}, unsigned jobs = 0) {
+  McapReader reader(path, jobs);
   Read out;
   reader.read_messages([&](const McapChannel& c) { return only.empty() || c.topic == only; },
                        [&](const McapMessage& m) {
@@ -142,6 +144,118 @@ TEST(McapReader, BadCrcIsAnError) {
   ASSERT_TRUE(e);
   EXPECT_THAT(e->what(), HasSubstr("the chunk's CRC is"));
   EXPECT_THAT(e->what(), HasSubstr("crc.mcap"));
+}
+
+// A message as handed on: its channel, times, bytes and position.
+struct Seen {
+  std::uint16_t channel;
+  std::uint64_t log_time_ns;
+  Bytes data;
+  std::string position;
+  bool operator==(const Seen&) const = default;
+};
+
+std::vector<Seen> every_message(const std::filesystem::path& path, unsigned jobs) {
+  McapReader reader(path, jobs);
+  std::vector<Seen> out;
+  reader.read_messages([](const McapChannel& c) { return c.topic != "/skipped"; },
+                       [&](const McapMessage& m) {
+                         out.push_back({m.channel_id, m.log_time_ns,
+                                        Bytes(m.data.begin(), m.data.end()), m.position()});
+                       });
+  return out;
+}
+
+// The offsets of the file's Chunk records, from its start (records: opcode, u64 length).
+std::vector<std::size_t> chunk_offsets(const Bytes& b) {
+  std::vector<std::size_t> out;
+  for (std::size_t at = 8; at + 9 <= b.size();) {
+    std::uint64_t length = 0;
+    std::memcpy(&length, b.data() + at + 1, 8);
+    if (b[at] == 0x06) out.push_back(at);
+    if (b[at] == 0x02) break;
+    at += 9 + static_cast<std::size_t>(length);
+  }
+  return out;
+}
+
+// Three topics over many chunks, one of them never wanted.
+McapWriter many_chunks(const McapLayout& layout) {
+  McapWriter w(layout);
+  const std::uint16_t s = w.schema("std_msgs/msg/Float64", std::string(testing::kFloat64Msg));
+  const std::uint16_t a = w.channel(s, "/a");
+  const std::uint16_t b = w.channel(s, "/b");
+  const std::uint16_t skipped = w.channel(s, "/skipped");
+  for (int k = 0; k < 2000; ++k) {
+    w.message(a, 1000 + 10 * k, CdrWriter().put(0.5 * k).bytes());
+    if (k % 3 == 0) w.message(b, 1001 + 10 * k, CdrWriter().put(-1.0 * k).bytes());
+    if (k % 7 == 0) w.message(skipped, 1002 + 10 * k, CdrWriter().put(7.0).bytes());
+  }
+  return w;
+}
+
+TEST(McapReader, ThreadsHandOnTheSameMessagesInTheSameOrder) {
+  const TempDir dir;
+  const std::vector<McapLayout> layouts = {
+      layout(true, "zstd", 37),        // through the chunk indexes
+      layout(true, "lz4", 50, false),  // read from the start: no summary
+      layout(true, "", 101),           // uncompressed chunks
+      layout(false, "", 0, false),     // no chunk at all
+  };
+  for (std::size_t i = 0; i < layouts.size(); ++i) {
+    const auto path =
+        write_bytes(dir, "many" + std::to_string(i) + ".mcap", many_chunks(layouts[i]).finish());
+    const std::vector<Seen> one = every_message(path, 1);
+    ASSERT_EQ(one.size(), 2000u + 667u) << i;
+    for (const unsigned jobs : {2u, 3u, 8u}) {
+      EXPECT_TRUE(every_message(path, jobs) == one) << "layout " << i << ", " << jobs << " jobs";
+    }
+  }
+}
+
+// The error thrown is the first in file order, whatever thread found it and when.
+TEST(McapReader, TheFirstBadChunkInFileOrderIsTheErrorOnAnyNumberOfThreads) {
+  const TempDir dir;
+  for (const bool summary : {true, false}) {
+    Bytes bytes = many_chunks(layout(true, "zstd", 40, summary)).finish();
+    const std::vector<std::size_t> chunks = chunk_offsets(bytes);
+    ASSERT_GT(chunks.size(), 40u);
+    bytes[chunks[9] + 9 + 24] ^= 0x01;   // its CRC
+    bytes[chunks[30] + 9 + 50] ^= 0xFF;  // its compressed records
+    bytes[chunks[31] + 9 + 24] ^= 0x01;
+    const auto path = write_bytes(dir, "bad.mcap", bytes);
+    const std::string expected = fmt::format("bad.mcap: at byte {}: the chunk's CRC", chunks[9]);
+    for (const unsigned jobs : {1u, 2u, 4u}) {
+      for (int run = 0; run < 10; ++run) {
+        const auto e = caught_input_error([&] { every_message(path, jobs); });
+        ASSERT_TRUE(e);
+        ASSERT_THAT(e->what(), HasSubstr(expected)) << jobs << " jobs, run " << run;
+      }
+    }
+    // Bad from the first chunk read ahead on: the chunk at the head, not one behind it.
+    bytes[chunks[1] + 9 + 24] ^= 0x01;
+    const auto early = write_bytes(dir, "early.mcap", bytes);
+    for (const unsigned jobs : {1u, 2u, 4u}) {
+      const auto e = caught_input_error([&] { every_message(early, jobs); });
+      ASSERT_TRUE(e);
+      EXPECT_THAT(e->what(), HasSubstr(fmt::format("at byte {}: the chunk's CRC", chunks[1])));
+    }
+  }
+}
+
+// A fuzz finding: zstd's error for bad data depended on the room the decompressor had left
+// from the chunk before, so one thread and several named the same chunk's problem differently.
+TEST(McapReader, AChunksErrorDoesNotDependOnTheChunksBeforeIt) {
+  const std::string path = std::string(DYNPOS_SOURCE_DIR) +
+                           "/fuzz/regressions/mcap_reader/zstd_error_after_a_larger_chunk.mcap";
+  const auto alone = caught_input_error([&] { every_message(path, 1); });
+  ASSERT_TRUE(alone);
+  EXPECT_THAT(alone->what(), HasSubstr("at byte 411: the chunk's zstd data: zstd:"));
+  for (const unsigned jobs : {2u, 3u}) {
+    const auto threads = caught_input_error([&] { every_message(path, jobs); });
+    ASSERT_TRUE(threads);
+    EXPECT_EQ(std::string(threads->what()), std::string(alone->what())) << jobs << " jobs";
+  }
 }
 
 Bytes magic() { return {0x89, 'M', 'C', 'A', 'P', '0', '\r', '\n'}; }

@@ -24,7 +24,9 @@ namespace dynpos::io {
 /// its own origin (FileLog::origin_ns: its first time stamp, UTC). Throws core::InputError
 /// naming the file, the byte offset and the topic for a bad record or message, a topic the bag
 /// lacks (listing its topics), a field its type lacks (listing its fields) and a schema that is
-/// not ros2msg or messages that are not CDR.
-FileLog read_bag_file(const std::filesystem::path& path, const ColumnMap& map, BagTime time);
+/// not ros2msg or messages that are not CDR. Chunks are decompressed on `jobs` threads (0 =
+/// every core; McapReader); the result does not depend on it.
+FileLog read_bag_file(const std::filesystem::path& path, const ColumnMap& map, BagTime time,
+                      unsigned jobs = 0);
 
 }  // namespace dynpos::io

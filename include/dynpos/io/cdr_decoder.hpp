@@ -8,6 +8,12 @@
 /// length (with its terminating NUL) and the bytes, a sequence a uint32 count and the elements,
 /// a fixed array its elements only. Every count and length is checked against the bytes left
 /// before it is used. Only the fields up to the last wanted one are walked.
+///
+/// The walk is compiled once per schema and paths into a plan: runs of fields that are skipped
+/// become one aligned skip, nested messages are laid out in line, and only sequences and arrays
+/// of messages are walked field by field. A message the plan cannot read is walked again by the
+/// schema, so that its error (problem and offset) is the walk's; values and errors are those of
+/// decode_by_walking().
 
 #include <cstddef>
 #include <cstdint>
@@ -39,6 +45,9 @@ class CdrDecoder {
   /// Decodes `message` into values[i] for paths[i] (values.size() == paths.size()), NaN for an
   /// element past the end of its sequence. Throws CdrError.
   void decode(std::span<const std::uint8_t> message, std::span<double> values) const;
+  /// The same by walking the schema field by field for every message (the reference the plan
+  /// is checked against).
+  void decode_by_walking(std::span<const std::uint8_t> message, std::span<double> values) const;
 
   const Ros2Schema& schema() const noexcept { return schema_; }
 
@@ -60,6 +69,28 @@ class CdrDecoder {
 
  private:
   struct Reader;
+  /// One step of the plan.
+  struct Op {
+    enum class Kind : std::uint8_t { kSkip, kRead, kString, kField };
+    Kind kind = Kind::kSkip;
+    std::uint8_t align = 1;  ///< kSkip, kRead: of its first (or only) value
+    Ros2Primitive primitive = Ros2Primitive::kUint8;  ///< kRead; kString: string or wstring
+    std::uint64_t bytes = 0;                          ///< kSkip
+    std::int32_t slot = -1;                           ///< kRead
+    // kField, an array walked as before: schema_.types[type].fields[field], and what is wanted
+    // of it, nodes_[node].wants[first, end) (node -1: nothing).
+    std::uint32_t type = 0;
+    std::uint32_t field = 0;
+    std::int32_t node = -1;
+    std::uint32_t first = 0;
+    std::uint32_t end = 0;
+  };
+  Reader start(std::span<const std::uint8_t> message, std::span<double> values) const;
+  void finish(std::span<double> values) const;
+  void compile(std::size_t type, std::int32_t node, std::size_t fields);
+  void add_skip(std::size_t align, std::uint64_t bytes);
+  void run(Reader& r, std::span<double> values) const;
+  void skip_array(const Ros2Field& field, Reader& r) const;
   void walk(std::size_t type, const Node* node, Reader& r, std::span<double> values) const;
   void read_array(const Ros2Field& field, const Want* want, const Want* end, Reader& r,
                   std::span<double> values) const;
@@ -69,6 +100,7 @@ class CdrDecoder {
   Ros2Schema schema_;
   std::vector<Node> nodes_;                                    // nodes_[0]: the root
   std::vector<std::pair<std::int32_t, std::int32_t>> copies_;  // a repeated path: to ← from
+  std::vector<Op> plan_;
 };
 
 }  // namespace dynpos::io

@@ -8,8 +8,12 @@
 /// Footer; MessageIndex, Attachment, Metadata, Statistics and the other index records are
 /// skipped. With a summary holding chunk indexes, only the chunks that hold a wanted channel
 /// are read, in file order; without (a file cut short, an unindexed writer), the file is read
-/// from its start to DataEnd or its end. Memory: one chunk (compressed and decompressed) at a
-/// time, at most kMaxMcapChunkBytes each.
+/// from its start to DataEnd or its end. Chunks are read (pread), decompressed and their CRC
+/// checked on worker threads ahead of the calling thread, which hands their messages on in file
+/// order; the messages, their order and the errors do not depend on the number of threads (the
+/// first error in file order is the one thrown). Memory: at most two chunks per thread and one
+/// more in flight (compressed and decompressed; within 64 MiB of compressed bytes read ahead
+/// beyond the first), each at most kMaxMcapChunkBytes; never the whole file.
 ///
 /// Every size a record declares is checked against the bytes left before anything is
 /// allocated: a bad file is a core::InputError naming the file, the byte offset of the record
@@ -68,8 +72,9 @@ struct McapMessage {
 class McapReader {
  public:
   /// Opens `path`: checks the magic and reads the summary section when the footer points to
-  /// one. Throws core::InputError for a file that cannot be read or is not MCAP.
-  explicit McapReader(const std::filesystem::path& path);
+  /// one. Chunks are decompressed on `jobs` worker threads (0 = every core; 1 = none: all on
+  /// the calling thread). Throws core::InputError for a file that cannot be read or is not MCAP.
+  explicit McapReader(const std::filesystem::path& path, unsigned jobs = 0);
   ~McapReader();
   McapReader(const McapReader&) = delete;
   McapReader& operator=(const McapReader&) = delete;
