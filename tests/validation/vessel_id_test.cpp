@@ -102,7 +102,7 @@ TEST(VesselIdOnTheVirtualTrial, TheProgrammeGivesTheHullBack) {
   const analysis::VesselIdReport report = identify(logs, kVessel);
   std::cout << analysis::to_text(report);
   // Speed is not asserted here (a loaded machine takes several times longer): the programme
-  // takes about 60 s of CPU on 2 threads (docs/cli.md); printed for the record.
+  // takes about 39 s of CPU (docs/performance.md); printed for the record.
   std::printf("identify vessel: the programme in %.1f s\n", report.run_time_s);
   int determined = 0;
   for (const analysis::VesselParameter& p : report.parameters) {
