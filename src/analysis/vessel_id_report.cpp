@@ -30,9 +30,9 @@ nlohmann::json number(double v) {
   return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
 }
 
-// A TOML float: a decimal point or an exponent always.
-std::string toml_number(double v) {
-  std::string s = fmt::format("{:.6g}", v);
+// A TOML float with `digits` significant digits: a decimal point or an exponent always.
+std::string toml_number(double v, int digits = 6) {
+  std::string s = fmt::format("{:.{}g}", v, digits);
   if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
   return s;
 }
@@ -44,8 +44,13 @@ std::string percent_cell(double v) {
 // "KEY = VALUE  # identified: …" for a determined parameter.
 std::string value_line(const std::string& indent, const std::string& key,
                        const VesselParameter& p) {
+  // At least 6 significant digits, and enough that the rounding is under a tenth of σ (a thrust
+  // map the DP system's feedback gives to rounding).
+  const double rel = p.sigma / std::abs(p.value);
+  const int digits =
+      rel > 0.0 ? std::clamp(static_cast<int>(std::ceil(-std::log10(rel))) + 2, 6, 17) : 6;
   return fmt::format("{}{} = {}  # {}: sigma {:.3g} ({:.1f} %), {}; start {}", indent, key,
-                     toml_number(p.value), p.determined ? "identified" : "fitted", p.sigma,
+                     toml_number(p.value, digits), p.determined ? "identified" : "fitted", p.sigma,
                      100.0 * p.sigma / std::abs(p.value), p.note, toml_number(p.start));
 }
 

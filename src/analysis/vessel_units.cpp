@@ -163,7 +163,7 @@ VesselParameter parameter(const std::string& key, const std::string& unit, doubl
   p.value = c->value;
   p.sigma = c->sigma;
   p.determined = p.fitted = true;
-  p.note = fmt::format("{} {} in {}", c->count, how, fmt::join(c->sources, ", "));
+  p.note = fmt::format("{}: {}, in {}", how, c->count, fmt::join(c->sources, ", "));
   return p;
 }
 

@@ -138,6 +138,22 @@ TEST(VesselUnitsIdentify, AUnitTheLogsDoNotExciteIsNotDeterminedWithTheExcitatio
   EXPECT_NE(dead.note.find("to determine it:"), std::string::npos) << dead.note;
 }
 
+TEST(VesselUnitsIdentify, AValueIsWrittenFinerThanItsSigma) {
+  // A thrust map the DP system's own feedback gives to rounding: σ 4.4·10⁻¹³ of the value.
+  VesselIdReport report;
+  report.vessel_text = "[propeller]\nkt_forward = 0.5\ndead_time_s = 1.3\n";
+  report.parameters.push_back(
+      {"propeller.kt_forward", "1", 0.5, 0.49573170731707317, 2.2e-13, true, true, "maps"});
+  report.parameters.push_back(
+      {"propeller.dead_time_s", "s", 1.3, 1.2950512, 0.0039, true, true, "steps"});
+  const std::string text = identified_vessel_text(report);
+  const std::size_t kt = text.find("kt_forward = ");
+  ASSERT_NE(kt, std::string::npos) << text;
+  EXPECT_LE(std::abs(std::stod(text.substr(kt + 13)) - 0.49573170731707317), 0.1 * 2.2e-13) << text;
+  // σ of 0.3 %: the usual 6 significant digits.
+  EXPECT_NE(text.find("dead_time_s = 1.29505  # identified"), std::string::npos) << text;
+}
+
 TEST(VesselUnitsIdentify, ALayoutHasNoUnitValues) {
   scenario::VesselConfig start;
   start.thrusters.resize(1);
