@@ -356,7 +356,9 @@ def identify_vessel(logs, col=None, unit=None, map=None, *, out=None, json=None,
     log options apply to each). Options: ``vessel`` (the starting vessel file), ``holdout``
     (the LOG held out and scored, ``"none"``), ``max_rel_sigma``, ``max_rel_sigma_fitted``,
     ``step``, ``sample``, ``stretch`` [s], ``jobs``; ``out`` (the identified vessel file), ``report`` (folder). Table:
-    ``parameters`` (``key``, ``value``, ``sigma``, ``determined``)."""
+    ``parameters`` (``key``, ``value``, ``sigma``, ``determined``; the hull's, the wind's and
+    the model's units' dead times and thrust maps); ``units``: each unit's step fits and
+    thrust map."""
     if isinstance(logs, (str, os.PathLike, Log)) or _is_frame(logs):
         logs = [logs]
     log_options = {k: v for k, v in options.items() if k in _LOG_OPTIONS}

@@ -4,11 +4,14 @@
 #include "vessel_fit.hpp"
 
 #include <ceres/ceres.h>
-#include <ceres/covariance.h>
+
+#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <stdexcept>
 
 #include "dynpos/core/error.hpp"
 
@@ -49,8 +52,9 @@ struct TestResidual {
     std::vector<Eigen::Vector3d> sim;
     try {
       const scenario::HullDrive drive(fit->vessel(theta));
-      sim = drive.simulate(fit->tests()[k]->drive, Eigen::Vector3d(nu[0], nu[1], nu[2]),
-                           Eigen::Vector2d(nu[3], nu[4]), Eigen::Vector2d(nu[5], nu[6]));
+      sim = drive.simulate(fit->tests()[k]->drive, fit->stages(k),
+                           Eigen::Vector3d(nu[0], nu[1], nu[2]), Eigen::Vector2d(nu[3], nu[4]),
+                           Eigen::Vector2d(nu[5], nu[6]));
     } catch (const core::InputError&) {
       return false;  // a value out of its range: Ceres tries a shorter step
     }
@@ -85,6 +89,21 @@ HullFit::HullFit(const scenario::VesselConfig& start, std::vector<FitParameter> 
       parameters_(std::move(parameters)),
       tests_(std::move(tests)),
       jobs_(jobs == 0 ? 2 : jobs) {
+  scenario::VesselConfig copy = start_;
+  const std::vector<core::ParamSection> sections = scenario::vessel_param_sections(copy);
+  for (const FitParameter& p : parameters_) {
+    const double* f = field(copy, p.key);
+    std::optional<std::pair<std::size_t, std::size_t>> slot;
+    for (std::size_t s = 0; s < sections.size() && f != nullptr; ++s) {
+      for (std::size_t i = 0; i < sections[s].fields.size(); ++i) {
+        if (sections[s].fields[i].value == f) slot.emplace(s, i);
+      }
+    }
+    if (!slot) throw std::logic_error("vessel_fit: no vessel-file key " + p.key);
+    slots_.push_back(*slot);
+  }
+  const scenario::HullDrive units(start_);
+  for (const FitTest* t : tests_) stages_.push_back(units.stages(t->drive));
   for (std::size_t k = 0; k < tests_.size(); ++k) {
     nuisance[k] << tests_[k]->nu0_guess, 0.0, 0.0, 0.0, 0.0;
     auto* cost = new ceres::DynamicNumericDiffCostFunction<TestResidual, ceres::FORWARD>(
@@ -105,8 +124,12 @@ HullFit::~HullFit() = default;
 
 scenario::VesselConfig HullFit::vessel(const std::vector<double>& t) const {
   scenario::VesselConfig v = start_;
+  if (parameters_.empty()) return v;
+  // One pass over the tables for every parameter (a key lookup each was a fifth of the cost of
+  // an evaluation).
+  const std::vector<core::ParamSection> sections = scenario::vessel_param_sections(v);
   for (std::size_t i = 0; i < parameters_.size(); ++i) {
-    *field(v, parameters_[i].key) = parameters_[i].value(t[i]);
+    *sections[slots_[i].first].fields[slots_[i].second].value = parameters_[i].value(t[i]);
   }
   return v;
 }
@@ -131,7 +154,9 @@ int HullFit::solve(const std::vector<bool>& free, bool hull_fixed, int max_itera
                    std::string* message) {
   hold(impl_->problem, theta, free, hull_fixed);
   ceres::Solver::Options o;
-  o.linear_solver_type = ceres::DENSE_QR;
+  // JᵀJ is an arrow: the θ against everything, each stretch's nuisance against itself. Its
+  // sparse Cholesky costs little; a dense QR of the whole Jacobian cost most of a solve.
+  o.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
   o.max_num_iterations = max_iterations;
   o.function_tolerance = 1e-7;
   o.parameter_tolerance = 1e-7;
@@ -160,27 +185,31 @@ double HullFit::residual_variance(const std::vector<bool>& free) {
 std::vector<double> HullFit::theta_sigma(const std::vector<bool>& free, double variance) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   std::vector<double> out(theta.size(), nan);
-  bool any = false;
-  for (bool f : free) any = any || f;
-  if (!any) return out;
-  hold(impl_->problem, theta, free, false);
-  ceres::Covariance::Options co;
-  co.algorithm_type = ceres::DENSE_SVD;
-  co.null_space_rank = -1;  // a direction the data do not see: dropped, not an error
-  co.min_reciprocal_condition_number = 1e-14;
-  co.num_threads = static_cast<int>(jobs_);
-  co.apply_loss_function = false;
-  ceres::Covariance cov(co);
-  std::vector<std::pair<const double*, const double*>> pairs;
+  std::vector<Eigen::Index> cols;
   for (std::size_t i = 0; i < theta.size(); ++i) {
-    if (free[i]) pairs.emplace_back(&theta[i], &theta[i]);
+    if (i < free.size() && free[i]) cols.push_back(static_cast<Eigen::Index>(i));
   }
-  if (!cov.Compute(pairs, &impl_->problem)) return out;
-  for (std::size_t i = 0; i < theta.size(); ++i) {
+  if (cols.empty()) return out;
+  const std::size_t n_free = cols.size();
+  const Eigen::MatrixXd a = normal_matrix(nullptr);
+  for (auto i = static_cast<Eigen::Index>(theta.size()); i < a.rows(); ++i) cols.push_back(i);
+  const auto m = static_cast<Eigen::Index>(cols.size());
+  Eigen::MatrixXd sub(m, m);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    for (Eigen::Index j = 0; j < m; ++j) sub(i, j) = a(cols[i], cols[j]);
+  }
+  // The pseudo-inverse: eigenvalues under 1e-14 of the largest (a direction the data do not
+  // see) are dropped, not an error.
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(sub);
+  const Eigen::VectorXd& ev = eig.eigenvalues();
+  const double tol = ev.cwiseAbs().maxCoeff() * 1e-14;
+  for (std::size_t k = 0; k < n_free; ++k) {
     double var = 0.0;
-    if (free[i] && cov.GetCovarianceBlock(&theta[i], &theta[i], &var) && var > 0.0) {
-      out[i] = std::sqrt(var * variance);
+    for (Eigen::Index e = 0; e < m; ++e) {
+      const double x = eig.eigenvectors()(static_cast<Eigen::Index>(k), e);
+      if (ev[e] > tol) var += x * x / ev[e];
     }
+    if (var > 0.0) out[static_cast<std::size_t>(cols[k])] = std::sqrt(var * variance);
   }
   return out;
 }
@@ -198,23 +227,27 @@ Eigen::MatrixXd HullFit::normal_matrix(std::vector<Eigen::VectorXd>* theta_infor
   impl_->problem.Evaluate(eo, nullptr, nullptr, nullptr, &crs);
   const auto cols = static_cast<Eigen::Index>(crs.num_cols);
   Eigen::MatrixXd jtj = Eigen::MatrixXd::Zero(cols, cols);
-  Eigen::VectorXd row(cols);
   const auto n_theta = static_cast<Eigen::Index>(theta.size());
   if (theta_information != nullptr) {
     theta_information->assign(tests_.size(), Eigen::VectorXd::Zero(n_theta));
   }
   std::size_t test = 0, test_end = tests_.empty() ? 0 : tests_[0]->residual_count();
+  // A row has the θ and one test's nuisance: the outer product of its non-zeros only.
   for (int i = 0; i < crs.num_rows; ++i) {
     while (static_cast<std::size_t>(i) >= test_end && test + 1 < tests_.size()) {
       test_end += tests_[++test]->residual_count();
     }
-    row.setZero();
     const auto a = static_cast<std::size_t>(crs.rows[static_cast<std::size_t>(i)]);
     const auto b = static_cast<std::size_t>(crs.rows[static_cast<std::size_t>(i) + 1]);
-    for (std::size_t j = a; j < b; ++j) row[crs.cols[j]] = crs.values[j];
-    jtj.selfadjointView<Eigen::Lower>().rankUpdate(row);
-    if (theta_information != nullptr) {
-      (*theta_information)[test] += row.head(n_theta).cwiseAbs2();
+    for (std::size_t j = a; j < b; ++j) {
+      const double vj = crs.values[j];
+      for (std::size_t k = a; k <= j; ++k) {
+        jtj(std::max(crs.cols[j], crs.cols[k]), std::min(crs.cols[j], crs.cols[k])) +=
+            vj * crs.values[k];
+      }
+      if (theta_information != nullptr && crs.cols[j] < n_theta) {
+        (*theta_information)[test][crs.cols[j]] += vj * vj;
+      }
     }
   }
   return jtj.selfadjointView<Eigen::Lower>();
@@ -259,7 +292,7 @@ void HullFit::widen_for_correlation() {
 std::vector<Eigen::Vector3d> HullFit::simulate(std::size_t k) const {
   const scenario::HullDrive drive(vessel(theta));
   const Nuisance& nu = nuisance[k];
-  return drive.simulate(tests_[k]->drive, nu.head<3>(), nu.segment<2>(3), nu.tail<2>());
+  return drive.simulate(tests_[k]->drive, stages_[k], nu.head<3>(), nu.segment<2>(3), nu.tail<2>());
 }
 
 }  // namespace dynpos::analysis::vessel_fit

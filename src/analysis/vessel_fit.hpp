@@ -8,6 +8,7 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "dynpos/scenario/hull_drive.hpp"
@@ -68,6 +69,8 @@ class HullFit {
   scenario::VesselConfig vessel(const std::vector<double>& t) const;
   const std::vector<FitParameter>& parameters() const noexcept { return parameters_; }
   const std::vector<const FitTest*>& tests() const noexcept { return tests_; }
+  /// The stage inputs of test k's drive (the units are not fitted: one set for every θ).
+  const scenario::DriveStages& stages(std::size_t k) const noexcept { return stages_[k]; }
 
   /// Solves for the nuisance and the parameters of `free` (the others held at theta; all of them
   /// when hull_fixed); returns the number of iterations; `message` gets Ceres' report when it did
@@ -76,7 +79,8 @@ class HullFit {
             std::string* message);
 
   /// σ of θ of the free parameters (NaN for the others) from the Jacobian at the current
-  /// values (ceres::Covariance; the nuisance is marginalised) times √variance.
+  /// values (the pseudo-inverse of JᵀJ over them and the nuisance, which is marginalised;
+  /// directions the data do not see dropped) times √variance.
   std::vector<double> theta_sigma(const std::vector<bool>& free, double variance);
 
   /// Multiplies each test's channel scale by √((1 + ρ)/(1 − ρ)), ρ ∈ [−0.8, 0.95] the lag-one
@@ -103,7 +107,10 @@ class HullFit {
   std::unique_ptr<Impl> impl_;
   scenario::VesselConfig start_;
   std::vector<FitParameter> parameters_;
+  // Where each parameter is in vessel_param_sections(): (section, field).
+  std::vector<std::pair<std::size_t, std::size_t>> slots_;
   std::vector<const FitTest*> tests_;
+  std::vector<scenario::DriveStages> stages_;
   unsigned jobs_;
 };
 

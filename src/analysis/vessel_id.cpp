@@ -21,6 +21,7 @@
 #include "dynpos/scenario/vessel_config.hpp"
 #include "vessel_fit.hpp"
 #include "vessel_test_series.hpp"
+#include "vessel_units.hpp"
 
 namespace dynpos::analysis {
 namespace {
@@ -417,15 +418,23 @@ VesselIdReport run_vessel_id(const VesselIdRequest& request) {
   request.validate();
   VesselIdReport report;
   report.vessel_file = vessel_file_or_default(request.vessel_file);
-  const scenario::VesselConfig start = scenario::load_vessel_config(report.vessel_file);
+  scenario::VesselConfig start = scenario::load_vessel_config(report.vessel_file);
   report.vessel_text = read_text(report.vessel_file);
   const scenario::ThrustFeedback feedback(start);
   std::vector<vessel_fit::LoggedTest> logged;
+  std::vector<vessel_units::LogUnits> unit_logs;
   for (const LogSource& source : request.logs) {
     logged.push_back(vessel_fit::read_test(source, feedback, request.step_s, request.sample_s,
                                            request.stretch_s));
     report.inputs.push_back(logged.back().input);
+    unit_logs.push_back(std::move(logged.back().units));
   }
+  // The units first: the hull is driven by their thrust, so it is fitted with their maps.
+  vessel_units::UnitResult units =
+      vessel_units::identify_units(start, unit_logs, request.max_rel_sigma);
+  unit_logs.clear();
+  vessel_units::apply(start, units.parameters);
+  report.units = std::move(units.units);
   const bool wind = std::all_of(logged.begin(), logged.end(), [](const auto& t) {
     return !t.whole.drive.wind_speed_mps.empty();
   });
@@ -458,6 +467,8 @@ VesselIdReport run_vessel_id(const VesselIdRequest& request) {
   o.fit->normal_matrix(&information);
   report.parameters =
       parameters(s, o, information, request.max_rel_sigma, request.max_rel_sigma_fitted);
+  report.parameters.insert(report.parameters.end(), units.parameters.begin(),
+                           units.parameters.end());
   for (std::size_t k = 0; k < logged.size(); ++k) {
     report.tests.push_back(response(*o.fit, starts[k], starts[k + 1] - starts[k], logged[k]));
   }

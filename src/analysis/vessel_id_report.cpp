@@ -30,9 +30,9 @@ nlohmann::json number(double v) {
   return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
 }
 
-// A TOML float: a decimal point or an exponent always.
-std::string toml_number(double v) {
-  std::string s = fmt::format("{:.6g}", v);
+// A TOML float with `digits` significant digits: a decimal point or an exponent always.
+std::string toml_number(double v, int digits = 6) {
+  std::string s = fmt::format("{:.{}g}", v, digits);
   if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
   return s;
 }
@@ -44,8 +44,13 @@ std::string percent_cell(double v) {
 // "KEY = VALUE  # identified: …" for a determined parameter.
 std::string value_line(const std::string& indent, const std::string& key,
                        const VesselParameter& p) {
+  // At least 6 significant digits, and enough that the rounding is under a tenth of σ (a thrust
+  // map the DP system's feedback gives to rounding).
+  const double rel = p.sigma / std::abs(p.value);
+  const int digits =
+      rel > 0.0 ? std::clamp(static_cast<int>(std::ceil(-std::log10(rel))) + 2, 6, 17) : 6;
   return fmt::format("{}{} = {}  # {}: sigma {:.3g} ({:.1f} %), {}; start {}", indent, key,
-                     toml_number(p.value), p.determined ? "identified" : "fitted", p.sigma,
+                     toml_number(p.value, digits), p.determined ? "identified" : "fitted", p.sigma,
                      100.0 * p.sigma / std::abs(p.value), p.note, toml_number(p.start));
 }
 
@@ -67,6 +72,40 @@ report::Table parameter_table(const VesselIdReport& r) {
          p.determined ? "yes" : "no"});
   }
   return t;
+}
+
+std::string cell(double v, const char* format_spec) {
+  return std::isfinite(v) ? fmt::format(fmt::runtime(format_spec), v) : std::string("—");
+}
+
+// The units' measured dynamics against the starting file's model, and their thrust maps.
+report::Table unit_table(const VesselIdReport& r) {
+  report::Table t;
+  t.header = {"unit",  "steps",   "T [s]",       "σ T [s]",     "T model [s]",
+              "δ [s]", "σ δ [s]", "δ model [s]", "c₊ [N/rps²]", "c₋ [N/rps²]"};
+  for (const UnitIdentification& u : r.units) {
+    t.rows.push_back({u.unit, std::to_string(u.steps), cell(u.time_constant_s, "{:.3f}"),
+                      cell(u.time_constant_sigma_s, "{:.2g}"),
+                      cell(u.model_time_constant_s, "{:.3f}"), cell(u.dead_time_s, "{:.3f}"),
+                      cell(u.dead_time_sigma_s, "{:.2g}"), cell(u.model_dead_time_s, "{:.3f}"),
+                      cell(u.c_forward, "{:.6g}"), cell(u.c_reverse, "{:.6g}")});
+  }
+  return t;
+}
+
+nlohmann::json unit_json(const UnitIdentification& u) {
+  return {{"unit", u.unit},
+          {"steps", u.steps},
+          {"time_constant_s", number(u.time_constant_s)},
+          {"time_constant_sigma_s", number(u.time_constant_sigma_s)},
+          {"dead_time_s", number(u.dead_time_s)},
+          {"dead_time_sigma_s", number(u.dead_time_sigma_s)},
+          {"model_time_constant_s", number(u.model_time_constant_s)},
+          {"model_dead_time_s", number(u.model_dead_time_s)},
+          {"c_forward_N_per_rps2", number(u.c_forward)},
+          {"c_forward_sigma_N_per_rps2", number(u.c_forward_sigma)},
+          {"c_reverse_N_per_rps2", number(u.c_reverse)},
+          {"c_reverse_sigma_N_per_rps2", number(u.c_reverse_sigma)}};
 }
 
 report::Table nrmse_table(const std::vector<TestResponse>& tests) {
@@ -245,6 +284,8 @@ nlohmann::json to_json(const VesselIdReport& r) {
                                  {"fitted", p.fitted},
                                  {"note", p.note}});
   }
+  doc["units"] = nlohmann::json::array();
+  for (const UnitIdentification& u : r.units) doc["units"].push_back(unit_json(u));
   doc["tests"] = nlohmann::json::array();
   nlohmann::json cv = nullptr;
   for (const TestResponse& t : r.tests) {
@@ -271,6 +312,10 @@ std::string to_text(const VesselIdReport& r) {
   for (const VesselParameter& p : r.parameters) {
     if (!p.determined) text += fmt::format("  {}: not determined: {}\n", p.key, p.note);
   }
+  if (!r.units.empty()) {
+    text += "\nUnits: order → shaft speed steps (FOPDT) and thrust maps\n" +
+            report::render_text(unit_table(r));
+  }
   return text + "\n" + report::render_text(nrmse_table(r.tests));
 }
 
@@ -291,9 +336,11 @@ void write_report(const VesselIdReport& r, const std::filesystem::path& dir) {
       "padding:0.3em 0.6em;text-align:right}}td:first-child{{text-align:left}}</style></head>\n"
       "<body><h1>Vessel identification</h1>\n<p>Starting vessel file <code>{}</code>. "
       "Output-error fit of the hull model to the logged u, v, r (docs/theory.md).</p>\n"
-      "<h2>Values</h2>\n{}\n<h2>Measured and re-simulated</h2>\n{}\n{}</body></html>\n",
+      "<h2>Values</h2>\n{}\n<h2>Units</h2>\n<p>Order → shaft speed steps (FOPDT fits) and "
+      "thrust maps, with the starting file's model at the same steps.</p>\n{}\n"
+      "<h2>Measured and re-simulated</h2>\n{}\n{}</body></html>\n",
       io::escape_markup(r.vessel_file.string()), report::render_html(parameter_table(r)),
-      report::render_html(nrmse_table(r.tests)), figures);
+      report::render_html(unit_table(r)), report::render_html(nrmse_table(r.tests)), figures);
   write_text_file(dir / "index.html", html);
 }
 

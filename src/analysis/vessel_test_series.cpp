@@ -15,7 +15,7 @@ bool wanted_role(const std::string& role) {
   static const std::vector<std::string> exact{"time",       "heading",  "u",     "v",   "r",
                                               "wind_speed", "wind_dir", "north", "east"};
   if (std::find(exact.begin(), exact.end(), role) != exact.end()) return true;
-  for (const char* prefix : {"thrust.", "rudder.", "azimuth."}) {
+  for (const char* prefix : {"thrust.", "rudder.", "azimuth.", "rpm.", "command.rpm."}) {
     if (role.rfind(prefix, 0) == 0) return true;
   }
   const bool mru =
@@ -195,6 +195,9 @@ LoggedTest read_test(const LogSource& source, const scenario::ThrustFeedback& fe
   }
   test.nu0_guess = start_guess(test, 0);
   out.stretches = cut(test, stretch_s);
+  std::vector<std::string> units;
+  for (const scenario::FeedbackChannel& ch : feedback.channels()) units.push_back(ch.unit);
+  out.units = vessel_units::log_units(test.name, log, units);
   const std::string north = log.has("north") ? "north" : "gnss1.north";
   const std::string east = log.has("east") ? "east" : "gnss1.east";
   if (log.has(north) && log.has(east)) {

@@ -9,6 +9,7 @@
 #include "dynpos/analysis/log_source.hpp"
 #include "dynpos/scenario/thrust_feedback.hpp"
 #include "vessel_fit.hpp"
+#include "vessel_units.hpp"
 
 namespace dynpos::analysis::vessel_fit {
 
@@ -24,6 +25,8 @@ struct LoggedTest {
   std::vector<FitTest> stretches;
   io::InputReport input;
   std::vector<double> north_m, east_m;  ///< at the drive samples; empty: no position logged
+  /// Each unit's rpm, order and thrust as logged (the units' identification).
+  vessel_units::LogUnits units;
 };
 
 /// Reads `source` (roles: wanted_role) and puts it on a step of step_s [s]: every input of

@@ -49,23 +49,40 @@ std::optional<FopdtTruth> fopdt_two_point(std::span<const double> t, std::span<c
   return fit;
 }
 
-FopdtTruth scalar_step_truth(const std::function<double(double, double)>& rate, double from,
-                             double to, double dead_time, double duration, double dt) {
+double StepResponse::at(double t) const {
+  if (t_s.empty()) return 0.0;
+  if (!(t > t_s.front())) return y.front();
+  if (t >= t_s.back()) return y.back();
+  const auto hi =
+      static_cast<std::size_t>(std::upper_bound(t_s.begin(), t_s.end(), t) - t_s.begin());
+  const std::size_t lo = hi - 1;
+  const double w = (t - t_s[lo]) / (t_s[hi] - t_s[lo]);
+  return y[lo] + w * (y[hi] - y[lo]);
+}
+
+StepResponse scalar_step_response(const std::function<double(double, double)>& rate, double from,
+                                  double to, double dead_time, double duration, double dt) {
   const auto steps = static_cast<std::size_t>(std::ceil(duration / dt));
   DelayLine line(dead_time, dt, from);
   sim::Rk4<1> rk4;
   Eigen::Matrix<double, 1, 1> x(from);
-  std::vector<double> t(steps + 1), y(steps + 1);
+  StepResponse r{std::vector<double>(steps + 1), std::vector<double>(steps + 1)};
   for (std::size_t k = 0; k <= steps; ++k) {
     const double tk = static_cast<double>(k) * dt;
-    t[k] = tk;
-    y[k] = x[0];
+    r.t_s[k] = tk;
+    r.y[k] = x[0];
     const double cmd = line.push(to);
     rk4.step([&](double, const Eigen::Matrix<double, 1, 1>& xs,
                  Eigen::Matrix<double, 1, 1>& dxs) { dxs[0] = rate(xs[0], cmd); },
              tk, dt, x, x);
   }
-  return fopdt_two_point(t, y, 0.0).value_or(FopdtTruth{});
+  return r;
+}
+
+FopdtTruth scalar_step_truth(const std::function<double(double, double)>& rate, double from,
+                             double to, double dead_time, double duration, double dt) {
+  const StepResponse r = scalar_step_response(rate, from, to, dead_time, duration, dt);
+  return fopdt_two_point(r.t_s, r.y, 0.0).value_or(FopdtTruth{});
 }
 
 }  // namespace dynpos::model

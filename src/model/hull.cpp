@@ -96,7 +96,7 @@ Hull::State Hull::derivatives(const State& x, const Eigen::Vector3d& tau_b,
   // Current in BODY: v_c,b = R(ψ)ᵀ v_c,n (2.19); constant current, so ν̇_c = 0 in NED.
   const Eigen::Vector3d nu_c(c * current_n.x() + s * current_n.y(),
                              -s * current_n.x() + c * current_n.y(), 0.0);
-  const Eigen::Vector3d nu_dot = M_inv_ * (tau_b + hydrodynamic_forces(nu, nu - nu_c));
+  const Eigen::Vector3d nu_dot = this->nu_dot(nu, nu - nu_c, tau_b);
 
   State dx;
   // η̇ = R(ψ)ν (2.20).

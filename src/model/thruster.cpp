@@ -142,8 +142,8 @@ ThrusterOutput Thruster::outputs(const State& x, double advance_speed) const noe
   return out;
 }
 
-ThrusterStepTruth thruster_step_truth(const Thruster& thruster, double n_from, double n_to,
-                                      double dt) {
+ThrusterStepResponse thruster_step_response(const Thruster& thruster, double n_from, double n_to,
+                                            double dt) {
   const ThrusterParams& p = thruster.params();
   const double from = clamp_abs(n_from, p.max_shaft_speed);
   const double to = clamp_abs(n_to, p.max_shaft_speed);
@@ -155,21 +155,32 @@ ThrusterStepTruth thruster_step_truth(const Thruster& thruster, double n_from, d
   DelayLine line(p.dead_time, dt, from);
   sim::Rk4<4> rk4;
   Thruster::State x = thruster.steady_state(from);
-  std::vector<double> t(steps + 1), n(steps + 1), thrust(steps + 1);
+  ThrusterStepResponse r;
+  for (StepResponse* s : {&r.shaft_speed, &r.thrust}) {
+    s->t_s.resize(steps + 1);
+    s->y.resize(steps + 1);
+  }
   for (std::size_t k = 0; k <= steps; ++k) {
     const double tk = static_cast<double>(k) * dt;
     const ThrusterOutput y = thruster.outputs(x);
-    t[k] = tk;
-    n[k] = y.shaft_speed;
-    thrust[k] = y.thrust;
+    r.shaft_speed.t_s[k] = r.thrust.t_s[k] = tk;
+    r.shaft_speed.y[k] = y.shaft_speed;
+    r.thrust.y[k] = y.thrust;
     const ThrusterInput u{line.push(to), 0.0};
     rk4.step([&](double, const Thruster::State& xs,
                  Thruster::State& dxs) { dxs = thruster.derivatives(xs, u); },
              tk, dt, x, x);
   }
+  return r;
+}
+
+ThrusterStepTruth thruster_step_truth(const Thruster& thruster, double n_from, double n_to,
+                                      double dt) {
+  const ThrusterStepResponse r = thruster_step_response(thruster, n_from, n_to, dt);
   ThrusterStepTruth truth;
-  truth.shaft_speed = fopdt_two_point(t, n, 0.0).value_or(FopdtTruth{});
-  truth.thrust = fopdt_two_point(t, thrust, 0.0).value_or(FopdtTruth{});
+  truth.shaft_speed =
+      fopdt_two_point(r.shaft_speed.t_s, r.shaft_speed.y, 0.0).value_or(FopdtTruth{});
+  truth.thrust = fopdt_two_point(r.thrust.t_s, r.thrust.y, 0.0).value_or(FopdtTruth{});
   return truth;
 }
 

@@ -92,17 +92,23 @@ TunnelThrusterOutput TunnelThruster::outputs(double n, double surge_speed) const
   return out;
 }
 
-FopdtTruth tunnel_step_truth(const TunnelThruster& thruster, double n_from, double n_to,
-                             double dt) {
+StepResponse tunnel_step_response(const TunnelThruster& thruster, double n_from, double n_to,
+                                  double dt) {
   const TunnelThrusterParams& p = thruster.params();
   const double from = clamp_abs(n_from, p.max_shaft_speed);
   const double to = clamp_abs(n_to, p.max_shaft_speed);
   // Dead time, the rate-limited ramp and ten time constants, plus margin.
   const double duration =
       p.dead_time + std::abs(to - from) / p.rate_limit + 10.0 * p.time_constant + 5.0;
-  return scalar_step_truth(
+  return scalar_step_response(
       [&](double n, double cmd) { return thruster.shaft_acceleration(n, cmd); }, from, to,
       p.dead_time, duration, dt);
+}
+
+FopdtTruth tunnel_step_truth(const TunnelThruster& thruster, double n_from, double n_to,
+                             double dt) {
+  const StepResponse r = tunnel_step_response(thruster, n_from, n_to, dt);
+  return fopdt_two_point(r.t_s, r.y, 0.0).value_or(FopdtTruth{});
 }
 
 }  // namespace dynpos::model

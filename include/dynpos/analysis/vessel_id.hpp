@@ -5,8 +5,9 @@
 /// the wind coefficients when the logs hold wind) to logged step tests, zig-zags, turning
 /// circles, 4-corner and station-keeping runs by an output-error fit of the simulator's own
 /// model (scenario/hull_drive.hpp) driven by the logged thrust feedback, with σ from the
-/// Jacobian and a cross-validation score; `compare-trial` re-simulates one logged test with a
-/// vessel file. docs/theory.md, "Vessel identification".
+/// Jacobian and a cross-validation score; the model's units' dead times, tunnel time constant
+/// and thrust maps from the step and thrust-map analyses of each log; `compare-trial` re-simulates
+/// one logged test with a vessel file. docs/theory.md, "Vessel identification".
 
 #include <Eigen/Core>
 #include <array>
@@ -69,6 +70,20 @@ struct VesselParameter {
   std::string note;
 };
 
+/// One unit's order → shaft speed dynamics and thrust map as the logs show them (NaN: not
+/// measured), and the starting file's model at the same order steps.
+struct UnitIdentification {
+  std::string unit;       ///< "port", "stb", "tunnel"
+  std::size_t steps = 0;  ///< order steps with a FOPDT fit (3.7) of the shaft speed
+  /// The steps' FOPDT time constant and dead time, combined over the steps and logs, with 1σ.
+  double time_constant_s = 0.0, time_constant_sigma_s = 0.0;
+  double dead_time_s = 0.0, dead_time_sigma_s = 0.0;
+  /// The same fits of the starting file's model's response to the same steps.
+  double model_time_constant_s = 0.0, model_dead_time_s = 0.0;
+  /// Thrust map (3.17) c₊, c₋ [N/rps²] with 1σ, combined over the logs.
+  double c_forward = 0.0, c_forward_sigma = 0.0, c_reverse = 0.0, c_reverse_sigma = 0.0;
+};
+
 /// A test's measured and re-simulated motion.
 struct TestResponse {
   std::string name;       ///< the log as given
@@ -90,9 +105,10 @@ struct VesselIdReport {
   std::filesystem::path vessel_file;  ///< the starting file read
   std::string vessel_text;            ///< its text, for the output file
   std::vector<io::InputReport> inputs;
-  std::vector<VesselParameter> parameters;
-  std::vector<TestResponse> tests;  ///< each fitted test, then the held-out one
-  std::string held_out;             ///< the held-out test; empty: none
+  std::vector<VesselParameter> parameters;  ///< the hull's and wind's, then the units'
+  std::vector<UnitIdentification> units;    ///< the model's units (none for a layout)
+  std::vector<TestResponse> tests;          ///< each fitted test, then the held-out one
+  std::string held_out;                     ///< the held-out test; empty: none
   int iterations = 0;
   std::string solver_message;  ///< empty when the fit converged
   double run_time_s = 0.0;

@@ -12,6 +12,7 @@
 #include <functional>
 #include <optional>
 #include <span>
+#include <vector>
 
 namespace dynpos::model {
 
@@ -27,6 +28,21 @@ struct FopdtTruth {
 /// when the response never covers 63.2 % of its change or the change is zero.
 std::optional<FopdtTruth> fopdt_two_point(std::span<const double> t, std::span<const double> y,
                                           double t_step);
+
+/// A simulated step response: y at times t_s from the command step at t = 0.
+struct StepResponse {
+  std::vector<double> t_s;  ///< [s], from 0 at step dt
+  std::vector<double> y;    ///< [the response's unit]
+
+  /// y at time t [s] after the step, linear between samples: y[0] before 0, the last after
+  /// the end.
+  double at(double t) const;
+};
+
+/// The response of a one-state actuator ẋ = rate(x, x_c) after a command step from → to at
+/// t = 0 seen through a dead time [s]: RK4 at step dt [s] for duration [s] from rest at `from`.
+StepResponse scalar_step_response(const std::function<double(double, double)>& rate, double from,
+                                  double to, double dead_time, double duration, double dt);
 
 /// The Smith truth of a one-state actuator ẋ = rate(x, x_c) after a command step from → to at
 /// t = 0 seen through a dead time [s]: simulated by RK4 at step dt [s] for duration [s] from

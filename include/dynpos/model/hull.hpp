@@ -115,6 +115,13 @@ class Hull {
   State derivatives(const State& x, const Eigen::Vector3d& tau_b,
                     const Eigen::Vector2d& current_n) const noexcept;
 
+  /// ν̇ = M⁻¹(τ_b − C_RB ν − C_A ν_r − D ν_r) (2.7) for velocity ν and the velocity through the
+  /// water ν_r (both BODY): the surge, sway and yaw rows of derivatives().
+  Eigen::Vector3d nu_dot(const Eigen::Vector3d& nu, const Eigen::Vector3d& nu_r,
+                         const Eigen::Vector3d& tau_b) const noexcept {
+    return M_inv_ * (tau_b + hydrodynamic_forces(nu, nu_r));
+  }
+
   /// The hydrodynamic and Coriolis forces −(C_RB ν + C_A ν_r + D ν_r) for velocity ν and
   /// relative velocity ν_r (both BODY, (u, v, r)).
   Eigen::Vector3d hydrodynamic_forces(const Eigen::Vector3d& nu,

@@ -167,8 +167,17 @@ class Thruster {
   double diameter_pow4_;  // D⁴ [m⁴], as std::pow gives it, taken once
 };
 
-/// Simulates a step of the commanded shaft speed n_from → n_to [rps] at advance speed 0 (dead
-/// time included, RK4 at step dt [s]) and returns the Smith two-point truth for n and T_a.
+/// The shaft speed n(t) [rps] and thrust T_a(t) [N] of a step of the commanded shaft speed
+/// n_from → n_to [rps] at advance speed 0 from steady state (dead time included, RK4 at step dt
+/// [s]), long enough to settle.
+struct ThrusterStepResponse {
+  StepResponse shaft_speed;
+  StepResponse thrust;
+};
+ThrusterStepResponse thruster_step_response(const Thruster& thruster, double n_from, double n_to,
+                                            double dt = 0.01);
+
+/// The Smith two-point truth for n and T_a of thruster_step_response().
 ThrusterStepTruth thruster_step_truth(const Thruster& thruster, double n_from, double n_to,
                                       double dt = 0.01);
 

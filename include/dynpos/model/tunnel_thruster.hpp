@@ -109,8 +109,12 @@ class TunnelThruster {
   double diameter_pow4_;  // D⁴ [m⁴], as std::pow gives it, taken once
 };
 
-/// Simulates a shaft-speed command step n_from → n_to [rps] (dead time included, RK4 at dt
-/// [s]) and returns the Smith two-point truth of n(t).
+/// The shaft speed n(t) [rps] of a shaft-speed command step n_from → n_to [rps] from rest at
+/// n_from (dead time included, RK4 at dt [s]), long enough to settle.
+StepResponse tunnel_step_response(const TunnelThruster& thruster, double n_from, double n_to,
+                                  double dt = 0.01);
+
+/// The Smith two-point truth of tunnel_step_response().
 FopdtTruth tunnel_step_truth(const TunnelThruster& thruster, double n_from, double n_to,
                              double dt = 0.01);
 

@@ -42,6 +42,20 @@ struct DriveSeries {
   std::size_t size() const noexcept { return time_s.size(); }
 };
 
+/// The inputs of a DriveSeries at every RK4 stage that depend on the log and the units alone,
+/// so that a series simulated many times with different hulls (the fit) mixes, wraps and maps
+/// them once. Point 2i is sample i, point 2i + 1 the middle of samples i and i + 1.
+struct DriveStages {
+  std::vector<double> heading_rad, cos_heading, sin_heading;  ///< per point
+  std::vector<double> wind_speed_mps, wind_from_rad;          ///< per point; empty: no wind
+  std::size_t units = 0;
+  /// Per point, `units` values each: the model's units' shaft speeds [rps] (port, stb, tunnel;
+  /// from the logged thrust at rest) or a layout's thrusts [N]; and their angles [rad].
+  std::vector<double> input, angle;
+
+  std::size_t points() const noexcept { return heading_rad.size(); }
+};
+
 class HullDrive {
  public:
   /// The hull, units and wind coefficients of `vessel` (validated).
@@ -63,13 +77,26 @@ class HullDrive {
       const DriveSeries& series, const Eigen::Vector3d& nu0, const Eigen::Vector2d& current_n,
       const Eigen::Vector2d& current_rate_n = Eigen::Vector2d::Zero()) const;
 
+  /// The stage inputs of `series` for this drive's units (a drive with the same units gives the
+  /// same).
+  DriveStages stages(const DriveSeries& series) const;
+
+  /// simulate() with the stage inputs of `series` given: the same result.
+  std::vector<Eigen::Vector3d> simulate(const DriveSeries& series, const DriveStages& stages,
+                                        const Eigen::Vector3d& nu0,
+                                        const Eigen::Vector2d& current_n,
+                                        const Eigen::Vector2d& current_rate_n) const;
+
  private:
-  // τ_b with the inputs of samples i and j mixed by weight w of j.
-  Eigen::Vector3d mixed_tau_b(const DriveSeries& series, std::size_t i, std::size_t j, double w,
+  // Appends to `out` the stage inputs of samples i and j mixed by weight w of j.
+  void add_point(const DriveSeries& series, std::size_t i, std::size_t j, double w,
+                 DriveStages& out) const;
+  // τ_b of the units at point p for velocity through the water nu_r (BODY).
+  Eigen::Vector3d point_tau_b(const DriveStages& stages, std::size_t p,
                               const Eigen::Vector3d& nu_r) const;
-  // ν̇ with the inputs of samples i and j mixed by weight w of j (0: i, 0.5: the middle).
-  Eigen::Vector3d nu_dot(const DriveSeries& series, std::size_t i, std::size_t j, double w,
-                         const Eigen::Vector3d& nu, const Eigen::Vector2d& current_n) const;
+  // ν̇ at point p.
+  Eigen::Vector3d nu_dot(const DriveStages& stages, std::size_t p, const Eigen::Vector3d& nu,
+                         const Eigen::Vector2d& current_n) const;
 
   model::Hull hull_;
   model::Thruster propeller_;
