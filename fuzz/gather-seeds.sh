@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 dir="${1:?usage: fuzz/gather-seeds.sh DIR}"
 rm -rf "$dir"
 for t in csv_reader nmea_reader column_map time_stamp scenario vessel compare_json load_table \
-    mcap_reader cdr_decoder; do
+    mcap_reader cdr_decoder msg_set db3_reader; do
   mkdir -p "$dir/$t"
   [ -d "fuzz/corpus/$t" ] && cp fuzz/corpus/"$t"/* "$dir/$t/"
 done

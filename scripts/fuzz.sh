@@ -4,7 +4,7 @@
 #   scripts/fuzz.sh runs N [TARGET…]   each (or each named) target for N executions
 #   scripts/fuzz.sh time S [TARGET…]   each (or each named) target for S seconds
 # Targets: csv_reader nmea_reader column_map time_stamp scenario vessel compare_json load_table
-# mcap_reader cdr_decoder.
+# mcap_reader cdr_decoder msg_set db3_reader.
 # Every target first runs its regression inputs (fuzz/regressions/TARGET/); then it fuzzes from
 # its seed corpus (fuzz/corpus/TARGET/ and the test fixtures of its format, gathered into
 # build/fuzz/seeds/) and the corpus grown by earlier runs (build/fuzz/corpus/TARGET/, kept). A
@@ -17,7 +17,7 @@ mode="${1:-brief}"
 amount="${2:-}"
 shift $(( $# > 2 ? 2 : $# ))
 all_targets=(csv_reader nmea_reader column_map time_stamp scenario vessel compare_json load_table
-  mcap_reader cdr_decoder)
+  mcap_reader cdr_decoder msg_set db3_reader)
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=("${all_targets[@]}")
 for t in "${targets[@]}"; do
@@ -50,7 +50,7 @@ bash fuzz/gather-seeds.sh "$out/seeds"
 mkdir -p "$out/findings"
 declare -A dict=([csv_reader]=csv [nmea_reader]=nmea [column_map]=toml [time_stamp]=time
   [scenario]=toml [vessel]=toml [compare_json]=json [load_table]=csv [mcap_reader]=mcap
-  [cdr_decoder]=cdr)
+  [cdr_decoder]=cdr [msg_set]=cdr [db3_reader]=db3)
 for t in "${targets[@]}"; do
   [ -n "${dict[$t]:-}" ] || { echo "unknown target '$t' (${all_targets[*]})" >&2; exit 2; }
   bin="$out/fuzz/fuzz_$t"

@@ -35,7 +35,7 @@ void add_identify_vessel(CLI::App& identify) {
                   "Logs, one per test: step tests, zig-zags, turning circles, 4-corner, "
                   "station-keeping (CSV as the other analyses read them)")
       ->required()
-      ->check(CLI::ExistingFile);
+      ->check(CLI::ExistingPath);  // a file, or a ROS 2 bag folder
   add_log_source_options(*sub, o->log_options, kRoles);
   sub->add_option("--vessel", o->request.vessel_file,
                   "Starting vessel file: its values start the fit and are kept where the logs do "

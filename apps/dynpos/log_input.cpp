@@ -14,11 +14,15 @@ namespace {
 void add_log_argument(CLI::App& sub, analysis::LogSource& source) {
   auto copy = std::make_shared<std::unique_ptr<io::SpooledInput>>();
   sub.add_option("log", source.log,
-                 "Log: CSV, an NMEA 0183 capture or a ROS 2 bag (MCAP; detected by content); "
-                 "- reads standard input (a pipe, e.g. from zcat)")
+                 "Log: CSV, an NMEA 0183 capture or a ROS 2 bag (MCAP, or a rosbag2 SQLite "
+                 ".db3 file or bag folder; detected by content); - reads standard input (a "
+                 "pipe, e.g. from zcat)")
       ->required()
       ->check([](const std::string& value) {
-        return value == "-" ? std::string() : CLI::ExistingFile(value);
+        if (value == "-") return std::string();
+        std::error_code ec;  // a bag folder, or a file
+        return std::filesystem::is_directory(value, ec) ? CLI::ExistingDirectory(value)
+                                                        : CLI::ExistingFile(value);
       })
       ->each([&source, copy](const std::string& value) {
         if (!io::needs_spool(value)) return;
@@ -62,12 +66,17 @@ void add_log_source_options(CLI::App& sub, analysis::LogSource& source,
                  "axis (default: 2.5 x that role's median spacing)")
       ->check(CLI::NonNegativeNumber);
   sub.add_option("--format", source.format,
-                 "Log format: auto (by content), csv, nmea or mcap (ROS 2 bag)")
+                 "Log format: auto (by content), csv, nmea, mcap or db3 (ROS 2 bags: MCAP, "
+                 "rosbag2 SQLite)")
       ->default_str("auto");
   sub.add_option("--bag-time", source.bag_time,
                  "Time of a ROS 2 bag's messages: auto (header.stamp when the message has one, "
                  "else the receive time), header or receive")
       ->default_str("auto");
+  sub.add_option("--msg-path", source.msg_path,
+                 "Folder of .msg files (DIR/PKG/msg/TYPE.msg or DIR/TYPE.msg; repeatable) for "
+                 "message types a bag does not define, beside the built-in ones")
+      ->check(CLI::ExistingDirectory);
   sub.add_flag("--strict", source.strict,
                "An NMEA line that cannot be used is an error (file:line)");
   add_time_options(sub, source);

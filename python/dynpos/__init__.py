@@ -210,8 +210,10 @@ def _is_frame(value) -> bool:
     return type(value).__name__ == "DataFrame" and hasattr(value, "columns")
 
 
-_LOG_OPTIONS = ("clock_offset", "max_gap", "format", "bag_time", "strict", "time_format",
-                "date", "time_order", "jobs")
+_LOG_OPTIONS = ("clock_offset", "max_gap", "format", "bag_time", "msg_path", "strict",
+                "time_format", "date", "time_order", "jobs")
+# Options that take a list of paths, or one path.
+_PATH_LIST_OPTIONS = ("msg_path",)
 # Options given as ROLE=VALUE (or NAME=FILE) pairs: a dict or a list of strings.
 _PAIR_OPTIONS = ("clock_offset",)
 # Options taken as a dict by name (gnssK, mruK); a list of "NAME=VALUE" strings is read as one.
@@ -237,6 +239,8 @@ def _set(request, key: str, value) -> None:
         value = _pairs(value, key)
     elif key in _DICT_OPTIONS:
         value = _by_name(value, key)
+    elif key in _PATH_LIST_OPTIONS and isinstance(value, (str, os.PathLike)):
+        value = [os.fspath(value)]
     elif isinstance(value, os.PathLike):
         value = os.fspath(value)
     elif isinstance(value, (list, tuple)) and value and isinstance(value[0], os.PathLike):

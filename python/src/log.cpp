@@ -156,6 +156,7 @@ void bind_source(py::module_& m) {
       .def_readwrite("max_gap", &LogSource::max_gap_s)
       .def_readwrite("format", &LogSource::format)
       .def_readwrite("bag_time", &LogSource::bag_time)
+      .def_readwrite("msg_path", &LogSource::msg_path)
       .def_readwrite("strict", &LogSource::strict)
       .def_readwrite("time_format", &LogSource::time_format)
       .def_readwrite("date", &LogSource::date)

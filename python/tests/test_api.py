@@ -176,3 +176,53 @@ def test_identify_vessel_and_compare_trial_equal_the_cli(tmp_path):
     assert c.nrmse.u < 0.05 and c.nrmse.r < 0.05
     with pytest.raises(dynpos.InputError, match="holdout"):
         dynpos.identify_vessel([log], holdout="other.csv")
+
+
+def step_db3(path, msgs):
+    """The step test as a rosbag2 SQLite bag before Iron (type names only), its custom type
+    test_msgs/msg/Feedback as a .msg file under `msgs`; written with Python's sqlite3."""
+    import sqlite3
+    import struct
+
+    (msgs / "test_msgs" / "msg").mkdir(parents=True)
+    (msgs / "test_msgs" / "msg" / "Feedback.msg").write_text("Header header\nfloat64 rpm\n")
+    db = sqlite3.connect(path)
+    db.execute("CREATE TABLE topics(id INTEGER PRIMARY KEY, name TEXT, type TEXT, "
+               "serialization_format TEXT, offered_qos_profiles TEXT)")
+    db.execute("CREATE TABLE messages(id INTEGER PRIMARY KEY, topic_id INTEGER, "
+               "timestamp INTEGER, data BLOB)")
+    db.execute("INSERT INTO topics VALUES (1, '/cmd', 'std_msgs/msg/Float64', 'cdr', '')")
+    db.execute("INSERT INTO topics VALUES (2, '/fb', 'test_msgs/msg/Feedback', 'cdr', '')")
+    start = 1_714_557_600 * 10**9
+    for k in range(800):
+        ns = start + k * 100_000_000
+        t = 0.1 * k
+        u = (1.0 if t >= 10.0 else 0.0) + (1.0 if t >= 45.0 else 0.0)
+        y = 2.0 * ((1.0 - math.exp(-(t - 10.0) / 3.0) if t >= 10.0 else 0.0)
+                   + (1.0 - math.exp(-(t - 45.0) / 3.0) if t >= 45.0 else 0.0))
+        cmd = b"\x00\x01\x00\x00" + struct.pack("<d", u)
+        # header (sec, nanosec, frame "" as length 1 and a NUL), padding to 8, then rpm.
+        fb = b"\x00\x01\x00\x00" + struct.pack("<iII", ns // 10**9, ns % 10**9, 1) + b"\x00" \
+            + b"\x00" * 3 + struct.pack("<d", y)
+        db.execute("INSERT INTO messages(topic_id, timestamp, data) VALUES (1, ?, ?)", (ns, cmd))
+        db.execute("INSERT INTO messages(topic_id, timestamp, data) VALUES (2, ?, ?)",
+                   (ns + 5_000_000, fb))
+    db.commit()
+    db.close()
+
+
+def test_a_db3_bag_with_msg_path_equals_the_cli(tmp_path):
+    step_db3(tmp_path / "steps.db3", tmp_path / "msgs")
+    col = {"input": "/cmd.data", "output": "/fb.rpm"}
+    expected = cli_json(tmp_path, "identify", "step", str(tmp_path / "steps.db3"), "--col",
+                        "input=/cmd.data", "--col", "output=/fb.rpm", "--msg-path",
+                        str(tmp_path / "msgs"))
+    for msg_path in (tmp_path / "msgs", str(tmp_path / "msgs"), [tmp_path / "msgs"]):
+        r = dynpos.identify_step(tmp_path / "steps.db3", col=col, msg_path=msg_path)
+        assert r.to_dict() == expected
+    assert len(expected["steps"]) == 2
+    assert expected["steps"][0]["K"] == pytest.approx(2.0, rel=1e-3)
+    assert {f["format"] for f in expected["input"]["files"]} == {"db3"}
+    with pytest.raises(dynpos.InputError, match=r"steps.db3 \(/fb\): no definition of the type "
+                       r"test_msgs/msg/Feedback.*--msg-path"):
+        dynpos.identify_step(tmp_path / "steps.db3", col=col)

@@ -11,8 +11,8 @@ import dynpos
 from dynpos import _dynpos
 
 STUBS = os.path.join(os.path.dirname(dynpos.__file__), "__init__.pyi")
-LOG_OPTIONS = {"clock_offset", "max_gap", "format", "strict", "time_format", "date",
-               "time_order", "jobs"}
+LOG_OPTIONS = {"clock_offset", "max_gap", "format", "bag_time", "msg_path", "strict",
+               "time_format", "date", "time_order", "jobs"}
 REQUESTS = {"identify_step": _dynpos.StepRequest,
             "identify_thrust_map": _dynpos.ThrustMapRequest,
             "identify_agility": _dynpos.AgilityRequest,

@@ -76,6 +76,7 @@ io::LogFileRead other_file(const io::LogFileRead& how) {
   other.strict = how.strict;
   other.jobs = how.jobs;
   other.bag_time = how.bag_time;
+  other.msg_path = how.msg_path;
   return other;
 }
 

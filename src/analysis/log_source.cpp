@@ -7,6 +7,7 @@
 #include "dynpos/analysis/options.hpp"
 #include "dynpos/core/time_spacing.hpp"
 #include "dynpos/io/csv_reader.hpp"
+#include "dynpos/io/db3_reader.hpp"
 #include "dynpos/io/mcap_reader.hpp"
 #include "dynpos/io/roles.hpp"
 #include "log_source_nmea.hpp"
@@ -48,10 +49,18 @@ auto naming_the_log(const LogSource& source, Read&& read) -> decltype(read()) {
   }
 }
 
-// Whether the source is a ROS 2 bag: format "mcap", or "auto" and io::looks_like_mcap.
+// Whether the source is a ROS 2 bag: format "mcap" or "db3", or "auto" and io::looks_like_mcap
+// or io::looks_like_db3.
 bool reads_bag(const LogSource& source) {
-  return source.format == "mcap" || (source.format == "auto" && source.memory == nullptr &&
-                                     io::looks_like_mcap(source.file()));
+  return source.format == "mcap" || source.format == "db3" ||
+         (source.format == "auto" && source.memory == nullptr &&
+          (io::looks_like_mcap(source.file()) || io::looks_like_db3(source.file())));
+}
+
+io::LogFileRead::Format bag_format(const LogSource& source) {
+  if (source.format == "mcap") return io::LogFileRead::Format::kMcap;
+  if (source.format == "db3") return io::LogFileRead::Format::kDb3;
+  return io::LogFileRead::Format::kAuto;  // a bag, of the format its content shows
 }
 
 // LogSource::column_map without the renaming of errors.
@@ -182,14 +191,14 @@ LoadedLog load_file(const LogSource& source, const RoleFilter& wanted) {
   const io::BagTime bag_time = bag_time_of(source);
   const bool bag = reads_bag(source);
   if (!bag && reads_nmea(source)) return load_nmea(source, wanted);
-  return read_log_files(
-      source.file(), column_map_of(source, wanted), source.resample_options(),
-      {.format = bag ? io::LogFileRead::Format::kMcap : io::LogFileRead::Format::kCsv,
-       .strict = source.strict,
-       .jobs = source.jobs,
-       .t_from_s = source.window_from_s,
-       .t_to_s = source.window_to_s,
-       .bag_time = bag_time});
+  return read_log_files(source.file(), column_map_of(source, wanted), source.resample_options(),
+                        {.format = bag ? bag_format(source) : io::LogFileRead::Format::kCsv,
+                         .strict = source.strict,
+                         .jobs = source.jobs,
+                         .t_from_s = source.window_from_s,
+                         .t_to_s = source.window_to_s,
+                         .bag_time = bag_time,
+                         .msg_path = source.msg_path});
 }
 
 }  // namespace

@@ -9,12 +9,12 @@ namespace dynpos::analysis {
 bool reads_nmea(const LogSource& source) {
   if (source.format == "nmea") return true;
   if (source.format == "csv") return false;
-  if (source.format == "mcap") return false;
+  if (source.format == "mcap" || source.format == "db3") return false;
   if (source.format != "auto") {
     throw core::InputError::for_option(
         "format", "unknown log format '" + source.format + "'",
-        "use auto (detected from the content), csv, nmea (NMEA 0183 capture) or mcap (ROS 2 "
-        "bag)");
+        "use auto (detected from the content), csv, nmea (NMEA 0183 capture), mcap or db3 "
+        "(ROS 2 bags: MCAP, rosbag2 SQLite)");
   }
   return io::looks_like_nmea(source.file());
 }
@@ -64,7 +64,8 @@ LoadedLog load_nmea(const LogSource& source, const RoleFilter& wanted) {
                                   source.jobs,
                                   {},
                                   {},
-                                  io::find_bag_time(source.bag_time).value_or(io::BagTime::kAuto)});
+                                  io::find_bag_time(source.bag_time).value_or(io::BagTime::kAuto),
+                                  source.msg_path});
   }
   return out;
 }

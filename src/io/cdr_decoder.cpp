@@ -306,6 +306,7 @@ void CdrDecoder::run(Reader& r, std::span<double> values) const {
 }
 
 void CdrDecoder::skip(const Ros2Field& field, std::uint64_t n, Reader& r) const {
+  if (n == 0) return;  // no element: no padding before it either
   if (field.primitive && *field.primitive != Ros2Primitive::kString &&
       *field.primitive != Ros2Primitive::kWstring) {
     const std::size_t bytes = ros2_primitive_bytes(*field.primitive);

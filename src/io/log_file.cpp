@@ -8,6 +8,8 @@
 #include "dynpos/core/error.hpp"
 #include "dynpos/io/bag_log.hpp"
 #include "dynpos/io/csv_reader.hpp"
+#include "dynpos/io/db3_log.hpp"
+#include "dynpos/io/db3_reader.hpp"
 #include "dynpos/io/mcap_reader.hpp"
 #include "dynpos/io/nmea_log.hpp"
 
@@ -73,7 +75,10 @@ FileLog read_log_file(const std::filesystem::path& path, const ColumnMap& map,
                       const LogFileRead& how) {
   using Format = LogFileRead::Format;
   if (how.format == Format::kMcap || (how.format == Format::kAuto && looks_like_mcap(path))) {
-    return read_bag_file(path, map, how.bag_time, how.jobs);
+    return read_bag_file(path, map, how.bag_time, how.jobs, Ros2MsgSet(how.msg_path));
+  }
+  if (how.format == Format::kDb3 || (how.format == Format::kAuto && looks_like_db3(path))) {
+    return read_db3_bag(path, map, how.bag_time, Ros2MsgSet(how.msg_path));
   }
   if (how.format == Format::kNmea || (how.format == Format::kAuto && looks_like_nmea(path))) {
     return read_nmea_file(path, map, how.strict);

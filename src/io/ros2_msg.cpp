@@ -153,7 +153,8 @@ std::map<std::string, RawType> split_sections(const std::string& root, std::stri
 
 class Resolver {
  public:
-  explicit Resolver(std::map<std::string, RawType> raw) : raw_(std::move(raw)) {}
+  Resolver(std::map<std::string, RawType> raw, const Ros2MsgLookup& more)
+      : raw_(std::move(raw)), more_(more) {}
 
   // The index of `name` in schema.types, resolved with the types it nests.
   std::size_t resolve(const std::string& name, Ros2Schema& schema, int depth = 0) {
@@ -172,8 +173,16 @@ class Resolver {
         (name == "builtin_interfaces/Time" || name == "builtin_interfaces/Duration")) {
       raw = raw_.emplace(name, parse_type(name, kBuiltinTime)).first;
     }
+    if (raw == raw_.end() && more_) {
+      if (std::optional<std::string> text = more_(name)) {
+        raw = raw_.emplace(name, parse_type(name, *text)).first;
+      }
+    }
     if (raw == raw_.end()) {
-      throw Ros2MsgError(fmt::format("the definition of {} is not in the schema", name));
+      throw Ros2MsgError(more_ ? fmt::format("no definition of {} (not in the bag, not built in, "
+                                             "not in the --msg-path folders)",
+                                             name)
+                               : fmt::format("the definition of {} is not in the schema", name));
     }
     const std::size_t index = schema.types.size();
     index_.emplace(name, index);
@@ -218,6 +227,7 @@ class Resolver {
   }
 
   std::map<std::string, RawType> raw_;
+  const Ros2MsgLookup& more_;
   std::map<std::string, std::size_t> index_;
 };
 
@@ -244,9 +254,10 @@ std::string ros2_type_name(std::string_view name) {
   return std::string(name.substr(0, first)) + std::string(name.substr(last));
 }
 
-Ros2Schema Ros2Schema::parse(std::string_view root_name, std::string_view text) {
+Ros2Schema Ros2Schema::parse(std::string_view root_name, std::string_view text,
+                             const Ros2MsgLookup& more) {
   const std::string root = ros2_type_name(root_name);
-  Resolver resolver(split_sections(root, text));
+  Resolver resolver(split_sections(root, text), more);
   Ros2Schema schema;
   resolver.resolve(root, schema);
   return schema;

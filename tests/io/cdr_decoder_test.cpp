@@ -144,6 +144,23 @@ TEST(CdrDecoder, SequencesAndStrings) {
   EXPECT_EQ(v[4], -7.0);
 }
 
+TEST(CdrDecoder, AnEmptySequenceHasNoPaddingBeforeItsElements) {
+  // As rosbag2's serializers write it: the count of an empty float64[] at an offset that is 4
+  // mod 8 is followed at once by the next field, not by padding to 8.
+  const Ros2Schema schema =
+      Ros2Schema::parse("test_msgs/msg/J", "float64[] velocity\nfloat64[] effort\nuint32 n\n");
+  for (const std::vector<std::string>& paths :
+       {std::vector<std::string>{"effort[0]", "n"}, {"velocity[0]", "effort[0]", "n"}}) {
+    const CdrDecoder d(schema, paths);
+    CdrWriter w;
+    w.put(std::uint32_t{0}).put(std::uint32_t{1}).put(2.5).put(std::uint32_t{7});
+    ASSERT_EQ(w.bytes().size(), 4U + 4 + 4 + 8 + 4);
+    const std::vector<double> v = decode(d, w.bytes(), paths.size());
+    EXPECT_EQ(v[paths.size() - 2], 2.5);
+    EXPECT_EQ(v[paths.size() - 1], 7.0);
+  }
+}
+
 TEST(CdrDecoder, BadPathsNameTheFields) {
   const Ros2Schema schema = Ros2Schema::parse("sensor_msgs/msg/NavSatFix", kNavSatFix);
   const auto error = [&](const std::string& path) {

@@ -50,12 +50,14 @@ struct LogSource {
   /// Largest gap [s] between two samples of a role from another file that is bridged when it
   /// is put on the main log's time axis; 0 = automatic (2.5 × that role's median spacing).
   double max_gap_s = 0.0;
-  /// "auto" (by content), "csv", "nmea" (NMEA 0183 capture) or "mcap" (ROS 2 bag: a role's
-  /// column is TOPIC.FIELD, io/bag_log.hpp).
+  /// "auto" (by content), "csv", "nmea" (NMEA 0183 capture), "mcap" or "db3" (ROS 2 bags, MCAP
+  /// or rosbag2 SQLite: a role's column is TOPIC.FIELD, io/bag_log.hpp, io/db3_log.hpp).
   std::string format = "auto";
   /// The time of a bag's messages: "auto" (header.stamp when the type has one, else the
   /// receive time), "header" or "receive" (io/bag_time.hpp).
   std::string bag_time = "auto";
+  /// Folders of .msg files for message types a bag does not define (io/ros2_msg_set.hpp).
+  std::vector<std::filesystem::path> msg_path;
   /// An NMEA line that cannot be used is an error, and so are files whose absolute stamps are
   /// whole GPS week cycles apart (a receiver's week-number rollover; else aligned and noted).
   bool strict = false;

@@ -15,6 +15,7 @@
 #include "dynpos/io/bag_time.hpp"
 #include "dynpos/io/column_map.hpp"
 #include "dynpos/io/log_file.hpp"
+#include "dynpos/io/ros2_msg_set.hpp"
 
 namespace dynpos::io {
 
@@ -24,9 +25,10 @@ namespace dynpos::io {
 /// its own origin (FileLog::origin_ns: its first time stamp, UTC). Throws core::InputError
 /// naming the file, the byte offset and the topic for a bad record or message, a topic the bag
 /// lacks (listing its topics), a field its type lacks (listing its fields) and a schema that is
-/// not ros2msg or messages that are not CDR. Chunks are decompressed on `jobs` threads (0 =
-/// every core; McapReader); the result does not depend on it.
+/// not ros2msg or messages that are not CDR. A type a schema names without its definition is
+/// taken from `msgs` (io/ros2_msg_set.hpp). Chunks are decompressed on `jobs` threads (0 = every
+/// core; McapReader); the result does not depend on it.
 FileLog read_bag_file(const std::filesystem::path& path, const ColumnMap& map, BagTime time,
-                      unsigned jobs = 0);
+                      unsigned jobs = 0, const Ros2MsgSet& msgs = {});
 
 }  // namespace dynpos::io

@@ -38,9 +38,9 @@ struct FileLog {
 
 /// How read_log_file() takes a file.
 struct LogFileRead {
-  enum class Format { kAuto, kCsv, kNmea, kMcap };
-  /// kAuto: a ROS 2 bag when io::looks_like_mcap, an NMEA capture when io::looks_like_nmea,
-  /// else CSV.
+  enum class Format { kAuto, kCsv, kNmea, kMcap, kDb3 };
+  /// kAuto: a ROS 2 bag when io::looks_like_mcap or io::looks_like_db3 (a rosbag2 SQLite file
+  /// or bag folder), an NMEA capture when io::looks_like_nmea, else CSV.
   Format format = Format::kAuto;
   bool strict = false;  ///< an NMEA line that cannot be used is an error
   unsigned jobs = 0;    ///< threads for reading a CSV file and describing it, 0 = every core
@@ -49,6 +49,8 @@ struct LogFileRead {
   std::optional<double> t_from_s;
   std::optional<double> t_to_s;
   BagTime bag_time = BagTime::kAuto;  ///< the time of a bag's messages
+  /// Folders of .msg files for the types a bag does not define (io/ros2_msg_set.hpp).
+  std::vector<std::filesystem::path> msg_path;
 };
 
 /// Reads the roles of `map` (one file's map, e.g. ColumnMap::for_file) from `path`, with `time`
@@ -56,8 +58,8 @@ struct LogFileRead {
 /// NMEA 0183 capture (`how`) is read by io::read_nmea_log, strict as `how` says: its
 /// time is that of its sentences (or logger stamps), a role's column names a channel of the
 /// capture (lat, lon, height, heading, roll, pitch, down, r; SI, so no unit or scale), and
-/// `time` is not read. A ROS 2 bag (MCAP) is read by io::read_bag_file, its topics in
-/// FileLog::more. Throws core::InputError naming the file, line and column.
+/// `time` is not read. A ROS 2 bag is read by io::read_bag_file (MCAP) or io::read_db3_bag
+/// (SQLite), its topics in FileLog::more. Throws core::InputError naming the file, line and column.
 FileLog read_log_file(const std::filesystem::path& path, const ColumnMap& map,
                       const LogFileRead& how = {});
 

@@ -13,6 +13,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -66,14 +67,20 @@ struct Ros2Type {
   std::size_t min_bytes = 1;
 };
 
+/// The .msg text of a type ("pkg/Type") a definition refers to without holding it, or nullopt
+/// (io/ros2_msg_set.hpp).
+using Ros2MsgLookup = std::function<std::optional<std::string>(const std::string& type)>;
+
 /// A root message type with every type it nests (types[0] is the root).
 struct Ros2Schema {
   std::vector<Ros2Type> types;
 
   /// The schema of `root_name` ("pkg/msg/Type" or "pkg/Type") from its definition text (the
-  /// root's, then the nested types' after their "MSG:" lines). Throws Ros2MsgError for a line that
-  /// is not a field, an unknown type, a recursive type or an array of zero elements.
-  static Ros2Schema parse(std::string_view root_name, std::string_view text);
+  /// root's, then the nested types' after their "MSG:" lines); a type the text lacks is asked of
+  /// `more` when given. Throws Ros2MsgError for a line that is not a field, an unknown type, a
+  /// recursive type or an array of zero elements.
+  static Ros2Schema parse(std::string_view root_name, std::string_view text,
+                          const Ros2MsgLookup& more = {});
 };
 
 /// "pkg/Type" from "pkg/msg/Type" (and "pkg/Type" as it is).

@@ -1,0 +1,82 @@
+#pragma once
+// What every storage of ROS 2 bags shares once its messages are found (MCAP: bag_log.cpp,
+// rosbag2 SQLite: db3_log.cpp): the topics the column map reads, a CdrDecoder per source of
+// messages (an MCAP channel, a topic of a .db3 file), the time axis, and each topic as a
+// FileLog ordered by time.
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "column_blocks.hpp"
+#include "dynpos/io/bag_time.hpp"
+#include "dynpos/io/cdr_decoder.hpp"
+#include "dynpos/io/column_map.hpp"
+#include "dynpos/io/log_file.hpp"
+
+namespace dynpos::io::detail {
+
+inline constexpr std::string_view kBagColumnHint =
+    "a column of a bag is TOPIC.FIELD[.FIELD…], e.g. /gps/fix.latitude or "
+    "/imu.angular_velocity.z, an array element FIELD[i] (docs/log-format.md, \"ROS 2 bags\")";
+
+// One role read from a topic: its field and how its numbers become SI.
+struct BagRolePlan {
+  std::string role;
+  std::string field;  // the path in the message
+  core::Unit unit;
+  double scale = 1.0;
+  core::Interp interp = core::Interp::kLinear;
+  core::InputLocation source;
+};
+
+// What is read of one topic, and what was read.
+struct BagTopic {
+  std::vector<BagRolePlan> roles;
+  std::map<std::uint64_t, std::unique_ptr<CdrDecoder>> decoders;  // by source of messages
+  std::map<std::uint64_t, bool> header_time;                      // by source
+  ColumnBlocks<std::int64_t> time_ns;
+  std::vector<ColumnBlocks<double>> values;  // by role
+  std::vector<double> scratch;
+};
+
+using BagTopics = std::map<std::string, BagTopic>;
+
+// The topics the roles of `map` read (the `time` role aside), each with its roles. Throws
+// core::InputError for a column that names no field of a topic.
+BagTopics plan_bag_topics(const ColumnMap& map, const std::string& file);
+
+// The topic `map`'s time role names (added to `topics`, for its times) when it is one of
+// `names` (the bag's topics), a mapped topic or looks like a topic; else empty. Throws
+// core::InputError when no role is mapped to a field of the bag.
+std::string bag_axis_topic(const ColumnMap& map, BagTopics& topics,
+                           const std::vector<std::string>& names, const std::string& file);
+
+// Whether the messages' time is their header.stamp: a std_msgs/Header `header` whose `stamp`
+// is builtin_interfaces/Time, unless `time` is kReceive.
+bool uses_header_stamp(const Ros2Schema& schema, BagTime time);
+
+// Adds the decoder of the messages of `source` of the topic: the roles' fields, then the
+// header stamp when `header`. Throws Ros2MsgError for a field the type lacks.
+void add_bag_decoder(BagTopic& topic, std::uint64_t source, Ros2Schema schema, bool header);
+
+// Decodes a message of `source` (its decoder added) and appends its time (the header stamp,
+// else `receive_ns`) and its roles' values in SI. Throws CdrError.
+void add_bag_message(BagTopic& topic, std::uint64_t source, std::span<const std::uint8_t> data,
+                     std::int64_t receive_ns);
+
+// Throws core::InputError unless every topic has a message (`names`: the bag's topics).
+void check_bag_read(const std::string& path, const std::vector<std::string>& names,
+                    const BagTopics& topics);
+
+// The topics as read: the axis topic (`axis`, else the one with the most messages) with the
+// others in FileLog::more, each ordered by time, a repeated time kept once; report format
+// `format`.
+FileLog bag_file_log(const std::string& path, BagTopics& topics, std::string axis,
+                     std::string_view format);
+
+}  // namespace dynpos::io::detail
