@@ -90,6 +90,7 @@ int main(int argc, char** argv) {
   register_montecarlo(app);
   register_estimate(app);
   register_consequence(app);
+  register_live(app);
   register_demo(app);
   // Every output of the subcommand given is checked before any subcommand runs.
   app.parse_complete_callback([&app] { check_outputs(app); });

@@ -1,0 +1,86 @@
+// dynpos live identify step|station-keeping, dynpos live leverarm gnss: the analyses on a
+// stream as it arrives (live/session.hpp). The analyses' own options are registered by their
+// files in live mode; this file holds the stream options and the parent commands.
+
+#include <fmt/core.h>
+
+#include "commands.hpp"
+#include "dynpos/analysis/options.hpp"
+#include "live_command.hpp"
+
+namespace dynpos::cli {
+
+void add_live_options(CLI::App& sub, LiveCli& live, const std::string& example) {
+  live::LiveRequest& r = live.request;
+  CLI::Option* udp = sub.add_option("--udp", r.udp,
+                                    "Listen for NMEA datagrams on HOST:PORT (plain, or IEC "
+                                    "61162-450 with UdPbC header and tag blocks; a multicast "
+                                    "group is joined; port 0: one the system picks, printed)");
+  CLI::Option* tcp = sub.add_option("--tcp", r.tcp, "Read lines from the TCP server HOST:PORT");
+  CLI::Option* follow =
+      sub.add_option("--follow", r.follow,
+                     "Read FILE (CSV or NMEA) from its start and then what is appended to it");
+  udp->excludes(tcp)->excludes(follow);
+  tcp->excludes(follow);
+  sub.add_option("--idle-exit", r.idle_exit_s,
+                 "End, with the final result, when nothing has arrived for SECONDS");
+  sub.add_option("--page-port", live.page_port,
+                 "Serve a page that shows the results as they come on http://127.0.0.1:PORT/ "
+                 "(0: a port the system picks, printed); default: no page")
+      ->check(CLI::Range(0, 65535));
+  sub.add_option("--update", r.update_s,
+                 "Stream time [s] between re-runs of the analysis, at least (more when a run "
+                 "takes more than 5 % of that time of processor)")
+      ->capture_default_str();
+  output_file(sub.add_option("--capture", r.capture,
+                             "Keep the lines read (tag blocks removed) in FILE: the offline "
+                             "command on FILE gives the final result again"));
+  sub.footer(
+      sub.get_footer() +
+      "\n\nLive: writes one JSON line per new result on standard output: the document of the "
+      "offline "
+      "--json, compact, with \"stream_time_s\" and \"final\" added at its end; the last line, "
+      "\"final\": true, when the stream ends (a TCP server closes) or nothing has arrived for "
+      "--idle-exit seconds, equals the offline analysis of the same data. --json FILE writes "
+      "that final document as the offline command does. Example: " +
+      example);
+}
+
+live::LiveRequest live_request(const LiveCli& live, const analysis::LogSource& source,
+                               const analysis::Outputs& outputs) {
+  if (outputs.json == "-") {
+    throw analysis::option_error("json", "standard output carries the live JSON lines",
+                                 "give a file, e.g. --json final.json");
+  }
+  live::LiveRequest request = live.request;
+  if (live.page_port >= 0) request.http_port = static_cast<std::uint16_t>(live.page_port);
+  request.strict = source.strict;
+  return request;
+}
+
+void print_live_summary(const live::LiveSummary& s) {
+  const live::StreamCounts& c = s.counts;
+  print_text(stderr,
+             "dynpos live: {} bytes, {} lines ({} with a tag block, {} dropped for a bad tag "
+             "block, {} other datagrams); {} runs, {:.3f} s of processor; {} JSON lines\n",
+             c.bytes, c.lines, c.tag_blocks, c.bad_tag_blocks, c.other_datagrams, s.runs,
+             s.run_cpu_s, s.lines_written);
+}
+
+void register_live(CLI::App& app) {
+  CLI::App* live = app.add_subcommand(
+      "live",
+      "Live trial: an analysis on a stream as it arrives (UDP, TCP, a growing file), its "
+      "results as JSON lines and on a local page");
+  live->require_subcommand(1, 1);
+  CLI::App* identify =
+      live->add_subcommand("identify", "identify step or station-keeping on a live stream");
+  identify->require_subcommand(1, 1);
+  add_identify_step(*identify, LogMode::kLive);
+  add_identify_station_keeping(*identify, LogMode::kLive);
+  CLI::App* leverarm = live->add_subcommand("leverarm", "leverarm gnss on a live stream");
+  leverarm->require_subcommand(1, 1);
+  add_leverarm_gnss(*leverarm, LogMode::kLive);
+}
+
+}  // namespace dynpos::cli
