@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "dynpos/analysis/options.hpp"
+#include "dynpos/core/error.hpp"
 #include "live_command.hpp"
 
 namespace dynpos::cli {
@@ -67,19 +68,41 @@ void print_live_summary(const live::LiveSummary& s) {
              s.run_cpu_s, s.lines_written);
 }
 
+namespace {
+
+const char* const kLiveAnalyses = "identify step, identify station-keeping or leverarm gnss";
+
+// `group` takes one of its subcommands; a word that is none of them is an error naming
+// ANALYSIS and the analyses there are (CLI11 alone would only say a subcommand is required).
+void require_analysis(CLI::App& group, const std::string& path) {
+  group.require_subcommand(0, 1);
+  group.allow_extras();
+  group.callback([&group, path] {
+    if (!group.get_subcommands().empty()) return;
+    const std::vector<std::string> rest = group.remaining();
+    std::string given = path;
+    if (!rest.empty()) given += (given.empty() ? "" : " ") + rest.front();
+    throw core::InputError({},
+                           given.empty() ? "no ANALYSIS given" : "unknown ANALYSIS '" + given + "'",
+                           std::string("dynpos live takes ") + kLiveAnalyses);
+  });
+}
+
+}  // namespace
+
 void register_live(CLI::App& app) {
   CLI::App* live = app.add_subcommand(
       "live",
       "Live trial: an analysis on a stream as it arrives (UDP, TCP, a growing file), its "
       "results as JSON lines and on a local page");
-  live->require_subcommand(1, 1);
+  require_analysis(*live, "");
   CLI::App* identify =
       live->add_subcommand("identify", "identify step or station-keeping on a live stream");
-  identify->require_subcommand(1, 1);
+  require_analysis(*identify, "identify");
   add_identify_step(*identify, LogMode::kLive);
   add_identify_station_keeping(*identify, LogMode::kLive);
   CLI::App* leverarm = live->add_subcommand("leverarm", "leverarm gnss on a live stream");
-  leverarm->require_subcommand(1, 1);
+  require_analysis(*leverarm, "leverarm");
   add_leverarm_gnss(*leverarm, LogMode::kLive);
 }
 
