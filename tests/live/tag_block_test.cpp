@@ -24,7 +24,8 @@ std::string tagged(const std::string& block, const std::string& sentence) {
 
 TEST(TagBlock, AValidBlockIsRemoved) {
   const std::string sentence = "$GPHDT,123.4,T*00";
-  const TaggedLine t = read_tag_blocks(tagged("s:GP0001,c:1700000000", sentence));
+  const std::string line = tagged("s:GP0001,c:1700000000", sentence);
+  const TaggedLine t = read_tag_blocks(line);  // views into `line`
   EXPECT_EQ(t.status, TagBlockStatus::kValid);
   EXPECT_EQ(t.sentence, sentence);
 }
