@@ -8,7 +8,9 @@
 //   e.g. live_replay build/release/bin/dynpos 20 run/gnss1.nmea -- identify station-keeping
 //
 // The analysis' options follow "--"; --udp, --idle-exit and --capture are added. The live JSON
-// lines go to /dev/null, the child's standard error is passed through.
+// lines go to /dev/null, the child's standard error is passed through (its summary counts the
+// lines it received). A machine too busy to give the child the processor time a fast replay
+// needs drops datagrams (counted, system-wide): the analyses then see less data.
 
 #include <arpa/inet.h>
 #include <fcntl.h>
@@ -26,6 +28,7 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -52,6 +55,21 @@ std::vector<Line> read_lines(const std::string& file) {
   return lines;
 }
 
+// The datagrams the system dropped for a full receive buffer so far (all sockets: the
+// RcvbufErrors of /proc/net/snmp), or -1 where it cannot be read.
+long receive_buffer_drops() {
+  std::ifstream snmp("/proc/net/snmp");
+  std::string names, values;
+  while (std::getline(snmp, names) && std::getline(snmp, values)) {
+    if (!names.starts_with("Udp:")) continue;
+    std::istringstream n(names), v(values);
+    for (std::string name, value; n >> name && v >> value;) {
+      if (name == "RcvbufErrors") return std::stol(value);
+    }
+  }
+  return -1;
+}
+
 // A UDP port on loopback that nothing uses now.
 int free_udp_port() {
   const int s = ::socket(AF_INET, SOCK_DGRAM, 0);
@@ -63,6 +81,26 @@ int free_udp_port() {
   ::getsockname(s, reinterpret_cast<sockaddr*>(&a), &size);
   ::close(s);
   return ntohs(a.sin_port);
+}
+
+// Waits until the child has bound `port` (binding it here then fails), so that no datagram is
+// sent before it listens.
+void wait_until_bound(int port, pid_t child) {
+  for (;;) {
+    const int s = ::socket(AF_INET, SOCK_DGRAM, 0);
+    sockaddr_in a{};
+    a.sin_family = AF_INET;
+    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    a.sin_port = htons(static_cast<std::uint16_t>(port));
+    const bool free = ::bind(s, reinterpret_cast<sockaddr*>(&a), sizeof a) == 0;
+    ::close(s);
+    if (!free) return;
+    int status = 0;
+    if (::waitpid(child, &status, WNOHANG) == child) {
+      throw std::runtime_error("dynpos live ended before it listened");
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
 }
 
 pid_t start_live(const std::string& dynpos, const std::vector<std::string>& analysis, int port,
@@ -101,13 +139,14 @@ int main(int argc, char** argv) {
       (std::filesystem::temp_directory_path() / fmt::format("live_replay_{}.capture", ::getpid()))
           .string();
   const pid_t child = start_live(dynpos, analysis, port, capture);
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));  // the child binds its port
+  wait_until_bound(port, child);
 
   const int s = ::socket(AF_INET, SOCK_DGRAM, 0);
   sockaddr_in to{};
   to.sin_family = AF_INET;
   to.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
   to.sin_port = htons(static_cast<std::uint16_t>(port));
+  const long drops_before = receive_buffer_drops();
   const auto start = std::chrono::steady_clock::now();
   std::optional<double> t0, t_last;
   for (const Line& line : lines) {
@@ -128,9 +167,9 @@ int main(int argc, char** argv) {
                        static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec) * 1e-6;
   const double stream_s = t0 ? *t_last - *t0 : 0.0;
   fmt::print(
-      "{} lines, {:.0f} s of stream at {}x: {:.2f} s of processor, {:.4f} s per second "
-      "of stream (exit {})\n",
+      "{} lines, {:.0f} s of stream at {}x: {:.2f} s of processor, {:.4f} s per second of "
+      "stream; {} datagrams dropped by full receive buffers meanwhile (exit {})\n",
       lines.size(), stream_s, speed, cpu_s, stream_s > 0 ? cpu_s / stream_s : 0.0,
-      WIFEXITED(status) ? WEXITSTATUS(status) : -1);
+      receive_buffer_drops() - drops_before, WIFEXITED(status) ? WEXITSTATUS(status) : -1);
   return WIFEXITED(status) && WEXITSTATUS(status) == 0 ? 0 : 1;
 }

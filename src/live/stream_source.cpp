@@ -21,6 +21,7 @@ namespace dynpos::live {
 namespace {
 
 constexpr std::size_t kReadBytes = std::size_t{1} << 16;
+constexpr int kReceiveBufferBytes = 8 << 20;
 
 // A file descriptor closed with its owner.
 class Descriptor {
@@ -69,10 +70,12 @@ class UdpSource final : public StreamSource {
     if (socket_.get() < 0) fail(key, "cannot open a UDP socket", errno);
     sockaddr_in address = resolve(at, key);
     const bool multicast = IN_MULTICAST(ntohl(address.sin_addr.s_addr));
-    const int on = 1;
-    ::setsockopt(socket_.get(), SOL_SOCKET, SO_REUSEADDR, &on, sizeof on);
     sockaddr_in bind_to = address;
-    if (multicast) bind_to.sin_addr.s_addr = htonl(INADDR_ANY);
+    if (multicast) {  // other listeners of the group may share the port
+      const int on = 1;
+      ::setsockopt(socket_.get(), SOL_SOCKET, SO_REUSEADDR, &on, sizeof on);
+      bind_to.sin_addr.s_addr = htonl(INADDR_ANY);
+    }
     if (::bind(socket_.get(), reinterpret_cast<const sockaddr*>(&bind_to), sizeof bind_to) != 0) {
       fail(key, "cannot listen on udp " + endpoint_text(at), errno);
     }
@@ -84,6 +87,10 @@ class UdpSource final : public StreamSource {
         fail(key, "cannot join the multicast group " + at.host, errno);
       }
     }
+    // Room for the datagrams that arrive while an analysis runs: as much as the system allows
+    // up to kReceiveBufferBytes (net.core.rmem_max caps it), not its default of about 200 kB.
+    const int receive = kReceiveBufferBytes;
+    ::setsockopt(socket_.get(), SOL_SOCKET, SO_RCVBUF, &receive, sizeof receive);
     sockaddr_in bound{};
     socklen_t size = sizeof bound;
     ::getsockname(socket_.get(), reinterpret_cast<sockaddr*>(&bound), &size);
