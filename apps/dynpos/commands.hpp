@@ -97,5 +97,9 @@ void register_montecarlo(CLI::App& app);   // cmd_montecarlo.cpp
 void register_estimate(CLI::App& app);     // cmd_estimate.cpp
 void register_consequence(CLI::App& app);  // cmd_consequence.cpp
 void register_live(CLI::App& app);         // cmd_live.cpp
+/// Called by the signal thread (main.cpp) for Ctrl-C, SIGTERM or SIGHUP: true when a live
+/// session is running and takes the signal as a request to end with its final result (the
+/// first signal only; another then ends the process as usual).
+bool live_session_takes_signal() noexcept;  // cmd_live.cpp
 
 }  // namespace dynpos::cli

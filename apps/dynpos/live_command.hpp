@@ -31,6 +31,12 @@ live::LiveRequest live_request(const LiveCli& live, const analysis::LogSource& s
 /// Prints the session's summary on standard error.
 void print_live_summary(const live::LiveSummary& summary);
 
+/// Runs the session (live::run_live on stdout and stderr) with Ctrl-C, SIGTERM and SIGHUP
+/// ending it as the end of the stream would (live_session_takes_signal), and prints its
+/// summary.
+void run_live_session(const live::LiveRequest& request, const analysis::LogSource& source,
+                      const live::LiveAnalysis& analysis);
+
 /// The end of a live analysis subcommand: the session, each run by `run` on the data so far;
 /// after the final run the report's outputs are written (write_outputs: the same files as the
 /// offline command) and its text and the files written are printed on standard error.
@@ -48,7 +54,7 @@ void run_live_command(const LiveCli& live, const analysis::LogSource& source,
     }
     return to_json(report);
   };
-  print_live_summary(live::run_live(request, source, analyse, stdout, stderr));
+  run_live_session(request, source, analyse);
 }
 
 }  // namespace dynpos::cli

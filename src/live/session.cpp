@@ -1,6 +1,5 @@
 #include "dynpos/live/session.hpp"
 
-#include <poll.h>
 #include <time.h>
 
 #include <fmt/core.h>
@@ -19,6 +18,8 @@
 #include "dynpos/live/http_page.hpp"
 #include "dynpos/live/stream_clock.hpp"
 #include "dynpos/live/stream_source.hpp"
+#include "line_queue.hpp"
+#include "stream_reader.hpp"
 
 namespace dynpos::live {
 namespace {
@@ -27,8 +28,9 @@ using WallClock = std::chrono::steady_clock;
 
 /// How long a stream is quiet [s] before the data not yet analysed is.
 constexpr double kQuiet_s = 1.0;
-/// How often a followed file is looked at, and the longest wait of the loop [ms].
-constexpr int kPoll_ms = 100;
+/// The longest wait of the analysis thread for lines [ms]: how often the page is served and a
+/// stop request seen when nothing arrives.
+constexpr std::chrono::milliseconds kWait{100};
 
 double cpu_seconds() {
   timespec ts{};
@@ -58,33 +60,36 @@ class Session {
         analysis_(analysis),
         out_(out),
         messages_(messages),
-        source_(std::move(stream)),
+        name_(stream->name()),
         capture_(request.capture),
         clock_(time_column(source)),
-        lines_(source_->name(), request.strict,
-               [this](std::string_view line, bool whole) { on_line(line, whole); }) {
+        queue_(request.max_queue_bytes) {
     data_ = source;
     data_.read_from = capture_.path();
     if (!request.follow.empty()) {
       data_.log = request.follow;
     } else {
-      data_.log =
-          request.capture.empty() ? std::filesystem::path(source_->name()) : request.capture;
+      data_.log = request.capture.empty() ? std::filesystem::path(name_) : request.capture;
     }
-    fmt::print(messages_, "dynpos live: reading {}\n", source_->name());
+    fmt::print(messages_, "dynpos live: reading {}\n", name_);
     if (request.http_port) {
-      page_ = std::make_unique<HttpPage>(*request.http_port,
-                                         request.title + " — " + source_->name(), "http_port");
+      page_ = std::make_unique<HttpPage>(*request.http_port, request.title + " — " + name_,
+                                         "http_port");
       fmt::print(messages_, "dynpos live: page at http://127.0.0.1:{}/\n", page_->port());
     }
     std::fflush(messages_);
+    // Last: the reader thread starts reading now.
+    reader_ = std::make_unique<detail::StreamReader>(std::move(stream), request.strict,
+                                                     request.idle_exit_s, queue_);
   }
 
   LiveSummary run() {
     loop();
-    lines_.finish();
+    reader_->join();
     analyse(true);
-    summary_.counts = lines_.counts();
+    summary_.counts = reader_->counts();
+    summary_.queue_peak_lines = queue_.peak_lines();
+    summary_.queue_peak_bytes = queue_.peak_bytes();
     summary_.stream_time_s = stream_t_;
     return std::move(summary_);
   }
@@ -101,10 +106,11 @@ class Session {
   const LiveAnalysis& analysis_;
   std::FILE* out_;
   std::FILE* messages_;
-  std::unique_ptr<StreamSource> source_;
+  std::string name_;  // the stream's, for messages
   detail::CaptureFile capture_;
   StreamClock clock_;
-  StreamLines lines_;
+  detail::LineQueue queue_;
+  std::unique_ptr<detail::StreamReader> reader_;  // after the queue it fills
   analysis::LogSource data_;
   std::unique_ptr<HttpPage> page_;
   LiveSummary summary_;
@@ -132,19 +138,15 @@ void Session::on_line(std::string_view line, bool whole) {
 }
 
 void Session::loop() {
-  auto last_data = WallClock::now();
+  const auto start = WallClock::now();
   for (;;) {
-    std::vector<pollfd> fds;
-    if (source_->fd() >= 0) fds.push_back({source_->fd(), POLLIN, 0});
-    if (page_) page_->add_fds(fds);
-    ::poll(fds.data(), fds.size(), kPoll_ms);
-    const std::size_t before = lines_.counts().bytes;
-    const bool open = source_->read(lines_);
-    if (lines_.counts().bytes != before) last_data = WallClock::now();
+    detail::LineQueue::Taken taken = queue_.take(kWait);
+    if (taken.error) std::rethrow_exception(taken.error);
+    for (const detail::QueuedLine& line : taken.lines) on_line(line.text, line.whole);
     if (page_) page_->serve();
-    if (!open) return;
-    const double quiet_s = seconds_since(last_data);
-    if (request_.idle_exit_s && quiet_s >= *request_.idle_exit_s) return;
+    if (taken.closed) return;
+    if (request_.stop && request_.stop()) reader_->request_stop();  // the rest still comes
+    const double quiet_s = seconds_since(queue_.last_arrival().value_or(start));
     // Lines no run has seen: a stream gone quiet, or one whose lines carry no time.
     const bool untimed = !stream_t_ && seconds_since(last_run_) >= interval_s();
     if (unanalysed_ && (quiet_s >= kQuiet_s || untimed) &&

@@ -59,6 +59,7 @@ void StreamLines::add_bytes(std::string_view bytes) {
 }
 
 void StreamLines::add_datagram(std::string_view datagram) {
+  ++counts_.datagrams;
   if (is_other_450_datagram(datagram)) {
     counts_.bytes += datagram.size();
     ++counts_.other_datagrams;

@@ -4,8 +4,8 @@
 /// fixed routes, GET / (one HTML page that fetches the latest document every second and shows
 /// its numbers as tables and the series as plots) and GET /latest.json (the latest JSON line).
 /// Anything else is 404 (405 for another method); a request head over 8 KiB is refused; each
-/// connection answers one request and is closed. It runs in the session's own loop: poll
-/// fds() with the stream.
+/// connection answers one request and is closed. It runs on the session's analysis thread, which
+/// calls serve() whenever it wakes (lines arrived, or 0.1 s passed), between runs.
 
 #include <poll.h>
 

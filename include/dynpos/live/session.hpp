@@ -4,6 +4,13 @@
 /// an offline analysis re-run on the capture so far whenever new data could change its result,
 /// so that the last result, at the end of the stream, is the offline analysis of the same bytes.
 ///
+/// Two threads: a reader that waits on the stream and hands each line, as it arrives, to an
+/// in-memory queue that never drops one (accounted in bytes; past LiveRequest::max_queue_bytes
+/// the session ends with an error), and the caller's, which takes the lines from the queue
+/// into the capture, runs the analysis and writes the results. A long run therefore never
+/// leaves a UDP socket unread. The end of the stream, the idle time (by arrival) and a stop
+/// request are seen by the reader; the lines already queued are analysed before the final run.
+///
 /// Each result is written as one JSON line: the analysis' `--json` document, compact, with
 /// `"stream_time_s"` (the stream time of the last line analysed) and `"final"` (true on the
 /// last line only) added at its end. A line is written when the document differs from the last
@@ -47,6 +54,13 @@ struct LiveRequest {
   std::filesystem::path capture;
   bool strict = false;                ///< a bad tag block ends the session (error naming the line)
   std::string title = "dynpos live";  ///< heads the local page
+  /// The most bytes of lines that may wait for the analysis thread (text plus bookkeeping);
+  /// past it the session ends with an error rather than drop lines.
+  std::size_t max_queue_bytes = std::size_t{256} << 20;
+  /// Asked by the analysis thread at least every 0.1 s: true ends the session as the end of the
+  /// stream would (the lines received so far analysed, the final line written). E.g. a flag
+  /// that a signal sets; empty: never.
+  std::function<bool()> stop;
 
   /// Exactly one of udp, tcp and follow; update_s, cpu_share and idle_exit_s positive; the
   /// HOST:PORT texts well formed. Throws analysis::option_error naming the key.
@@ -66,6 +80,8 @@ struct LiveSummary {
   std::size_t lines_written = 0;        ///< JSON lines written, the final one included
   std::optional<double> stream_time_s;  ///< the last line's stream time
   double run_cpu_s = 0.0;               ///< processor time of the runs [s]
+  std::size_t queue_peak_lines = 0;     ///< the most lines that waited for the analysis thread
+  std::size_t queue_peak_bytes = 0;     ///< and the most bytes (text plus bookkeeping)
   nlohmann::json final_document;        ///< the last run's document (without the added keys)
 };
 

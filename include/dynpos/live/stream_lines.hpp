@@ -15,6 +15,7 @@ namespace dynpos::live {
 /// What was taken out of the stream.
 struct StreamCounts {
   std::size_t bytes = 0;            ///< bytes received (datagrams' headers included)
+  std::size_t datagrams = 0;        ///< datagrams received (UDP; 0 for a byte stream)
   std::size_t lines = 0;            ///< lines passed on
   std::size_t tag_blocks = 0;       ///< lines whose tag blocks were read and removed
   std::size_t bad_tag_blocks = 0;   ///< lines dropped: a tag block with a bad checksum or form
@@ -27,6 +28,7 @@ struct StreamCounts {
 /// line longer than StreamLines::kMaxLineBytes, or the rest of the stream at its end).
 using LineSink = std::function<void(std::string_view line, bool whole)>;
 
+/// Not thread-safe: one thread passes the stream to it (a live session's reader).
 class StreamLines {
  public:
   /// A line longer than this [bytes] is passed on in parts as it comes (the readers bound it).
