@@ -9,8 +9,11 @@
 //
 // The analysis' options follow "--"; --udp, --idle-exit and --capture are added. The live JSON
 // lines go to /dev/null, the child's standard error is passed through (its summary counts the
-// lines it received). A machine too busy to give the child the processor time a fast replay
-// needs drops datagrams (counted, system-wide): the analyses then see less data.
+// datagrams and lines it received, and the most that waited for its analysis thread). The
+// lines received are counted in the capture and compared with the lines sent: a datagram the
+// system dropped (a full receive buffer: the session's reader thread got no processor in
+// time) is a line lost, which the analyses then do not see; the system-wide count of such
+// drops meanwhile is printed too.
 
 #include <arpa/inet.h>
 #include <fcntl.h>
@@ -68,6 +71,14 @@ long receive_buffer_drops() {
     }
   }
   return -1;
+}
+
+// The lines of `file` (its '\n's).
+std::size_t count_lines(const std::string& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::size_t n = 0;
+  for (std::string line; std::getline(in, line);) ++n;
+  return n;
 }
 
 // A UDP port on loopback that nothing uses now.
@@ -162,14 +173,17 @@ int main(int argc, char** argv) {
   int status = 0;
   rusage usage{};
   ::wait4(child, &status, 0, &usage);
+  const std::size_t received = count_lines(capture);
   std::remove(capture.c_str());
   const double cpu_s = static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
                        static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec) * 1e-6;
   const double stream_s = t0 ? *t_last - *t0 : 0.0;
   fmt::print(
       "{} lines, {:.0f} s of stream at {}x: {:.2f} s of processor, {:.4f} s per second of "
-      "stream; {} datagrams dropped by full receive buffers meanwhile (exit {})\n",
-      lines.size(), stream_s, speed, cpu_s, stream_s > 0 ? cpu_s / stream_s : 0.0,
+      "stream; {} lines sent, {} received, {} lost; {} datagrams dropped by full receive "
+      "buffers meanwhile, system-wide (exit {})\n",
+      lines.size(), stream_s, speed, cpu_s, stream_s > 0 ? cpu_s / stream_s : 0.0, lines.size(),
+      received, static_cast<long>(lines.size()) - static_cast<long>(received),
       receive_buffer_drops() - drops_before, WIFEXITED(status) ? WEXITSTATUS(status) : -1);
   return WIFEXITED(status) && WEXITSTATUS(status) == 0 ? 0 : 1;
 }

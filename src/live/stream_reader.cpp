@@ -62,6 +62,7 @@ void StreamReader::read_until_end() {
     const double quiet_s = std::chrono::duration<double>(Clock::now() - last_data).count();
     if (idle_exit_s_ && quiet_s >= *idle_exit_s_) break;
   }
+  if (open) source_->read(lines);  // stopped or idle: what is already there still counts
   lines.finish();
   counts_ = lines.counts();
   queue_.push(batch);

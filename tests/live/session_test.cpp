@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -272,6 +273,126 @@ TEST(LiveSession, UdpDatagramsWithTheUdPbCHeader) {
   const std::string offline =
       analysis::to_json(analysis::run_station_keeping(station_request(request.capture))).dump();
   EXPECT_EQ(lines.back().document, offline);
+  std::fclose(out);
+  std::fclose(messages);
+}
+
+// A UDP socket of `stream` (listen_udp) and its port; its receive buffer set to `bytes` (the
+// system doubles it for its bookkeeping).
+int udp_port(const StreamSource& stream, int receive_bytes) {
+  ::setsockopt(stream.fd(), SOL_SOCKET, SO_RCVBUF, &receive_bytes, sizeof receive_bytes);
+  const std::string name = stream.name();
+  return std::stoi(name.substr(name.rfind(':') + 1));
+}
+
+// Sends each of `lines` as a datagram to 127.0.0.1:`port`, 0.2 ms apart.
+void send_datagrams(int port, const std::vector<std::string>& lines) {
+  const int s = ::socket(AF_INET, SOCK_DGRAM, 0);
+  sockaddr_in to{};
+  to.sin_family = AF_INET;
+  to.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  to.sin_port = htons(static_cast<std::uint16_t>(port));
+  for (const std::string& line : lines) {
+    ::sendto(s, line.data(), line.size(), 0, reinterpret_cast<sockaddr*>(&to), sizeof to);
+    std::this_thread::sleep_for(200us);
+  }
+  ::close(s);
+}
+
+// An analysis far slower than the stream: each run waits 0.3 s, then counts the capture's lines.
+LiveAnalysis slow_line_count() {
+  return [](const analysis::LogSource& data, bool) {
+    std::this_thread::sleep_for(300ms);
+    std::ifstream in(data.read_from, std::ios::binary);
+    std::size_t n = 0;
+    for (std::string line; std::getline(in, line);) ++n;
+    return nlohmann::json{{"lines", n}};
+  };
+}
+
+// The analysis runs back to back (every 20 s of a 10 Hz stream, each 0.3 s of wall clock)
+// while 1501 datagrams come 0.2 ms apart, the first run starting at the 200th, into a receive
+// buffer that holds a few hundred: a session that read the socket only between runs would lose
+// many of them. The reader thread takes each as it comes; the capture is what was sent.
+TEST(LiveSession, ASlowAnalysisLosesNoDatagram) {
+  test::TempDir dir;
+  const std::vector<std::string> rows = test::step_csv(150.0);
+  auto stream = listen_udp({"127.0.0.1", 0}, "udp");
+  const int port = udp_port(*stream, 256 * 1024);
+  std::thread sender([&] { send_datagrams(port, rows); });
+  LiveRequest request;
+  request.udp = "127.0.0.1:0";
+  request.idle_exit_s = 1.0;
+  request.update_s = 20.0;
+  request.capture = dir / "slow.csv";
+  std::FILE* out = std::tmpfile();
+  std::FILE* messages = std::tmpfile();
+  const LiveSummary summary = run_live(request, std::move(stream), step_request("").source,
+                                       slow_line_count(), out, messages);
+  sender.join();
+  std::string sent;
+  for (const std::string& row : rows) sent += row;
+  EXPECT_EQ(summary.counts.datagrams, rows.size());
+  EXPECT_EQ(file_text(request.capture), sent);
+  const std::vector<LiveLine> lines = lines_of(out);
+  ASSERT_FALSE(lines.empty());
+  EXPECT_EQ(lines.back().document, nlohmann::json({{"lines", rows.size()}}).dump());
+  EXPECT_GT(summary.queue_peak_lines, 1u);  // lines waited while a run went on
+  std::fclose(out);
+  std::fclose(messages);
+}
+
+// Lines that would wait beyond the queue's bound end the session with an error naming it,
+// never a line silently dropped.
+TEST(LiveSession, AQueueOverItsBoundIsAnError) {
+  const std::vector<std::string> rows = test::step_csv(60.0);
+  auto stream = listen_udp({"127.0.0.1", 0}, "udp");
+  const int port = udp_port(*stream, 1 << 20);
+  std::thread sender([&] { send_datagrams(port, rows); });
+  LiveRequest request;
+  request.udp = "127.0.0.1:0";
+  request.idle_exit_s = 1.0;
+  request.update_s = 0.1;
+  request.max_queue_bytes = 2000;
+  std::FILE* out = std::tmpfile();
+  std::FILE* messages = std::tmpfile();
+  try {
+    run_live(request, std::move(stream), step_request("").source, slow_line_count(), out, messages);
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("reached the bound of"), std::string::npos) << e.what();
+  }
+  sender.join();
+  std::fclose(out);
+  std::fclose(messages);
+}
+
+// A stop request (Ctrl-C in the command) ends a UDP session, which has no end of its own, with
+// its final line: every datagram sent before the request is in it.
+TEST(LiveSession, AStopRequestEndsWithTheFinalLine) {
+  test::TempDir dir;
+  const std::vector<std::string> rows = test::step_csv(30.0);
+  auto stream = listen_udp({"127.0.0.1", 0}, "udp");
+  const int port = udp_port(*stream, 1 << 20);
+  std::atomic<bool> stop{false};
+  std::thread sender([&] {
+    send_datagrams(port, rows);
+    stop.store(true);
+  });
+  LiveRequest request;
+  request.udp = "127.0.0.1:0";
+  request.capture = dir / "stopped.csv";
+  request.stop = [&stop] { return stop.load(); };
+  std::FILE* out = std::tmpfile();
+  std::FILE* messages = std::tmpfile();
+  const LiveSummary summary =
+      run_live(request, std::move(stream), step_request("").source, step_analysis(), out, messages);
+  sender.join();
+  const std::vector<LiveLine> lines = lines_of(out);
+  ASSERT_FALSE(lines.empty());
+  EXPECT_TRUE(lines.back().final);
+  EXPECT_EQ(summary.counts.lines, rows.size());
+  EXPECT_EQ(lines.back().document, offline_step(request.capture));
   std::fclose(out);
   std::fclose(messages);
 }
