@@ -5,7 +5,9 @@
 #  1. identify step --follow on a CSV log appended in chunks;
 #  2. identify station-keeping over UDP on loopback (port 0, printed), NMEA lines of a virtual
 #     trial as datagrams, with the local page asked for its routes meanwhile;
-#  3. leverarm gnss --follow on a virtual turning circle's log, appended in chunks.
+#  3. leverarm gnss --follow on a virtual turning circle's log, appended in chunks;
+#  4. identify station-keeping over UDP without --idle-exit, ended by SIGTERM (as Ctrl-C): the
+#     final line and --json all the same, exit 0.
 set -euo pipefail
 [[ -z "${LIVE_TRACE:-}" ]] || { PS4='+ $(date +%s.%N) '; set -x; }
 exe="$1"; out="$2"
@@ -107,4 +109,24 @@ wait "$live" || { cat "$out/arms.err"; exit 1; }
   --json "$out/arms_offline.json" > /dev/null
 cmp "$out/arms_live.json" "$out/arms_offline.json"
 check_lines "$out/arms.jsonl" "$out/arms_offline.json"
+
+# 4. A UDP session has no end of its own: a signal ends it with its final result.
+"$exe" live identify station-keeping --udp 127.0.0.1:0 --duration 60 \
+  --capture "$out/sig.nmea" --json "$out/sig_live.json" > "$out/sig.jsonl" 2> "$out/sig.err" &
+live=$!
+port=$(wait_for "$out/sig.err" 'udp 127\.0\.0\.1:[0-9]+' | sed 's/.*://')
+send 1 400
+for _ in $(seq 100); do  # every line sent received (the capture), then the signal
+  [[ $(wc -l < "$out/sig.nmea") == 400 ]] && break
+  sleep 0.1
+done
+kill -TERM "$live"
+wait "$live" || { echo "exit $? after SIGTERM"; cat "$out/sig.err"; exit 1; }
+grep -q "ending the session with its final result" "$out/sig.err" ||
+  { echo "no note of the signal"; cat "$out/sig.err"; exit 1; }
+sed -n 1,400p "$out/run/gnss1.nmea" | cmp - "$out/sig.nmea"
+"$exe" identify station-keeping "$out/sig.nmea" --duration 60 --json "$out/sig_offline.json" \
+  > /dev/null
+cmp "$out/sig_live.json" "$out/sig_offline.json"
+check_lines "$out/sig.jsonl" "$out/sig_offline.json"
 echo ok
