@@ -35,3 +35,10 @@ dynpos_cli_test(live_idle_exit
   COMMAND ${DYNPOS_EXE} live identify step --follow ${CMAKE_CURRENT_SOURCE_DIR}/short_steps.csv
           --col input=cmd --col output=response --idle-exit 0.5
   PASS "\"final\":true}")
+# The live help: --json a file only (standard output carries the lines), --strict as it is live.
+foreach(analysis "identify;step" "identify;station-keeping" "leverarm;gnss")
+  string(REPLACE ";" "_" stem "${analysis}")
+  dynpos_cli_test(live_help_${stem} COMMAND ${DYNPOS_EXE} live ${analysis} --help
+    PASS "--strict +A bad tag block ends the session.*--json TEXT:FILE +Write the final result"
+    FAIL "for stdout|An NMEA line that cannot be used is an error")
+endforeach()
