@@ -9,6 +9,7 @@
 #include "commands.hpp"
 #include "dynpos/analysis/step.hpp"
 #include "enum_option.hpp"
+#include "live_command.hpp"
 #include "log_input.hpp"
 
 namespace dynpos::cli {
@@ -19,14 +20,33 @@ struct StepOptions {
   analysis::Outputs outputs;
 };
 
-void add_identify_step(CLI::App& identify) {
+// The end of `live identify step`: the session, each run on the data so far.
+void run_live_step(const StepOptions& opt, const LiveCli& live) {
+  run_live_command<analysis::StepReport>(
+      live, opt.request.source,
+      [&opt](const analysis::LogSource& data) {
+        analysis::StepRequest request = opt.request;
+        request.source = data;
+        return analysis::run_step(request);
+      },
+      opt.outputs);
+}
+
+}  // namespace
+
+void add_identify_step(CLI::App& identify, LogMode mode) {
   auto opt = std::make_shared<StepOptions>();
   analysis::StepRequest& r = opt->request;
   CLI::App* step = identify.add_subcommand(
       "step", "Step-test identification: FOPDT gain, time constant and dead time per step");
-  add_log_options(*step, r.source,
-                  "time, input (the command), output (the response), trigger (e.g. power "
-                  "feedback, to time steps without a command)");
+  const std::string roles =
+      "time, input (the command), output (the response), trigger (e.g. power feedback, to time "
+      "steps without a command)";
+  if (mode == LogMode::kLive) {
+    add_log_source_options(*step, r.source, roles);
+  } else {
+    add_log_options(*step, r.source, roles);
+  }
   add_enum_option(*step, "--method", r.method, analysis::step_method_from_name,
                   "lsq: least squares with the dead time; smith: Smith's two-point "
                   "method (3.8)-(3.9); smith2: Smith's second-order 20/60 %; rk: "
@@ -58,16 +78,22 @@ void add_identify_step(CLI::App& identify) {
       "Warnings: steady_state_not_reached, poor_fit, short_window, few_samples, ... "
       "Example on a virtual trial log: dynpos identify step DIR/log.csv "
       "--col input=command.rpm.stb --col output=rpm.stb");
+  if (mode == LogMode::kLive) {
+    auto live = std::make_shared<LiveCli>();
+    add_live_options(*step, *live,
+                     "dynpos live identify step --follow DIR/log.csv --col input=command.rpm.stb "
+                     "--col output=rpm.stb --idle-exit 5");
+    step->callback([opt, live] { run_live_step(*opt, *live); });
+    return;
+  }
   step->callback([opt] { write_and_print(analysis::run_step(opt->request), opt->outputs); });
 }
-
-}  // namespace
 
 void register_identify(CLI::App& app) {
   CLI::App* identify = app.add_subcommand(
       "identify", "Identify thruster and vessel dynamics from sea-trial logs (thesis ch. 3)");
   identify->require_subcommand(1, 1);
-  add_identify_step(*identify);
+  add_identify_step(*identify, LogMode::kFile);
   add_identify_thrust_map(*identify);
   add_identify_agility(*identify);
   add_identify_four_corner(*identify);

@@ -5,6 +5,7 @@
 
 #include "commands.hpp"
 #include "dynpos/analysis/station_keeping.hpp"
+#include "live_command.hpp"
 #include "log_input.hpp"
 
 namespace dynpos::cli {
@@ -21,16 +22,30 @@ void run(StationKeepingOptions& o) {
   write_and_print(analysis::run_station_keeping(o.request), o.outputs);
 }
 
+// The end of `live identify station-keeping`: the session, each run on the data so far (the
+// window, the last --duration seconds, moves with the stream).
+void run_live_station_keeping(const StationKeepingOptions& o, const LiveCli& live) {
+  run_live_command<analysis::StationKeepingReport>(
+      live, o.input,
+      [&o](const analysis::LogSource& data) {
+        analysis::StationKeepingRequest request = o.request;
+        request.source = data;
+        return analysis::run_station_keeping(request);
+      },
+      o.outputs);
+}
+
 }  // namespace
 
-void add_identify_station_keeping(CLI::App& identify) {
+void add_identify_station_keeping(CLI::App& identify, LogMode mode) {
   auto o = std::make_shared<StationKeepingOptions>();
   analysis::StationKeepingRequest& r = o->request;
   CLI::App* sub = identify.add_subcommand("station-keeping",
                                           "Pure DP: position, heading, wind and thrust statistics");
   o->input.add_options(*sub,
                        "time, north, east (m, any offset) or lat, lon; heading, wind_speed, "
-                       "wind_dir; thrust.NAME, power.NAME; setpoint.north/east/heading");
+                       "wind_dir; thrust.NAME, power.NAME; setpoint.north/east/heading",
+                       mode);
   sub->add_option("--from", r.t_from_s, "Window start [s]");
   sub->add_option("--to", r.t_to_s, "Window end [s]");
   sub->add_option("--duration", r.duration_s,
@@ -47,6 +62,14 @@ void add_identify_station_keeping(CLI::App& identify) {
       "statistics [deg]; mean |thrust| [kN] and energy ∫P dt [kJ] per thruster and total. A "
       "channel that is not logged is '—' / null. Example on a virtual trial log: dynpos identify "
       "station-keeping DIR/log.csv --col north=gnss1.north --col east=gnss1.east --per-setpoint");
+  if (mode == LogMode::kLive) {
+    auto live = std::make_shared<LiveCli>();
+    add_live_options(*sub, *live,
+                     "dynpos live identify station-keeping --udp 0.0.0.0:10110 --duration 300 "
+                     "--capture trial.nmea");
+    sub->callback([o, live] { run_live_station_keeping(*o, *live); });
+    return;
+  }
   sub->callback([o] { run(*o); });
 }
 

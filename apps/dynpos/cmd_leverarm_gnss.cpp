@@ -15,6 +15,7 @@
 #include "dynpos/analysis/option_spelling.hpp"
 #include "dynpos/analysis/options.hpp"
 #include "enum_option.hpp"
+#include "live_command.hpp"
 #include "log_input.hpp"
 
 namespace dynpos::cli {
@@ -86,9 +87,22 @@ void run_gnss(GnssCliOptions& o) {
   write_and_print(analysis::run_leverarm_gnss(o.request), o.outputs);
 }
 
+// The end of `live leverarm gnss`: the session, each run on the data so far.
+void run_live_gnss(GnssCliOptions& o, const LiveCli& live) {
+  parse_text(o);
+  run_live_command<analysis::LeverarmGnssReport>(
+      live, o.input,
+      [&o](const analysis::LogSource& data) {
+        analysis::LeverarmGnssRequest request = o.request;
+        request.source = data;
+        return analysis::run_leverarm_gnss(request);
+      },
+      o.outputs);
+}
+
 }  // namespace
 
-void add_leverarm_gnss(CLI::App& leverarm) {
+void add_leverarm_gnss(CLI::App& leverarm, LogMode mode) {
   auto o = std::make_shared<GnssCliOptions>();
   CLI::App* sub = leverarm.add_subcommand(
       "gnss",
@@ -97,7 +111,8 @@ void add_leverarm_gnss(CLI::App& leverarm) {
   o->input.add_options(*sub,
                        "ins: mruK.roll/pitch/p/q/r/ax/ay/az and heading; thesis methods: time, "
                        "roll, pitch, heading, p, q, r, u, v, w (optional); per antenna "
-                       "gnssK.lat/lon/height or gnssK.north/east/down");
+                       "gnssK.lat/lon/height or gnssK.north/east/down",
+                       mode);
   add_enum_option(*sub, "--method", o->request.method, analysis::gnss_method_from_name,
                   "auto, ins, luenberger, adaptive or lsq (auto: ins when the log has an MRU "
                   "with accelerations and the heading, else lsq)");
@@ -169,6 +184,14 @@ void add_leverarm_gnss(CLI::App& leverarm) {
       "--estimate-time-offset; from the logger's MRU and speed log: dynpos leverarm gnss "
       "DIR/log.csv --col roll=mru1.roll --col pitch=mru1.pitch --col p=mru1.p --col q=mru1.q "
       "--col r=mru1.r");
+  if (mode == LogMode::kLive) {
+    auto live = std::make_shared<LiveCli>();
+    add_live_options(*sub, *live,
+                     "dynpos live leverarm gnss --follow DIR/log.csv --imu-arm "
+                     "0.358,0.804,-4.321 --idle-exit 10");
+    sub->callback([o, live] { run_live_gnss(*o, *live); });
+    return;
+  }
   sub->callback([o] { run_gnss(*o); });
 }
 

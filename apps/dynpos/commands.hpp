@@ -63,18 +63,27 @@ void write_and_print(const Report& report, const analysis::Outputs& outputs) {
   for (const std::filesystem::path& file : written) print_text(out, "wrote {}\n", file.string());
 }
 
+/// How an analysis subcommand reads its log: LOG, a file read at once, its results written once
+/// (`dynpos identify step LOG`); or a live stream, the analysis re-run as it arrives
+/// (`dynpos live identify step --udp HOST:PORT`, cmd_live.cpp).
+enum class LogMode { kFile, kLive };
+
 /// Adds `vessel` to the `hybrid` subcommand.
 void add_hybrid_vessel(CLI::App& hybrid);
 
-// Subcommands under `identify` and `leverarm`, one file each.
-void add_identify_agility(CLI::App& identify);          // cmd_identify_agility.cpp
-void add_identify_thrust_map(CLI::App& identify);       // cmd_identify_thrust_map.cpp
-void add_identify_four_corner(CLI::App& identify);      // cmd_identify_four_corner.cpp
-void add_identify_station_keeping(CLI::App& identify);  // cmd_identify_station_keeping.cpp
-void add_identify_failure_test(CLI::App& identify);     // cmd_identify_failure_test.cpp
-void add_identify_vessel_command(CLI::App& identify);   // cmd_identify_vessel.cpp
-void add_leverarm_gnss(CLI::App& leverarm);             // cmd_leverarm_gnss.cpp
-void add_leverarm_mru(CLI::App& leverarm);              // cmd_leverarm_mru.cpp
+// Subcommands under `identify` and `leverarm` (and, in live mode, under `live identify` and
+// `live leverarm`), one file each.
+void add_identify_step(CLI::App& identify, LogMode mode);  // cmd_identify.cpp
+void add_identify_agility(CLI::App& identify);             // cmd_identify_agility.cpp
+void add_identify_thrust_map(CLI::App& identify);          // cmd_identify_thrust_map.cpp
+void add_identify_four_corner(CLI::App& identify);         // cmd_identify_four_corner.cpp
+void add_identify_station_keeping(
+    CLI::App& identify,
+    LogMode mode = LogMode::kFile);                    // cmd_identify_station_keeping.cpp
+void add_identify_failure_test(CLI::App& identify);    // cmd_identify_failure_test.cpp
+void add_identify_vessel_command(CLI::App& identify);  // cmd_identify_vessel.cpp
+void add_leverarm_gnss(CLI::App& leverarm, LogMode mode = LogMode::kFile);  // cmd_leverarm_gnss.cpp
+void add_leverarm_mru(CLI::App& leverarm);                                  // cmd_leverarm_mru.cpp
 
 void register_simulate(CLI::App& app);
 void register_compare_trial(CLI::App& app);  // cmd_identify_vessel.cpp
@@ -87,5 +96,10 @@ void register_capability(CLI::App& app);   // cmd_capability.cpp
 void register_montecarlo(CLI::App& app);   // cmd_montecarlo.cpp
 void register_estimate(CLI::App& app);     // cmd_estimate.cpp
 void register_consequence(CLI::App& app);  // cmd_consequence.cpp
+void register_live(CLI::App& app);         // cmd_live.cpp
+/// Called by the signal thread (main.cpp) for Ctrl-C, SIGTERM or SIGHUP: true when a live
+/// session is running and takes the signal as a request to end with its final result (the
+/// first signal only; another then ends the process as usual).
+bool live_session_takes_signal() noexcept;  // cmd_live.cpp
 
 }  // namespace dynpos::cli

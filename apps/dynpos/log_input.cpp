@@ -86,8 +86,12 @@ void add_log_source_options(CLI::App& sub, analysis::LogSource& source,
       ->check(CLI::Range(0u, 256u));
 }
 
-void LogInput::add_options(CLI::App& sub, const std::string& roles_help) {
-  add_log_options(sub, *this, roles_help);
+void LogInput::add_options(CLI::App& sub, const std::string& roles_help, LogMode mode) {
+  if (mode == LogMode::kLive) {
+    add_log_source_options(sub, *this, roles_help);
+  } else {
+    add_log_options(sub, *this, roles_help);
+  }
 }
 
 }  // namespace dynpos::cli

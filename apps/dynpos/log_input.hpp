@@ -5,15 +5,17 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "commands.hpp"
 #include "dynpos/analysis/log_source.hpp"
 #include "dynpos/analysis/options.hpp"
 
 namespace dynpos::cli {
 
 struct LogInput : analysis::LogSource {
-  /// Adds LOG (positional, required), --map, --col, --unit, --clock-offset, --max-gap, --format,
-  /// --strict and the time-stamp options to `sub`.
-  void add_options(CLI::App& sub, const std::string& roles_help);
+  /// Adds LOG (positional, required; not in live mode, where the stream is the log), --map,
+  /// --col, --unit, --clock-offset, --max-gap, --format, --strict and the time-stamp options to
+  /// `sub`.
+  void add_options(CLI::App& sub, const std::string& roles_help, LogMode mode = LogMode::kFile);
 };
 
 /// Adds LOG (positional, required), --map, --col (roles_help lists the roles), --unit,

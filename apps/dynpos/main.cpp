@@ -32,9 +32,18 @@ namespace {
 // The thread gets a small stack (it only waits and removes files), so it starts even under a
 // tight memory limit (`ulimit -v`); if the system cannot start it at all, the signals are
 // unblocked again and end the process as they would any program (temporary files then stay).
+// A live session (dynpos live) takes the first signal as the end of its stream: it writes its
+// final result and the command ends as usual; a second signal ends the process.
 void* take_signals(void* signals) {
   int signal = 0;
-  if (sigwait(static_cast<const sigset_t*>(signals), &signal) != 0) return nullptr;
+  for (;;) {
+    if (sigwait(static_cast<const sigset_t*>(signals), &signal) != 0) return nullptr;
+    if (!dynpos::cli::live_session_takes_signal()) break;
+    std::fprintf(stderr,
+                 "dynpos live: signal %d: ending the session with its final result (again to "
+                 "stop at once)\n",
+                 signal);
+  }
   const std::size_t removed = dynpos::io::temporary_files::remove_all_for_exit();
   std::fprintf(stderr, "dynpos: stopped by signal %d; %zu temporary file(s) removed\n", signal,
                removed);
@@ -90,6 +99,7 @@ int main(int argc, char** argv) {
   register_montecarlo(app);
   register_estimate(app);
   register_consequence(app);
+  register_live(app);
   register_demo(app);
   // Every output of the subcommand given is checked before any subcommand runs.
   app.parse_complete_callback([&app] { check_outputs(app); });
