@@ -191,6 +191,15 @@ WaveMotion6 WaveMotion::motion(double heading_rad, double heading_rate,
   return out;
 }
 
+Eigen::Matrix<double, 6, 1> WaveMotion::position_std(double heading_rad) const noexcept {
+  const double beta = sea_.from_rad + M_PI - heading_rad;  // as in motion()
+  Eigen::Matrix<double, 6, 1> d;
+  d << std::cos(beta), std::sin(beta), 1.0, std::sin(beta), -std::cos(beta), std::sin(2.0 * beta);
+  Eigen::Matrix<double, 6, 1> var = Eigen::Matrix<double, 6, 1>::Zero();
+  for (const Eigen::Matrix<double, 6, 1>& g : gain_) var += 0.5 * g.cwiseProduct(d).cwiseAbs2();
+  return var.cwiseSqrt();
+}
+
 void WaveMotion::advance() noexcept {
   for (std::size_t i = 0; i < phasor_.size(); ++i) {  // phasor × rotor, written out as above
     const double p_re = phasor_[i].real(), p_im = phasor_[i].imag();

@@ -26,6 +26,16 @@ double rate_std_rad_s(const VesselConfig& vessel) {
 
 }  // namespace
 
+control::EkfObserverTuning dp_ekf_tuning(const model::WaveMotion& waves, double heading0_rad) {
+  const Eigen::Matrix<double, 6, 1> wf_std = waves.position_std(heading0_rad);
+  const double horizontal_m = std::hypot(wf_std[0], wf_std[1]);
+  control::EkfObserverTuning t;
+  t.wave_motion_std.head<2>().setConstant(std::max(0.4 * horizontal_m, 0.01));
+  t.bias_accel_noise.head<2>().setConstant(2e-3);
+  t.position_std_m = 0.05;
+  return t;
+}
+
 control::ObserverModel observer_model(const VesselConfig& vessel, const model::Hull& hull,
                                       const model::SeaStateParams& sea) {
   const control::DpControllerParams dp = dp_controller_params(vessel, hull);
@@ -59,7 +69,7 @@ DpEstimator::DpEstimator(const ScenarioSpec& spec, const VesselConfig& vessel,
     observer_.emplace<control::PassiveObserver>(model, control::passive_observer_gains(model),
                                                 eta0_n);
   } else if (kind_ == control::ObserverKind::kEkf) {
-    observer_.emplace<control::EkfObserver>(model, control::EkfObserverTuning{}, eta0_n);
+    observer_.emplace<control::EkfObserver>(model, dp_ekf_tuning(waves_, eta0_n.z()), eta0_n);
   }
 }
 

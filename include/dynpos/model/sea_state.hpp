@@ -114,6 +114,9 @@ class WaveMotion {
   void advance() noexcept;
   /// Mean wave drift force in BODY (X, Y, N) [N, N, N·m] at heading ψ [rad].
   Eigen::Vector3d drift_force_b(double heading_rad) const noexcept;
+  /// σ of the motion's position per DOF at a steady heading ψ [rad] (surge, sway, heave [m];
+  /// roll, pitch, yaw [rad]): √(Σ A²/2) over the components, A each one's amplitude there.
+  Eigen::Matrix<double, 6, 1> position_std(double heading_rad) const noexcept;
   const std::vector<WaveComponent>& components() const noexcept { return components_; }
 
  private:
