@@ -43,7 +43,8 @@ control::ObserverModel observer_model(const ScenarioSpec& spec, const VesselConf
 /// EkfObserverTuning's defaults but for three values calibrated on the virtual Gunnerus under DP
 /// in H_s 2.5 m, T_p 8 s at 45° to the waves (seeds 1–20, tests/validation/observer_test.cpp).
 /// The defaults there let the loop on the estimate move up to 2.46 times as much as on the true
-/// motion; these 1.39 times, the LF position error still 0.22 of the WF motion:
+/// motion; these 1.46 times (1.39 with 0.2 m instead of the rule below), the LF position error
+/// still 0.22 of the WF motion:
 /// - the wave model's σ in N and E: 0.4 × the sea's horizontal WF position σ at ψ₀ (0.21 m
 ///   there, where the WF motion's σ is 0.52 m; the defaults' 0.5 m is 0.35 of the WF motion of
 ///   ekf_observer_test's supply vessel); with the other two values as here, 0.5 m let the loop
