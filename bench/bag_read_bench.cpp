@@ -321,6 +321,16 @@ const BagCounts& vessel_bag() {
   return counts;
 }
 
+// The process' processor time so far (user + system, every thread) [s].
+double cpu_seconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  const auto seconds = [](const timeval& t) {
+    return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec);
+  };
+  return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+}
+
 dynpos::io::ColumnMap vessel_map() {
   dynpos::io::ColumnMap map;
   map.set_column("time", "time");
@@ -359,6 +369,7 @@ void BM_ReadVesselBag(benchmark::State& state) {
   const auto jobs = static_cast<unsigned>(state.range(0));
   std::size_t rows = 0;
   double columns = 0;
+  const double cpu_before = cpu_seconds();
   for (auto _ : state) {
     const dynpos::io::FileLog log =
         dynpos::io::read_bag_file(path, map, dynpos::io::BagTime::kAuto, jobs);
@@ -366,6 +377,7 @@ void BM_ReadVesselBag(benchmark::State& state) {
     columns = column_bytes(log);
     benchmark::DoNotOptimize(rows);
   }
+  const double cpu = cpu_seconds() - cpu_before;
   if (rows != counts.imu) state.SkipWithError("not every message was read");
   const auto iterations = static_cast<double>(state.iterations());
   const auto file_bytes = static_cast<std::int64_t>(std::filesystem::file_size(path));
@@ -379,6 +391,7 @@ void BM_ReadVesselBag(benchmark::State& state) {
   state.counters["peak_MB"] = static_cast<double>(usage.ru_maxrss) / 1024.0;
   state.counters["columns_MB"] = columns / 1e6;
   state.counters["file_MB"] = static_cast<double>(file_bytes) / 1e6;
+  state.counters["cpu_s/GB"] = cpu / iterations / (static_cast<double>(file_bytes) / 1e9);
   state.counters["ratio"] =
       static_cast<double>(counts.uncompressed) / static_cast<double>(file_bytes);
 }

@@ -53,10 +53,12 @@ struct CdrDecoder::Reader {
     pos = (pos + a - 1) & ~(a - 1);
   }
   void need(std::uint64_t n, const char* what) const {
-    if (pos > size || n > size - pos) {
-      fail(
-          fmt::format("{} needs {} bytes, only {} are left", what, n, pos > size ? 0 : size - pos));
+    if (pos > size || n > size - pos) [[unlikely]] {
+      fail_need(n, what);
     }
+  }
+  [[noreturn, gnu::noinline, gnu::cold]] void fail_need(std::uint64_t n, const char* what) const {
+    fail(fmt::format("{} needs {} bytes, only {} are left", what, n, pos > size ? 0 : size - pos));
   }
   template <class T>
   T number(const char* what) {
@@ -91,7 +93,8 @@ struct CdrDecoder::Reader {
     }
     return n;
   }
-  double primitive(Ros2Primitive p) {
+  // A number of type p, as a double; a string is skipped (0).
+  [[gnu::always_inline]] double primitive(Ros2Primitive p) {
     switch (p) {
       case Ros2Primitive::kBool:
         return number<std::uint8_t>("a bool") != 0 ? 1.0 : 0.0;

@@ -7,8 +7,11 @@
 
 #include <sys/mman.h>
 
+#include <algorithm>
 #include <cstddef>
+#include <cstring>
 #include <new>
+#include <span>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -37,15 +40,18 @@ class ColumnBlocks {
   ~ColumnBlocks() { clear(); }
 
   void push_back(T value) {
-    if (last_ == kBlockSize) {
-      blocks_.reserve(blocks_.size() + 1);
-      void* block =
-          ::mmap(nullptr, kBlockBytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-      if (block == MAP_FAILED) throw std::bad_alloc();
-      blocks_.push_back(static_cast<T*>(block));
-      last_ = 0;
-    }
+    if (last_ == kBlockSize) add_block();
     blocks_.back()[last_++] = value;
+  }
+  /// Appends `values` (copied a block's room at a time).
+  void append(std::span<const T> values) {
+    while (!values.empty()) {
+      if (last_ == kBlockSize) add_block();
+      const std::size_t n = std::min(values.size(), kBlockSize - last_);
+      std::memcpy(blocks_.back() + last_, values.data(), n * sizeof(T));
+      last_ += n;
+      values = values.subspan(n);
+    }
   }
   std::size_t size() const noexcept {
     return blocks_.empty() ? 0 : (blocks_.size() - 1) * kBlockSize + last_;
@@ -81,6 +87,14 @@ class ColumnBlocks {
 
  private:
   static constexpr std::size_t kBlockBytes = kBlockSize * sizeof(T);
+  void add_block() {
+    blocks_.reserve(blocks_.size() + 1);
+    void* block =
+        ::mmap(nullptr, kBlockBytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (block == MAP_FAILED) throw std::bad_alloc();
+    blocks_.push_back(static_cast<T*>(block));
+    last_ = 0;
+  }
   std::vector<T*> blocks_;
   std::size_t last_ = kBlockSize;  // values in the last block
 };

@@ -64,6 +64,9 @@ struct McapLayout {
   std::size_t messages_per_chunk = 100;
   bool summary = true;  ///< a summary section (schemas, channels, chunk indexes) and footer
   bool crc = true;      ///< the chunks' uncompressed CRC
+  /// Chunked: each channel's Schema and Channel records in the chunk of its first message, just
+  /// before it (as writers that learn of topics while recording do); else all in the first chunk.
+  bool declare_at_first_use = false;
 };
 
 inline std::uint32_t test_crc32(const Bytes& b) {
@@ -98,6 +101,7 @@ class McapWriter {
     str(r, encoding);
     u32(r, 0);  // metadata: an empty map
     channels_.push_back(record(0x04, r));
+    channel_schema_.push_back(schema_id);
     return id;
   }
   void message(std::uint16_t channel, std::uint64_t log_time_ns, const Bytes& data) {
@@ -200,7 +204,7 @@ class McapWriter {
   // chunk); returns its ChunkIndex record.
   Bytes write_chunk(Bytes& f, std::size_t first) const {
     Bytes plain;
-    if (first == 0) {
+    if (first == 0 && !layout_.declare_at_first_use) {
       for (const Bytes& s : schemas_) append(plain, s);
       for (const Bytes& c : channels_) append(plain, c);
     }
@@ -208,6 +212,7 @@ class McapWriter {
     std::uint64_t t0 = ~std::uint64_t{0}, t1 = 0;
     const std::size_t last = std::min(messages_.size(), first + layout_.messages_per_chunk);
     for (std::size_t i = first; i < last; ++i) {
+      if (layout_.declare_at_first_use) declare(plain, messages_[i].channel, i);
       append(plain, messages_[i].record);
       channels[messages_[i].channel] = 0;
       t0 = std::min(t0, messages_[i].time);
@@ -242,9 +247,25 @@ class McapWriter {
     return record(0x08, i);
   }
 
+  // The Schema and Channel records of `channel` when message i is its first (the schema only
+  // when no message before i has a channel of that schema).
+  void declare(Bytes& plain, std::uint16_t channel, std::size_t i) const {
+    const auto before = [&](auto same) {
+      return std::any_of(messages_.begin(), messages_.begin() + static_cast<std::ptrdiff_t>(i),
+                         same);
+    };
+    if (before([&](const Message& m) { return m.channel == channel; })) return;
+    const std::uint16_t schema = channel_schema_[channel - 1u];
+    if (!before([&](const Message& m) { return channel_schema_[m.channel - 1u] == schema; })) {
+      append(plain, schemas_[schema - 1u]);
+    }
+    append(plain, channels_[channel - 1u]);
+  }
+
   McapLayout layout_;
   std::vector<Bytes> schemas_;
   std::vector<Bytes> channels_;
+  std::vector<std::uint16_t> channel_schema_;  // by channel id - 1
   std::vector<Message> messages_;
 };
 

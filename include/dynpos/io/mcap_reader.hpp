@@ -69,6 +69,25 @@ struct McapMessage {
   std::string position() const;
 };
 
+/// Work on the messages of a chunk done ahead of the calling thread, on the thread that
+/// decompressed the chunk (a worker, or the calling thread when no worker took it): e.g. the
+/// messages decoded into per-chunk columns, which the calling thread appends in file order.
+/// McapReader::read_messages makes one per chunk in flight and uses it again for later chunks.
+class McapChunkWork {
+ public:
+  virtual ~McapChunkWork() = default;
+  /// On the calling thread, as the chunk is queued: keeps what take() needs, which must not
+  /// change while the chunk is in flight.
+  virtual void prepare() = 0;
+  /// On the chunk's thread, for its messages of channels known wanted when the chunk was queued,
+  /// in file order: takes the message (true) or leaves it with no trace (false); that message
+  /// and every one after it in the chunk then go to on_message on the calling thread.
+  virtual bool take(const McapMessage& message) = 0;
+  /// On the calling thread, as the chunk comes in file order, before its messages left go to
+  /// on_message: hands on what take() took.
+  virtual void hand_on() = 0;
+};
+
 class McapReader {
  public:
   /// Opens `path`: checks the magic and reads the summary section when the footer points to
@@ -92,6 +111,13 @@ class McapReader {
   /// channel, when it is first known), in file order. Throws core::InputError for a bad record.
   void read_messages(const std::function<bool(const McapChannel&)>& wanted,
                      const std::function<void(const McapMessage&)>& on_message);
+  /// The same, with work made by `chunk_work` taking messages of chunks ahead (McapChunkWork):
+  /// every message is still seen once, by take() or by on_message, in file order. A chunk's
+  /// messages are offered to take() up to its first Schema or Channel record, message of a
+  /// channel whose wish is not known yet, or bad record, which the calling thread meets in turn.
+  void read_messages(const std::function<bool(const McapChannel&)>& wanted,
+                     const std::function<void(const McapMessage&)>& on_message,
+                     const std::function<std::unique_ptr<McapChunkWork>()>& chunk_work);
 
   /// An error of this file at `where` (e.g. McapMessage::position()), naming `topic` if any.
   core::InputError error(const std::string& where, const std::string& problem,
