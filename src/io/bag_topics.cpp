@@ -72,12 +72,13 @@ std::vector<double> topic_column(BagTopic& read, const TopicOrder& order, std::s
     if (c == 0) return read.time_ns.take<double>(seconds);
     return read.values[c - 1].take<double>([](double x) { return x; });
   }
-  std::vector<double> out(order.n);
+  std::vector<double> out;
+  out.reserve(order.n);  // not zeroed first: each value is written once
   if (c == 0) {
-    for (std::size_t k = 0; k < order.n; ++k) out[k] = seconds(read.time_ns[order.order[k]]);
+    for (const std::size_t k : order.order) out.push_back(seconds(read.time_ns[k]));
     read.time_ns.clear();
   } else {
-    for (std::size_t k = 0; k < order.n; ++k) out[k] = read.values[c - 1][order.order[k]];
+    for (const std::size_t k : order.order) out.push_back(read.values[c - 1][k]);
     read.values[c - 1].clear();
   }
   return out;

@@ -9,11 +9,14 @@
 /// skipped. With a summary holding chunk indexes, only the chunks that hold a wanted channel
 /// are read, in file order; without (a file cut short, an unindexed writer), the file is read
 /// from its start to DataEnd or its end. Chunks are read (pread), decompressed and their CRC
-/// checked on worker threads ahead of the calling thread, which hands their messages on in file
-/// order; the messages, their order and the errors do not depend on the number of threads (the
-/// first error in file order is the one thrown). Memory: at most two chunks per thread and one
-/// more in flight (compressed and decompressed; within 64 MiB of compressed bytes read ahead
-/// beyond the first), each at most kMaxMcapChunkBytes; never the whole file.
+/// checked on worker threads ahead of the calling thread (a zstd/LZ4 context per thread), which
+/// hands their messages on in file order; with a McapChunkWork, the thread that decompressed a
+/// chunk also takes its messages ahead (decodes them) and the calling thread hands on what it
+/// took, then the chunk's other messages. The messages, their order and the errors do not
+/// depend on the number of threads (the first error in file order is the one thrown). Memory:
+/// at most two chunks per thread and one more in flight (compressed, decompressed and what the
+/// work took of them; within 64 MiB of compressed bytes read ahead beyond the first), each at
+/// most kMaxMcapChunkBytes; never the whole file.
 ///
 /// Every size a record declares is checked against the bytes left before anything is
 /// allocated: a bad file is a core::InputError naming the file, the byte offset of the record
