@@ -503,8 +503,9 @@ void McapReader::State::read_units(bool indexed) {
   constexpr std::uint64_t kAheadBytes = std::uint64_t{64} << 20;
   const unsigned workers = jobs > 1 ? jobs : 0;
   if (slots.size() < 2 * std::size_t{workers} + 1) slots.resize(2 * std::size_t{workers} + 1);
-  if (decompressors.size() < std::size_t{workers} + 1)
-    decompressors.resize(std::size_t{workers} + 1);
+  if (decompressors.size() < std::size_t{workers} + 1) {
+    decompressors.resize(std::size_t{workers} + 1);  // a worker's and the calling thread's
+  }
   detail::OrderedWork work(workers, slots.size(), [this](std::size_t k, unsigned thread) {
     load_chunk(slots[k], decompressors[thread]);
   });
