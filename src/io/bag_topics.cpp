@@ -210,15 +210,10 @@ void add_bag_message(BagTopic& topic, std::uint64_t source, std::span<const std:
   for (std::size_t i = 0; i < topic.roles.size(); ++i) topic.values[i].push_back(v[i]);
 }
 
-void BagRows::add(std::int64_t t_ns, std::span<const double> row) {
-  const std::size_t n = time_ns.size();
-  try {
-    for (std::size_t i = 0; i < row.size(); ++i) values[i].push_back(row[i]);
-    time_ns.push_back(t_ns);
-  } catch (...) {
-    for (std::vector<double>& v : values) v.resize(std::min(v.size(), n));
-    throw;
-  }
+void BagRows::reserve_more() {
+  const std::size_t n = std::max<std::size_t>(256, 2 * time_ns.capacity());
+  for (std::vector<double>& v : values) v.reserve(n);
+  time_ns.reserve(n);  // last: its room is never more than the values'
 }
 
 void append_bag_rows(BagTopic& topic, BagRows& rows) {

@@ -50,7 +50,14 @@ struct BagRows {
 
   explicit BagRows(std::size_t roles = 0) : values(roles) {}
   /// Appends a row (`row`: a value per role, row.size() == values.size()), all or nothing.
-  void add(std::int64_t t_ns, std::span<const double> row);
+  void add(std::int64_t t_ns, std::span<const double> row) {
+    if (time_ns.size() == time_ns.capacity()) reserve_more();  // then no push_back throws
+    for (std::size_t i = 0; i < row.size(); ++i) values[i].push_back(row[i]);
+    time_ns.push_back(t_ns);
+  }
+
+ private:
+  void reserve_more();
 };
 
 // What is read of one topic, and what was read.
