@@ -26,14 +26,21 @@ BagRolePlan plan_role(const std::string& role, const RoleColumn& entry, std::str
   return plan;
 }
 
+// Notes in read.unordered whether `times`, appended next, break the strictly increasing order.
+void note_order(BagTopic& read, std::span<const std::int64_t> times) {
+  if (read.unordered || times.empty()) return;
+  std::int64_t last = read.time_ns.empty() ? times[0] - 1 : read.time_ns[read.time_ns.size() - 1];
+  for (const std::int64_t t : times) {
+    read.unordered = read.unordered || t <= last;
+    last = t;
+  }
+}
+
 // The indices of the topic's messages in time order, a repeated time kept once; empty when
 // they are in strictly increasing order already (the usual case: no copy then).
-std::vector<std::size_t> time_order(const ColumnBlocks<std::int64_t>& time_ns) {
-  bool increasing = true;
-  for (std::size_t k = 1; k < time_ns.size() && increasing; ++k) {
-    increasing = time_ns[k - 1] < time_ns[k];
-  }
-  if (increasing) return {};
+std::vector<std::size_t> time_order(const BagTopic& read) {
+  if (!read.unordered) return {};
+  const ColumnBlocks<std::int64_t>& time_ns = read.time_ns;
   std::vector<std::size_t> order(time_ns.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(),
@@ -55,7 +62,7 @@ struct TopicOrder {
 };
 
 TopicOrder topic_order(const BagTopic& read) {
-  TopicOrder out{time_order(read.time_ns), read.time_ns.size(), read.time_ns.size(), 0};
+  TopicOrder out{time_order(read), read.time_ns.size(), read.time_ns.size(), 0};
   if (!out.order.empty()) out.n = out.order.size();
   out.origin_ns = read.time_ns[out.order.empty() ? 0 : out.order[0]];
   return out;
@@ -206,6 +213,7 @@ void add_bag_message(BagTopic& topic, std::uint64_t source, std::span<const std:
   std::vector<double>& v = topic.scratch;
   const std::int64_t ns =
       decode_bag_row(topic.roles, topic.sources.at(source), data, receive_ns, v);
+  note_order(topic, {&ns, 1});
   topic.time_ns.push_back(ns);
   for (std::size_t i = 0; i < topic.roles.size(); ++i) topic.values[i].push_back(v[i]);
 }
@@ -217,6 +225,7 @@ void BagRows::reserve_more() {
 }
 
 void append_bag_rows(BagTopic& topic, BagRows& rows) {
+  note_order(topic, rows.time_ns);
   topic.time_ns.append(rows.time_ns);
   rows.time_ns.clear();
   for (std::size_t i = 0; i < rows.values.size(); ++i) {

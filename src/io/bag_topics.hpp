@@ -65,6 +65,7 @@ struct BagTopic {
   std::vector<BagRolePlan> roles;
   std::map<std::uint64_t, BagSource> sources;  // by source of messages
   ColumnBlocks<std::int64_t> time_ns;
+  bool unordered = false;                    // a time not after the one before it was appended
   std::vector<ColumnBlocks<double>> values;  // by role
   std::vector<double> scratch;
 };
