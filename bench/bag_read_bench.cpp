@@ -20,7 +20,8 @@
 // read of the same file, whose peak must stay within 256 MB.
 //
 // The bag, as rosbag2 records it: messages in time order, interleaved in chunks of 1 MiB of
-// records, zstd level 1, a summary with schemas, channels and chunk indexes. Per 0.1 s (and
+// records, zstd level 1, a summary with schemas, channels, chunk indexes and statistics (the
+// messages per channel, by which the reader reserves the columns). Per 0.1 s (and
 // the fields BM_ReadVesselBag reads):
 //   /imu                      sensor_msgs/Imu           100 Hz  (3 fields read)
 //   /odom                     nav_msgs/Odometry          20 Hz  (2)
@@ -37,11 +38,13 @@
 #include <sys/resource.h>
 #include <zstd.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -130,6 +133,25 @@ class VesselMessages {
 
   static constexpr std::uint16_t kImu = 1, kOdom = 2, kGnss = 3, kFeedback = 4, kCommand = 8;
 
+  // The Statistics record of the messages added: their counts, then per channel.
+  Bytes statistics(std::uint64_t messages, std::uint32_t chunks) const {
+    Bytes s;
+    W::u64(s, messages);
+    W::u16(s, 5);  // schemas
+    W::u32(s, static_cast<std::uint32_t>(per_channel_.size()));
+    W::u32(s, 0);  // attachments
+    W::u32(s, 0);  // metadata
+    W::u32(s, chunks);
+    W::u64(s, static_cast<std::uint64_t>(kStart));
+    W::u64(s, static_cast<std::uint64_t>(last_));
+    W::u32(s, static_cast<std::uint32_t>(per_channel_.size() * 10));
+    for (const auto& [channel, n] : per_channel_) {
+      W::u16(s, channel);
+      W::u64(s, n);
+    }
+    return W::record(0x0B, s);
+  }
+
  private:
   double noise(double sigma) { return std::normal_distribution<double>(0.0, sigma)(engine_); }
   static void covariance(CdrWriter& m, int n, double diagonal) {
@@ -184,6 +206,8 @@ class VesselMessages {
   }
   void add(Bytes& plain, BagCounts& counts, std::uint16_t channel, std::int64_t t,
            const Bytes& data) {
+    ++per_channel_[channel];
+    last_ = std::max(last_, t);
     Bytes r;
     W::u16(r, channel);
     W::u32(r, static_cast<std::uint32_t>(counts.messages++));
@@ -194,6 +218,8 @@ class VesselMessages {
   }
 
   std::mt19937_64 engine_{7};
+  std::map<std::uint16_t, std::uint64_t> per_channel_;  // messages added
+  std::int64_t last_ = kStart;                          // the latest time added
 };
 
 void put(std::FILE* f, const Bytes& b) {
@@ -270,7 +296,7 @@ std::pair<Bytes, Bytes> chunk_records(const Bytes& plain, std::uint64_t t0, std:
 
 std::filesystem::path bag_path() {
   return std::filesystem::temp_directory_path() /
-         ("dynpos_bench_vessel_" + std::to_string(bag_megabytes()) + "MB.mcap");
+         ("dynpos_bench_vessel_stats_" + std::to_string(bag_megabytes()) + "MB.mcap");
 }
 
 // Writes the bag chunk by chunk with a summary; returns its counts.
@@ -289,6 +315,7 @@ BagCounts write_vessel_bag(const std::filesystem::path& path) {
   BagCounts counts;
   VesselMessages messages;
   std::int64_t k = 0;
+  std::uint32_t chunks = 0;
   while (offset < bag_megabytes() * 1'000'000) {
     Bytes plain;
     if (k == 0) W::append(plain, defs);
@@ -298,6 +325,7 @@ BagCounts write_vessel_bag(const std::filesystem::path& path) {
     const auto [chunk, index] = chunk_records(plain, t0, t1, offset);
     put(f, chunk);
     W::append(indexes, index);
+    ++chunks;
     offset += chunk.size();
     counts.uncompressed += plain.size();
   }
@@ -308,6 +336,7 @@ BagCounts write_vessel_bag(const std::filesystem::path& path) {
   const std::uint64_t summary = offset + tail.size();
   W::append(tail, defs);
   W::append(tail, indexes);
+  W::append(tail, messages.statistics(counts.messages, chunks));
   Bytes footer;
   W::u64(footer, summary);
   W::u64(footer, 0);

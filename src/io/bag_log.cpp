@@ -121,12 +121,26 @@ class BagRead {
     }
   }
 
+  // The messages of `topic` the bag's statistics declare (0 without them).
+  std::uint64_t declared_messages(const std::string& topic) const {
+    std::uint64_t n = 0;
+    for (const auto& [id, count] : reader_.message_counts()) {
+      const auto channel = reader_.channels().find(id);
+      if (channel != reader_.channels().end() && channel->second.topic == topic) {
+        n = count > UINT64_MAX - n ? UINT64_MAX : n + count;
+      }
+    }
+    return n;
+  }
+
   void add_route(const McapMessage& m) {
     const McapChannel& channel = reader_.channels().at(m.channel_id);
     const auto topic = std::find_if(topics_.begin(), topics_.end(),
                                     [&](const auto& t) { return t.first == channel.topic; });
     detail::BagTopic& read = *topic->second;
+    const bool first = read.sources.empty();
     if (!read.sources.contains(m.channel_id)) add_decoder(read, channel, m);
+    if (first) detail::reserve_bag_rows(read, declared_messages(channel.topic));
     routes_[m.channel_id] = {&channel, static_cast<std::size_t>(topic - topics_.begin()),
                              &read.sources.at(m.channel_id)};
   }

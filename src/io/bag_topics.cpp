@@ -77,7 +77,7 @@ std::vector<double> topic_column(BagTopic& read, const TopicOrder& order, std::s
   };
   if (order.order.empty()) {
     if (c == 0) return read.time_ns.take<double>(seconds);
-    return read.values[c - 1].take<double>([](double x) { return x; });
+    return read.values[c - 1].take();
   }
   std::vector<double> out;
   out.reserve(order.n);  // not zeroed first: each value is written once
@@ -216,6 +216,12 @@ void add_bag_message(BagTopic& topic, std::uint64_t source, std::span<const std:
   note_order(topic, {&ns, 1});
   topic.time_ns.push_back(ns);
   for (std::size_t i = 0; i < topic.roles.size(); ++i) topic.values[i].push_back(v[i]);
+}
+
+void reserve_bag_rows(BagTopic& topic, std::uint64_t rows) {
+  for (ColumnBlocks<double>& v : topic.values) {
+    v.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(rows, SIZE_MAX / 8)));
+  }
 }
 
 void BagRows::reserve_more() {

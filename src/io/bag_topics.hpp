@@ -102,6 +102,11 @@ std::int64_t decode_bag_row(const std::vector<BagRolePlan>& roles, const BagSour
 void add_bag_message(BagTopic& topic, std::uint64_t source, std::span<const std::uint8_t> data,
                      std::int64_t receive_ns);
 
+// Room for `rows` values in each role's column of the topic (a hint: a bag's declared message
+// count), so that they are written once, never copied; the times still go through blocks
+// (converted to seconds when taken).
+void reserve_bag_rows(BagTopic& topic, std::uint64_t rows);
+
 // Appends `rows` (decoded for the topic) to it and empties them, keeping their room.
 void append_bag_rows(BagTopic& topic, BagRows& rows);
 

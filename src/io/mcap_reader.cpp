@@ -37,6 +37,7 @@ enum Opcode : std::uint8_t {
   kMessage = 0x05,
   kChunk = 0x06,
   kChunkIndex = 0x08,
+  kStatistics = 0x0B,
   kDataEnd = 0x0F,
 };
 
@@ -114,6 +115,7 @@ struct McapReader::State {
   std::uint64_t data_end = 0;
   std::map<std::uint16_t, McapSchema> schemas;
   std::map<std::uint16_t, McapChannel> channels;
+  std::map<std::uint16_t, std::uint64_t> message_counts;
   std::vector<ChunkIndex> chunk_indexes;
   bool summary = false;
   std::vector<std::uint8_t> record;
@@ -201,6 +203,7 @@ struct McapReader::State {
   void open_summary();
   void add_schema(ByteCursor c);
   void add_channel(ByteCursor c);
+  void add_statistics(ByteCursor c);
   bool wants(std::uint16_t channel_id);
   void message(ByteCursor c, std::uint64_t offset, std::optional<std::uint64_t> in_chunk);
   // A chunk's records, decompressed and checked into slot.plain (any thread).
@@ -223,6 +226,21 @@ void McapReader::State::add_schema(ByteCursor c) {
   s.encoding = c.string("the schema encoding");
   s.data = c.string("the schema data");
   if (s.id != 0) schemas.try_emplace(s.id, std::move(s));
+}
+
+void McapReader::State::add_statistics(ByteCursor c) {
+  std::map<std::uint16_t, std::uint64_t> counts;
+  try {
+    c.skip(8 + 2 + 4 + 4 + 4 + 4 + 8 + 8, "the statistics' counts and times");
+    ByteCursor map(c.bytes(c.u32("the channel message counts"), "the counts"));
+    while (!map.done()) {
+      const std::uint16_t channel = map.u16("a channel id");
+      counts[channel] = map.u64("its message count");
+    }
+  } catch (const ByteError&) {
+    return;  // a hint only: a damaged record is as none
+  }
+  message_counts = std::move(counts);
 }
 
 void McapReader::State::add_channel(ByteCursor c) {
@@ -413,6 +431,10 @@ void McapReader::State::open_summary() {
   for (std::uint64_t at = start; at < end;) {
     if (end - at < kRecordHeaderBytes) throw error(at, "a summary record is cut short");
     const auto [op, length] = record_header(at, end);
+    if (op == kStatistics && length <= kMaxMcapChunkBytes) {
+      read_at(at + kRecordHeaderBytes, length, record);
+      add_statistics(ByteCursor(record));
+    }
     if (op == kSchema || op == kChannel || op == kChunkIndex) {
       if (length > kMaxMcapChunkBytes) throw error(at, "a summary record is too large");
       read_at(at + kRecordHeaderBytes, length, record);
@@ -595,6 +617,9 @@ const std::map<std::uint16_t, McapChannel>& McapReader::channels() const noexcep
   return state_->channels;
 }
 bool McapReader::has_summary() const noexcept { return state_->summary; }
+const std::map<std::uint16_t, std::uint64_t>& McapReader::message_counts() const noexcept {
+  return state_->message_counts;
+}
 
 void McapReader::read_messages(const std::function<bool(const McapChannel&)>& wanted,
                                const std::function<void(const McapMessage&)>& on_message) {

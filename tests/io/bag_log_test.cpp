@@ -9,6 +9,7 @@
 #include <fstream>
 #include <map>
 
+#include "dynpos/io/mcap_reader.hpp"
 #include "io_test_util.hpp"
 #include "mcap_test_writer.hpp"
 
@@ -113,6 +114,34 @@ TEST(ReadBagFile, ColumnsDoNotDependOnTheThreads) {
       EXPECT_EQ(*many.more[0].origin_ns, *one.more[0].origin_ns);
     }
   }
+}
+
+// The messages per channel of a Statistics record only reserve room: right, too few, far too
+// many or none, the columns are the same.
+TEST(ReadBagFile, DeclaredMessageCountsAreOnlyAHint) {
+  const TempDir dir;
+  std::vector<FileLog> logs;
+  for (const std::int64_t error : {0, -500, 100000, -1}) {
+    McapLayout layout{true, "zstd", 64, true, true};
+    layout.statistics = error != -1;
+    layout.count_error = error;
+    const auto path = dir / "counts.mcap";
+    two_rates(layout).write(path);
+    if (error == 0) {
+      const McapReader reader(path);
+      ASSERT_EQ(reader.message_counts().size(), 2u);
+      EXPECT_EQ(reader.message_counts().at(1), 3000u);
+      EXPECT_EQ(reader.message_counts().at(2), 750u);
+    }
+    logs.push_back(read_bag_file(path, two_rates_map(), BagTime::kAuto, 2));
+  }
+  for (std::size_t k = 1; k < logs.size(); ++k) {
+    EXPECT_EQ(logs[k].log.time(), logs[0].log.time()) << k;
+    EXPECT_EQ(logs[k].log.values("output"), logs[0].log.values("output")) << k;
+    ASSERT_EQ(logs[k].more.size(), 1u);
+    EXPECT_EQ(logs[k].more[0].log.values("input"), logs[0].more[0].log.values("input")) << k;
+  }
+  EXPECT_EQ(logs[0].log.size(), 3000u);
 }
 
 // Chunks whose time ranges overlap (each holds 40 steps of 10 ms, the next starts 30 steps

@@ -133,5 +133,33 @@ TEST(ColumnBlocks, AppendedSpansEqualValuesPushedOneByOne) {
   EXPECT_TRUE(appended.empty());
 }
 
+// Room reserved by a hint: the values go there first and, when they fill most of it and no more
+// came, the column is taken out as that vector; a hint too small spills into blocks, one far
+// too large is copied out into a vector of the values' size. The values are the same each way.
+TEST(ColumnBlocks, AReservedColumnGivesTheSameValuesWhateverTheHint) {
+  const std::size_t n = ColumnBlocks<double>::kBlockSize + 333;
+  std::vector<double> expected;
+  for (std::size_t k = 0; k < n; ++k) expected.push_back(0.25 * static_cast<double>(k) - 7.0);
+  for (const std::size_t hint : {std::size_t{0}, n / 3, n, n + n / 10, 4 * n}) {
+    ColumnBlocks<double> c;
+    c.reserve(hint);
+    c.append(std::span<const double>(expected).first(1000));
+    for (std::size_t k = 1000; k < n / 2; ++k) c.push_back(expected[k]);
+    c.append(std::span<const double>(expected).subspan(n / 2));
+    ASSERT_EQ(c.size(), n) << hint;
+    EXPECT_EQ(c[n / 3 - 1], expected[n / 3 - 1]) << hint;
+    EXPECT_EQ(c[n / 3], expected[n / 3]) << hint;
+    EXPECT_EQ(c[n - 1], expected[n - 1]) << hint;
+    const std::vector<double> taken = c.take();
+    EXPECT_EQ(taken, expected) << hint;
+    EXPECT_LE(taken.capacity(), n + n / 8) << hint;
+    EXPECT_TRUE(c.empty());
+  }
+  ColumnBlocks<double> refused;  // a hint the system cannot hold is none
+  refused.reserve(SIZE_MAX / 8);
+  refused.push_back(1.5);
+  EXPECT_EQ(refused.take(), std::vector<double>{1.5});
+}
+
 }  // namespace
 }  // namespace dynpos::io::detail

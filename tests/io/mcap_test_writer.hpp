@@ -67,6 +67,10 @@ struct McapLayout {
   /// Chunked: each channel's Schema and Channel records in the chunk of its first message, just
   /// before it (as writers that learn of topics while recording do); else all in the first chunk.
   bool declare_at_first_use = false;
+  /// With a summary: a Statistics record, each channel's message count plus `count_error` (a
+  /// writer's mistake, for the tests of counts taken as a hint).
+  bool statistics = false;
+  std::int64_t count_error = 0;
 };
 
 inline std::uint32_t test_crc32(const Bytes& b) {
@@ -141,6 +145,7 @@ class McapWriter {
       for (const Bytes& s : schemas_) append(f, s);
       for (const Bytes& c : channels_) append(f, c);
       for (const Bytes& i : indexes) append(f, i);
+      if (layout_.statistics) append(f, statistics());
     }
     Bytes footer;
     u64(footer, summary_start);
@@ -245,6 +250,27 @@ class McapWriter {
     u64(i, packed.size());
     u64(i, plain.size());
     return record(0x08, i);
+  }
+
+  // The Statistics record: counts of messages, schemas, channels, …, then per channel.
+  Bytes statistics() const {
+    std::map<std::uint16_t, std::uint64_t> counts;
+    for (const Message& m : messages_) ++counts[m.channel];
+    Bytes r;
+    u64(r, messages_.size());
+    u16(r, static_cast<std::uint16_t>(schemas_.size()));
+    u32(r, static_cast<std::uint32_t>(channels_.size()));
+    u32(r, 0);  // attachments
+    u32(r, 0);  // metadata
+    u32(r, 0);  // chunks (not read)
+    u64(r, messages_.empty() ? 0 : messages_.front().time);
+    u64(r, messages_.empty() ? 0 : messages_.back().time);
+    u32(r, static_cast<std::uint32_t>(counts.size() * 10));
+    for (const auto& [channel, n] : counts) {
+      u16(r, channel);
+      u64(r, static_cast<std::uint64_t>(static_cast<std::int64_t>(n) + layout_.count_error));
+    }
+    return record(0x0B, r);
   }
 
   // The Schema and Channel records of `channel` when message i is its first (the schema only

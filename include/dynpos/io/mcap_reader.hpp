@@ -4,18 +4,18 @@
 /// chunk, without ROS.
 ///
 /// Records read: Header, Schema, Channel, Message, Chunk (compression "", "lz4" (frame) or
-/// "zstd"; its uncompressed CRC checked when not 0), ChunkIndex, the summary section and the
-/// Footer; MessageIndex, Attachment, Metadata, Statistics and the other index records are
-/// skipped. With a summary holding chunk indexes, only the chunks that hold a wanted channel
-/// are read, in file order; without (a file cut short, an unindexed writer), the file is read
-/// from its start to DataEnd or its end. Chunks are read (pread), decompressed and their CRC
-/// checked on worker threads ahead of the calling thread (a zstd/LZ4 context per thread), which
-/// hands their messages on in file order; with a McapChunkWork, the thread that decompressed a
-/// chunk also takes its messages ahead (decodes them) and the calling thread hands on what it
-/// took, then the chunk's other messages. The messages, their order and the errors do not
-/// depend on the number of threads (the first error in file order is the one thrown). Memory:
-/// at most two chunks per thread and one more in flight (compressed, decompressed and what the
-/// work took of them; within 64 MiB of compressed bytes read ahead beyond the first), each at
+/// "zstd"; its uncompressed CRC checked when not 0), ChunkIndex, Statistics (its messages per
+/// channel, as a hint), the summary section and the Footer; MessageIndex, Attachment, Metadata
+/// and the other index records are skipped. With a summary holding chunk indexes, only the chunks
+/// that hold a wanted channel are read, in file order; without (a file cut short, an unindexed
+/// writer), the file is read from its start to DataEnd or its end. Chunks are read (pread),
+/// decompressed and their CRC checked on worker threads ahead of the calling thread (a zstd/LZ4
+/// context per thread), which hands their messages on in file order; with a McapChunkWork, the
+/// thread that decompressed a chunk also takes its messages ahead (decodes them) and the calling
+/// thread hands on what it took, then the chunk's other messages. The messages, their order and the
+/// errors do not depend on the number of threads (the first error in file order is the one thrown).
+/// Memory: at most two chunks per thread and one more in flight (compressed, decompressed and what
+/// the work took of them; within 64 MiB of compressed bytes read ahead beyond the first), each at
 /// most kMaxMcapChunkBytes; never the whole file.
 ///
 /// Every size a record declares is checked against the bytes left before anything is
@@ -109,6 +109,9 @@ class McapReader {
   const std::map<std::uint16_t, McapChannel>& channels() const noexcept;
   /// Whether the summary section listed the schemas and channels (so channels() is complete).
   bool has_summary() const noexcept;
+  /// The messages per channel id that the summary's Statistics record declares (empty without
+  /// one, or when it is damaged): a hint for reserving room, never checked against the messages.
+  const std::map<std::uint16_t, std::uint64_t>& message_counts() const noexcept;
 
   /// Calls on_message for every message of a channel that `wanted` accepts (asked once per
   /// channel, when it is first known), in file order. Throws core::InputError for a bad record.
