@@ -68,16 +68,15 @@ bool looks_like_mcap(const std::filesystem::path& path) {
 
 // One chunk read, decompressed and checked off the thread that hands its messages on.
 struct ChunkSlot {
-  std::uint64_t offset = 0;  // the chunk record's
-  std::uint64_t length = 0;  // from a chunk index: the record's bytes; else its content's
-  bool indexed = false;      // found through a chunk index (whose bounds are still to check)
-  std::vector<std::uint8_t> bytes;
-  std::vector<std::uint8_t> decompressed;  // room for its records decompressed
-  std::span<const std::uint8_t> plain;     // its records, decompressed (and checked once loaded)
-  std::uint32_t crc = 0;                   // the CRC the chunk declares (0: none)
-  std::unique_ptr<McapChunkWork> work;     // taking messages ahead, if any
-  std::vector<signed char> wanted;         // State::wanted as the chunk was queued
-  std::size_t resume = 0;                  // the byte of `plain` where the calling thread goes on
+  std::uint64_t offset = 0;        // the chunk record's
+  std::uint64_t length = 0;        // from a chunk index: the record's bytes; else its content's
+  bool indexed = false;            // found through a chunk index (whose bounds are still to check)
+  std::vector<std::uint8_t> kept;  // its records, when the calling thread is to read them
+  std::span<const std::uint8_t> plain;  // its records, decompressed (and checked once loaded)
+  std::uint32_t crc = 0;                // the CRC the chunk declares (0: none)
+  std::unique_ptr<McapChunkWork> work;  // taking messages ahead, if any
+  std::vector<signed char> wanted;      // State::wanted as the chunk was queued
+  std::size_t resume = 0;               // the byte of `plain` where the calling thread goes on
 };
 
 // The CRC of a chunk's records, computed in slices just ahead of the records looked at, so that
@@ -96,6 +95,14 @@ struct RunningCrc {
     value = detail::crc32(bytes.subspan(done, to - done), value);
     done = to;
   }
+};
+
+// What a thread keeps from chunk to chunk: the room it reads a chunk into and decompresses it
+// into (still in its cache for the next), and its decompression contexts.
+struct ThreadRoom {
+  std::vector<std::uint8_t> bytes;
+  std::vector<std::uint8_t> decompressed;
+  detail::ChunkDecompressor decompressor;
 };
 
 // What comes next in file order: a chunk (in a slot), another record, or the error found there.
@@ -122,7 +129,7 @@ struct McapReader::State {
   std::vector<std::uint8_t> window;  // bytes [window_at, +size) of the file, for small reads
   std::uint64_t window_at = 0;
   std::vector<ChunkSlot> slots;
-  std::vector<detail::ChunkDecompressor> decompressors;  // by thread (OrderedWork)
+  std::vector<ThreadRoom> rooms;    // by thread (OrderedWork)
   std::vector<signed char> wanted;  // by channel id: -1 not asked yet, else 0 or 1
   const std::function<bool(const McapChannel&)>* want = nullptr;
   const std::function<void(const McapMessage&)>* on_message = nullptr;
@@ -206,10 +213,11 @@ struct McapReader::State {
   void add_statistics(ByteCursor c);
   bool wants(std::uint16_t channel_id);
   void message(ByteCursor c, std::uint64_t offset, std::optional<std::uint64_t> in_chunk);
-  // A chunk's records, decompressed and checked into slot.plain (any thread).
-  void load_chunk(ChunkSlot& slot, detail::ChunkDecompressor& decompressor) const;
+  // A chunk's records, decompressed, checked and offered to its work; what the calling thread
+  // is to read of them in slot.plain (any thread).
+  void load_chunk(ChunkSlot& slot, ThreadRoom& room) const;
   void unpack_chunk(ChunkSlot& slot, std::span<const std::uint8_t> content,
-                    detail::ChunkDecompressor& decompressor) const;
+                    detail::ChunkDecompressor& decompressor, std::vector<std::uint8_t>& out) const;
   static std::size_t take_ahead(ChunkSlot& slot, RunningCrc& crc);
   void chunk_records(std::span<const std::uint8_t> plain, std::uint64_t offset, std::size_t from);
   void chunk_record(std::uint8_t op, std::span<const std::uint8_t> content, std::uint64_t offset,
@@ -291,7 +299,7 @@ void McapReader::State::chunk_record(std::uint8_t op, std::span<const std::uint8
   if (op == kChannel) add_channel(ByteCursor(content));
 }
 
-void McapReader::State::load_chunk(ChunkSlot& slot, detail::ChunkDecompressor& decompressor) const {
+void McapReader::State::load_chunk(ChunkSlot& slot, ThreadRoom& room) const {
   std::uint64_t length = slot.length;
   if (slot.indexed) {
     if (slot.offset < kMagic.size() || slot.offset > data_end ||
@@ -310,18 +318,27 @@ void McapReader::State::load_chunk(ChunkSlot& slot, detail::ChunkDecompressor& d
     if (declared > kMaxMcapChunkBytes + 64) throw error(slot.offset, "the chunk is too large");
     length = declared;
   }
-  // Into room kept from chunk to chunk: a vector's resize would zero what it adds each time.
+  // Into the thread's room, kept from chunk to chunk: a vector's resize would zero what it adds
+  // each time. Records taken ahead need no other; else they are kept with the chunk.
   check_span(slot.offset + kRecordHeaderBytes, length);
-  if (slot.bytes.size() < length) slot.bytes.resize(static_cast<std::size_t>(length));
-  const auto content = std::span(slot.bytes).first(static_cast<std::size_t>(length));
+  if (room.bytes.size() < length) room.bytes.resize(static_cast<std::size_t>(length));
+  const auto content = std::span(room.bytes).first(static_cast<std::size_t>(length));
   pread_into(slot.offset + kRecordHeaderBytes, content);
-  unpack_chunk(slot, content, decompressor);
+  unpack_chunk(slot, content, room.decompressor, slot.work ? room.decompressed : slot.kept);
   RunningCrc crc{slot.plain, slot.crc != 0};
   slot.resume = slot.work ? take_ahead(slot, crc) : 0;
   crc.upto(slot.plain.size());
   if (crc.value != slot.crc) {
     throw error(slot.offset, fmt::format("the chunk's CRC is {:08x}, its records give {:08x}",
                                          slot.crc, crc.value));
+  }
+  if (slot.resume == slot.plain.size()) {
+    slot.plain = {};  // every record taken ahead: nothing left for the calling thread
+    slot.resume = 0;
+    std::vector<std::uint8_t>().swap(slot.kept);  // what an earlier chunk left, freed
+  } else if (slot.plain.data() != slot.kept.data()) {
+    slot.kept.assign(slot.plain.begin(), slot.plain.end());
+    slot.plain = slot.kept;
   }
 }
 
@@ -362,7 +379,8 @@ std::size_t McapReader::State::take_ahead(ChunkSlot& slot, RunningCrc& crc) {
 }
 
 void McapReader::State::unpack_chunk(ChunkSlot& slot, std::span<const std::uint8_t> content,
-                                     detail::ChunkDecompressor& decompressor) const {
+                                     detail::ChunkDecompressor& decompressor,
+                                     std::vector<std::uint8_t>& out) const {
   const std::uint64_t offset = slot.offset;
   ByteCursor c(content);
   std::span<const std::uint8_t> records;
@@ -384,7 +402,7 @@ void McapReader::State::unpack_chunk(ChunkSlot& slot, std::span<const std::uint8
                                     size, kMaxMcapChunkBytes));
   }
   try {
-    slot.plain = decompressor.decompress(compression, records, size, slot.decompressed);
+    slot.plain = decompressor.decompress(compression, records, size, out);
   } catch (const ByteError& e) {
     throw error(offset, fmt::format("the chunk's {} data: {} (byte {} of it)",
                                     compression.empty() ? "uncompressed" : compression, e.what(),
@@ -525,11 +543,11 @@ void McapReader::State::read_units(bool indexed) {
   constexpr std::uint64_t kAheadBytes = std::uint64_t{64} << 20;
   const unsigned workers = jobs > 1 ? jobs : 0;
   if (slots.size() < 2 * std::size_t{workers} + 1) slots.resize(2 * std::size_t{workers} + 1);
-  if (decompressors.size() < std::size_t{workers} + 1) {
-    decompressors.resize(std::size_t{workers} + 1);  // a worker's and the calling thread's
+  if (rooms.size() < std::size_t{workers} + 1) {
+    rooms.resize(std::size_t{workers} + 1);  // the workers' and the calling thread's
   }
   detail::OrderedWork work(workers, slots.size(), [this](std::size_t k, unsigned thread) {
-    load_chunk(slots[k], decompressors[thread]);
+    load_chunk(slots[k], rooms[thread]);
   });
   std::deque<Unit> units;
   std::size_t next_index = 0;
