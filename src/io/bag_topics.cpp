@@ -8,6 +8,7 @@
 #include <fmt/ranges.h>
 
 #include "csv_cell.hpp"
+#include "dynpos/core/parallel_for.hpp"
 #include "dynpos/io/time_stamp.hpp"
 
 namespace dynpos::io::detail {
@@ -25,14 +26,21 @@ BagRolePlan plan_role(const std::string& role, const RoleColumn& entry, std::str
   return plan;
 }
 
+// Notes in read.unordered whether `times`, appended next, break the strictly increasing order.
+void note_order(BagTopic& read, std::span<const std::int64_t> times) {
+  if (read.unordered || times.empty()) return;
+  std::int64_t last = read.time_ns.empty() ? times[0] - 1 : read.time_ns[read.time_ns.size() - 1];
+  for (const std::int64_t t : times) {
+    read.unordered = read.unordered || t <= last;
+    last = t;
+  }
+}
+
 // The indices of the topic's messages in time order, a repeated time kept once; empty when
 // they are in strictly increasing order already (the usual case: no copy then).
-std::vector<std::size_t> time_order(const ColumnBlocks<std::int64_t>& time_ns) {
-  bool increasing = true;
-  for (std::size_t k = 1; k < time_ns.size() && increasing; ++k) {
-    increasing = time_ns[k - 1] < time_ns[k];
-  }
-  if (increasing) return {};
+std::vector<std::size_t> time_order(const BagTopic& read) {
+  if (!read.unordered) return {};
+  const ColumnBlocks<std::int64_t>& time_ns = read.time_ns;
   std::vector<std::size_t> order(time_ns.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(),
@@ -44,50 +52,67 @@ std::vector<std::size_t> time_order(const ColumnBlocks<std::int64_t>& time_ns) {
   return order;
 }
 
-// The topic's messages as a FileLog: ordered by time, repeated times dropped.
-FileLog topic_log(const std::string& path, const std::string& topic, BagTopic& read,
-                  std::string_view format) {
-  const std::size_t messages = read.time_ns.size();
-  const std::vector<std::size_t> order = time_order(read.time_ns);
-  const std::size_t n = order.empty() ? messages : order.size();
-  const auto at = [&](std::size_t k) { return order.empty() ? k : order[k]; };
-  const std::int64_t origin = read.time_ns[at(0)];
+// A topic's messages in time order: `order` (empty when they are in order already), their
+// count and the first time.
+struct TopicOrder {
+  std::vector<std::size_t> order;
+  std::size_t messages = 0;
+  std::size_t n = 0;  // kept
+  std::int64_t origin_ns = 0;
+};
+
+TopicOrder topic_order(const BagTopic& read) {
+  TopicOrder out{time_order(read), read.time_ns.size(), read.time_ns.size(), 0};
+  if (!out.order.empty()) out.n = out.order.size();
+  out.origin_ns = read.time_ns[out.order.empty() ? 0 : out.order[0]];
+  return out;
+}
+
+// Column `c` of the topic in time order: its time axis [s from the first time] (c == 0) or its
+// role c - 1, taken out of `read` (whose blocks are freed as they are copied).
+std::vector<double> topic_column(BagTopic& read, const TopicOrder& order, std::size_t c) {
+  const std::int64_t origin = order.origin_ns;
   const auto seconds = [origin](std::int64_t ns) {
     return static_cast<double>(ns - origin) * 1e-9;
   };
-  std::vector<double> t;
-  if (order.empty()) {
-    t = read.time_ns.take<double>(seconds);
-  } else {
-    t.resize(n);
-    for (std::size_t k = 0; k < n; ++k) t[k] = seconds(read.time_ns[order[k]]);
-    read.time_ns.clear();
+  if (order.order.empty()) {
+    if (c == 0) return read.time_ns.take<double>(seconds);
+    return read.values[c - 1].take();
   }
+  std::vector<double> out;
+  out.reserve(order.n);  // not zeroed first: each value is written once
+  if (c == 0) {
+    for (const std::size_t k : order.order) out.push_back(seconds(read.time_ns[k]));
+    read.time_ns.clear();
+  } else {
+    for (const std::size_t k : order.order) out.push_back(read.values[c - 1][k]);
+    read.values[c - 1].clear();
+  }
+  return out;
+}
+
+// The topic's messages as a FileLog from its columns (topic_column): ordered by time, repeated
+// times dropped.
+FileLog topic_log(const std::string& path, const std::string& topic, const BagTopic& read,
+                  const TopicOrder& order, std::vector<std::vector<double>> columns,
+                  std::string_view format, unsigned jobs) {
   FileLog out;
-  out.log = core::Log(std::move(t));
+  out.log = core::Log(std::move(columns[0]), jobs);
   for (std::size_t r = 0; r < read.roles.size(); ++r) {
-    std::vector<double> v;
-    if (order.empty()) {
-      v = read.values[r].take<double>([](double x) { return x; });
-    } else {
-      v.resize(n);
-      for (std::size_t k = 0; k < n; ++k) v[k] = read.values[r][order[k]];
-      read.values[r].clear();
-    }
     const BagRolePlan& plan = read.roles[r];
-    out.log.add_channel(plan.role, core::si_unit(plan.unit.quantity).symbol, std::move(v),
-                        plan.interp);
+    out.log.add_channel(plan.role, core::si_unit(plan.unit.quantity).symbol,
+                        std::move(columns[r + 1]), plan.interp);
   }
   out.report.path = path;
   out.report.topic = topic;
   out.report.format = std::string(format);
-  const bool header = std::any_of(read.header_time.begin(), read.header_time.end(),
-                                  [](const auto& c) { return c.second; });
+  const bool header = std::any_of(read.sources.begin(), read.sources.end(),
+                                  [](const auto& c) { return c.second.header; });
   out.report.time_format = header ? "header.stamp" : "receive time";
-  out.report.records = n;
-  if (n < messages) out.report.skipped.add("repeated time", messages - n);
-  out.origin_ns = origin;
-  out.origin = format_iso8601(origin, 0);
+  out.report.records = order.n;
+  if (order.n < order.messages) out.report.skipped.add("repeated time", order.messages - order.n);
+  out.origin_ns = order.origin_ns;
+  out.origin = format_iso8601(order.origin_ns, 0);
   out.origin_zone = "UTC";
   out.first_row_s = out.log.time().front();
   out.last_row_read_s = out.log.time().back();
@@ -160,26 +185,58 @@ void add_bag_decoder(BagTopic& topic, std::uint64_t source, Ros2Schema schema, b
     paths.emplace_back("header.stamp.sec");
     paths.emplace_back("header.stamp.nanosec");
   }
-  auto decoder = std::make_unique<CdrDecoder>(std::move(schema), paths);
-  topic.header_time[source] = header;
-  topic.scratch.resize(paths.size());
+  BagSource& made = topic.sources[source];
+  made.decoder = std::make_unique<CdrDecoder>(std::move(schema), paths);
+  made.header = header;
   topic.values.resize(topic.roles.size());
-  topic.decoders[source] = std::move(decoder);
+}
+
+std::int64_t decode_bag_row(const std::vector<BagRolePlan>& roles, const BagSource& source,
+                            std::span<const std::uint8_t> data, std::int64_t receive_ns,
+                            std::vector<double>& scratch) {
+  const std::size_t n = roles.size();
+  scratch.resize(n + (source.header ? 2 : 0));
+  source.decoder->decode(data, scratch);
+  std::int64_t ns = receive_ns;
+  if (source.header) {
+    ns = static_cast<std::int64_t>(scratch[n]) * 1'000'000'000 +
+         static_cast<std::int64_t>(scratch[n + 1]);
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    scratch[i] = detail::to_si(roles[i].unit, scratch[i] * roles[i].scale);
+  }
+  return ns;
 }
 
 void add_bag_message(BagTopic& topic, std::uint64_t source, std::span<const std::uint8_t> data,
                      std::int64_t receive_ns) {
   std::vector<double>& v = topic.scratch;
-  topic.decoders.at(source)->decode(data, v);
-  std::int64_t ns = receive_ns;
-  if (topic.header_time.at(source)) {
-    const std::size_t n = topic.roles.size();
-    ns = static_cast<std::int64_t>(v[n]) * 1'000'000'000 + static_cast<std::int64_t>(v[n + 1]);
-  }
+  const std::int64_t ns =
+      decode_bag_row(topic.roles, topic.sources.at(source), data, receive_ns, v);
+  note_order(topic, {&ns, 1});
   topic.time_ns.push_back(ns);
-  for (std::size_t i = 0; i < topic.roles.size(); ++i) {
-    const BagRolePlan& plan = topic.roles[i];
-    topic.values[i].push_back(detail::to_si(plan.unit, v[i] * plan.scale));
+  for (std::size_t i = 0; i < topic.roles.size(); ++i) topic.values[i].push_back(v[i]);
+}
+
+void reserve_bag_rows(BagTopic& topic, std::uint64_t rows) {
+  for (ColumnBlocks<double>& v : topic.values) {
+    v.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(rows, SIZE_MAX / 8)));
+  }
+}
+
+void BagRows::reserve_more() {
+  const std::size_t n = std::max<std::size_t>(256, 2 * time_ns.capacity());
+  for (std::vector<double>& v : values) v.reserve(n);
+  time_ns.reserve(n);  // last: its room is never more than the values'
+}
+
+void append_bag_rows(BagTopic& topic, BagRows& rows) {
+  note_order(topic, rows.time_ns);
+  topic.time_ns.append(rows.time_ns);
+  rows.time_ns.clear();
+  for (std::size_t i = 0; i < rows.values.size(); ++i) {
+    topic.values[i].append(rows.values[i]);
+    rows.values[i].clear();
   }
 }
 
@@ -198,7 +255,7 @@ void check_bag_read(const std::string& path, const std::vector<std::string>& nam
 }
 
 FileLog bag_file_log(const std::string& path, BagTopics& topics, std::string axis,
-                     std::string_view format) {
+                     std::string_view format, unsigned jobs) {
   if (axis.empty()) {  // the topic with the most messages
     std::size_t most = 0;
     for (const auto& [topic, read] : topics) {
@@ -208,9 +265,34 @@ FileLog bag_file_log(const std::string& path, BagTopics& topics, std::string axi
       }
     }
   }
-  FileLog out = topic_log(path, axis, topics.at(axis), format);
+  std::vector<BagTopic*> reads;
+  for (auto& [topic, read] : topics) reads.push_back(&read);
+  std::vector<TopicOrder> orders(reads.size());
+  core::parallel_for(reads.size(), jobs,
+                     [&](std::size_t k) { orders[k] = topic_order(*reads[k]); });
+  // Every column of every topic, taken out on the threads.
+  std::vector<std::pair<std::size_t, std::size_t>> which;  // (topic, column)
+  std::vector<std::vector<std::vector<double>>> columns(reads.size());
+  for (std::size_t k = 0; k < reads.size(); ++k) {
+    columns[k].resize(reads[k]->roles.size() + 1);
+    for (std::size_t c = 0; c < columns[k].size(); ++c) which.emplace_back(k, c);
+  }
+  core::parallel_for(which.size(), jobs, [&](std::size_t i) {
+    const auto [k, c] = which[i];
+    columns[k][c] = topic_column(*reads[k], orders[k], c);
+  });
+  FileLog out;
+  std::size_t k = 0;
   for (auto& [topic, read] : topics) {
-    if (topic != axis) out.more.push_back(topic_log(path, topic, read, format));
+    FileLog log = topic_log(path, topic, read, orders[k], std::move(columns[k]), format, jobs);
+    if (topic == axis) {
+      std::vector<FileLog> more = std::move(out.more);
+      out = std::move(log);
+      out.more = std::move(more);
+    } else {
+      out.more.push_back(std::move(log));
+    }
+    ++k;
   }
   return out;
 }

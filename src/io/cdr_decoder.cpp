@@ -53,10 +53,12 @@ struct CdrDecoder::Reader {
     pos = (pos + a - 1) & ~(a - 1);
   }
   void need(std::uint64_t n, const char* what) const {
-    if (pos > size || n > size - pos) {
-      fail(
-          fmt::format("{} needs {} bytes, only {} are left", what, n, pos > size ? 0 : size - pos));
+    if (pos > size || n > size - pos) [[unlikely]] {
+      fail_need(n, what);
     }
+  }
+  [[noreturn, gnu::noinline, gnu::cold]] void fail_need(std::uint64_t n, const char* what) const {
+    fail(fmt::format("{} needs {} bytes, only {} are left", what, n, pos > size ? 0 : size - pos));
   }
   template <class T>
   T number(const char* what) {
@@ -91,7 +93,8 @@ struct CdrDecoder::Reader {
     }
     return n;
   }
-  double primitive(Ros2Primitive p) {
+  // A number of type p, as a double; a string is skipped (0).
+  [[gnu::always_inline]] double primitive(Ros2Primitive p) {
     switch (p) {
       case Ros2Primitive::kBool:
         return number<std::uint8_t>("a bool") != 0 ? 1.0 : 0.0;
@@ -208,6 +211,55 @@ CdrDecoder::CdrDecoder(Ros2Schema schema, const std::vector<std::string>& paths)
   }
   const std::vector<Want>& root = nodes_[0].wants;
   compile(0, 0, root.empty() ? 0 : root.back().field + 1);
+  compile_runs(8);
+  compile_runs(4);
+  // Every value is read or copied unless an array's element may be missing (NaN).
+  may_miss_ = std::any_of(plan_.begin(), plan_.end(),
+                          [](const Op& op) { return op.kind == Op::Kind::kField; });
+}
+
+// Groups the plan's skips and reads into runs at fixed offsets: a run starts aligned to its first
+// step's alignment `a`, and takes the steps after it whose alignment divides `a` (their offsets
+// from its start then do not depend on where it starts), up to a string or an array.
+void CdrDecoder::compile_runs(std::size_t max_align) {
+  Runs& out = runs_[max_align == 8 ? 0 : 1];
+  bool open = false;
+  Run run;
+  std::uint64_t at = 0;  // from the run's start
+  const auto close = [&] {
+    if (!open) return;
+    run.bytes = at;
+    out.runs.push_back(run);
+    open = false;
+  };
+  for (std::size_t i = 0; i < plan_.size(); ++i) {
+    const Op& op = plan_[i];
+    if (op.kind != Op::Kind::kSkip && op.kind != Op::Kind::kRead) {
+      close();
+      out.runs.push_back(
+          {Run::Kind::kOp, 1, 0, static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(i + 1)});
+      continue;
+    }
+    const std::size_t size =
+        op.kind == Op::Kind::kRead ? ros2_primitive_bytes(op.primitive) : op.align;
+    const std::size_t align = std::min(size, max_align);
+    if (!open || align > run.align) {
+      close();
+      const auto first = static_cast<std::uint32_t>(out.reads.size());
+      run = {Run::Kind::kFixed, static_cast<std::uint8_t>(align), 0, first, first};
+      at = 0;
+      open = true;
+    }
+    at = (at + align - 1) & ~std::uint64_t{align - 1};
+    if (op.kind == Op::Kind::kRead) {
+      out.reads.push_back({at, op.primitive, op.slot});
+      run.end = static_cast<std::uint32_t>(out.reads.size());
+      at += size;
+    } else {
+      at += op.bytes;
+    }
+  }
+  close();
 }
 
 void CdrDecoder::add_skip(std::size_t align, std::uint64_t bytes) {
@@ -278,7 +330,11 @@ void CdrDecoder::compile(std::size_t type, std::int32_t node, std::size_t fields
 }
 
 void CdrDecoder::run(Reader& r, std::span<double> values) const {
-  for (const Op& op : plan_) {
+  for (const Op& op : plan_) run_op(op, r, values);
+}
+
+void CdrDecoder::run_op(const Op& op, Reader& r, std::span<double> values) const {
+  {
     switch (op.kind) {
       case Op::Kind::kSkip:
         r.align(op.align);
@@ -302,6 +358,74 @@ void CdrDecoder::run(Reader& r, std::span<double> values) const {
         break;
       }
     }
+  }
+}
+
+namespace {
+
+// The little-endian number of type p at `at`, as a double (as Reader::primitive reads it).
+[[gnu::always_inline]] inline double number_at(Ros2Primitive p, const std::uint8_t* at) {
+  const auto as = [at]<class T>(T) {
+    T v;
+    std::memcpy(&v, at, sizeof(T));
+    return v;
+  };
+  switch (p) {
+    case Ros2Primitive::kFloat64:
+      return as(double{});
+    case Ros2Primitive::kFloat32:
+      return as(float{});
+    case Ros2Primitive::kBool:
+      return as(std::uint8_t{}) != 0 ? 1.0 : 0.0;
+    case Ros2Primitive::kByte:
+    case Ros2Primitive::kChar:
+    case Ros2Primitive::kUint8:
+      return as(std::uint8_t{});
+    case Ros2Primitive::kInt8:
+      return as(std::int8_t{});
+    case Ros2Primitive::kInt16:
+      return as(std::int16_t{});
+    case Ros2Primitive::kUint16:
+      return as(std::uint16_t{});
+    case Ros2Primitive::kInt32:
+      return as(std::int32_t{});
+    case Ros2Primitive::kUint32:
+      return as(std::uint32_t{});
+    case Ros2Primitive::kInt64:
+      return static_cast<double>(as(std::int64_t{}));
+    case Ros2Primitive::kUint64:
+      return static_cast<double>(as(std::uint64_t{}));
+    case Ros2Primitive::kString:
+    case Ros2Primitive::kWstring:
+      break;
+  }
+  return 0.0;
+}
+
+}  // namespace
+
+void CdrDecoder::run_fixed(Reader& r, std::span<double> values) const {
+  const Runs& runs = runs_[r.max_align == 8 ? 0 : 1];
+  double* const out = values.data();
+  for (const Run& run : runs.runs) {
+    if (run.kind == Run::Kind::kOp) {
+      run_op(plan_[run.first], r, values);
+      continue;
+    }
+    r.align(run.align);
+    r.need(run.bytes, "a field");
+    const std::uint8_t* const base = r.data + r.pos;
+    for (std::uint32_t k = run.first; k < run.end; ++k) {
+      const FixedRead& read = runs.reads[k];
+      const std::uint8_t* const at = base + read.offset;
+      double& value = out[static_cast<std::size_t>(read.slot)];
+      if (read.primitive == Ros2Primitive::kFloat64) {  // the usual one, without the switch
+        std::memcpy(&value, at, sizeof(double));
+      } else {
+        value = number_at(read.primitive, at);
+      }
+    }
+    r.pos += static_cast<std::size_t>(run.bytes);
   }
 }
 
@@ -391,22 +515,29 @@ void CdrDecoder::walk(std::size_t type, const Node* node, Reader& r,
   }
 }
 
-CdrDecoder::Reader CdrDecoder::start(std::span<const std::uint8_t> message,
-                                     std::span<double> values) const {
+namespace {
+
+[[noreturn, gnu::noinline, gnu::cold]] void bad_header(std::span<const std::uint8_t> message) {
   if (message.size() < kHeaderBytes) {
     throw CdrError(
         fmt::format("a message of {} bytes, without its 4-byte CDR header", message.size()), 0);
   }
+  throw CdrError(fmt::format("the CDR encapsulation {:02x} {:02x} is not XCDR1 or plain XCDR2",
+                             message[0], message[1]),
+                 0);
+}
+
+}  // namespace
+
+CdrDecoder::Reader CdrDecoder::start(std::span<const std::uint8_t> message,
+                                     std::span<double> values, bool fill) const {
+  if (message.size() < kHeaderBytes) bad_header(message);
   Reader r{message.data() + kHeaderBytes, message.size() - kHeaderBytes};
   const std::uint8_t kind = message[1];
-  if (message[0] != 0 || (kind != 0 && kind != 1 && kind != 6 && kind != 7)) {
-    throw CdrError(fmt::format("the CDR encapsulation {:02x} {:02x} is not XCDR1 or plain XCDR2",
-                               message[0], message[1]),
-                   0);
-  }
+  if (message[0] != 0 || (kind != 0 && kind != 1 && kind != 6 && kind != 7)) bad_header(message);
   r.swap = (kind & 1) == 0;  // big endian on this little-endian host
   r.max_align = kind >= 6 ? 4 : 8;
-  std::fill(values.begin(), values.end(), std::numeric_limits<double>::quiet_NaN());
+  if (fill) std::fill(values.begin(), values.end(), std::numeric_limits<double>::quiet_NaN());
   return r;
 }
 
@@ -417,9 +548,13 @@ void CdrDecoder::finish(std::span<double> values) const {
 }
 
 void CdrDecoder::decode(std::span<const std::uint8_t> message, std::span<double> values) const {
-  Reader r = start(message, values);
+  Reader r = start(message, values, may_miss_);
   try {
-    run(r, values);
+    if (r.swap) {
+      run(r, values);
+    } else {
+      run_fixed(r, values);
+    }
   } catch (const CdrError&) {
     decode_by_walking(message, values);  // the walk's own error
     return;
@@ -429,7 +564,7 @@ void CdrDecoder::decode(std::span<const std::uint8_t> message, std::span<double>
 
 void CdrDecoder::decode_by_walking(std::span<const std::uint8_t> message,
                                    std::span<double> values) const {
-  Reader r = start(message, values);
+  Reader r = start(message, values, true);
   walk(0, nodes_.data(), r, values);
   finish(values);
 }

@@ -39,16 +39,17 @@ std::uint64_t first_guess(std::span<const std::uint8_t> in, std::uint64_t size) 
 
 }  // namespace
 
-bool ChunkDecompressor::grow(std::uint64_t size) {
-  if (room_ >= size) return false;
-  room_ = static_cast<std::size_t>(std::min<std::uint64_t>(size, 2 * std::uint64_t{room_}));
-  if (buffer_.size() < room_) buffer_.resize(room_);
+bool ChunkDecompressor::Output::grow(std::uint64_t size) {
+  if (room >= size) return false;
+  room = static_cast<std::size_t>(std::min<std::uint64_t>(size, 2 * std::uint64_t{room}));
+  if (buffer.size() < room) buffer.resize(room);
   return true;
 }
 
 std::span<const std::uint8_t> ChunkDecompressor::decompress(std::string_view compression,
                                                             std::span<const std::uint8_t> in,
-                                                            std::uint64_t size) {
+                                                            std::uint64_t size,
+                                                            std::vector<std::uint8_t>& buffer) {
   if (compression.empty()) {
     if (in.size() != size) {
       throw ByteError(
@@ -57,22 +58,21 @@ std::span<const std::uint8_t> ChunkDecompressor::decompress(std::string_view com
     return in;
   }
   if (in.empty() && size == 0) return {};
-  const std::uint64_t guess = first_guess(in, size);
-  room_ = static_cast<std::size_t>(guess);
-  if (buffer_.size() < room_) buffer_.resize(room_);
+  Output out{buffer, static_cast<std::size_t>(first_guess(in, size))};
+  if (buffer.size() < out.room) buffer.resize(out.room);
   if (compression == "zstd") {
-    zstd(in, size);
+    zstd(in, size, out);
   } else if (compression == "lz4") {
-    lz4(in, size);
+    lz4(in, size, out);
   } else {
     throw ByteError("unknown compression '" + std::string(compression) +
                         "' (dynpos reads \"\", \"lz4\" and \"zstd\")",
                     0);
   }
-  return {buffer_.data(), static_cast<std::size_t>(size)};
+  return {buffer.data(), static_cast<std::size_t>(size)};
 }
 
-void ChunkDecompressor::zstd(std::span<const std::uint8_t> in, std::uint64_t size) {
+void ChunkDecompressor::zstd(std::span<const std::uint8_t> in, std::uint64_t size, Output& out) {
   if (contexts_->zstd == nullptr) contexts_->zstd = ZSTD_createDCtx();
   if (contexts_->zstd == nullptr) throw std::bad_alloc();
   ZSTD_DCtx_reset(contexts_->zstd, ZSTD_reset_session_only);
@@ -81,9 +81,9 @@ void ChunkDecompressor::zstd(std::span<const std::uint8_t> in, std::uint64_t siz
   std::size_t pending = 1;  // ZSTD_decompressStream: 0 once a frame is complete
   while (src.pos < src.size || pending != 0) {
     std::uint8_t spare = 0;  // past `size`: one byte tells whether there is more
-    const bool full = produced == room_ && !grow(size);
+    const bool full = produced == out.room && !out.grow(size);
     ZSTD_outBuffer dst =
-        full ? ZSTD_outBuffer{&spare, 1, 0} : ZSTD_outBuffer{buffer_.data(), room_, produced};
+        full ? ZSTD_outBuffer{&spare, 1, 0} : ZSTD_outBuffer{out.buffer.data(), out.room, produced};
     const std::size_t before_in = src.pos;
     pending = ZSTD_decompressStream(contexts_->zstd, &dst, &src);
     if (ZSTD_isError(pending)) {
@@ -93,7 +93,7 @@ void ChunkDecompressor::zstd(std::span<const std::uint8_t> in, std::uint64_t siz
     if (!full) {
       const bool progress = dst.pos > produced || src.pos > before_in;
       produced = dst.pos;
-      if (!progress && produced < room_) break;  // input ends inside a frame
+      if (!progress && produced < out.room) break;  // input ends inside a frame
     } else if (src.pos == before_in) {
       break;
     }
@@ -106,7 +106,7 @@ void ChunkDecompressor::zstd(std::span<const std::uint8_t> in, std::uint64_t siz
   }
 }
 
-void ChunkDecompressor::lz4(std::span<const std::uint8_t> in, std::uint64_t size) {
+void ChunkDecompressor::lz4(std::span<const std::uint8_t> in, std::uint64_t size, Output& out) {
   if (contexts_->lz4 == nullptr &&
       LZ4F_isError(LZ4F_createDecompressionContext(&contexts_->lz4, LZ4F_VERSION))) {
     throw std::bad_alloc();
@@ -117,11 +117,11 @@ void ChunkDecompressor::lz4(std::span<const std::uint8_t> in, std::uint64_t size
   std::size_t pending = 1;  // LZ4F_decompress: 0 once a frame is complete
   while (consumed < in.size() || pending != 0) {
     std::uint8_t spare = 0;
-    const bool full = produced == room_ && !grow(size);
-    std::size_t dst_size = full ? 1 : room_ - produced;
+    const bool full = produced == out.room && !out.grow(size);
+    std::size_t dst_size = full ? 1 : out.room - produced;
     std::size_t src_size = in.size() - consumed;
-    pending = LZ4F_decompress(contexts_->lz4, full ? &spare : buffer_.data() + produced, &dst_size,
-                              in.data() + consumed, &src_size, nullptr);
+    pending = LZ4F_decompress(contexts_->lz4, full ? &spare : out.buffer.data() + produced,
+                              &dst_size, in.data() + consumed, &src_size, nullptr);
     if (LZ4F_isError(pending)) {
       throw ByteError(std::string("lz4: ") + LZ4F_getErrorName(pending), consumed);
     }

@@ -9,11 +9,12 @@
 
 namespace dynpos::io::detail {
 
-/// Decompresses one chunk after another into one buffer, which only grows: to the bytes the
-/// data actually gives, never to a declared size up front. Each chunk is decompressed into room
-/// sized as if the buffer were new (the buffer's size left by earlier chunks is not used), so
-/// that what a chunk gives, errors included, does not depend on the chunks before it, nor on
-/// which thread's decompressor took it.
+/// Decompresses one chunk after another, each into a buffer of the caller's (a chunk's slot),
+/// which only grows: to the bytes the data actually gives, never to a declared size up front.
+/// Each chunk is decompressed into room sized as if the buffer were new (the buffer's size left
+/// by earlier chunks is not used), so that what a chunk gives, errors included, does not depend
+/// on the chunks before it, nor on which thread's decompressor took it. Its zstd and LZ4
+/// contexts are kept from chunk to chunk (one decompressor per thread).
 class ChunkDecompressor {
  public:
   ChunkDecompressor();
@@ -23,22 +24,27 @@ class ChunkDecompressor {
   ChunkDecompressor(ChunkDecompressor&&) noexcept;
   ChunkDecompressor& operator=(ChunkDecompressor&&) noexcept;
 
-  /// The `size` bytes that `in` decompresses to with `compression` ("" = none, "zstd", "lz4"),
-  /// valid until the next call. Throws ByteError (offset in `in`) for an unknown compression,
-  /// bad or truncated data, or another size than `size`.
+  /// The `size` bytes that `in` decompresses to with `compression` ("" = none: `in` itself,
+  /// "zstd", "lz4"), in `buffer` (grown as needed; its first `size` bytes). Throws ByteError
+  /// (offset in `in`) for an unknown compression, bad or truncated data, or another size than
+  /// `size`.
   std::span<const std::uint8_t> decompress(std::string_view compression,
-                                           std::span<const std::uint8_t> in, std::uint64_t size);
+                                           std::span<const std::uint8_t> in, std::uint64_t size,
+                                           std::vector<std::uint8_t>& buffer);
 
  private:
-  void zstd(std::span<const std::uint8_t> in, std::uint64_t size);
-  void lz4(std::span<const std::uint8_t> in, std::uint64_t size);
-  // Room for more output: the buffer doubled, up to `size`; false when it holds `size` already.
-  bool grow(std::uint64_t size);
+  // The output of one chunk: the caller's buffer and the room used of it.
+  struct Output {
+    std::vector<std::uint8_t>& buffer;
+    std::size_t room = 0;
+    // Room for more: doubled, up to `size`; false when it holds `size` already.
+    bool grow(std::uint64_t size);
+  };
+  void zstd(std::span<const std::uint8_t> in, std::uint64_t size, Output& out);
+  void lz4(std::span<const std::uint8_t> in, std::uint64_t size, Output& out);
 
   struct Contexts;
   std::unique_ptr<Contexts> contexts_;
-  std::vector<std::uint8_t> buffer_;
-  std::size_t room_ = 0;  // of buffer_, for the chunk being decompressed
 };
 
 }  // namespace dynpos::io::detail

@@ -115,7 +115,7 @@ FileLog read_db3_bag(const std::filesystem::path& path, const ColumnMap& map, Ba
     read_file(reader, i, topics, time, msgs);
   }
   detail::check_bag_read(name, names, topics);
-  return detail::bag_file_log(name, topics, axis, "db3");
+  return detail::bag_file_log(name, topics, axis, "db3", 1);
 }
 
 }  // namespace dynpos::io

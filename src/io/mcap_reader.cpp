@@ -27,6 +27,7 @@ using detail::ByteError;
 constexpr std::array<std::uint8_t, 8> kMagic = {0x89, 'M', 'C', 'A', 'P', '0', '\r', '\n'};
 constexpr std::uint64_t kRecordHeaderBytes = 9;  // opcode u8, length u64
 constexpr std::uint64_t kFooterBytes = kRecordHeaderBytes + 20;
+constexpr std::uint64_t kMessageHeadBytes = 22;  // channel u16, sequence u32, two times u64
 
 enum Opcode : std::uint8_t {
   kHeader = 0x01,
@@ -36,6 +37,7 @@ enum Opcode : std::uint8_t {
   kMessage = 0x05,
   kChunk = 0x06,
   kChunkIndex = 0x08,
+  kStatistics = 0x0B,
   kDataEnd = 0x0F,
 };
 
@@ -66,12 +68,41 @@ bool looks_like_mcap(const std::filesystem::path& path) {
 
 // One chunk read, decompressed and checked off the thread that hands its messages on.
 struct ChunkSlot {
-  std::uint64_t offset = 0;  // the chunk record's
-  std::uint64_t length = 0;  // from a chunk index: the record's bytes; else its content's
-  bool indexed = false;      // found through a chunk index (whose bounds are still to check)
+  std::uint64_t offset = 0;        // the chunk record's
+  std::uint64_t length = 0;        // from a chunk index: the record's bytes; else its content's
+  bool indexed = false;            // found through a chunk index (whose bounds are still to check)
+  std::vector<std::uint8_t> kept;  // its records, when the calling thread is to read them
+  std::span<const std::uint8_t> plain;  // its records, decompressed (and checked once loaded)
+  std::uint32_t crc = 0;                // the CRC the chunk declares (0: none)
+  std::unique_ptr<McapChunkWork> work;  // taking messages ahead, if any
+  std::vector<signed char> wanted;      // State::wanted as the chunk was queued
+  std::size_t resume = 0;               // the byte of `plain` where the calling thread goes on
+};
+
+// The CRC of a chunk's records, computed in slices just ahead of the records looked at, so that
+// their bytes are still in the cache when they are decoded.
+struct RunningCrc {
+  static constexpr std::size_t kSliceBytes = std::size_t{32} << 10;
+  std::span<const std::uint8_t> bytes;
+  bool wanted = true;  // else value stays 0
+  std::uint32_t value = 0;
+  std::size_t done = 0;  // the bytes covered
+
+  // Covers at least the bytes [0, end).
+  void upto(std::size_t end) {
+    if (!wanted || end <= done) return;
+    const std::size_t to = std::min(bytes.size(), std::max(end, done + kSliceBytes));
+    value = detail::crc32(bytes.subspan(done, to - done), value);
+    done = to;
+  }
+};
+
+// What a thread keeps from chunk to chunk: the room it reads a chunk into and decompresses it
+// into (still in its cache for the next), and its decompression contexts.
+struct ThreadRoom {
   std::vector<std::uint8_t> bytes;
+  std::vector<std::uint8_t> decompressed;
   detail::ChunkDecompressor decompressor;
-  std::span<const std::uint8_t> plain;  // its records, decompressed and checked
 };
 
 // What comes next in file order: a chunk (in a slot), another record, or the error found there.
@@ -91,15 +122,18 @@ struct McapReader::State {
   std::uint64_t data_end = 0;
   std::map<std::uint16_t, McapSchema> schemas;
   std::map<std::uint16_t, McapChannel> channels;
+  std::map<std::uint16_t, std::uint64_t> message_counts;
   std::vector<ChunkIndex> chunk_indexes;
   bool summary = false;
   std::vector<std::uint8_t> record;
   std::vector<std::uint8_t> window;  // bytes [window_at, +size) of the file, for small reads
   std::uint64_t window_at = 0;
   std::vector<ChunkSlot> slots;
+  std::vector<ThreadRoom> rooms;    // by thread (OrderedWork)
   std::vector<signed char> wanted;  // by channel id: -1 not asked yet, else 0 or 1
   const std::function<bool(const McapChannel&)>* want = nullptr;
   const std::function<void(const McapMessage&)>* on_message = nullptr;
+  const std::function<std::unique_ptr<McapChunkWork>()>* chunk_work = nullptr;
 
   ~State() {
     if (fd >= 0) ::close(fd);
@@ -125,6 +159,10 @@ struct McapReader::State {
   void pread_at(std::uint64_t offset, std::uint64_t n, std::vector<std::uint8_t>& out) const {
     check_span(offset, n);
     out.resize(static_cast<std::size_t>(n));
+    pread_into(offset, out);
+  }
+  // Reads out.size() bytes at `offset` (checked against the file's size already).
+  void pread_into(std::uint64_t offset, std::span<std::uint8_t> out) const {
     std::size_t done = 0;
     while (done < out.size()) {
       const ssize_t got =
@@ -172,12 +210,16 @@ struct McapReader::State {
   void open_summary();
   void add_schema(ByteCursor c);
   void add_channel(ByteCursor c);
+  void add_statistics(ByteCursor c);
   bool wants(std::uint16_t channel_id);
   void message(ByteCursor c, std::uint64_t offset, std::optional<std::uint64_t> in_chunk);
-  // A chunk's records, decompressed and checked into slot.plain (any thread).
-  void load_chunk(ChunkSlot& slot) const;
-  void unpack_chunk(ChunkSlot& slot, std::span<const std::uint8_t> content) const;
-  void chunk_records(std::span<const std::uint8_t> plain, std::uint64_t offset);
+  // A chunk's records, decompressed, checked and offered to its work; what the calling thread
+  // is to read of them in slot.plain (any thread).
+  void load_chunk(ChunkSlot& slot, ThreadRoom& room) const;
+  void unpack_chunk(ChunkSlot& slot, std::span<const std::uint8_t> content,
+                    detail::ChunkDecompressor& decompressor, std::vector<std::uint8_t>& out) const;
+  static std::size_t take_ahead(ChunkSlot& slot, RunningCrc& crc);
+  void chunk_records(std::span<const std::uint8_t> plain, std::uint64_t offset, std::size_t from);
   void chunk_record(std::uint8_t op, std::span<const std::uint8_t> content, std::uint64_t offset,
                     std::uint64_t in_chunk);
   std::optional<Unit> next_indexed(std::size_t& next_index, bool settled, bool& later);
@@ -192,6 +234,21 @@ void McapReader::State::add_schema(ByteCursor c) {
   s.encoding = c.string("the schema encoding");
   s.data = c.string("the schema data");
   if (s.id != 0) schemas.try_emplace(s.id, std::move(s));
+}
+
+void McapReader::State::add_statistics(ByteCursor c) {
+  std::map<std::uint16_t, std::uint64_t> counts;
+  try {
+    c.skip(8 + 2 + 4 + 4 + 4 + 4 + 8 + 8, "the statistics' counts and times");
+    ByteCursor map(c.bytes(c.u32("the channel message counts"), "the counts"));
+    while (!map.done()) {
+      const std::uint16_t channel = map.u16("a channel id");
+      counts[channel] = map.u64("its message count");
+    }
+  } catch (const ByteError&) {
+    return;  // a hint only: a damaged record is as none
+  }
+  message_counts = std::move(counts);
 }
 
 void McapReader::State::add_channel(ByteCursor c) {
@@ -242,7 +299,7 @@ void McapReader::State::chunk_record(std::uint8_t op, std::span<const std::uint8
   if (op == kChannel) add_channel(ByteCursor(content));
 }
 
-void McapReader::State::load_chunk(ChunkSlot& slot) const {
+void McapReader::State::load_chunk(ChunkSlot& slot, ThreadRoom& room) const {
   std::uint64_t length = slot.length;
   if (slot.indexed) {
     if (slot.offset < kMagic.size() || slot.offset > data_end ||
@@ -252,9 +309,8 @@ void McapReader::State::load_chunk(ChunkSlot& slot) const {
                                            slot.offset, slot.length));
     }
     std::array<std::uint8_t, kRecordHeaderBytes> head{};
-    std::vector<std::uint8_t>& bytes = slot.bytes;
-    pread_at(slot.offset, kRecordHeaderBytes, bytes);
-    std::copy(bytes.begin(), bytes.end(), head.begin());
+    check_span(slot.offset, kRecordHeaderBytes);
+    pread_into(slot.offset, head);
     const auto [op, declared] = check_header(head, slot.offset, data_end);
     if (op != kChunk || declared + kRecordHeaderBytes != slot.length) {
       throw error(slot.offset, "the chunk index does not point to a chunk of its length");
@@ -262,11 +318,69 @@ void McapReader::State::load_chunk(ChunkSlot& slot) const {
     if (declared > kMaxMcapChunkBytes + 64) throw error(slot.offset, "the chunk is too large");
     length = declared;
   }
-  pread_at(slot.offset + kRecordHeaderBytes, length, slot.bytes);
-  unpack_chunk(slot, slot.bytes);
+  // Into the thread's room, kept from chunk to chunk: a vector's resize would zero what it adds
+  // each time. Records taken ahead need no other; else they are kept with the chunk.
+  check_span(slot.offset + kRecordHeaderBytes, length);
+  if (room.bytes.size() < length) room.bytes.resize(static_cast<std::size_t>(length));
+  const auto content = std::span(room.bytes).first(static_cast<std::size_t>(length));
+  pread_into(slot.offset + kRecordHeaderBytes, content);
+  unpack_chunk(slot, content, room.decompressor, slot.work ? room.decompressed : slot.kept);
+  RunningCrc crc{slot.plain, slot.crc != 0};
+  slot.resume = slot.work ? take_ahead(slot, crc) : 0;
+  crc.upto(slot.plain.size());
+  if (crc.value != slot.crc) {
+    throw error(slot.offset, fmt::format("the chunk's CRC is {:08x}, its records give {:08x}",
+                                         slot.crc, crc.value));
+  }
+  if (slot.resume == slot.plain.size()) {
+    slot.plain = {};  // every record taken ahead: nothing left for the calling thread
+    slot.resume = 0;
+    std::vector<std::uint8_t>().swap(slot.kept);  // what an earlier chunk left, freed
+  } else if (slot.plain.data() != slot.kept.data()) {
+    slot.kept.assign(slot.plain.begin(), slot.plain.end());
+    slot.plain = slot.kept;
+  }
 }
 
-void McapReader::State::unpack_chunk(ChunkSlot& slot, std::span<const std::uint8_t> content) const {
+// Offers slot.work the chunk's messages of channels wanted (as known when it was queued) and
+// skips those of channels not wanted, up to a record the calling thread must see: a Schema or
+// Channel record, a message of a channel not judged yet or that the work leaves, a record cut
+// short. Returns the byte where that record starts (the end when there is none).
+std::size_t McapReader::State::take_ahead(ChunkSlot& slot, RunningCrc& crc) {
+  const std::span<const std::uint8_t> plain = slot.plain;
+  const std::uint8_t* const base = plain.data();
+  std::size_t at = 0;
+  while (plain.size() - at >= kRecordHeaderBytes) {
+    const std::uint8_t op = base[at];
+    std::uint64_t length = 0;
+    std::memcpy(&length, base + at + 1, 8);
+    const std::size_t content = at + kRecordHeaderBytes;
+    if (length > plain.size() - content || op == kSchema || op == kChannel) break;
+    crc.upto(content + static_cast<std::size_t>(length));
+    if (op == kMessage) {
+      if (length < kMessageHeadBytes) break;
+      McapMessage m;
+      std::memcpy(&m.channel_id, base + content, 2);
+      const signed char wanted = m.channel_id < slot.wanted.size() ? slot.wanted[m.channel_id] : -1;
+      if (wanted < 0) break;
+      if (wanted > 0) {
+        std::memcpy(&m.log_time_ns, base + content + 6, 8);
+        std::memcpy(&m.publish_time_ns, base + content + 14, 8);
+        m.data = plain.subspan(content + kMessageHeadBytes,
+                               static_cast<std::size_t>(length - kMessageHeadBytes));
+        m.record_offset = slot.offset;
+        m.offset_in_chunk = at;
+        if (!slot.work->take(m)) break;
+      }
+    }
+    at = content + static_cast<std::size_t>(length);
+  }
+  return at;
+}
+
+void McapReader::State::unpack_chunk(ChunkSlot& slot, std::span<const std::uint8_t> content,
+                                     detail::ChunkDecompressor& decompressor,
+                                     std::vector<std::uint8_t>& out) const {
   const std::uint64_t offset = slot.offset;
   ByteCursor c(content);
   std::span<const std::uint8_t> records;
@@ -288,23 +402,19 @@ void McapReader::State::unpack_chunk(ChunkSlot& slot, std::span<const std::uint8
                                     size, kMaxMcapChunkBytes));
   }
   try {
-    slot.plain = slot.decompressor.decompress(compression, records, size);
+    slot.plain = decompressor.decompress(compression, records, size, out);
   } catch (const ByteError& e) {
     throw error(offset, fmt::format("the chunk's {} data: {} (byte {} of it)",
                                     compression.empty() ? "uncompressed" : compression, e.what(),
                                     e.offset));
   }
-  if (crc != 0) {
-    const std::uint32_t actual = detail::crc32(slot.plain);
-    if (actual != crc) {
-      throw error(offset,
-                  fmt::format("the chunk's CRC is {:08x}, its records give {:08x}", crc, actual));
-    }
-  }
+  slot.crc = crc;
 }
 
-void McapReader::State::chunk_records(std::span<const std::uint8_t> plain, std::uint64_t offset) {
+void McapReader::State::chunk_records(std::span<const std::uint8_t> plain, std::uint64_t offset,
+                                      std::size_t from) {
   ByteCursor in(plain);
+  in.skip(from, "the records taken ahead");
   while (!in.done()) {
     const std::size_t at = in.pos();
     try {
@@ -339,6 +449,10 @@ void McapReader::State::open_summary() {
   for (std::uint64_t at = start; at < end;) {
     if (end - at < kRecordHeaderBytes) throw error(at, "a summary record is cut short");
     const auto [op, length] = record_header(at, end);
+    if (op == kStatistics && length <= kMaxMcapChunkBytes) {
+      read_at(at + kRecordHeaderBytes, length, record);
+      add_statistics(ByteCursor(record));
+    }
     if (op == kSchema || op == kChannel || op == kChunkIndex) {
       if (length > kMaxMcapChunkBytes) throw error(at, "a summary record is too large");
       read_at(at + kRecordHeaderBytes, length, record);
@@ -382,10 +496,11 @@ std::optional<Unit> McapReader::State::next_indexed(std::size_t& next_index, boo
       return std::nullopt;
     }
     ++next_index;
-    if (!index.channels.empty() && std::none_of(index.channels.begin(), index.channels.end(),
-                                                [this](std::uint16_t id) { return wants(id); })) {
-      continue;
+    bool wanted = index.channels.empty();
+    for (const std::uint16_t id : index.channels) {
+      wanted = wants(id) || wanted;  // each judged now, for the work taking messages ahead
     }
+    if (!wanted) continue;
     return Unit{kChunk, index.start, index.length, 0, nullptr};
   }
   return std::nullopt;
@@ -428,7 +543,12 @@ void McapReader::State::read_units(bool indexed) {
   constexpr std::uint64_t kAheadBytes = std::uint64_t{64} << 20;
   const unsigned workers = jobs > 1 ? jobs : 0;
   if (slots.size() < 2 * std::size_t{workers} + 1) slots.resize(2 * std::size_t{workers} + 1);
-  detail::OrderedWork work(workers, slots.size(), [this](std::size_t k) { load_chunk(slots[k]); });
+  if (rooms.size() < std::size_t{workers} + 1) {
+    rooms.resize(std::size_t{workers} + 1);  // the workers' and the calling thread's
+  }
+  detail::OrderedWork work(workers, slots.size(), [this](std::size_t k, unsigned thread) {
+    load_chunk(slots[k], rooms[thread]);
+  });
   std::deque<Unit> units;
   std::size_t next_index = 0;
   std::uint64_t at = kMagic.size();
@@ -450,6 +570,11 @@ void McapReader::State::read_units(bool indexed) {
         slot.offset = unit->offset;
         slot.length = unit->length;
         slot.indexed = indexed;
+        if (chunk_work != nullptr) {
+          if (!slot.work) slot.work = (*chunk_work)();
+          slot.wanted = wanted;
+          slot.work->prepare();
+        }
         unit->slot = next_slot;
         next_slot = (next_slot + 1) % slots.size();
         ahead += unit->length;
@@ -465,7 +590,9 @@ void McapReader::State::read_units(bool indexed) {
     if (unit.op == kChunk) {
       work.take(unit.slot);
       ahead -= unit.length;
-      chunk_records(slots[unit.slot].plain, unit.offset);
+      ChunkSlot& slot = slots[unit.slot];
+      if (slot.work) slot.work->hand_on();
+      chunk_records(slot.plain, unit.offset, slot.resume);
       continue;
     }
     read_at(unit.offset + kRecordHeaderBytes, unit.length, record);
@@ -508,16 +635,29 @@ const std::map<std::uint16_t, McapChannel>& McapReader::channels() const noexcep
   return state_->channels;
 }
 bool McapReader::has_summary() const noexcept { return state_->summary; }
+const std::map<std::uint16_t, std::uint64_t>& McapReader::message_counts() const noexcept {
+  return state_->message_counts;
+}
 
 void McapReader::read_messages(const std::function<bool(const McapChannel&)>& wanted,
                                const std::function<void(const McapMessage&)>& on_message) {
+  read_messages(wanted, on_message, {});
+}
+
+void McapReader::read_messages(const std::function<bool(const McapChannel&)>& wanted,
+                               const std::function<void(const McapMessage&)>& on_message,
+                               const std::function<std::unique_ptr<McapChunkWork>()>& chunk_work) {
   State& s = *state_;
   s.want = &wanted;
   s.on_message = &on_message;
+  s.chunk_work = chunk_work ? &chunk_work : nullptr;
   s.wanted.clear();
+  for (ChunkSlot& slot : s.slots) slot.work.reset();
   const auto done = [&s] {
     s.want = nullptr;
     s.on_message = nullptr;
+    s.chunk_work = nullptr;
+    for (ChunkSlot& slot : s.slots) slot.work.reset();
   };
   try {
     s.read_units(s.summary && !s.chunk_indexes.empty());

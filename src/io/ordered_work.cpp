@@ -6,8 +6,10 @@
 
 namespace dynpos::io::detail {
 
-OrderedWork::OrderedWork(unsigned threads, std::size_t slots, std::function<void(std::size_t)> work)
+OrderedWork::OrderedWork(unsigned threads, std::size_t slots,
+                         std::function<void(std::size_t, unsigned)> work)
     : threads_(threads),
+      taker_(threads),
       work_(std::move(work)),
       state_(std::max<std::size_t>(slots, 1), Stage::kFree),
       errors_(state_.size()) {}
@@ -23,7 +25,7 @@ OrderedWork::~OrderedWork() {
 
 void OrderedWork::start_workers() {
   for (unsigned k = 0; k < threads_; ++k) {
-    std::jthread thread = core::try_start_thread([this] { worker(); });
+    std::jthread thread = core::try_start_thread([this, k] { worker(k); });
     if (!thread.joinable()) break;  // the taking thread does what no worker takes
     workers_.push_back(std::move(thread));
   }
@@ -42,12 +44,12 @@ void OrderedWork::queue(std::size_t slot) {
   changed_.notify_one();
 }
 
-void OrderedWork::run(std::size_t slot, std::unique_lock<std::mutex>& lock) {
+void OrderedWork::run(std::size_t slot, unsigned thread, std::unique_lock<std::mutex>& lock) {
   state_[slot] = Stage::kWorking;
   lock.unlock();
   std::exception_ptr error;
   try {
-    work_(slot);
+    work_(slot, thread);
   } catch (...) {
     error = std::current_exception();
   }
@@ -56,14 +58,14 @@ void OrderedWork::run(std::size_t slot, std::unique_lock<std::mutex>& lock) {
   state_[slot] = Stage::kDone;
 }
 
-void OrderedWork::worker() {
+void OrderedWork::worker(unsigned thread) {
   std::unique_lock lock(mutex_);
   for (;;) {
     changed_.wait(lock, [this] { return stop_ || !queued_.empty(); });
     if (stop_) return;
     const std::size_t slot = queued_.front();
     queued_.pop_front();
-    run(slot, lock);
+    run(slot, thread, lock);
     changed_.notify_all();
   }
 }
@@ -72,7 +74,7 @@ void OrderedWork::take(std::size_t slot) {
   std::unique_lock lock(mutex_);
   if (state_[slot] == Stage::kQueued) {
     queued_.erase(std::find(queued_.begin(), queued_.end(), slot));
-    run(slot, lock);
+    run(slot, taker_, lock);
   }
   changed_.wait(lock, [&] { return state_[slot] == Stage::kDone; });
   state_[slot] = Stage::kFree;

@@ -18,10 +18,13 @@ namespace dynpos::io::detail {
 /// a second piece is queued before the first is taken, so that a file of one chunk starts
 /// none). The caller queues slots in a ring order and takes them back in the same order; a
 /// piece no worker has started yet is done by the taking thread itself. With threads == 0 every
-/// piece is done by the taking thread, in order.
+/// piece is done by the taking thread, in order. The work is told the slot and which thread does
+/// it: worker k in [0, threads), or `threads` for the taking thread (for what each thread keeps
+/// from piece to piece, such as a decompression context).
 class OrderedWork {
  public:
-  OrderedWork(unsigned threads, std::size_t slots, std::function<void(std::size_t)> work);
+  OrderedWork(unsigned threads, std::size_t slots,
+              std::function<void(std::size_t slot, unsigned thread)> work);
   /// Stops the workers (each finishes the piece it is on) and joins them.
   ~OrderedWork();
   OrderedWork(const OrderedWork&) = delete;
@@ -39,12 +42,13 @@ class OrderedWork {
  private:
   enum class Stage : unsigned char { kFree, kQueued, kWorking, kDone };
   void start_workers();
-  void worker();
-  // Runs the work of `slot` and records its end (with `lock` held on entry and exit).
-  void run(std::size_t slot, std::unique_lock<std::mutex>& lock);
+  void worker(unsigned thread);
+  // Runs the work of `slot` on `thread` and records its end (with `lock` held on entry and exit).
+  void run(std::size_t slot, unsigned thread, std::unique_lock<std::mutex>& lock);
 
-  unsigned threads_;
-  std::function<void(std::size_t)> work_;
+  unsigned threads_;  // the workers to start; 0 once started
+  unsigned taker_;    // the taking thread's number: the workers asked for
+  std::function<void(std::size_t, unsigned)> work_;
   std::vector<Stage> state_;
   std::vector<std::exception_ptr> errors_;
   std::deque<std::size_t> queued_;  // in queue order

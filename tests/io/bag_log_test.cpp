@@ -7,7 +7,9 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <map>
 
+#include "dynpos/io/mcap_reader.hpp"
 #include "io_test_util.hpp"
 #include "mcap_test_writer.hpp"
 
@@ -110,6 +112,89 @@ TEST(ReadBagFile, ColumnsDoNotDependOnTheThreads) {
       EXPECT_EQ(many.more[0].log.time(), one.more[0].log.time());
       EXPECT_EQ(many.more[0].log.values("input"), one.more[0].log.values("input"));
       EXPECT_EQ(*many.more[0].origin_ns, *one.more[0].origin_ns);
+    }
+  }
+}
+
+// The messages per channel of a Statistics record only reserve room: right, too few, far too
+// many or none, the columns are the same.
+TEST(ReadBagFile, DeclaredMessageCountsAreOnlyAHint) {
+  const TempDir dir;
+  std::vector<FileLog> logs;
+  for (const std::int64_t error : {0, -500, 100000, -1}) {
+    McapLayout layout{true, "zstd", 64, true, true};
+    layout.statistics = error != -1;
+    layout.count_error = error;
+    const auto path = dir / "counts.mcap";
+    two_rates(layout).write(path);
+    if (error == 0) {
+      const McapReader reader(path);
+      ASSERT_EQ(reader.message_counts().size(), 2u);
+      EXPECT_EQ(reader.message_counts().at(1), 3000u);
+      EXPECT_EQ(reader.message_counts().at(2), 750u);
+    }
+    logs.push_back(read_bag_file(path, two_rates_map(), BagTime::kAuto, 2));
+  }
+  for (std::size_t k = 1; k < logs.size(); ++k) {
+    EXPECT_EQ(logs[k].log.time(), logs[0].log.time()) << k;
+    EXPECT_EQ(logs[k].log.values("output"), logs[0].log.values("output")) << k;
+    ASSERT_EQ(logs[k].more.size(), 1u);
+    EXPECT_EQ(logs[k].more[0].log.values("input"), logs[0].more[0].log.values("input")) << k;
+  }
+  EXPECT_EQ(logs[0].log.size(), 3000u);
+}
+
+// Chunks whose time ranges overlap (each holds 40 steps of 10 ms, the next starts 30 steps
+// later): the topics' messages are out of time order across chunks, and times repeat in two
+// chunks with other values. Read alone and on threads (most messages decoded ahead, on the
+// chunk's thread), each topic comes ordered by time, a repeated time keeping the message first
+// in the file.
+TEST(ReadBagFile, ChunksWhoseTimesOverlapAreOrderedByTimeOnAnyNumberOfThreads) {
+  const TempDir dir;
+  for (const bool summary : {true, false}) {
+    McapWriter w(McapLayout{true, "zstd", 40, summary, true});
+    const std::uint16_t s = w.schema("std_msgs/msg/Float64", "float64 data\n");
+    const std::uint16_t a = w.channel(s, "/a");
+    const std::uint16_t b = w.channel(s, "/b");
+    std::map<std::uint64_t, double> first_a;  // time → the value of its first message
+    std::map<std::uint64_t, double> first_b;
+    std::size_t messages_a = 0;
+    for (int c = 0; c < 60; ++c) {
+      for (int i = 0; i < 40; ++i) {
+        const std::uint64_t t = 1'700'000'000'000'000'000ULL + 10'000'000ULL * (30 * c + i);
+        const double v = 1000.0 * c + i;
+        const bool on_b = i % 4 == 3;
+        w.message(on_b ? b : a, t, CdrWriter().put(v).bytes());
+        (on_b ? first_b : first_a).try_emplace(t, v);
+        messages_a += on_b ? 0 : 1;
+      }
+    }
+    ASSERT_GT(messages_a, first_a.size() + 100);  // times repeated
+    const auto path = dir / "overlap.mcap";
+    w.write(path);
+    ColumnMap map;
+    map.set_column("time", "/a");
+    map.set_column("input", "/a.data");
+    map.set_column("output", "/b.data");
+    const auto expect = [](const FileLog& log, const std::map<std::uint64_t, double>& first,
+                           const char* role, const std::string& what) {
+      std::vector<double> t;
+      std::vector<double> v;
+      const std::uint64_t origin = first.begin()->first;
+      for (const auto& [ns, value] : first) {
+        t.push_back(static_cast<double>(static_cast<std::int64_t>(ns - origin)) * 1e-9);
+        v.push_back(value);
+      }
+      EXPECT_EQ(log.log.time(), t) << what;
+      EXPECT_EQ(log.log.values(role), v) << what;
+    };
+    for (const unsigned jobs : {1u, 2u, 4u}) {
+      const std::string what = fmt::format("summary {}, {} jobs", summary, jobs);
+      const FileLog log = read_bag_file(path, map, BagTime::kAuto, jobs);
+      expect(log, first_a, "input", what);
+      EXPECT_EQ(log.report.skipped.count("repeated time"), messages_a - first_a.size()) << what;
+      ASSERT_EQ(log.more.size(), 1u);
+      expect(log.more[0], first_b, "output", what);
     }
   }
 }

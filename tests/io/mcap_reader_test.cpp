@@ -4,8 +4,12 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <cmath>
 #include <cstring>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "../source_dir.hpp"
@@ -209,6 +213,85 @@ TEST(McapReader, ThreadsHandOnTheSameMessagesInTheSameOrder) {
     ASSERT_EQ(one.size(), 2000u + 667u) << i;
     for (const unsigned jobs : {2u, 3u, 8u}) {
       EXPECT_TRUE(every_message(path, jobs) == one) << "layout " << i << ", " << jobs << " jobs";
+    }
+  }
+}
+
+// Takes ahead the messages of its chunk up to one whose value is a multiple of 125 (/a: 0.5 k,
+// /b: -k), which it leaves, handed on into `seen` as the calling thread would see them.
+class TakeSome final : public McapChunkWork {
+ public:
+  TakeSome(std::vector<Seen>& seen, std::atomic<int>& taken) : seen_(seen), taken_(taken) {}
+  void prepare() override { mine_.clear(); }
+  bool take(const McapMessage& m) override {
+    double v = 0;
+    std::memcpy(&v, m.data.data() + 4, 8);
+    if (std::fmod(v, 125.0) == 0.0) return false;
+    mine_.push_back(
+        {m.channel_id, m.log_time_ns, Bytes(m.data.begin(), m.data.end()), m.position()});
+    ++taken_;
+    return true;
+  }
+  void hand_on() override {
+    seen_.insert(seen_.end(), mine_.begin(), mine_.end());
+    mine_.clear();
+  }
+
+ private:
+  std::vector<Seen>& seen_;
+  std::atomic<int>& taken_;
+  std::vector<Seen> mine_;
+};
+
+// every_message() with TakeSome taking messages ahead; the number it took.
+std::pair<std::vector<Seen>, int> every_message_ahead(const std::filesystem::path& path,
+                                                      unsigned jobs) {
+  McapReader reader(path, jobs);
+  std::vector<Seen> out;
+  std::atomic<int> taken = 0;
+  reader.read_messages([](const McapChannel& c) { return c.topic != "/skipped"; },
+                       [&](const McapMessage& m) {
+                         out.push_back({m.channel_id, m.log_time_ns,
+                                        Bytes(m.data.begin(), m.data.end()), m.position()});
+                       },
+                       [&] { return std::make_unique<TakeSome>(out, taken); });
+  return {out, taken.load()};
+}
+
+// Work taking messages ahead (some of them: a message it leaves goes to the calling thread with
+// the rest of its chunk) sees the messages of the calling thread alone, in the same order, with
+// the same positions: with chunk indexes, read from the start, with channels declared in the
+// chunk of their first message, and without chunks (nothing to take ahead).
+TEST(McapReader, WorkAheadSeesEveryMessageOnceInFileOrder) {
+  const TempDir dir;
+  McapLayout late = layout(true, "zstd", 30, false);
+  late.declare_at_first_use = true;
+  McapLayout late_indexed = layout(true, "lz4", 45);
+  late_indexed.declare_at_first_use = true;
+  const std::vector<McapLayout> layouts = {
+      layout(true, "zstd", 37),
+      layout(true, "lz4", 50, false),
+      layout(true, "", 101),
+      late,
+      late_indexed,
+      layout(false, "", 0, false),
+  };
+  for (std::size_t i = 0; i < layouts.size(); ++i) {
+    const auto path =
+        write_bytes(dir, "ahead" + std::to_string(i) + ".mcap", many_chunks(layouts[i]).finish());
+    const std::vector<Seen> alone = every_message(path, 1);
+    ASSERT_EQ(alone.size(), 2000u + 667u) << i;
+    for (const unsigned jobs : {1u, 2u, 3u, 8u}) {
+      const auto [seen, taken] = every_message_ahead(path, jobs);
+      EXPECT_TRUE(seen == alone) << "layout " << i << ", " << jobs << " jobs";
+      if (layouts[i].chunked) {
+        // All but the first message of each channel, the 14 messages left and the rest of their
+        // chunks, and without a summary what the chunks queued before a channel was first seen
+        // leave (at most 2 × 8 + 1 chunks).
+        EXPECT_GT(taken, 1000) << "layout " << i << ", " << jobs << " jobs";
+      } else {
+        EXPECT_EQ(taken, 0) << "layout " << i;
+      }
     }
   }
 }

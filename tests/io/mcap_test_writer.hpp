@@ -64,6 +64,13 @@ struct McapLayout {
   std::size_t messages_per_chunk = 100;
   bool summary = true;  ///< a summary section (schemas, channels, chunk indexes) and footer
   bool crc = true;      ///< the chunks' uncompressed CRC
+  /// Chunked: each channel's Schema and Channel records in the chunk of its first message, just
+  /// before it (as writers that learn of topics while recording do); else all in the first chunk.
+  bool declare_at_first_use = false;
+  /// With a summary: a Statistics record, each channel's message count plus `count_error` (a
+  /// writer's mistake, for the tests of counts taken as a hint).
+  bool statistics = false;
+  std::int64_t count_error = 0;
 };
 
 inline std::uint32_t test_crc32(const Bytes& b) {
@@ -98,6 +105,7 @@ class McapWriter {
     str(r, encoding);
     u32(r, 0);  // metadata: an empty map
     channels_.push_back(record(0x04, r));
+    channel_schema_.push_back(schema_id);
     return id;
   }
   void message(std::uint16_t channel, std::uint64_t log_time_ns, const Bytes& data) {
@@ -137,6 +145,7 @@ class McapWriter {
       for (const Bytes& s : schemas_) append(f, s);
       for (const Bytes& c : channels_) append(f, c);
       for (const Bytes& i : indexes) append(f, i);
+      if (layout_.statistics) append(f, statistics());
     }
     Bytes footer;
     u64(footer, summary_start);
@@ -200,7 +209,7 @@ class McapWriter {
   // chunk); returns its ChunkIndex record.
   Bytes write_chunk(Bytes& f, std::size_t first) const {
     Bytes plain;
-    if (first == 0) {
+    if (first == 0 && !layout_.declare_at_first_use) {
       for (const Bytes& s : schemas_) append(plain, s);
       for (const Bytes& c : channels_) append(plain, c);
     }
@@ -208,6 +217,7 @@ class McapWriter {
     std::uint64_t t0 = ~std::uint64_t{0}, t1 = 0;
     const std::size_t last = std::min(messages_.size(), first + layout_.messages_per_chunk);
     for (std::size_t i = first; i < last; ++i) {
+      if (layout_.declare_at_first_use) declare(plain, messages_[i].channel, i);
       append(plain, messages_[i].record);
       channels[messages_[i].channel] = 0;
       t0 = std::min(t0, messages_[i].time);
@@ -242,9 +252,46 @@ class McapWriter {
     return record(0x08, i);
   }
 
+  // The Statistics record: counts of messages, schemas, channels, …, then per channel.
+  Bytes statistics() const {
+    std::map<std::uint16_t, std::uint64_t> counts;
+    for (const Message& m : messages_) ++counts[m.channel];
+    Bytes r;
+    u64(r, messages_.size());
+    u16(r, static_cast<std::uint16_t>(schemas_.size()));
+    u32(r, static_cast<std::uint32_t>(channels_.size()));
+    u32(r, 0);  // attachments
+    u32(r, 0);  // metadata
+    u32(r, 0);  // chunks (not read)
+    u64(r, messages_.empty() ? 0 : messages_.front().time);
+    u64(r, messages_.empty() ? 0 : messages_.back().time);
+    u32(r, static_cast<std::uint32_t>(counts.size() * 10));
+    for (const auto& [channel, n] : counts) {
+      u16(r, channel);
+      u64(r, static_cast<std::uint64_t>(static_cast<std::int64_t>(n) + layout_.count_error));
+    }
+    return record(0x0B, r);
+  }
+
+  // The Schema and Channel records of `channel` when message i is its first (the schema only
+  // when no message before i has a channel of that schema).
+  void declare(Bytes& plain, std::uint16_t channel, std::size_t i) const {
+    const auto before = [&](auto same) {
+      return std::any_of(messages_.begin(), messages_.begin() + static_cast<std::ptrdiff_t>(i),
+                         same);
+    };
+    if (before([&](const Message& m) { return m.channel == channel; })) return;
+    const std::uint16_t schema = channel_schema_[channel - 1u];
+    if (!before([&](const Message& m) { return channel_schema_[m.channel - 1u] == schema; })) {
+      append(plain, schemas_[schema - 1u]);
+    }
+    append(plain, channels_[channel - 1u]);
+  }
+
   McapLayout layout_;
   std::vector<Bytes> schemas_;
   std::vector<Bytes> channels_;
+  std::vector<std::uint16_t> channel_schema_;  // by channel id - 1
   std::vector<Message> messages_;
 };
 

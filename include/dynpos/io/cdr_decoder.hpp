@@ -11,10 +11,13 @@
 ///
 /// The walk is compiled once per schema and paths into a plan: runs of fields that are skipped
 /// become one aligned skip, nested messages are laid out in line, and only sequences and arrays
-/// of messages are walked field by field. A message the plan cannot read is walked again by the
-/// schema, so that its error (problem and offset) is the walk's; values and errors are those of
-/// decode_by_walking().
+/// of messages are walked field by field. For little-endian data (ROS 2's), the plan's steps
+/// between two strings or arrays are grouped into runs at fixed offsets from an aligned start:
+/// one bounds check a run, its numbers read where they lie. A message the plan cannot read is
+/// walked again by the schema, so that its error (problem and offset) is the walk's; values and
+/// errors are those of decode_by_walking().
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -85,11 +88,35 @@ class CdrDecoder {
     std::uint32_t first = 0;
     std::uint32_t end = 0;
   };
-  Reader start(std::span<const std::uint8_t> message, std::span<double> values) const;
+  /// A step of the plan grouped for little-endian data (compile_runs): kFixed, skips and reads
+  /// at fixed offsets from the step's start, aligned to `align`, `bytes` long, whose reads are
+  /// reads[first, end); kOp, plan_[first] (a string or an array) as it is.
+  struct Run {
+    enum class Kind : std::uint8_t { kFixed, kOp };
+    Kind kind = Kind::kFixed;
+    std::uint8_t align = 1;
+    std::uint64_t bytes = 0;
+    std::uint32_t first = 0;
+    std::uint32_t end = 0;
+  };
+  struct FixedRead {
+    std::uint64_t offset = 0;  ///< from the run's start
+    Ros2Primitive primitive = Ros2Primitive::kUint8;
+    std::int32_t slot = -1;
+  };
+  struct Runs {
+    std::vector<Run> runs;
+    std::vector<FixedRead> reads;
+  };
+  /// The reader of `message` after its header; values all NaN when `fill`.
+  Reader start(std::span<const std::uint8_t> message, std::span<double> values, bool fill) const;
   void finish(std::span<double> values) const;
   void compile(std::size_t type, std::int32_t node, std::size_t fields);
   void add_skip(std::size_t align, std::uint64_t bytes);
+  void compile_runs(std::size_t max_align);
   void run(Reader& r, std::span<double> values) const;
+  void run_op(const Op& op, Reader& r, std::span<double> values) const;
+  void run_fixed(Reader& r, std::span<double> values) const;
   void skip_array(const Ros2Field& field, Reader& r) const;
   void walk(std::size_t type, const Node* node, Reader& r, std::span<double> values) const;
   void read_array(const Ros2Field& field, const Want* want, const Want* end, Reader& r,
@@ -101,6 +128,8 @@ class CdrDecoder {
   std::vector<Node> nodes_;                                    // nodes_[0]: the root
   std::vector<std::pair<std::int32_t, std::int32_t>> copies_;  // a repeated path: to ← from
   std::vector<Op> plan_;
+  bool may_miss_ = false;     ///< whether the plan walks an array (whose element may be missing)
+  std::array<Runs, 2> runs_;  ///< for little-endian data, a maximum alignment of 8 (XCDR1), 4
 };
 
 }  // namespace dynpos::io
