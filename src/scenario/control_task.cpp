@@ -171,7 +171,8 @@ InitialTrim initial_trim(const ScenarioSpec& spec, const VesselConfig& vessel,
 }
 
 ControlTask::ControlTask(const ScenarioSpec& spec, const VesselConfig& vessel,
-                         const VesselPlant& plant, const InitialTrim& trim, std::uint64_t seed)
+                         const VesselPlant& plant, const InitialTrim& trim, std::uint64_t seed,
+                         const model::Wind* wind)
     : joystick_params_(vessel.joystick),
       period_s_(1.0 / vessel.joystick.control_rate_hz),
       dt_s_(spec.dt_s),
@@ -191,7 +192,7 @@ ControlTask::ControlTask(const ScenarioSpec& spec, const VesselConfig& vessel,
   if (!spec.setpoints.empty()) {
     const Eigen::Vector3d eta0_n = trim.x0.segment<3>(Plant::kHull + Hull::kNorth);
     dp_.emplace(spec, vessel, plant.hull(), eta0_n, period_s_);
-    estimator_.emplace(spec, vessel, plant, seed, period_s_, eta0_n);
+    estimator_.emplace(spec, vessel, plant, seed, period_s_, eta0_n, wind);
   }
   if (spec.failure) failure_.emplace(*spec.failure, vessel);
 }

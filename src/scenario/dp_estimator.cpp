@@ -53,7 +53,7 @@ control::ObserverModel observer_model(const ScenarioSpec& spec, const VesselConf
 
 DpEstimator::DpEstimator(const ScenarioSpec& spec, const VesselConfig& vessel,
                          const VesselPlant& plant, std::uint64_t seed, double period_s,
-                         const Eigen::Vector3d& eta0_n)
+                         const Eigen::Vector3d& eta0_n, const model::Wind* wind)
     : gnss_dropouts_(spec.gnss_dropouts),
       plant_(plant),
       kind_(spec.observer),
@@ -63,6 +63,13 @@ DpEstimator::DpEstimator(const ScenarioSpec& spec, const VesselConfig& vessel,
       east_noise_(gnss_std_m(vessel), sim::Rng(seed, "dp.gnss.east")),
       heading_noise_(vessel.sensors.gyro.noise.noise_std, sim::Rng(seed, "dp.gyro")),
       rate_noise_(rate_std_rad_s(vessel), sim::Rng(seed, "dp.rate")),
+      wind_(spec.observer_wind_feedforward ? wind : nullptr),
+      wind_params_(vessel.wind),
+      wind_speed_noise_(vessel.sensors.wind_speed.noise.noise_std, sim::Rng(seed, "dp.wind.speed")),
+      wind_dir_noise_(vessel.sensors.wind_dir.noise.noise_std, sim::Rng(seed, "dp.wind.dir")),
+      wind_period_s_(vessel.sensors.wind_speed.timing.enabled()
+                         ? 1.0 / vessel.sensors.wind_speed.timing.rate_hz
+                         : period_s),
       last_raw_(eta0_n) {
   const control::ObserverModel model = observer_model(spec, vessel, plant.hull());
   if (kind_ == control::ObserverKind::kPassive) {
@@ -93,6 +100,23 @@ Eigen::Vector3d DpEstimator::measure(double t, const sim::ConstVectorRef& x) {
   return y;
 }
 
+Eigen::Vector3d DpEstimator::measured_wind_force_b(double t, const sim::ConstVectorRef& x,
+                                                   double psi_rad) {
+  if (wind_ == nullptr) return Eigen::Vector3d::Zero();
+  // The sensor samples the wind at its rate and the DP system holds the reading.
+  if (t >= next_wind_sample_s_) {
+    wind_speed_mps_ = std::max(wind_->speed_mps() + wind_speed_noise_.sample(), 0.0);
+    wind_from_rad_ = wind_->from_rad() + wind_dir_noise_.sample();
+    next_wind_sample_s_ = t + wind_period_s_ - 1e-9;
+  }
+  const double speed_mps = wind_speed_mps_, from_rad = wind_from_rad_;
+  const double psi = x[Plant::kHull + Hull::kYaw];
+  const double u = x[Plant::kHull + Hull::kSurge], v = x[Plant::kHull + Hull::kSway];
+  const Eigen::Vector2d velocity_n(std::cos(psi) * u - std::sin(psi) * v,
+                                   std::sin(psi) * u + std::cos(psi) * v);
+  return model::relative_wind_force_b(wind_params_, speed_mps, from_rad, psi_rad, velocity_n);
+}
+
 DpMotion DpEstimator::update(double t, const sim::ConstVectorRef& x, const sim::ConstVectorRef& u) {
   DpMotion truth{x.segment<3>(Plant::kHull + Hull::kNorth),
                  x.segment<3>(Plant::kHull + Hull::kSurge)};
@@ -106,8 +130,11 @@ DpMotion DpEstimator::update(double t, const sim::ConstVectorRef& x, const sim::
     last_raw_ = raw.eta_n;
     return raw;
   }
+  // The thrust feedback and, with the wind given, the wind force from the wind sensor at the
+  // measured heading.
+  wind_force_b_ = measured_wind_force_b(t, x, y.z());
   const Eigen::Vector3d tau_b =
-      plant_.actuators(x, u.segment<2>(Plant::kCurrentNed)).tau_b;  // thrust feedback
+      plant_.actuators(x, u.segment<2>(Plant::kCurrentNed)).tau_b + wind_force_b_;
   return std::visit(
       [&](auto& o) -> DpMotion {
         if constexpr (std::is_same_v<std::decay_t<decltype(o)>, std::monostate>) {
@@ -125,9 +152,16 @@ DpMotion DpEstimator::update(double t, const sim::ConstVectorRef& x, const sim::
 }
 
 std::optional<control::ObserverEstimate> DpEstimator::estimate() const {
-  if (const auto* o = std::get_if<control::PassiveObserver>(&observer_)) return o->estimate();
-  if (const auto* o = std::get_if<control::EkfObserver>(&observer_)) return o->estimate();
-  return std::nullopt;
+  std::optional<control::ObserverEstimate> e;
+  if (const auto* o = std::get_if<control::PassiveObserver>(&observer_)) e = o->estimate();
+  if (const auto* o = std::get_if<control::EkfObserver>(&observer_)) e = o->estimate();
+  if (e) {
+    // The whole environmental load: b̂ and the wind force fed forward, in NED.
+    const double c = std::cos(e->eta_n.z()), s = std::sin(e->eta_n.z());
+    e->bias_n += Eigen::Vector3d(c * wind_force_b_.x() - s * wind_force_b_.y(),
+                                 s * wind_force_b_.x() + c * wind_force_b_.y(), wind_force_b_.z());
+  }
+  return e;
 }
 
 }  // namespace dynpos::scenario

@@ -108,7 +108,7 @@ ScenarioRun simulate(const ScenarioSpec& spec, const VesselConfig& vessel, std::
   const InitialTrim trim = initial_trim(spec, vessel, plant);
   ActuatorDelays delays(vessel, spec.dt_s, trim.commands);
   check_control_rate(spec, vessel);
-  ControlTask control(spec, vessel, plant, trim, seed);
+  ControlTask control(spec, vessel, plant, trim, seed, &environment.wind());
 
   ScenarioRun run;
   TruthRecorder truth_recorder(run.truth_log, control);

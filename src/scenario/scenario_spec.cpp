@@ -285,6 +285,7 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
                        "load",
                        "device_files",
                        "observer",
+                       "observer_wind_feedforward",
                        "failure_at_s",
                        "failure",
                        "gnss_dropout"});
@@ -348,6 +349,7 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
     }
     spec.observer = *kind;
   }
+  spec.observer_wind_feedforward = root.boolean_or("observer_wind_feedforward", false);
   if (root.has("failure") || root.has("failure_at_s")) {
     spec.failure = FailureEvent{root.number("failure_at_s", 0.0, 1e6), root.string("failure")};
   }

@@ -58,10 +58,12 @@ InitialTrim initial_trim(const ScenarioSpec& spec, const VesselConfig& vessel,
 class ControlTask {
  public:
   /// The control of `spec` on `vessel` and its `plant`, from `trim`; `seed` is the run's master
-  /// seed (the DP system's measurement noise and waves). Throws std::invalid_argument on bad
-  /// heading-hold or DP parameters, core::InputError on a failure the vessel does not have.
+  /// seed (the DP system's measurement noise and waves); `wind` the run's wind, which the DP
+  /// observer's wind feedforward measures (nullptr: none; it must outlive the task). Throws
+  /// std::invalid_argument on bad heading-hold or DP parameters, core::InputError on a failure
+  /// the vessel does not have.
   ControlTask(const ScenarioSpec& spec, const VesselConfig& vessel, const VesselPlant& plant,
-              const InitialTrim& trim, std::uint64_t seed);
+              const InitialTrim& trim, std::uint64_t seed, const model::Wind* wind = nullptr);
 
   /// One control step at scenario time t [s] with the plant's state x (its low-frequency
   /// motion) and held input u: DP runs on what the scenario's observer makes of it

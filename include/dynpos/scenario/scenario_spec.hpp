@@ -123,6 +123,10 @@ struct ScenarioSpec {
   /// DP mode: what the DP controller runs on (file key `observer`): the true low-frequency
   /// motion ("ideal", the default), the passive observer, the EKF, or the raw measurements.
   control::ObserverKind observer = control::ObserverKind::kIdeal;
+  /// Whether the observer's model has the wind force from the DP system's wind sensor, as DP
+  /// systems feed the wind forward (file key `observer_wind_feedforward`; dp_estimator.hpp).
+  /// Default false: the shipped scenarios' runs stay as they were (docs/theory.md).
+  bool observer_wind_feedforward = false;
   /// A unit that fails during the run (file keys `failure_at_s`, `failure`).
   std::optional<FailureEvent> failure;
   /// GNSS dropouts ([[gnss_dropout]] with t_s, duration_s), in increasing time.
