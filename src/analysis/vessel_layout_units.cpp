@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "dynpos/core/log.hpp"
+#include "dynpos/core/parallel_for.hpp"
 #include "dynpos/model/unit_drive.hpp"
 #include "vessel_unit_steps.hpp"
 
@@ -330,9 +331,14 @@ std::optional<std::pair<std::string, std::string>> layout_key_parts(const std::s
 }
 
 void layout_units(const scenario::VesselConfig& start, const std::vector<LogUnits>& logs,
-                  double max_rel_sigma, UnitResult& out) {
-  for (const model::ThrusterUnit& unit : start.thrusters) {
-    layout_unit(unit, logs, max_rel_sigma, out);
+                  double max_rel_sigma, unsigned jobs, UnitResult& out) {
+  std::vector<UnitResult> each(start.thrusters.size());  // one slot per unit: in layout order
+  core::parallel_for(each.size(), jobs, [&](std::size_t k) {
+    layout_unit(start.thrusters[k], logs, max_rel_sigma, each[k]);
+  });
+  for (const UnitResult& r : each) {
+    out.parameters.insert(out.parameters.end(), r.parameters.begin(), r.parameters.end());
+    out.units.insert(out.units.end(), r.units.begin(), r.units.end());
   }
 }
 

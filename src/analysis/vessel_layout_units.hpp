@@ -23,9 +23,10 @@ std::string layout_key(const std::string& unit, const std::string& key);
 std::optional<std::pair<std::string, std::string>> layout_key_parts(const std::string& key);
 
 /// Appends each layout unit's values (dead_time_s, time_constant_s; an azimuth's
-/// rate_deg_per_s) and what the logs show of its dynamics to `out`.
+/// rate_deg_per_s) and what the logs show of its dynamics to `out`, in layout order; the units
+/// on `jobs` threads (0: every core).
 void layout_units(const scenario::VesselConfig& start, const std::vector<LogUnits>& logs,
-                  double max_rel_sigma, UnitResult& out);
+                  double max_rel_sigma, unsigned jobs, UnitResult& out);
 
 /// Sets `p` in `config` when it is a layout unit's value; false for another key.
 bool apply_layout(scenario::VesselConfig& config, const VesselParameter& p);

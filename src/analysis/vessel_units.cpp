@@ -185,10 +185,10 @@ std::optional<Combined> combine(const std::vector<Estimate>& estimates) {
 }
 
 UnitResult identify_units(const scenario::VesselConfig& start, const std::vector<LogUnits>& logs,
-                          double max_rel_sigma) {
+                          double max_rel_sigma, unsigned jobs) {
   UnitResult out;
   if (!start.thrusters.empty()) {
-    layout_units(start, logs, max_rel_sigma, out);
+    layout_units(start, logs, max_rel_sigma, jobs, out);
     return out;
   }
   propellers(start, logs, max_rel_sigma, out);

@@ -66,9 +66,10 @@ struct UnitResult {
 
 /// The values of the vessel's units — the model's own (port, stb, tunnel) or its [[thruster]]
 /// layout's — that `logs` determine (σ/|value| ≤ max_rel_sigma), the others kept from `start`
-/// with the excitation that would determine them.
+/// with the excitation that would determine them. A layout's units run on `jobs` threads (0:
+/// every core); the result does not depend on it.
 UnitResult identify_units(const scenario::VesselConfig& start, const std::vector<LogUnits>& logs,
-                          double max_rel_sigma);
+                          double max_rel_sigma, unsigned jobs = 1);
 
 /// Sets each determined value of `parameters` in `config` (keys "table.key", and
 /// "thruster.NAME.key" for a layout's unit).
