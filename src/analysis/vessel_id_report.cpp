@@ -319,7 +319,7 @@ std::string to_text(const VesselIdReport& r) {
     if (!p.determined) text += fmt::format("  {}: not determined: {}\n", p.key, p.note);
   }
   if (!r.units.empty()) {
-    text += "\nUnits: order → shaft speed steps (FOPDT) and thrust maps\n" +
+    text += "\nUnits: order → shaft speed steps (FOPDT), thrust maps and azimuth turns\n" +
             report::render_text(unit_table(r));
   }
   return text + "\n" + report::render_text(nrmse_table(r.tests));
@@ -342,8 +342,8 @@ void write_report(const VesselIdReport& r, const std::filesystem::path& dir) {
       "padding:0.3em 0.6em;text-align:right}}td:first-child{{text-align:left}}</style></head>\n"
       "<body><h1>Vessel identification</h1>\n<p>Starting vessel file <code>{}</code>. "
       "Output-error fit of the hull model to the logged u, v, r (docs/theory.md).</p>\n"
-      "<h2>Values</h2>\n{}\n<h2>Units</h2>\n<p>Order → shaft speed steps (FOPDT fits) and "
-      "thrust maps, with the starting file's model at the same steps.</p>\n{}\n"
+      "<h2>Values</h2>\n{}\n<h2>Units</h2>\n<p>Order → shaft speed steps (FOPDT fits), "
+      "thrust maps and azimuth turns, with the starting file's model at the same steps.</p>\n{}\n"
       "<h2>Measured and re-simulated</h2>\n{}\n{}</body></html>\n",
       io::escape_markup(r.vessel_file.string()), report::render_html(parameter_table(r)),
       report::render_html(unit_table(r)), report::render_html(nrmse_table(r.tests)), figures);
