@@ -431,7 +431,7 @@ VesselIdReport run_vessel_id(const VesselIdRequest& request) {
   }
   // The units first: the hull is driven by their thrust, so it is fitted with their maps.
   vessel_units::UnitResult units =
-      vessel_units::identify_units(start, unit_logs, request.max_rel_sigma);
+      vessel_units::identify_units(start, unit_logs, request.max_rel_sigma, request.jobs);
   unit_logs.clear();
   vessel_units::apply(start, units.parameters);
   report.units = std::move(units.units);

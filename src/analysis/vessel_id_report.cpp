@@ -4,11 +4,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <map>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -20,6 +20,7 @@
 #include "dynpos/report/decimate.hpp"
 #include "dynpos/report/svg_plot.hpp"
 #include "dynpos/report/table.hpp"
+#include "toml_text_outline.hpp"
 
 namespace dynpos::analysis {
 namespace {
@@ -81,14 +82,17 @@ std::string cell(double v, const char* format_spec) {
 // The units' measured dynamics against the starting file's model, and their thrust maps.
 report::Table unit_table(const VesselIdReport& r) {
   report::Table t;
-  t.header = {"unit",  "steps",   "T [s]",       "σ T [s]",     "T model [s]",
-              "δ [s]", "σ δ [s]", "δ model [s]", "c₊ [N/rps²]", "c₋ [N/rps²]"};
+  t.header = {"unit",  "steps",      "T [s]",       "σ T [s]",     "T model [s]",
+              "δ [s]", "σ δ [s]",    "δ model [s]", "c₊ [N/rps²]", "c₋ [N/rps²]",
+              "turns", "slew [°/s]", "σ slew [°/s]"};
   for (const UnitIdentification& u : r.units) {
     t.rows.push_back({u.unit, std::to_string(u.steps), cell(u.time_constant_s, "{:.3f}"),
                       cell(u.time_constant_sigma_s, "{:.2g}"),
                       cell(u.model_time_constant_s, "{:.3f}"), cell(u.dead_time_s, "{:.3f}"),
                       cell(u.dead_time_sigma_s, "{:.2g}"), cell(u.model_dead_time_s, "{:.3f}"),
-                      cell(u.c_forward, "{:.6g}"), cell(u.c_reverse, "{:.6g}")});
+                      cell(u.c_forward, "{:.6g}"), cell(u.c_reverse, "{:.6g}"),
+                      std::to_string(u.turns), cell(u.slew_rate_deg_per_s, "{:.3f}"),
+                      cell(u.slew_rate_sigma_deg_per_s, "{:.2g}")});
   }
   return t;
 }
@@ -105,7 +109,10 @@ nlohmann::json unit_json(const UnitIdentification& u) {
           {"c_forward_N_per_rps2", number(u.c_forward)},
           {"c_forward_sigma_N_per_rps2", number(u.c_forward_sigma)},
           {"c_reverse_N_per_rps2", number(u.c_reverse)},
-          {"c_reverse_sigma_N_per_rps2", number(u.c_reverse_sigma)}};
+          {"c_reverse_sigma_N_per_rps2", number(u.c_reverse_sigma)},
+          {"turns", u.turns},
+          {"slew_rate_deg_per_s", number(u.slew_rate_deg_per_s)},
+          {"slew_rate_sigma_deg_per_s", number(u.slew_rate_sigma_deg_per_s)}};
 }
 
 report::Table nrmse_table(const std::vector<TestResponse>& tests) {
@@ -186,82 +193,81 @@ void write_text_file(const std::filesystem::path& path, const std::string& text)
 
 std::string svg_name(std::size_t k) { return fmt::format("test-{}.svg", k + 1); }
 
-bool is_name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; }
+// Where a parameter's key goes: a table of the outline and its key there.
+struct Target {
+  std::size_t table = 0;  // in the outline; none: a table the file lacks
+  bool found = false;
+  std::string table_name, key;
+};
 
-// A table header line ("[name]", a comment may follow): the table's name; an array of tables
-// ("[[…") or a dotted name: empty (no key of it is written); any other line: nullopt.
-std::optional<std::string> table_header(const std::string& line) {
-  std::size_t i = line.find_first_not_of(" \t");
-  if (i == std::string::npos || line[i] != '[') return std::nullopt;
-  if (line.compare(i, 2, "[[") == 0) return std::string();
-  i = line.find_first_not_of(" \t", i + 1);
-  const std::size_t begin = std::min(i, line.size());
-  while (i < line.size() && is_name_char(line[i])) ++i;
-  const std::string name = line.substr(begin, i - begin);
-  i = line.find_first_not_of(" \t", i);
-  if (name.empty() || i == std::string::npos || line[i] != ']') return std::string();
-  i = line.find_first_not_of(" \t", i + 1);
-  return (i == std::string::npos || line[i] == '#') ? name : std::string();
-}
-
-// A "key = value" line: its indent and key; nullopt for any other line.
-std::optional<std::pair<std::string, std::string>> key_line(const std::string& line) {
-  const std::size_t begin = std::min(line.find_first_not_of(" \t"), line.size());
-  std::size_t i = begin;
-  while (i < line.size() && is_name_char(line[i])) ++i;
-  if (i == begin) return std::nullopt;
-  const std::size_t eq = line.find_first_not_of(" \t", i);
-  if (eq == std::string::npos || line[eq] != '=') return std::nullopt;
-  return std::pair{line.substr(0, begin), line.substr(begin, i - begin)};
+// "table.key" in its [table]; "array.NAME.key" in the [[array]] element named NAME (an error
+// when the file has no such element: the parameters come from the file).
+Target target(const std::vector<toml_text::TableLines>& tables, const std::string& key) {
+  const std::size_t dot = key.find('.');
+  const std::size_t last = key.rfind('.');
+  Target t{0, false, key.substr(0, dot), key.substr(last + 1)};
+  const std::string element = last > dot ? key.substr(dot + 1, last - dot - 1) : std::string();
+  bool array = false;
+  for (std::size_t k = 0; k < tables.size(); ++k) {
+    const toml_text::TableLines& table = tables[k];
+    if (table.name != t.table_name) continue;
+    array = array || table.array;
+    if (table.array ? table.element == element : element.empty()) {
+      t.table = k;
+      t.found = true;
+      return t;
+    }
+  }
+  if (!element.empty()) {
+    throw std::invalid_argument(fmt::format("the vessel file has no [[{}]] table named '{}' for {}",
+                                            t.table_name, element, key));
+  }
+  if (array) {
+    throw std::invalid_argument(fmt::format("{} names no element of [[{}]]", key, t.table_name));
+  }
+  return t;
 }
 
 }  // namespace
 
 std::string identified_vessel_text(const VesselIdReport& report) {
-  std::map<std::string, const VesselParameter*> pending;  // determined, not yet written
-  for (const VesselParameter& p : report.parameters) {
-    if (p.fitted) pending[p.key] = &p;
-  }
-  std::vector<std::string> lines = split_lines(report.vessel_text), out;
-  std::string section;
-  std::size_t last_key = 0;  // where the section's missing keys go (index in out)
-  auto flush = [&]() {       // the section's determined keys the file lacks
-    std::vector<std::string> add;
-    for (auto it = pending.begin(); it != pending.end();) {
-      if (!section.empty() && it->first.rfind(section + ".", 0) == 0) {
-        add.push_back(value_line("", it->first.substr(section.size() + 1), *it->second));
-        it = pending.erase(it);
-      } else {
-        ++it;
-      }
-    }
-    out.insert(out.begin() + static_cast<std::ptrdiff_t>(last_key), add.begin(), add.end());
-  };
-  for (const std::string& line : lines) {
-    if (const auto table = table_header(line)) {
-      flush();
-      section = *table;
-      out.push_back(line);
-      last_key = out.size();
-      continue;
-    }
-    const auto key = section.empty() ? std::nullopt : key_line(line);
-    if (key) {
-      const auto it = pending.find(section + "." + key->second);
-      out.push_back(it == pending.end() ? line : value_line(key->first, key->second, *it->second));
-      if (it != pending.end()) pending.erase(it);
-      last_key = out.size();
-      continue;
-    }
-    out.push_back(line);
-  }
-  flush();
-  std::string text;
-  for (const std::string& line : out) text += line + "\n";
+  const std::vector<std::string> lines = split_lines(report.vessel_text);
+  const std::vector<toml_text::TableLines> tables = toml_text::outline(lines);
+  std::map<std::size_t, std::pair<std::size_t, std::string>> replace;  // first → (last, line)
+  std::map<std::size_t, std::vector<std::string>> insert;              // after line → lines
   std::map<std::string, std::vector<std::string>> missing_tables;
-  for (const auto& [key, p] : pending) {
-    const std::string table = key.substr(0, key.find('.'));
-    missing_tables[table].push_back(value_line("", key.substr(table.size() + 1), *p));
+  for (const VesselParameter& p : report.parameters) {
+    if (!p.fitted) continue;
+    const Target t = target(tables, p.key);
+    if (!t.found) {
+      missing_tables[t.table_name].push_back(value_line("", t.key, p));
+      continue;
+    }
+    const toml_text::TableLines& table = tables[t.table];
+    const auto k = std::find_if(table.keys.begin(), table.keys.end(),
+                                [&](const toml_text::KeyLines& kl) { return kl.key == t.key; });
+    if (k != table.keys.end()) {
+      replace[k->first] = {k->last, value_line(k->indent, t.key, p)};
+      continue;
+    }
+    // A key the table leaves at its default: after its last key (or its header).
+    const std::size_t after =
+        table.keys.empty() ? table.header.value_or(0) : table.keys.back().last;
+    const std::string indent = table.keys.empty() ? std::string() : table.keys.front().indent;
+    insert[after].push_back(value_line(indent, t.key, p));
+  }
+  std::string text;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const auto r = replace.find(i);
+    if (r != replace.end()) {
+      text += r->second.second + "\n";
+      i = r->second.first;
+    } else {
+      text += lines[i] + "\n";
+    }
+    if (const auto in = insert.find(i); in != insert.end()) {
+      for (const std::string& l : in->second) text += l + "\n";
+    }
   }
   for (const auto& [table, add] : missing_tables) {
     text += "\n[" + table + "]\n";
@@ -313,7 +319,7 @@ std::string to_text(const VesselIdReport& r) {
     if (!p.determined) text += fmt::format("  {}: not determined: {}\n", p.key, p.note);
   }
   if (!r.units.empty()) {
-    text += "\nUnits: order → shaft speed steps (FOPDT) and thrust maps\n" +
+    text += "\nUnits: order → shaft speed steps (FOPDT), thrust maps and azimuth turns\n" +
             report::render_text(unit_table(r));
   }
   return text + "\n" + report::render_text(nrmse_table(r.tests));
@@ -336,8 +342,8 @@ void write_report(const VesselIdReport& r, const std::filesystem::path& dir) {
       "padding:0.3em 0.6em;text-align:right}}td:first-child{{text-align:left}}</style></head>\n"
       "<body><h1>Vessel identification</h1>\n<p>Starting vessel file <code>{}</code>. "
       "Output-error fit of the hull model to the logged u, v, r (docs/theory.md).</p>\n"
-      "<h2>Values</h2>\n{}\n<h2>Units</h2>\n<p>Order → shaft speed steps (FOPDT fits) and "
-      "thrust maps, with the starting file's model at the same steps.</p>\n{}\n"
+      "<h2>Values</h2>\n{}\n<h2>Units</h2>\n<p>Order → shaft speed steps (FOPDT fits), "
+      "thrust maps and azimuth turns, with the starting file's model at the same steps.</p>\n{}\n"
       "<h2>Measured and re-simulated</h2>\n{}\n{}</body></html>\n",
       io::escape_markup(r.vessel_file.string()), report::render_html(parameter_table(r)),
       report::render_html(unit_table(r)), report::render_html(nrmse_table(r.tests)), figures);

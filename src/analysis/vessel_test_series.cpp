@@ -15,7 +15,8 @@ bool wanted_role(const std::string& role) {
   static const std::vector<std::string> exact{"time",       "heading",  "u",     "v",   "r",
                                               "wind_speed", "wind_dir", "north", "east"};
   if (std::find(exact.begin(), exact.end(), role) != exact.end()) return true;
-  for (const char* prefix : {"thrust.", "rudder.", "azimuth.", "rpm.", "command.rpm."}) {
+  for (const char* prefix :
+       {"thrust.", "rudder.", "azimuth.", "rpm.", "command.rpm.", "command.azimuth."}) {
     if (role.rfind(prefix, 0) == 0) return true;
   }
   const bool mru =

@@ -17,10 +17,12 @@ namespace dynpos::analysis::vessel_units {
 /// One unit's logged columns on its log's time axis, SI (NaN = missing); a column the log does
 /// not hold is empty.
 struct UnitColumns {
-  std::string unit;                     ///< "port", "stb", "tunnel"
-  std::vector<double> shaft_speed_rps;  ///< rpm.NAME: the shaft speed feedback
-  std::vector<double> order_rps;        ///< command.rpm.NAME: the shaft speed order
-  std::vector<double> thrust_N;         ///< thrust.NAME: the DP system's thrust feedback
+  std::string unit;                       ///< "port", "stb", "tunnel" or a layout unit's name
+  std::vector<double> shaft_speed_rps;    ///< rpm.NAME: the shaft speed feedback
+  std::vector<double> order_rps;          ///< command.rpm.NAME: the shaft speed order
+  std::vector<double> thrust_N;           ///< thrust.NAME: the DP system's thrust feedback
+  std::vector<double> azimuth_rad;        ///< azimuth.NAME: an azimuth's direction feedback
+  std::vector<double> azimuth_order_rad;  ///< command.azimuth.NAME: its direction order
 };
 
 /// The unit columns of one log.
@@ -30,7 +32,8 @@ struct LogUnits {
   std::vector<UnitColumns> units;
 };
 
-/// The columns of `units` (rpm.NAME, command.rpm.NAME, thrust.NAME) that `log` holds.
+/// The columns of `units` (rpm.NAME, command.rpm.NAME, thrust.NAME, azimuth.NAME,
+/// command.azimuth.NAME) that `log` holds.
 LogUnits log_units(const std::string& name, const core::Log& log,
                    const std::vector<std::string>& units);
 
@@ -55,18 +58,21 @@ struct Combined {
 std::optional<Combined> combine(const std::vector<Estimate>& estimates);
 
 struct UnitResult {
-  /// Each value of the model's units (the [propeller] and [tunnel] keys), determined or not.
+  /// Each value of the model's units (the [propeller] and [tunnel] keys) or of a layout's
+  /// (thruster.NAME.KEY), determined or not.
   std::vector<VesselParameter> parameters;
   std::vector<UnitIdentification> units;
 };
 
-/// The values of the model's own units (port, stb, tunnel) that `logs` determine (σ/|value| ≤
-/// max_rel_sigma), the others kept from `start` with the excitation that would determine them.
-/// A vessel with a [[thruster]] layout: no parameters (see docs/theory.md).
+/// The values of the vessel's units — the model's own (port, stb, tunnel) or its [[thruster]]
+/// layout's — that `logs` determine (σ/|value| ≤ max_rel_sigma), the others kept from `start`
+/// with the excitation that would determine them. A layout's units run on `jobs` threads (0:
+/// every core); the result does not depend on it.
 UnitResult identify_units(const scenario::VesselConfig& start, const std::vector<LogUnits>& logs,
-                          double max_rel_sigma);
+                          double max_rel_sigma, unsigned jobs = 1);
 
-/// Sets each determined value of `parameters` in `config` (keys "table.key").
+/// Sets each determined value of `parameters` in `config` (keys "table.key", and
+/// "thruster.NAME.key" for a layout's unit).
 void apply(scenario::VesselConfig& config, const std::vector<VesselParameter>& parameters);
 
 }  // namespace dynpos::analysis::vessel_units

@@ -62,6 +62,8 @@ std::vector<RoleSpec> build_catalogue() {
       make("command.thrust.NAME", Quantity::kForce, "kN", hold,
            "commanded (allocated) thrust of thruster NAME"),
       make("command.rudder.NAME", Quantity::kAngle, "deg", hold, "commanded angle of rudder NAME"),
+      make("command.azimuth.NAME", Quantity::kAngle, "deg", hold,
+           "commanded thrust direction of azimuth NAME, clockwise from ahead"),
       make("gnssK.lat", Quantity::kAngle, "deg", cont, "latitude of GNSS antenna K"),
       make("gnssK.lon", Quantity::kAngle, "deg", angle, "longitude of GNSS antenna K"),
       make("gnssK.height", Quantity::kLength, "m", cont, "ellipsoidal height of antenna K"),
@@ -134,11 +136,11 @@ std::optional<RoleSpec> find_role(std::string_view name) {
   static constexpr std::array<std::string_view, 6> kNamed = {"thrust", "power",   "rpm",
                                                              "rudder", "azimuth", "command"};
   if (prefix == "command") {
-    // command.rpm.NAME, command.thrust.NAME, command.rudder.NAME
+    // command.rpm.NAME, command.thrust.NAME, command.rudder.NAME, command.azimuth.NAME
     const auto dot2 = suffix.find('.');
     if (dot2 != std::string_view::npos) {
       const std::string_view kind = suffix.substr(0, dot2);
-      if ((kind == "rpm" || kind == "thrust" || kind == "rudder") &&
+      if ((kind == "rpm" || kind == "thrust" || kind == "rudder" || kind == "azimuth") &&
           valid_name_part(suffix.substr(dot2 + 1))) {
         return instantiate("command." + std::string(kind) + ".NAME");
       }

@@ -67,6 +67,9 @@ UnitDriveParams drive_params(const ThrusterUnit& unit) {
     p.max_rudder_rad = kMaxRudderDeg * kDeg;
     p.rudder_rate_rad_s = kRudderRateDegS * kDeg;
   }
+  if (unit.type == UnitType::kPropellerRudder || unit.type == UnitType::kAzimuth) {
+    p.steering_gain_per_s = kSteeringGain;
+  }
   return p;
 }
 
@@ -95,12 +98,12 @@ double UnitDrive::shaft_acceleration(double n, double n_command) const noexcept 
 double UnitDrive::angle_rate(double angle, double command) const noexcept {
   if (unit_.type == UnitType::kPropellerRudder) {
     const double target = std::clamp(command, -p_.max_rudder_rad, p_.max_rudder_rad);
-    return std::clamp(kSteeringGain * (target - angle), -p_.rudder_rate_rad_s,
+    return std::clamp(p_.steering_gain_per_s * (target - angle), -p_.rudder_rate_rad_s,
                       p_.rudder_rate_rad_s);
   }
   if (unit_.type != UnitType::kAzimuth) return 0.0;
   const double rate = unit_.rate_deg_per_s * kDeg;
-  return std::clamp(kSteeringGain * turn_rad(angle, command), -rate, rate);
+  return std::clamp(p_.steering_gain_per_s * turn_rad(angle, command), -rate, rate);
 }
 
 bool UnitDrive::turn_crosses(double angle, double turn) const noexcept {

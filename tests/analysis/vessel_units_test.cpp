@@ -1,6 +1,6 @@
 // The units of identify vessel: the combination of estimates over logs, and the units' values
-// from synthetic logs of a tunnel thruster whose true dead time, time constant and thrust map
-// differ from the starting file's.
+// from synthetic logs of a tunnel thruster, and of a layout's tunnel and azimuth, whose true
+// dead time, time constant, thrust map and slew rate differ from the starting file's.
 
 #include "vessel_units.hpp"
 
@@ -10,6 +10,7 @@
 #include <random>
 
 #include "dynpos/model/tunnel_thruster.hpp"
+#include "dynpos/model/unit_drive.hpp"
 
 namespace dynpos::analysis::vessel_units {
 namespace {
@@ -56,7 +57,7 @@ TEST(VesselUnitsCombine, EstimatesWithoutAFiniteSigmaAreLeftOut) {
 LogUnits tunnel_log(const model::TunnelThruster& truth, std::uint32_t seed) {
   const std::vector<double> levels{0.0, 0.5, 1.0, 0.2, -0.5, -1.2, -0.3, 0.0};  // [rps]
   constexpr double kPlateau = 40.0, kDt = 0.1;
-  LogUnits log{"tunnel.csv", {}, {{"tunnel", {}, {}, {}}}};
+  LogUnits log{"tunnel.csv", {}, {{"tunnel", {}, {}, {}, {}, {}}}};
   UnitColumns& u = log.units[0];
   std::mt19937 rng(seed);
   std::normal_distribution<double> noise(0.0, 0.5 / 60.0);
@@ -154,10 +155,114 @@ TEST(VesselUnitsIdentify, AValueIsWrittenFinerThanItsSigma) {
   EXPECT_NE(text.find("dead_time_s = 1.29505  # identified"), std::string::npos) << text;
 }
 
-TEST(VesselUnitsIdentify, ALayoutHasNoUnitValues) {
+// A 10 Hz log of a layout unit driven by `truth`: its shaft speed order steps through `levels`
+// [rps] every 40 s and (an azimuth) its direction order between 0 and ±90° every 20 s, the
+// drive integrated at 1 ms through its dead time; shaft speed noise 0.2 rpm, direction noise
+// 0.1°.
+LogUnits layout_log(const model::ThrusterUnit& truth, const std::vector<double>& levels,
+                    std::uint32_t seed) {
+  const model::UnitDrive drive(truth);
+  constexpr double kDt = 0.001, kLogDt = 0.1;
+  LogUnits log{"layout.csv", {}, {{truth.name, {}, {}, {}, {}, {}}}};
+  UnitColumns& u = log.units[0];
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> rpm_noise(0.0, 0.2 / 60.0), deg_noise(0.0, 0.1);
+  const bool azimuth = truth.type == model::UnitType::kAzimuth;
+  const auto order_n = [&](double t) {
+    const auto k = static_cast<std::size_t>(std::max(0.0, t) / 40.0);
+    return levels[std::min(k, levels.size() - 1)];
+  };
+  const auto order_angle = [&](double t) {
+    const int k = static_cast<int>(std::max(0.0, t) / 20.0) % 4;
+    return (k == 1 ? 0.5 : k == 3 ? -0.5 : 0.0) * M_PI;
+  };
+  double n = order_n(0.0), angle = 0.0;
+  const double end = 40.0 * static_cast<double>(levels.size());
+  const auto steps = static_cast<long>(std::lround(end / kDt));
+  const long every = std::lround(kLogDt / kDt);
+  for (long i = 0; i <= steps; ++i) {
+    const double t = static_cast<double>(i) * kDt;
+    if (i % every == 0) {
+      log.time_s.push_back(t);
+      u.order_rps.push_back(order_n(t));
+      u.shaft_speed_rps.push_back(n + rpm_noise(rng));
+      if (azimuth) {
+        u.azimuth_order_rad.push_back(order_angle(t));
+        u.azimuth_rad.push_back(std::remainder(angle + deg_noise(rng) * M_PI / 180.0, 2 * M_PI));
+      }
+    }
+    n += kDt * drive.shaft_acceleration(n, order_n(t - truth.dead_time_s));
+    angle += kDt * drive.angle_rate(angle, order_angle(t - truth.dead_time_s));
+  }
+  return log;
+}
+
+TEST(VesselUnitsIdentify, ALayoutUnitsDynamicsFromItsSteps) {
   scenario::VesselConfig start;
-  start.thrusters.resize(1);
-  EXPECT_TRUE(identify_units(start, {}, 0.033).parameters.empty());
+  model::ThrusterUnit tunnel;
+  tunnel.name = "bow";
+  tunnel.type = model::UnitType::kTunnel;
+  tunnel.max_thrust_N = 100e3;
+  tunnel.max_reverse_thrust_N = 90e3;
+  model::ThrusterUnit azimuth = tunnel;
+  azimuth.name = "main";
+  azimuth.type = model::UnitType::kAzimuth;
+  azimuth.max_reverse_thrust_N = 0.0;
+  start.thrusters = {tunnel, azimuth};  // dead time 1 s, T_n and slew rate the defaults
+  // The truth: dead times 1.4 s, time constants 30 % over the defaults, a 15°/s slew.
+  model::ThrusterUnit true_tunnel = tunnel, true_azimuth = azimuth;
+  for (model::ThrusterUnit* u : {&true_tunnel, &true_azimuth}) {
+    u->dead_time_s = 1.4;
+    u->time_constant_s = 1.3 * model::drive_params(*u).time_constant_s;
+  }
+  true_azimuth.rate_deg_per_s = 15.0;
+  const double n_max = model::drive_params(tunnel).max_shaft_speed_rps;
+  // Steps under and over the rate limit (n_max/4 in T_n), either way.
+  const std::vector<double> tunnel_levels{0.0, 0.2, 0.5, 0.1, -0.4, -0.9, 0.3, 0.0};
+  const std::vector<double> azimuth_levels{0.1, 0.3, 0.6, 0.2, 0.9, 0.4, 0.1};
+  std::vector<LogUnits> logs;
+  for (std::uint32_t seed : {1U, 2U}) {
+    std::vector<double> levels = tunnel_levels;
+    for (double& l : levels) l *= n_max;
+    logs.push_back(layout_log(true_tunnel, levels, seed));
+    levels = azimuth_levels;
+    for (double& l : levels) l *= model::drive_params(azimuth).max_shaft_speed_rps;
+    logs.push_back(layout_log(true_azimuth, levels, seed + 10));
+  }
+  const UnitResult r = identify_units(start, logs, 0.033, 2);
+  const std::pair<const char*, double> expected[] = {
+      {"thruster.bow.dead_time_s", 1.4},
+      {"thruster.bow.time_constant_s", *true_tunnel.time_constant_s},
+      {"thruster.main.dead_time_s", 1.4},
+      {"thruster.main.time_constant_s", *true_azimuth.time_constant_s},
+      {"thruster.main.rate_deg_per_s", 15.0}};
+  for (const auto& [key, value] : expected) {
+    const VesselParameter& v = find(r, key);
+    EXPECT_TRUE(v.determined) << key << ": " << v.note;
+    EXPECT_LE(std::abs(v.value - value), 3.0 * v.sigma) << key << " " << v.value;
+    EXPECT_LE(std::abs(v.value - value), 0.02 * value) << key << " " << v.value;
+  }
+  // A tunnel has no slew rate; each unit is reported, in layout order.
+  EXPECT_THROW(find(r, "thruster.bow.rate_deg_per_s"), std::runtime_error);
+  ASSERT_EQ(r.units.size(), 2U);
+  EXPECT_EQ(r.units[0].unit, "bow");
+  EXPECT_GE(r.units[0].steps, 10U);
+  EXPECT_TRUE(std::isnan(r.units[0].slew_rate_deg_per_s));
+  EXPECT_GE(r.units[1].turns, 4U);
+  // The same on one thread.
+  const UnitResult one = identify_units(start, logs, 0.033, 1);
+  for (std::size_t k = 0; k < r.parameters.size(); ++k) {
+    EXPECT_EQ(one.parameters[k].value, r.parameters[k].value) << r.parameters[k].key;
+  }
+
+  // Applied, the determined values are the units'.
+  scenario::VesselConfig applied = start;
+  apply(applied, r.parameters);
+  EXPECT_DOUBLE_EQ(applied.thrusters[0].dead_time_s, find(r, "thruster.bow.dead_time_s").value);
+  EXPECT_DOUBLE_EQ(*applied.thrusters[1].time_constant_s,
+                   find(r, "thruster.main.time_constant_s").value);
+  EXPECT_DOUBLE_EQ(applied.thrusters[1].rate_deg_per_s,
+                   find(r, "thruster.main.rate_deg_per_s").value);
 }
 
 }  // namespace

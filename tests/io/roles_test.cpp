@@ -113,6 +113,10 @@ TEST(Roles, CommandRolesOfAKindTakeTheirNamePart) {
   EXPECT_FALSE(find_role("command.rpm.").has_value());
   EXPECT_FALSE(find_role("command.rpm.a.b").has_value());
   EXPECT_TRUE(find_role("command.surge").has_value());
+  const auto azimuth = find_role("command.azimuth.main_port");
+  ASSERT_TRUE(azimuth.has_value());
+  EXPECT_EQ(azimuth->quantity, Quantity::kAngle);
+  EXPECT_EQ(azimuth->interp, Interp::kHold);
 }
 
 TEST(Roles, RejectsMalformedNames) {
@@ -135,7 +139,7 @@ TEST(Roles, CatalogueListsEveryRoleOnce) {
                                "mruK.roll", "command.rpm.NAME", "setpoint.north", "trigger"}) {
     EXPECT_TRUE(names.contains(expected)) << expected;
   }
-  EXPECT_EQ(names.size(), 50u);  // the table in docs/log-format.md
+  EXPECT_EQ(names.size(), 51u);  // the table in docs/log-format.md
 }
 
 TEST(Roles, ClosestRoleSuggestsNearNames) {

@@ -6,8 +6,9 @@
 /// circles, 4-corner and station-keeping runs by an output-error fit of the simulator's own
 /// model (scenario/hull_drive.hpp) driven by the logged thrust feedback, with σ from the
 /// Jacobian and a cross-validation score; the model's units' dead times, tunnel time constant
-/// and thrust maps from the step and thrust-map analyses of each log; `compare-trial` re-simulates
-/// one logged test with a vessel file. docs/theory.md, "Vessel identification".
+/// and thrust maps, or a [[thruster]] layout's units' dead times, shaft time constants and
+/// azimuth slew rates, from the step and thrust-map analyses of each log; `compare-trial`
+/// re-simulates one logged test with a vessel file. docs/theory.md, "Vessel identification".
 
 #include <Eigen/Core>
 #include <array>
@@ -73,7 +74,7 @@ struct VesselParameter {
 /// One unit's order → shaft speed dynamics and thrust map as the logs show them (NaN: not
 /// measured), and the starting file's model at the same order steps.
 struct UnitIdentification {
-  std::string unit;       ///< "port", "stb", "tunnel"
+  std::string unit;       ///< "port", "stb", "tunnel" or a layout unit's name
   std::size_t steps = 0;  ///< order steps with a FOPDT fit (3.7) of the shaft speed
   /// The steps' FOPDT time constant and dead time, combined over the steps and logs, with 1σ.
   double time_constant_s = 0.0, time_constant_sigma_s = 0.0;
@@ -82,6 +83,10 @@ struct UnitIdentification {
   double model_time_constant_s = 0.0, model_dead_time_s = 0.0;
   /// Thrust map (3.17) c₊, c₋ [N/rps²] with 1σ, combined over the logs.
   double c_forward = 0.0, c_forward_sigma = 0.0, c_reverse = 0.0, c_reverse_sigma = 0.0;
+  /// A layout's azimuth: its slew rate [deg/s] with 1σ from the rate-limited stretches of its
+  /// turns, combined; NaN for another unit or without such a turn.
+  double slew_rate_deg_per_s = 0.0, slew_rate_sigma_deg_per_s = 0.0;
+  std::size_t turns = 0;  ///< the rate-limited stretches fitted
 };
 
 /// A test's measured and re-simulated motion.
@@ -106,7 +111,7 @@ struct VesselIdReport {
   std::string vessel_text;            ///< its text, for the output file
   std::vector<io::InputReport> inputs;
   std::vector<VesselParameter> parameters;  ///< the hull's and wind's, then the units'
-  std::vector<UnitIdentification> units;    ///< the model's units (none for a layout)
+  std::vector<UnitIdentification> units;    ///< the model's units, or the layout's
   std::vector<TestResponse> tests;          ///< each fitted test, then the held-out one
   std::string held_out;                     ///< the held-out test; empty: none
   int iterations = 0;
@@ -118,9 +123,11 @@ struct VesselIdReport {
 /// input (a log without a role the fit needs, naming it).
 VesselIdReport run_vessel_id(const VesselIdRequest& request);
 
-/// The starting vessel file's text with each determined value replaced and commented with its
-/// σ and the tests it came from (line by line: keys, comments and layout kept; a key the file
-/// lacks is added to its table).
+/// The starting vessel file's text with each fitted value replaced and commented with its σ and
+/// the tests it came from (line by line: keys, comments and layout kept; a key the file lacks is
+/// added to its table). Keys "table.key" edit [table]; "thruster.NAME.key" the [[thruster]]
+/// table whose name is NAME. Throws std::invalid_argument for a unit the text does not name
+/// (the parameters are the file's own).
 std::string identified_vessel_text(const VesselIdReport& report);
 
 nlohmann::json to_json(const VesselIdReport& report);

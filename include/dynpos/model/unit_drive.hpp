@@ -37,6 +37,9 @@ struct UnitDriveParams {
   double dead_time_s = 0.0;          ///< command dead time of shaft speed and steering [s]
   double max_rudder_rad = 0.0;       ///< propeller with rudder: δ_max [rad]
   double rudder_rate_rad_s = 0.0;    ///< propeller with rudder: servo rate [rad/s]
+  /// Azimuth or rudder: the steering servo's gain inside its rate limit [1/s] (the rate is
+  /// saturated while the turn left exceeds rate/gain).
+  double steering_gain_per_s = 0.0;
 };
 
 /// The drive of `unit` (see the file comment and the sources in unit_drive.cpp).
