@@ -7,9 +7,12 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <string>
+#include <utility>
 
 #include "dynpos/core/error.hpp"
 #include "dynpos/ident/fopdt_fit.hpp"
@@ -41,6 +44,19 @@ std::vector<Estimate> scaled(std::vector<Estimate> e, double k) {
 
 constexpr const char* kStepsHow = "order steps (FOPDT fits of command.rpm → rpm)";
 constexpr const char* kMapHow = "thrust maps (3.17) of logged rpm and thrust";
+
+// The K_T of a unit's two directions (keys TABLE.kt_FORWARD and TABLE.kt_REVERSE) from the
+// thrust coefficients of its maps, c = ρD⁴K_T; `logged` names what the logs must hold for each.
+void add_thrust_map(UnitResult& out, const std::string& table, double rho_kg_m3, double diameter_m,
+                    const MapEstimates& maps,
+                    const std::array<std::pair<const char*, double>, 2>& kt,
+                    const std::array<const char*, 2>& logged, double max_rel) {
+  const double to_kt = 1.0 / (rho_kg_m3 * std::pow(diameter_m, 4));
+  out.parameters.push_back(parameter(table + ".kt_" + kt[0].first, "1", kt[0].second,
+                                     scaled(maps.c_forward, to_kt), kMapHow, logged[0], max_rel));
+  out.parameters.push_back(parameter(table + ".kt_" + kt[1].first, "1", kt[1].second,
+                                     scaled(maps.c_reverse, -to_kt), kMapHow, logged[1], max_rel));
+}
 
 // The [propeller] values from the port and stb units.
 void propellers(const scenario::VesselConfig& start, const std::vector<LogUnits>& logs,
@@ -74,13 +90,11 @@ void propellers(const scenario::VesselConfig& start, const std::vector<LogUnits>
       "steps of the main propellers' shaft speed order (surge steps) with rpm logged at 10 Hz "
       "or more",
       max_rel));
-  const double to_kt = 1.0 / (p.rho * std::pow(p.diameter, 4));
-  out.parameters.push_back(
-      parameter("propeller.kt_forward", "1", p.kt_forward, scaled(maps.c_forward, to_kt), kMapHow,
-                "rpm.port/stb and thrust.port/stb logged running ahead", max_rel));
-  out.parameters.push_back(
-      parameter("propeller.kt_reverse", "1", p.kt_reverse, scaled(maps.c_reverse, -to_kt), kMapHow,
-                "rpm.port/stb and thrust.port/stb logged running astern", max_rel));
+  add_thrust_map(out, "propeller", p.rho, p.diameter, maps,
+                 {{{"forward", p.kt_forward}, {"reverse", p.kt_reverse}}},
+                 {"rpm.port/stb and thrust.port/stb logged running ahead",
+                  "rpm.port/stb and thrust.port/stb logged running astern"},
+                 max_rel);
   const char* chain =
       "one order step gives one time constant for the chain of reference rate limit, reference "
       "filter, speed loop and motor (its T is reported against the file's model's); to "
@@ -130,13 +144,11 @@ void tunnel(const scenario::VesselConfig& start, const std::vector<LogUnits>& lo
                 fmt::format("{}, each under {:.0f} rpm (the rate limit over T_n)", excitation,
                             60.0 * p.rate_limit * p.time_constant),
                 max_rel));
-  const double to_kt = 1.0 / (p.rho * std::pow(p.diameter, 4));
-  out.parameters.push_back(
-      parameter("tunnel.kt_starboard", "1", p.kt_starboard, scaled(maps.c_forward, to_kt), kMapHow,
-                "rpm.tunnel and thrust.tunnel logged pushing to starboard", max_rel));
-  out.parameters.push_back(
-      parameter("tunnel.kt_port", "1", p.kt_port, scaled(maps.c_reverse, -to_kt), kMapHow,
-                "rpm.tunnel and thrust.tunnel logged pushing to port", max_rel));
+  add_thrust_map(out, "tunnel", p.rho, p.diameter, maps,
+                 {{{"starboard", p.kt_starboard}, {"port", p.kt_port}}},
+                 {"rpm.tunnel and thrust.tunnel logged pushing to starboard",
+                  "rpm.tunnel and thrust.tunnel logged pushing to port"},
+                 max_rel);
   out.parameters.push_back(
       {"tunnel.rate_limit_rps_per_s", "rps/s", p.rate_limit, p.rate_limit, kNan, false, false,
        fmt::format("not fitted; to determine it: tunnel order steps over {:.0f} rpm with its rpm "

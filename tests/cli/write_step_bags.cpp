@@ -79,10 +79,10 @@ void write_db3_files(const std::filesystem::path& out) {
     split.message(&split == &first ? 6 : 3, s.ns, s.cmd);
     split.message(&split == &first ? 5 : 9, s.ns + 7'000'000, s.feedback);
   }
-  std::ofstream(out / "steps_bag" / "metadata.yaml")
-      << "rosbag2_bagfile_information:\n  version: 8\n  storage_identifier: sqlite3\n"
-         "  relative_file_paths:\n    - steps_bag_0.db3\n    - steps_bag_1.db3\n"
-         "  compression_format: \"\"\n  compression_mode: \"\"\n";
+  std::ofstream metadata(out / "steps_bag" / "metadata.yaml");
+  metadata << "rosbag2_bagfile_information:\n  version: 8\n  storage_identifier: sqlite3\n"
+              "  relative_file_paths:\n    - steps_bag_0.db3\n    - steps_bag_1.db3\n"
+              "  compression_format: \"\"\n  compression_mode: \"\"\n";
 }
 
 }  // namespace
@@ -107,7 +107,18 @@ int main(int argc, char** argv) {
     mcap.message(fb, static_cast<std::uint64_t>(s.ns + 7'000'000), s.feedback);
     csv << fmt::format("{},{},{}\n", static_cast<double>(s.ns - kStart) * 1e-9, s.u, s.y);
   }
+  csv.close();
   mcap.write(out / "steps.mcap");
   write_db3_files(out);
+  // A fixture the test cannot read would fail it for the wrong reason: every file must be there
+  // and hold data, else the writer fails (exit 1) naming the file.
+  for (const char* name : {"steps.csv", "steps.mcap", "steps.db3", "steps_bag/metadata.yaml",
+                           "steps_bag/steps_bag_0.db3", "steps_bag/steps_bag_1.db3"}) {
+    std::error_code ec;
+    if (std::filesystem::file_size(out / name, ec) == 0 || ec) {
+      std::cerr << "write_step_bags: " << (out / name).string() << " was not written\n";
+      return 1;
+    }
+  }
   return 0;
 }
