@@ -24,6 +24,7 @@
 #include "dynpos/scenario/runner.hpp"
 #include "dynpos/scenario/scenario_spec.hpp"
 #include "dynpos/scenario/vessel_config.hpp"
+#include "identified_file_runs.hpp"
 
 namespace dynpos {
 namespace {
@@ -124,15 +125,7 @@ TEST(VesselIdOnAnAzimuthVessel, TheJoystickProgrammeGivesTheHullBack) {
     // Written with at least 6 significant digits.
     EXPECT_NEAR(written.at(p.key), p.value, 1e-5 * std::abs(p.value)) << p.key;
   }
-  scenario::ScenarioSpec spec =
-      scenario::load_scenario(kSource / "data" / "scenarios" / "pure-dp.toml");
-  spec.set_duration(20.0);
-  EXPECT_NO_THROW(scenario::run_scenario(spec, identified, 1));
-  analysis::CapabilityRequest cap;
-  cap.vessel = out;
-  cap.failure = "none";
-  cap.direction_step = 30.0;
-  EXPECT_NO_THROW(analysis::run_capability(cap));
+  testing::expect_identified_file_runs(out, "pure-dp");
 
   // A start 30 % off in every unit's dead time, time constant and slew rate: the same logs give
   // the units back (the hull's fit, coarse here, is not what this checks).

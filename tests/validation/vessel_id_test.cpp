@@ -22,6 +22,7 @@
 #include "dynpos/scenario/runner.hpp"
 #include "dynpos/scenario/scenario_spec.hpp"
 #include "dynpos/scenario/vessel_config.hpp"
+#include "identified_file_runs.hpp"
 
 namespace dynpos {
 namespace {
@@ -148,15 +149,7 @@ TEST(VesselIdOnTheVirtualTrial, TheProgrammeGivesTheHullBack) {
   // Written with 6 significant digits.
   const double dead_time = by_key["propeller.dead_time_s"]->value;
   EXPECT_NEAR(identified.propeller.dead_time, dead_time, 1e-5 * dead_time);
-  scenario::ScenarioSpec spec =
-      scenario::load_scenario(kSource / "data" / "scenarios" / "zig-zag.toml");
-  spec.set_duration(20.0);
-  EXPECT_NO_THROW(scenario::run_scenario(spec, identified, 1));
-  analysis::CapabilityRequest cap;
-  cap.vessel = out;
-  cap.failure = "none";
-  cap.direction_step = 30.0;
-  EXPECT_NO_THROW(analysis::run_capability(cap));
+  testing::expect_identified_file_runs(out, "zig-zag");
 
   // A start 30 % off in every fitted hull value converges to the same values (without the
   // cross-validation's first fit, which the values do not depend on).
