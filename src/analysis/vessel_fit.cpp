@@ -77,6 +77,23 @@ struct TestResidual {
 struct HullFit::Impl {
   ceres::Problem problem;
   std::vector<ceres::ResidualBlockId> blocks;
+
+  // The Jacobian (and the residuals, when not null) at the current values, columns: every θ,
+  // then each test's nuisance.
+  ceres::CRSMatrix jacobian(std::vector<double>& theta, std::vector<Nuisance>& nuisance,
+                            unsigned jobs, std::vector<double>* residuals) {
+    ceres::Problem::EvaluateOptions eo;
+    for (double& t : theta) {
+      problem.SetParameterBlockVariable(&t);
+      eo.parameter_blocks.push_back(&t);
+    }
+    eo.num_threads = static_cast<int>(jobs);
+    eo.apply_loss_function = false;
+    for (Nuisance& n : nuisance) eo.parameter_blocks.push_back(n.data());
+    ceres::CRSMatrix crs;
+    problem.Evaluate(eo, nullptr, residuals, nullptr, &crs);
+    return crs;
+  }
 };
 
 HullFit::HullFit(const scenario::VesselConfig& start, std::vector<FitParameter> parameters,
@@ -182,60 +199,48 @@ double HullFit::residual_variance(const std::vector<bool>& free) {
   return n > p ? 2.0 * cost / static_cast<double>(n - p) : std::numeric_limits<double>::quiet_NaN();
 }
 
-std::vector<double> HullFit::theta_sigma(const std::vector<bool>& free, double variance) {
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  std::vector<double> out(theta.size(), nan);
+namespace {
+
+// The free θ's columns, then every nuisance column (of `n_cols`).
+std::vector<Eigen::Index> free_columns(const std::vector<bool>& free, std::size_t n_theta,
+                                       Eigen::Index n_cols) {
   std::vector<Eigen::Index> cols;
-  for (std::size_t i = 0; i < theta.size(); ++i) {
+  for (std::size_t i = 0; i < n_theta; ++i) {
     if (i < free.size() && free[i]) cols.push_back(static_cast<Eigen::Index>(i));
   }
-  if (cols.empty()) return out;
-  const std::size_t n_free = cols.size();
-  const Eigen::MatrixXd a = normal_matrix(nullptr);
-  for (auto i = static_cast<Eigen::Index>(theta.size()); i < a.rows(); ++i) cols.push_back(i);
+  for (auto i = static_cast<Eigen::Index>(n_theta); i < n_cols; ++i) cols.push_back(i);
+  return cols;
+}
+
+// The pseudo-inverse of a's rows and columns `cols`: eigenvalues under 1e-14 of the largest (a
+// direction the data do not see) are dropped, not an error.
+Eigen::MatrixXd sub_pseudo_inverse(const Eigen::MatrixXd& a,
+                                   const std::vector<Eigen::Index>& cols) {
   const auto m = static_cast<Eigen::Index>(cols.size());
   Eigen::MatrixXd sub(m, m);
   for (Eigen::Index i = 0; i < m; ++i) {
     for (Eigen::Index j = 0; j < m; ++j) sub(i, j) = a(cols[i], cols[j]);
   }
-  // The pseudo-inverse: eigenvalues under 1e-14 of the largest (a direction the data do not
-  // see) are dropped, not an error.
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(sub);
-  const Eigen::VectorXd& ev = eig.eigenvalues();
-  const double tol = ev.cwiseAbs().maxCoeff() * 1e-14;
-  for (std::size_t k = 0; k < n_free; ++k) {
-    double var = 0.0;
-    for (Eigen::Index e = 0; e < m; ++e) {
-      const double x = eig.eigenvectors()(static_cast<Eigen::Index>(k), e);
-      if (ev[e] > tol) var += x * x / ev[e];
-    }
-    if (var > 0.0) out[static_cast<std::size_t>(cols[k])] = std::sqrt(var * variance);
-  }
-  return out;
+  Eigen::VectorXd inverse = eig.eigenvalues();
+  const double tol = inverse.cwiseAbs().maxCoeff() * 1e-14;
+  for (double& e : inverse) e = e > tol ? 1.0 / e : 0.0;
+  return eig.eigenvectors() * inverse.asDiagonal() * eig.eigenvectors().transpose();
 }
 
-Eigen::MatrixXd HullFit::normal_matrix(std::vector<Eigen::VectorXd>* theta_information) {
-  ceres::Problem::EvaluateOptions eo;
-  for (double& t : theta) {
-    impl_->problem.SetParameterBlockVariable(&t);
-    eo.parameter_blocks.push_back(&t);
-  }
-  eo.num_threads = static_cast<int>(jobs_);
-  eo.apply_loss_function = false;
-  for (Nuisance& n : nuisance) eo.parameter_blocks.push_back(n.data());
-  ceres::CRSMatrix crs;
-  impl_->problem.Evaluate(eo, nullptr, nullptr, nullptr, &crs);
-  const auto cols = static_cast<Eigen::Index>(crs.num_cols);
-  Eigen::MatrixXd jtj = Eigen::MatrixXd::Zero(cols, cols);
-  const auto n_theta = static_cast<Eigen::Index>(theta.size());
+// JᵀJ of `crs`, whose rows are the tests' residuals in turn; per test the diagonal of its own
+// JᵀJ over the first n_theta columns when `theta_information` is not null.
+Eigen::MatrixXd gram(const ceres::CRSMatrix& crs, const std::vector<const FitTest*>& tests,
+                     Eigen::Index n_theta, std::vector<Eigen::VectorXd>* theta_information) {
+  Eigen::MatrixXd jtj = Eigen::MatrixXd::Zero(crs.num_cols, crs.num_cols);
   if (theta_information != nullptr) {
-    theta_information->assign(tests_.size(), Eigen::VectorXd::Zero(n_theta));
+    theta_information->assign(tests.size(), Eigen::VectorXd::Zero(n_theta));
   }
-  std::size_t test = 0, test_end = tests_.empty() ? 0 : tests_[0]->residual_count();
+  std::size_t test = 0, test_end = tests.empty() ? 0 : tests[0]->residual_count();
   // A row has the θ and one test's nuisance: the outer product of its non-zeros only.
   for (int i = 0; i < crs.num_rows; ++i) {
-    while (static_cast<std::size_t>(i) >= test_end && test + 1 < tests_.size()) {
-      test_end += tests_[++test]->residual_count();
+    while (static_cast<std::size_t>(i) >= test_end && test + 1 < tests.size()) {
+      test_end += tests[++test]->residual_count();
     }
     const auto a = static_cast<std::size_t>(crs.rows[static_cast<std::size_t>(i)]);
     const auto b = static_cast<std::size_t>(crs.rows[static_cast<std::size_t>(i) + 1]);
@@ -251,6 +256,77 @@ Eigen::MatrixXd HullFit::normal_matrix(std::vector<Eigen::VectorXd>* theta_infor
     }
   }
   return jtj.selfadjointView<Eigen::Lower>();
+}
+
+}  // namespace
+
+std::vector<double> HullFit::theta_sigma(const std::vector<bool>& free, double variance) {
+  std::vector<double> out(theta.size(), std::numeric_limits<double>::quiet_NaN());
+  const Eigen::MatrixXd a = normal_matrix(nullptr);
+  const std::vector<Eigen::Index> cols = free_columns(free, theta.size(), a.rows());
+  const Eigen::MatrixXd inverse = sub_pseudo_inverse(a, cols);
+  for (Eigen::Index k = 0; k < inverse.rows() && cols[k] < static_cast<Eigen::Index>(theta.size());
+       ++k) {
+    if (inverse(k, k) > 0.0)
+      out[static_cast<std::size_t>(cols[k])] = std::sqrt(inverse(k, k) * variance);
+  }
+  return out;
+}
+
+std::vector<double> HullFit::theta_sigma_blocks(const std::vector<bool>& free, double block_s) {
+  std::vector<double> out(theta.size(), std::numeric_limits<double>::quiet_NaN());
+  std::vector<double> r;
+  const ceres::CRSMatrix crs = impl_->jacobian(theta, nuisance, jobs_, &r);
+  const auto n_theta = static_cast<Eigen::Index>(theta.size());
+  const std::vector<Eigen::Index> cols = free_columns(free, theta.size(), crs.num_cols);
+  const Eigen::MatrixXd inverse = sub_pseudo_inverse(gram(crs, tests_, n_theta, nullptr), cols);
+  std::vector<Eigen::Index> position(static_cast<std::size_t>(crs.num_cols), -1);
+  for (std::size_t k = 0; k < cols.size(); ++k)
+    position[static_cast<std::size_t>(cols[k])] = static_cast<Eigen::Index>(k);
+  const auto m = static_cast<Eigen::Index>(cols.size());
+  Eigen::MatrixXd meat = Eigen::MatrixXd::Zero(m, m);
+  std::size_t row = 0;
+  for (const FitTest* t : tests_) {
+    // Per block of the test: J_bᵀ r_b, the trace of its leverage J_b A⁺ J_bᵀ, its row count.
+    const double t0 = t->drive.time_s.front();
+    const auto n_blocks = static_cast<std::size_t>((t->drive.time_s.back() - t0) / block_s) + 1;
+    std::vector<Eigen::VectorXd> score(n_blocks, Eigen::VectorXd::Zero(m));
+    std::vector<double> leverage(n_blocks, 0.0), rows(n_blocks, 0.0);
+    for (std::size_t c = 0; c < 3; ++c) {
+      for (const std::size_t sample : t->index[c]) {
+        const auto b = static_cast<std::size_t>((t->drive.time_s[sample] - t0) / block_s);
+        const auto lo = static_cast<std::size_t>(crs.rows[row]);
+        const auto hi = static_cast<std::size_t>(crs.rows[row + 1]);
+        for (std::size_t j = lo; j < hi; ++j) {
+          const Eigen::Index pj = position[static_cast<std::size_t>(crs.cols[j])];
+          if (pj < 0) continue;
+          score[b][pj] += crs.values[j] * r[row];
+          for (std::size_t k = lo; k < hi; ++k) {
+            const Eigen::Index pk = position[static_cast<std::size_t>(crs.cols[k])];
+            if (pk >= 0) leverage[b] += crs.values[j] * inverse(pj, pk) * crs.values[k];
+          }
+        }
+        rows[b] += 1.0;
+        ++row;
+      }
+    }
+    for (std::size_t b = 0; b < n_blocks; ++b) {
+      if (rows[b] == 0.0) continue;
+      const double shrink = 1.0 - std::min(leverage[b] / rows[b], 0.9);
+      meat.noalias() += score[b] * score[b].transpose() / (shrink * shrink);
+    }
+  }
+  const Eigen::MatrixXd covariance = inverse * meat * inverse;
+  for (Eigen::Index k = 0; k < m && cols[k] < n_theta; ++k) {
+    if (covariance(k, k) > 0.0)
+      out[static_cast<std::size_t>(cols[k])] = std::sqrt(covariance(k, k));
+  }
+  return out;
+}
+
+Eigen::MatrixXd HullFit::normal_matrix(std::vector<Eigen::VectorXd>* theta_information) {
+  const ceres::CRSMatrix crs = impl_->jacobian(theta, nuisance, jobs_, nullptr);
+  return gram(crs, tests_, static_cast<Eigen::Index>(theta.size()), theta_information);
 }
 
 void HullFit::rescale(const std::array<double, 3>& floor) {

@@ -83,6 +83,12 @@ class HullFit {
   /// directions the data do not see dropped) times √variance.
   std::vector<double> theta_sigma(const std::vector<bool>& free, double variance);
 
+  /// σ of θ of the free parameters (NaN for the others) by the block sandwich A⁺BA⁺: A = JᵀJ as
+  /// in theta_sigma, B = Σ g_b g_bᵀ with g_b = J_bᵀ r_b over the blocks of `block_s` of each
+  /// test, each block's residuals divided by 1 − its mean leverage. No noise model: honest where
+  /// the residuals stay correlated longer than an AR(1) lag says (a current's slow drift).
+  std::vector<double> theta_sigma_blocks(const std::vector<bool>& free, double block_s);
+
   /// Multiplies each test's channel scale by √((1 + ρ)/(1 − ρ)), ρ ∈ [−0.8, 0.95] the lag-one
   /// autocorrelation of its residuals: the information of N samples of an AR(1) error is that
   /// of N(1 − ρ)/(1 + ρ) independent ones.

@@ -176,6 +176,10 @@ std::vector<bool> screen(HullFit& fit, std::vector<bool> free, double max_rel) {
 }
 
 constexpr std::array<double, 3> kScaleFloor{0.002, 0.002, 5e-5};
+// The sandwich σ's blocks [s]: longer than the waves' and the gusts' correlation, short enough
+// that a 300 s stretch has five.
+constexpr double kSigmaBlock_s = 60.0;
+constexpr int kMaxRounds = 4;
 
 struct FitOutcome {
   std::unique_ptr<HullFit> fit;
@@ -193,18 +197,25 @@ void solve_round(FitOutcome& o) {
   o.message.clear();
   o.iterations += o.fit->solve(o.free, false, 30, &o.message);
   // σ with the residuals' variance and their correlation in time (waves, gusts and what the
-  // model lacks are not white): the scales widened for it, then put back.
+  // model lacks are not white): the scales widened for it, then put back. A current's slow drift
+  // leaves a residual correlated over minutes, which the AR(1) widening misses: σ is the larger
+  // of that and the sandwich over 60 s blocks.
   const double variance = o.fit->residual_variance(o.free);
+  const std::vector<double> blocks = o.fit->theta_sigma_blocks(o.free, kSigmaBlock_s);
   const std::vector<std::array<double, 3>> scale = o.fit->scale;
   o.fit->widen_for_correlation();
   o.sigma_theta = o.fit->theta_sigma(o.free, variance);
   o.fit->scale = scale;
+  for (std::size_t i = 0; i < o.sigma_theta.size(); ++i) {
+    if (std::isfinite(blocks[i])) o.sigma_theta[i] = std::max(o.sigma_theta[i], blocks[i]);
+  }
 }
 
 // The fit of `tests` from theta0: each test's start velocity and current with the hull held,
-// then the determined parameters (screen) freed; a parameter whose σ at the solution is too
-// large is put back to the starting file's value, and the set is screened again at the
-// solution, until it holds (three rounds at most).
+// then the determined parameters (screen) freed. A parameter whose σ at the solution is too large
+// leaves the set and goes back to the starting file's value, and the set is screened again at
+// the solution; a changed set is solved again (kMaxRounds at most), so that the values and σ
+// always come from one solve of the set reported.
 FitOutcome fit_tests(const Setup& s, std::vector<const FitTest*> tests,
                      const std::vector<double>& theta0, double max_rel, unsigned jobs) {
   FitOutcome o;
@@ -215,21 +226,25 @@ FitOutcome fit_tests(const Setup& s, std::vector<const FitTest*> tests,
   fit.solve({}, true, 30, &ignored);
   const std::vector<bool> all(s.params.size(), true);
   o.free = screen(fit, all, max_rel);
-  for (int round = 0; round < 3; ++round) {
+  for (std::size_t i = 0; i < s.params.size(); ++i) {
+    if (!o.free[i]) fit.theta[i] = 0.0;
+  }
+  for (int round = 1;; ++round) {
     solve_round(o);
-    bool dropped = false;
+    std::vector<bool> next = o.free;
     for (std::size_t i = 0; i < s.params.size(); ++i) {
       if (o.free[i] && rel_sigma(s.params[i], fit.theta[i], o.sigma_theta[i]) > max_rel) {
-        o.free[i] = false;
-        fit.theta[i] = 0.0;
-        dropped = true;
+        next[i] = false;
       }
     }
-    const std::vector<bool> again = dropped ? o.free : screen(fit, all, max_rel);
-    if (!dropped && again == o.free) break;
-    if (!dropped) o.free = again;
+    if (next == o.free) next = screen(fit, all, max_rel);
+    if (next == o.free || round == kMaxRounds) break;
+    for (std::size_t i = 0; i < s.params.size(); ++i) {
+      if (!next[i]) fit.theta[i] = 0.0;
+    }
+    o.free = next;
   }
-  if (o.free.empty() || std::none_of(o.free.begin(), o.free.end(), [](bool f) { return f; })) {
+  if (std::none_of(o.free.begin(), o.free.end(), [](bool f) { return f; })) {
     o.sigma_theta.assign(s.params.size(), kNan);
   }
   return o;

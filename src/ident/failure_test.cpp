@@ -13,6 +13,9 @@
 namespace dynpos::ident {
 namespace {
 
+// An order below this share of its level before a fall asked for the fall: a stop (commanded()).
+constexpr double kStopShare = 1.0 / 3.0;
+
 // |feedback|, its running median, full scale, noise and near-zero band.
 detail::UnitProfile make_profile(const std::vector<double>& t, const UnitFeedback& unit,
                                  const FailureTestOptions& o) {
@@ -33,34 +36,46 @@ detail::UnitProfile make_profile(const std::vector<double>& t, const UnitFeedbac
   return p;
 }
 
-// The start of the fall from a fit of the unit's decay on its shaft speed (fall_onset.hpp):
-// onsets from 0.4·max_fall_s before the last sample at fall_from·L (ihi) to the next valid one
-// (a rate-limited fall from full speed to 0.6 of it takes a third of that on the Gunnerus).
-std::optional<detail::FallOnset> fitted_onset(const std::vector<double>& t,
-                                              const detail::UnitProfile& p, double exponent,
-                                              std::size_t ihi, const FailureTestOptions& o) {
+// A fall on the shaft speed: |feedback| and |order| as shaft speeds, and the onset search of
+// fall_onset.hpp: onsets from 0.4·max_fall_s before the last sample at fall_from·L (ihi) to the
+// next valid one (a rate-limited fall from full speed to 0.6 of it takes a third of that on the
+// Gunnerus). nullopt without a sample after ihi.
+struct Fall {
+  std::vector<double> speed, order;
+  detail::FallSearch search;
+};
+
+std::optional<Fall> fall_of(const std::vector<double>& t, const detail::UnitProfile& p,
+                            const UnitFeedback& feedback, std::size_t ihi,
+                            const FailureTestOptions& o) {
+  const double exponent = feedback.shaft_speed_exponent;
   std::size_t ib = ihi + 1;
   while (ib < t.size() && std::isnan(p.abs[ib])) ++ib;
   if (ib >= t.size()) return std::nullopt;
-  std::vector<double> speed(p.abs.size());
-  std::transform(p.abs.begin(), p.abs.end(), speed.begin(),
-                 [&](double a) { return std::pow(a, 1.0 / exponent); });
+  Fall f;
+  const auto speed_of = [&](double a) { return std::pow(std::abs(a), 1.0 / exponent); };
+  f.speed.resize(p.abs.size());
+  std::transform(p.abs.begin(), p.abs.end(), f.speed.begin(), speed_of);
+  f.order.resize(feedback.order.size());
+  std::transform(feedback.order.begin(), feedback.order.end(), f.order.begin(), speed_of);
   std::vector<double> valid;
-  for (const double v : speed) {
+  for (const double v : f.speed) {
     if (!std::isnan(v)) valid.push_back(v);
   }
-  detail::FallSearch q;
-  q.from_s = t[ihi] - 0.4 * o.max_fall_s;
-  q.to_s = t[ib];
-  q.noise_sigma = detail::difference_noise_sigma(valid);
-  return detail::fit_fall_onset(t, speed, q);
+  f.search.from_s = t[ihi] - 0.4 * o.max_fall_s;
+  f.search.to_s = t[ib];
+  f.search.noise_sigma = detail::difference_noise_sigma(valid);
+  f.search.fallen_fraction = speed_of(o.fall_from_fraction);
+  f.search.still_ordered = speed_of(kStopShare);
+  return f;
 }
 
 // The failure instant of a fall that reaches near zero at index iz, last at fall_from·L at ihi.
-void time_the_fall(const std::vector<double>& t, const detail::UnitProfile& p, double exponent,
-                   std::size_t ihi, std::size_t iz, const FailureTestOptions& o,
-                   detail::Trip& trip) {
-  if (const auto fit = fitted_onset(t, p, exponent, ihi, o)) {
+void time_the_fall(const std::vector<double>& t, const detail::UnitProfile& p,
+                   const std::optional<Fall>& fall, std::size_t ihi, std::size_t iz,
+                   const FailureTestOptions& o, detail::Trip& trip) {
+  if (const auto fit =
+          fall ? detail::fit_fall_onset(t, fall->speed, fall->search, fall->order) : std::nullopt) {
     trip.t_f = fit->t_s;
     trip.time_constant_s = fit->time_constant_s;
     trip.onset = OnsetMethod::kFallFit;
@@ -122,7 +137,7 @@ bool commanded(const std::vector<double>& t, const detail::UnitProfile& p,
   if (!fb_half) return false;
   const double at = *fb_half + o.commanded_within_s;
   const std::optional<double> order_then = mean_in(t, abs_order, at - 1.0, at);
-  return order_then && *order_then < *order_level / 3.0;
+  return order_then && *order_then < *order_level * kStopShare;
 }
 
 // A trip when the stretch near zero from index iz, ending at t_off_end, follows a clearly
@@ -152,7 +167,8 @@ std::optional<detail::Trip> trip_at(const std::vector<double>& t, const detail::
     }
   }
   if (!ihi) return std::nullopt;
-  time_the_fall(t, p, feedback.shaft_speed_exponent, *ihi, iz, o, trip);
+  const std::optional<Fall> fall = fall_of(t, p, feedback, *ihi, o);
+  time_the_fall(t, p, fall, *ihi, iz, o, trip);
   if (commanded(t, p, feedback.order, trip, o)) return std::nullopt;
   return trip;
 }

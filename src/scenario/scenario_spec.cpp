@@ -349,7 +349,7 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
     }
     spec.observer = *kind;
   }
-  spec.observer_wind_feedforward = root.boolean_or("observer_wind_feedforward", false);
+  spec.observer_wind_feedforward = root.boolean_or("observer_wind_feedforward", true);
   if (root.has("failure") || root.has("failure_at_s")) {
     spec.failure = FailureEvent{root.number("failure_at_s", 0.0, 1e6), root.string("failure")};
   }

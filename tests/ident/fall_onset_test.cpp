@@ -101,6 +101,44 @@ TEST(FallOnset, ADriftingLevelIsTheLineBeforeTheFall) {
   }
 }
 
+// The DP loop ramps the unit's order down from 2.5 to 1.5 rps over 595–599 s, before the unit
+// trips at 600.4 s (then asks 1.83 rps for the load the unit no longer takes); the shaft follows
+// the order after the Gunnerus' command dead time of 1.3 s with T = 1 s until the trip. Order at
+// 10 Hz, feedback at 1 Hz.
+TEST(FallOnset, AnOrderedRampBeforeTheTripIsFollowedNotTakenForTheFall) {
+  constexpr double kTrip = 600.4, kTau = 1.0, kRate = 1.4;
+  const auto ordered = [](double t) {
+    if (t >= kTrip + 0.5) return 1.83;
+    return 2.5 - 1.0 * std::clamp((t - 595.0) / 4.0, 0.0, 1.0);
+  };
+  constexpr double kDead = 1.3;
+  Sampled x;
+  std::vector<double> order;
+  double y = 2.5;  // the shaft following the order, integrated at 1 ms
+  double at_trip = 0.0;
+  for (int k = 0; k <= 250; ++k) {
+    const double t = 590.0 + 0.1 * k;
+    for (int m = 0; m < 100 && t > 590.0; ++m) {
+      const double tm = t - 0.1 + 0.001 * m;
+      if (tm < kTrip) y += 0.001 * (ordered(tm - kDead) - y) / kTau;
+    }
+    if (t <= kTrip) at_trip = y;
+    x.t.push_back(t);
+    order.push_back(ordered(t));
+    const double s = t <= kTrip ? y : shaft(t, at_trip, kTrip, kTau, kRate);
+    x.s.push_back(k % 10 == 0 ? s : std::numeric_limits<double>::quiet_NaN());
+  }
+  const FallSearch q = search(x, 2.5, 1.0);
+  const auto with_order = fit_fall_onset(x.t, x.s, q, order);
+  ASSERT_TRUE(with_order);
+  EXPECT_NEAR(with_order->t_s, kTrip, 0.3);
+  // Without the order, the level line takes the ramp for the start of the decay: the fixture
+  // shows the weakness it guards against.
+  const auto without = fit_fall_onset(x.t, x.s, q);
+  EXPECT_TRUE(!without || std::abs(without->t_s - kTrip) > 0.3)
+      << "onset without the order " << without->t_s;
+}
+
 TEST(FallOnset, AtTenHertzTheOnsetAndTimeConstantAreClose) {
   const Sampled x = sample(0.1, 1.0, 600.35);  // below r·T: first order from the onset
   const auto o = fit_fall_onset(x.t, x.s, search(x, 1.0, 0.1));

@@ -133,9 +133,9 @@ TEST(ScenarioEvents, FileKeysAndTheirErrors) {
       "observer = \"ekf\"\nfailure_at_s = 50\nfailure = \"tunnel\"\n"
       "[[gnss_dropout]]\nt_s = 20\nduration_s = 30");
   EXPECT_EQ(ok.observer, control::ObserverKind::kEkf);
-  EXPECT_FALSE(ok.observer_wind_feedforward);  // the default
-  EXPECT_TRUE(
-      load("observer = \"ekf\"\nobserver_wind_feedforward = true").observer_wind_feedforward);
+  EXPECT_TRUE(ok.observer_wind_feedforward);  // the default
+  EXPECT_FALSE(
+      load("observer = \"ekf\"\nobserver_wind_feedforward = false").observer_wind_feedforward);
   EXPECT_THAT(error_of([&] { load("observer_wind_feedforward = \"yes\""); }),
               ::testing::HasSubstr("observer_wind_feedforward"));
   ASSERT_TRUE(ok.failure);

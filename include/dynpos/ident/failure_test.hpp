@@ -31,7 +31,11 @@
 ///   speed control decaying to zero after it (an acceleration limit, then first order), fitted
 ///   by least squares over onsets from 0.4·`max_fall_s` before the last sample at
 ///   fall_from_fraction·L to the next sample, each with its best time constant and limit; t_f
-///   is the middle of the onsets that fit within 4σ² of the best (fall_onset.hpp). Without
+///   is the middle of the onsets that fit within 4σ² of the best (fall_onset.hpp); with the
+///   unit's order logged, the samples before an onset may follow the order (dead time and lag
+///   fitted on the minute before) instead of the line, and the search reaches on to the first
+///   sample below fall_from_fraction of what following it gives (while that is above a third
+///   of the level). Without
 ///   samples for it, the last sample before the fall still at the level: smoothed
 ///   a ≥ L − max(0.1·L, 3σ̂). A unit whose feedback lags its shaft has t_f that much late.
 /// Trips of several units starting within `max_fall_s` of each other are one event (a bus

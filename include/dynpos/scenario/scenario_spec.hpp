@@ -125,8 +125,8 @@ struct ScenarioSpec {
   control::ObserverKind observer = control::ObserverKind::kIdeal;
   /// Whether the observer's model has the wind force from the DP system's wind sensor, as DP
   /// systems feed the wind forward (file key `observer_wind_feedforward`; dp_estimator.hpp).
-  /// Default false: the shipped scenarios' runs stay as they were (docs/theory.md).
-  bool observer_wind_feedforward = false;
+  /// Default true; false leaves the wind in the observer's bias estimate (docs/theory.md).
+  bool observer_wind_feedforward = true;
   /// A unit that fails during the run (file keys `failure_at_s`, `failure`).
   std::optional<FailureEvent> failure;
   /// GNSS dropouts ([[gnss_dropout]] with t_s, duration_s), in increasing time.
