@@ -267,8 +267,9 @@ std::vector<double> HullFit::theta_sigma(const std::vector<bool>& free, double v
   const Eigen::MatrixXd inverse = sub_pseudo_inverse(a, cols);
   for (Eigen::Index k = 0; k < inverse.rows() && cols[k] < static_cast<Eigen::Index>(theta.size());
        ++k) {
-    if (inverse(k, k) > 0.0)
+    if (inverse(k, k) > 0.0) {
       out[static_cast<std::size_t>(cols[k])] = std::sqrt(inverse(k, k) * variance);
+    }
   }
   return out;
 }
@@ -281,8 +282,9 @@ std::vector<double> HullFit::theta_sigma_blocks(const std::vector<bool>& free, d
   const std::vector<Eigen::Index> cols = free_columns(free, theta.size(), crs.num_cols);
   const Eigen::MatrixXd inverse = sub_pseudo_inverse(gram(crs, tests_, n_theta, nullptr), cols);
   std::vector<Eigen::Index> position(static_cast<std::size_t>(crs.num_cols), -1);
-  for (std::size_t k = 0; k < cols.size(); ++k)
+  for (std::size_t k = 0; k < cols.size(); ++k) {
     position[static_cast<std::size_t>(cols[k])] = static_cast<Eigen::Index>(k);
+  }
   const auto m = static_cast<Eigen::Index>(cols.size());
   Eigen::MatrixXd meat = Eigen::MatrixXd::Zero(m, m);
   std::size_t row = 0;
@@ -318,8 +320,9 @@ std::vector<double> HullFit::theta_sigma_blocks(const std::vector<bool>& free, d
   }
   const Eigen::MatrixXd covariance = inverse * meat * inverse;
   for (Eigen::Index k = 0; k < m && cols[k] < n_theta; ++k) {
-    if (covariance(k, k) > 0.0)
+    if (covariance(k, k) > 0.0) {
       out[static_cast<std::size_t>(cols[k])] = std::sqrt(covariance(k, k));
+    }
   }
   return out;
 }
