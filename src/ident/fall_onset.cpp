@@ -225,16 +225,18 @@ std::optional<Tracking> tracking_before(const std::vector<double>& t, const std:
 std::optional<double> departure(const std::vector<double>& t, const std::vector<double>& s,
                                 const FallSearch& q, const OrderResponse& response,
                                 const Tracking& k) {
-  const auto expected = [&](double at) {
-    return k.gain *
-           response.at(k.time_constant_s, k.dead_time_s, std::span<const double>(&at, 1))[0];
-  };
-  const double floor = q.still_ordered * expected(q.from_s);
+  std::vector<double> times{q.from_s}, values{0.0};  // the search's start, then its samples
   for (std::size_t i = 0; i < t.size() && t[i] <= q.to_s + q.fall_s; ++i) {
     if (t[i] < q.from_s || !std::isfinite(s[i])) continue;
-    const double e = expected(t[i]);
-    if (e < floor) return std::nullopt;
-    if (s[i] < q.fallen_fraction * e) return t[i];
+    times.push_back(t[i]);
+    values.push_back(s[i]);
+  }
+  const std::vector<double> followed = response.at(k.time_constant_s, k.dead_time_s, times);
+  const double floor = q.still_ordered * k.gain * followed[0];
+  for (std::size_t i = 1; i < times.size(); ++i) {
+    const double expected = k.gain * followed[i];
+    if (expected < floor) return std::nullopt;
+    if (values[i] < q.fallen_fraction * expected) return times[i];
   }
   return std::nullopt;
 }

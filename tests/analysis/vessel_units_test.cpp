@@ -22,6 +22,16 @@ const VesselParameter& find(const UnitResult& r, const std::string& key) {
   throw std::runtime_error("no " + key);
 }
 
+// The parameter `key` of r, expected determined, within 3σ and `rel` of `value`.
+const VesselParameter& expect_determined(const UnitResult& r, const std::string& key, double value,
+                                         double rel) {
+  const VesselParameter& v = find(r, key);
+  EXPECT_TRUE(v.determined) << key << ": " << v.note;
+  EXPECT_LE(std::abs(v.value - value), 3.0 * v.sigma) << key << " " << v.value;
+  EXPECT_LE(std::abs(v.value - value), rel * value) << key << " " << v.value;
+  return v;
+}
+
 TEST(VesselUnitsCombine, InverseVarianceMeanWithItsSigma) {
   // Weights 1 and 1/4: (0·1 + 1·0.25)/1.25 = 0.2; σ = 1/√1.25. χ² = 0.2²/1 + 0.8²/4 = 0.2 < 1:
   // the scatter is within the σ, so σ is not widened.
@@ -89,10 +99,7 @@ TEST(VesselUnitsIdentify, TheTunnelsDeadTimeTimeConstantAndMapFromItsSteps) {
                                                      {"tunnel.kt_starboard", 0.45},
                                                      {"tunnel.kt_port", 0.30}};
   for (const auto& [key, value] : expected) {
-    const VesselParameter& v = find(r, key);
-    EXPECT_TRUE(v.determined) << key << ": " << v.note;
-    EXPECT_LE(std::abs(v.value - value), 3.0 * v.sigma) << key << " " << v.value;
-    EXPECT_LE(std::abs(v.value - value), 0.03 * value) << key << " " << v.value;
+    const VesselParameter& v = expect_determined(r, key, value, 0.03);
     EXPECT_NE(v.note.find("tunnel.csv"), std::string::npos) << v.note;
   }
   EXPECT_FALSE(find(r, "tunnel.rate_limit_rps_per_s").determined);
@@ -236,12 +243,7 @@ TEST(VesselUnitsIdentify, ALayoutUnitsDynamicsFromItsSteps) {
       {"thruster.main.dead_time_s", 1.4},
       {"thruster.main.time_constant_s", *true_azimuth.time_constant_s},
       {"thruster.main.rate_deg_per_s", 15.0}};
-  for (const auto& [key, value] : expected) {
-    const VesselParameter& v = find(r, key);
-    EXPECT_TRUE(v.determined) << key << ": " << v.note;
-    EXPECT_LE(std::abs(v.value - value), 3.0 * v.sigma) << key << " " << v.value;
-    EXPECT_LE(std::abs(v.value - value), 0.02 * value) << key << " " << v.value;
-  }
+  for (const auto& [key, value] : expected) expect_determined(r, key, value, 0.02);
   // A tunnel has no slew rate; each unit is reported, in layout order.
   EXPECT_THROW(find(r, "thruster.bow.rate_deg_per_s"), std::runtime_error);
   ASSERT_EQ(r.units.size(), 2U);

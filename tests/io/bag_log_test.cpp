@@ -21,6 +21,15 @@ using testing::McapLayout;
 using testing::McapWriter;
 using testing::TempDir;
 
+// Roles on topics /a (input) and /b (output), the time axis `time`.
+ColumnMap a_and_b(const char* time) {
+  ColumnMap map;
+  map.set_column("time", time);
+  map.set_column("input", "/a.data");
+  map.set_column("output", "/b.data");
+  return map;
+}
+
 TEST(ReadBagFile, OrdersMessagesByTimeAndKeepsARepeatedTimeOnce) {
   const TempDir dir;
   McapWriter w(McapLayout{true, "lz4", 3, true, true});
@@ -32,10 +41,7 @@ TEST(ReadBagFile, OrdersMessagesByTimeAndKeepsARepeatedTimeOnce) {
   w.message(b, 500'000'000ULL, CdrWriter().put(-1.0).bytes());
   const auto path = dir / "order.mcap";
   w.write(path);
-  ColumnMap map;
-  map.set_column("time", "time");
-  map.set_column("input", "/a.data");
-  map.set_column("output", "/b.data");
+  const ColumnMap map = a_and_b("time");
   const FileLog log = read_bag_file(path, map, BagTime::kAuto);
   EXPECT_EQ(log.report.topic, "/a");
   EXPECT_EQ(log.log.time(), (std::vector<double>{0.0, 1.0, 2.0, 3.0}));
@@ -45,8 +51,7 @@ TEST(ReadBagFile, OrdersMessagesByTimeAndKeepsARepeatedTimeOnce) {
   EXPECT_EQ(log.more[0].report.topic, "/b");
   EXPECT_EQ(*log.more[0].origin_ns - *log.origin_ns, 500'000'000);
   // The time role names the axis topic.
-  map.set_column("time", "/b");
-  const FileLog by_b = read_bag_file(path, map, BagTime::kReceive);
+  const FileLog by_b = read_bag_file(path, a_and_b("/b"), BagTime::kReceive);
   EXPECT_EQ(by_b.report.topic, "/b");
   EXPECT_EQ(by_b.log.size(), 1u);
 }
@@ -172,10 +177,7 @@ TEST(ReadBagFile, ChunksWhoseTimesOverlapAreOrderedByTimeOnAnyNumberOfThreads) {
     ASSERT_GT(messages_a, first_a.size() + 100);  // times repeated
     const auto path = dir / "overlap.mcap";
     w.write(path);
-    ColumnMap map;
-    map.set_column("time", "/a");
-    map.set_column("input", "/a.data");
-    map.set_column("output", "/b.data");
+    const ColumnMap map = a_and_b("/a");
     const auto expect = [](const FileLog& log, const std::map<std::uint64_t, double>& first,
                            const char* role, const std::string& what) {
       std::vector<double> t;
