@@ -10,14 +10,18 @@
 namespace dynpos::control {
 namespace {
 
-// Offsets of the blocks of the state [ξ₁; ξ₂; η; ν; b].
-constexpr int kXi1 = 0, kXi2 = 3, kEta = 6, kNu = 9, kBias = 12;
+// Offsets of the blocks of the state [ξ₁; ξ₂; η; ν; b; the other wave components' ξ₁, ξ₂].
+constexpr int kEta = 6, kNu = 9, kBias = 12;
+constexpr int kN = EkfObserver::kStates;
+// ξ₁ and ξ₂ of wave component c.
+constexpr int xi1(int c) { return c == 0 ? 0 : 15 + 6 * (c - 1); }
+constexpr int xi2(int c) { return xi1(c) + 3; }
 
-// The measured rows (at most 3): fixed-capacity matrices, no allocation per step.
-using RowsH = Eigen::Matrix<double, Eigen::Dynamic, 15, Eigen::RowMajor, 4, 15>;
+// The measured rows (at most 4): fixed-capacity matrices, no allocation per step.
+using RowsH = Eigen::Matrix<double, Eigen::Dynamic, kN, Eigen::RowMajor, 4, kN>;
 using RowsSquare = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, 4>;
 using RowsVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 4, 1>;
-using Gain = Eigen::Matrix<double, 15, Eigen::Dynamic, 0, 15, 4>;
+using Gain = Eigen::Matrix<double, kN, Eigen::Dynamic, 0, kN, 4>;
 
 Eigen::Matrix3d rotation(double psi) {
   const double c = std::cos(psi), s = std::sin(psi);
@@ -68,14 +72,17 @@ EkfObserver::EkfObserver(const ObserverModel& model, const EkfObserverTuning& tu
   M_inv_ = model_.M.inverse();
   x_.segment<3>(kEta) = eta0_n;
   estimate_.eta_n = eta0_n;
-  // The wave model at rest in its stationary spread: σ in ξ₂, σ/ω₀ in ξ₁.
-  const Eigen::Vector3d& w0 = model_.wave_peak_frequency_rad_s;
+  // The wave model at rest in its stationary spread: each component's σ in ξ₂, σ/ω in ξ₁.
   const Eigen::Vector3d wave_var = tuning_.wave_motion_std.array().square();
   const Eigen::Vector3d y_var(tuning_.position_std_m * tuning_.position_std_m,
                               tuning_.position_std_m * tuning_.position_std_m,
                               tuning_.heading_std_rad * tuning_.heading_std_rad);
-  P_.diagonal().segment<3>(kXi1) = wave_var.cwiseQuotient(w0.cwiseProduct(w0));
-  P_.diagonal().segment<3>(kXi2) = wave_var;
+  for (int c = 0; c < kWaveComponents; ++c) {
+    const Eigen::Vector3d w = frequency(c);
+    const Eigen::Vector3d var = wave_var.cwiseProduct(model_.wave_variance_share.col(c));
+    P_.diagonal().segment<3>(xi1(c)) = var.cwiseQuotient(w.cwiseProduct(w));
+    P_.diagonal().segment<3>(xi2(c)) = var;
+  }
   P_.diagonal().segment<3>(kEta) = y_var + wave_var;  // η₀ is a measurement, waves included
   P_.diagonal().segment<3>(kNu) = tuning_.initial_nu_std.array().square();
   const Eigen::Vector3d b_std_b = model_.M.diagonal().cwiseProduct(tuning_.initial_bias_accel_std);
@@ -83,15 +90,21 @@ EkfObserver::EkfObserver(const ObserverModel& model, const EkfObserverTuning& tu
   P_.block<3, 3>(kBias, kBias) = R * b_std_b.array().square().matrix().asDiagonal() * R.transpose();
 }
 
+Eigen::Vector3d EkfObserver::frequency(int component) const {
+  return kWaveComponentRatio[static_cast<std::size_t>(component)] *
+         model_.wave_peak_frequency_rad_s;
+}
+
 EkfObserver::State EkfObserver::derivative(const State& x, const Eigen::Vector3d& tau_b) const {
-  const Eigen::Vector3d xi1 = x.segment<3>(kXi1), xi2 = x.segment<3>(kXi2);
   const Eigen::Vector3d nu = x.segment<3>(kNu), b = x.segment<3>(kBias);
   const Eigen::Matrix3d R = rotation(x(kEta + 2));
-  const Eigen::Vector3d& w0 = model_.wave_peak_frequency_rad_s;
   State d;
-  d.segment<3>(kXi1) = xi2;
-  d.segment<3>(kXi2) = -w0.cwiseProduct(w0).cwiseProduct(xi1) -
-                       2.0 * model_.wave_damping_ratio * w0.cwiseProduct(xi2);
+  for (int c = 0; c < kWaveComponents; ++c) {
+    const Eigen::Vector3d w = frequency(c);
+    d.segment<3>(xi1(c)) = x.segment<3>(xi2(c));
+    d.segment<3>(xi2(c)) = -w.cwiseProduct(w).cwiseProduct(x.segment<3>(xi1(c))) -
+                           2.0 * model_.wave_damping_ratio * w.cwiseProduct(x.segment<3>(xi2(c)));
+  }
   d.segment<3>(kEta) = R * nu;                                                // (2.20)
   d.segment<3>(kNu) = M_inv_ * (-model_.D * nu + R.transpose() * b + tau_b);  // (2.21)
   d.segment<3>(kBias) = -b.cwiseQuotient(model_.bias_time_constant_s);        // (2.22)
@@ -101,12 +114,13 @@ EkfObserver::State EkfObserver::derivative(const State& x, const Eigen::Vector3d
 EkfObserver::Covariance EkfObserver::jacobian(const State& x) const {
   const double psi = x(kEta + 2);
   const Eigen::Matrix3d R = rotation(psi), dR = rotation_derivative(psi);
-  const Eigen::Vector3d& w0 = model_.wave_peak_frequency_rad_s;
-  const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
   Covariance A = Covariance::Zero();
-  A.block<3, 3>(kXi1, kXi2) = I;
-  A.block<3, 3>(kXi2, kXi1) = (-w0.cwiseProduct(w0)).asDiagonal();
-  A.block<3, 3>(kXi2, kXi2) = (-2.0 * model_.wave_damping_ratio * w0).asDiagonal();
+  for (int c = 0; c < kWaveComponents; ++c) {
+    const Eigen::Vector3d w = frequency(c);
+    A.block<3, 3>(xi1(c), xi2(c)) = Eigen::Matrix3d::Identity();
+    A.block<3, 3>(xi2(c), xi1(c)) = (-w.cwiseProduct(w)).asDiagonal();
+    A.block<3, 3>(xi2(c), xi2(c)) = (-2.0 * model_.wave_damping_ratio * w).asDiagonal();
+  }
   A.block<3, 3>(kEta, kNu) = R;
   A.block<3, 1>(kEta, kEta + 2) = dR * x.segment<3>(kNu);
   A.block<3, 3>(kNu, kNu) = -M_inv_ * model_.D;
@@ -117,13 +131,15 @@ EkfObserver::Covariance EkfObserver::jacobian(const State& x) const {
 }
 
 EkfObserver::Covariance EkfObserver::process_noise(double psi_rad) const {
-  const Eigen::Vector3d& w0 = model_.wave_peak_frequency_rad_s;
   const double lambda = model_.wave_damping_ratio;
   const Eigen::Vector3d m = model_.M.diagonal();
   Covariance Q = Covariance::Zero();
-  // q = 4λω₀σ² gives the wave model the stationary σ in ξ₂ (and σ/ω₀ in ξ₁).
-  Q.diagonal().segment<3>(kXi2) =
-      4.0 * lambda * w0.array() * tuning_.wave_motion_std.array().square();
+  // q = 4λωσ² gives each component its stationary σ in ξ₂ (and σ/ω in ξ₁).
+  for (int c = 0; c < kWaveComponents; ++c) {
+    Q.diagonal().segment<3>(xi2(c)) = 4.0 * lambda * frequency(c).array() *
+                                      tuning_.wave_motion_std.array().square() *
+                                      model_.wave_variance_share.col(c).array();
+  }
   const Eigen::Vector3d force = m.cwiseProduct(tuning_.nu_accel_noise);
   Q.block<3, 3>(kNu, kNu) =
       M_inv_ * force.array().square().matrix().asDiagonal() * M_inv_.transpose();
@@ -140,26 +156,30 @@ void EkfObserver::correct(const Eigen::Vector3d& y_n, double yaw_rate_rad_s) {
     if (!std::isnan(y_n[i])) rows[m++] = i;
   }
   const bool rate = !std::isnan(yaw_rate_rad_s);
-  if (m == 0 && !rate) return;  // nothing measured: coast
-  const Eigen::Vector3d y_tilde_all = innovation(y_n, x_.segment<3>(kEta) + x_.segment<3>(kXi2));
+  if (m == 0 && !rate) return;                  // nothing measured: coast
+  Eigen::Vector3d y_hat = x_.segment<3>(kEta);  // y = η + Σ ξ₂
+  for (int c = 0; c < kWaveComponents; ++c) y_hat += x_.segment<3>(xi2(c));
+  const Eigen::Vector3d y_tilde_all = innovation(y_n, y_hat);
   const Eigen::Vector3d sigma(tuning_.position_std_m, tuning_.position_std_m,
                               tuning_.heading_std_rad);
   const int n = m + (rate ? 1 : 0);
-  RowsH H = RowsH::Zero(n, 15);
+  RowsH H = RowsH::Zero(n, kN);
   RowsSquare Rm = RowsSquare::Zero(n, n);
   RowsVector y_tilde(n);
   for (int r = 0; r < m; ++r) {
-    H(r, kXi2 + rows[r]) = 1.0;  // y = η + ξ₂
+    for (int c = 0; c < kWaveComponents; ++c) H(r, xi2(c) + rows[r]) = 1.0;
     H(r, kEta + rows[r]) = 1.0;
     Rm(r, r) = sigma[rows[r]] * sigma[rows[r]];
     y_tilde[r] = y_tilde_all[rows[r]];
   }
   if (rate) {
-    // The rate gyro: r plus the wave model's yaw rate ξ̇₂ = −ω₀²ξ₁ − 2λω₀ξ₂.
-    const double w0 = model_.wave_peak_frequency_rad_s.z();
+    // The rate gyro: r plus the wave model's yaw rate Σ ξ̇₂ = Σ (−ω²ξ₁ − 2λωξ₂).
     H(m, kNu + 2) = 1.0;
-    H(m, kXi1 + 2) = -w0 * w0;
-    H(m, kXi2 + 2) = -2.0 * model_.wave_damping_ratio * w0;
+    for (int c = 0; c < kWaveComponents; ++c) {
+      const double w = frequency(c).z();
+      H(m, xi1(c) + 2) = -w * w;
+      H(m, xi2(c) + 2) = -2.0 * model_.wave_damping_ratio * w;
+    }
     Rm(m, m) = tuning_.yaw_rate_std_rad_s * tuning_.yaw_rate_std_rad_s;
     y_tilde[m] = yaw_rate_rad_s - H.row(m).dot(x_);
   }
@@ -192,7 +212,8 @@ void EkfObserver::step(const Eigen::Vector3d& y_n, const Eigen::Vector3d& tau_b,
   }
   correct(y_n, yaw_rate_rad_s);
   predict(tau_b, dt_s);
-  estimate_.wave_n = x_.segment<3>(kXi2);
+  estimate_.wave_n.setZero();
+  for (int c = 0; c < kWaveComponents; ++c) estimate_.wave_n += x_.segment<3>(xi2(c));
   estimate_.eta_n = x_.segment<3>(kEta);
   estimate_.nu_b = x_.segment<3>(kNu);
   estimate_.bias_n = x_.segment<3>(kBias);

@@ -49,6 +49,11 @@ void ObserverModel::validate() const {
   if (!(wave_damping_ratio > 0.0 && wave_damping_ratio <= 1.0)) {
     throw std::invalid_argument("observer model: the wave damping ratio must be in (0, 1]");
   }
+  if (!wave_variance_share.allFinite() || (wave_variance_share.array() < 0.0).any() ||
+      ((wave_variance_share.rowwise().sum().array() - 1.0).abs() > 1e-9).any()) {
+    throw std::invalid_argument(
+        "observer model: the wave variance shares must be >= 0 and sum to 1 in each DOF");
+  }
 }
 
 Eigen::Vector3d innovation(const Eigen::Vector3d& y_n, const Eigen::Vector3d& y_hat_n) noexcept {

@@ -1,6 +1,8 @@
 #include "dynpos/model/sea_state.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 #include <string>
 
@@ -50,6 +52,23 @@ double short_wave_attenuation(double k, double length_m) {
   return 1.0 / (1.0 + ratio * ratio);
 }
 
+// Calls f(ω, S) on a fine grid of the sea's frequencies with S the unit-height spectra of the
+// WF motion in surge and sway (the wave amplitude's) and yaw (the slope's, by k²), each with the
+// hull's short-wave attenuation.
+template <typename F>
+void for_response_spectrum(const SeaStateParams& sea, const WaveResponseParams& response, F&& f) {
+  const double wp = kTwoPi / sea.tp_s;
+  const double lo = sea.omega_min_factor * wp, hi = sea.omega_max_factor * wp;
+  constexpr int kSteps = 4000;
+  for (int i = 0; i <= kSteps; ++i) {
+    const double omega = lo + (hi - lo) * i / kSteps;
+    const double k = omega * omega / kG;
+    const double a = short_wave_attenuation(k, response.length_m);
+    const double s = jonswap(omega, 1.0, sea.tp_s, sea.gamma) * a * a;
+    f(omega, Eigen::Vector3d(s, s, s * k * k));
+  }
+}
+
 }  // namespace
 
 void SeaStateParams::validate() const {
@@ -85,26 +104,43 @@ double jonswap(double omega, double hs_m, double tp_s, double gamma) {
 
 Eigen::Vector3d response_peak_frequency(const SeaStateParams& sea,
                                         const WaveResponseParams& response) {
-  const double wp = kTwoPi / sea.tp_s;
-  const double lo = sea.omega_min_factor * wp, hi = sea.omega_max_factor * wp;
-  constexpr int kSteps = 4000;
-  double best_xy = 0.0, best_yaw = 0.0;
-  Eigen::Vector3d peak = Eigen::Vector3d::Constant(wp);
-  for (int i = 0; i <= kSteps; ++i) {
-    const double omega = lo + (hi - lo) * i / kSteps;
-    const double k = omega * omega / kG;
-    const double a = short_wave_attenuation(k, response.length_m);
-    const double s = jonswap(omega, 1.0, sea.tp_s, sea.gamma) * a * a;
-    if (s > best_xy) {
-      best_xy = s;
-      peak.x() = peak.y() = omega;
+  Eigen::Vector3d peak = Eigen::Vector3d::Constant(kTwoPi / sea.tp_s),
+                  best = Eigen::Vector3d::Zero();
+  for_response_spectrum(sea, response, [&](double omega, const Eigen::Vector3d& s) {
+    for (int d = 0; d < 3; ++d) {
+      if (s[d] > best[d]) best[d] = s[d], peak[d] = omega;
     }
-    if (s * k * k > best_yaw) {
-      best_yaw = s * k * k;
-      peak.z() = omega;
+  });
+  return peak;
+}
+
+Eigen::MatrixXd response_variance_shares(const SeaStateParams& sea,
+                                         const WaveResponseParams& response,
+                                         const std::vector<double>& ratios) {
+  if (ratios.empty() || ratios.front() != 1.0 ||
+      std::adjacent_find(ratios.begin(), ratios.end(), std::greater_equal<>()) != ratios.end()) {
+    throw std::invalid_argument(
+        "response_variance_shares: the ratios must start at 1 and increase");
+  }
+  const Eigen::Vector3d peak = response_peak_frequency(sea, response);
+  const auto n = static_cast<Eigen::Index>(ratios.size());
+  Eigen::MatrixXd shares = Eigen::MatrixXd::Zero(3, n);
+  for_response_spectrum(sea, response, [&](double omega, const Eigen::Vector3d& s) {
+    for (int d = 0; d < 3; ++d) {
+      Eigen::Index c = 0;  // the last component whose lower boundary lies below ω
+      while (c + 1 < n && omega > peak[d] * std::sqrt(ratios[c] * ratios[c + 1])) ++c;
+      shares(d, c) += s[d];
+    }
+  });
+  for (int d = 0; d < 3; ++d) {
+    const double total = shares.row(d).sum();
+    if (total > 0.0) {
+      shares.row(d) /= total;
+    } else {
+      shares.row(d).setZero(), shares(d, 0) = 1.0;  // calm: one component
     }
   }
-  return peak;
+  return shares;
 }
 
 std::vector<WaveComponent> discretise(const SeaStateParams& sea, std::uint64_t seed) {

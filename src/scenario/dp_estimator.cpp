@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "dynpos/core/angle.hpp"
 #include "dynpos/core/log.hpp"
@@ -26,13 +27,15 @@ double rate_std_rad_s(const VesselConfig& vessel) {
 
 }  // namespace
 
-control::EkfObserverTuning dp_ekf_tuning(const model::WaveMotion& waves, double heading0_rad) {
+control::EkfObserverTuning dp_ekf_tuning(const model::WaveMotion& waves, double heading0_rad,
+                                         double yaw_rate_std_rad_s) {
   const Eigen::Matrix<double, 6, 1> wf_std = waves.position_std(heading0_rad);
   const double horizontal_m = std::hypot(wf_std[0], wf_std[1]);
   control::EkfObserverTuning t;
   t.wave_motion_std.head<2>().setConstant(std::max(0.4 * horizontal_m, 0.01));
   t.bias_accel_noise.head<2>().setConstant(2e-3);
   t.position_std_m = 0.05;
+  t.yaw_rate_std_rad_s = yaw_rate_std_rad_s;
   return t;
 }
 
@@ -43,6 +46,10 @@ control::ObserverModel observer_model(const VesselConfig& vessel, const model::H
   m.M = dp.M;
   m.D = dp.D;
   m.wave_peak_frequency_rad_s = model::response_peak_frequency(sea, vessel.waves);
+  m.wave_variance_share =
+      model::response_variance_shares(sea, vessel.waves,
+                                      std::vector<double>(control::kWaveComponentRatio.begin(),
+                                                          control::kWaveComponentRatio.end()));
   return m;
 }
 
@@ -76,7 +83,8 @@ DpEstimator::DpEstimator(const ScenarioSpec& spec, const VesselConfig& vessel,
     observer_.emplace<control::PassiveObserver>(model, control::passive_observer_gains(model),
                                                 eta0_n);
   } else if (kind_ == control::ObserverKind::kEkf) {
-    observer_.emplace<control::EkfObserver>(model, dp_ekf_tuning(waves_, eta0_n.z()), eta0_n);
+    observer_.emplace<control::EkfObserver>(
+        model, dp_ekf_tuning(waves_, eta0_n.z(), rate_std_rad_s(vessel)), eta0_n);
   }
 }
 

@@ -35,7 +35,9 @@ struct TruthOptions {
   /// ≈ 2 m, 1 m and 2.5°, ≈ 0.05 m/s at most.
   Eigen::Vector3d lf_force_b{500.0, 800.0, 2e3};
   double lf_period_s = 300.0;
-  Eigen::Vector3d wave_rms{1.0, 1.0, core::deg_to_rad(1.0)};   ///< [m, m, rad]
+  Eigen::Vector3d wave_rms{1.0, 1.0, core::deg_to_rad(1.0)};  ///< [m, m, rad]
+  /// The wave motion's sinusoids per DOF, at these multiples of ω₀, of equal amplitude.
+  std::vector<double> wave_ratios{0.8, 0.9, 1.0, 1.1, 1.25};
   Eigen::Vector3d noise_std{0.1, 0.1, core::deg_to_rad(0.1)};  ///< [m, m, rad]
   double duration_s = 600.0;
   double dt_s = 0.1;
@@ -106,18 +108,19 @@ inline ObserverState state_of(const ObserverEstimate& e) {
 }
 
 /// The truth: η̇ = R ν, M ν̇ = −D ν + Rᵀ b + τ with τ = −Rᵀ b + the slow excitation, one RK4
-/// step per sample; the wave motion per DOF five sinusoids at (0.8, 0.9, 1, 1.1, 1.25)·ω₀ of
-/// equal amplitude and random phase, scaled to wave_rms.
+/// step per sample; the wave motion per DOF sinusoids at wave_ratios·ω₀ of equal amplitude and
+/// random phase, scaled to wave_rms.
 inline std::vector<TruthSample> simulate_truth(const ObserverModel& model,
                                                const TruthOptions& opt) {
   Normal rng(opt.seed);
-  constexpr std::array<double, 5> kRatios{0.8, 0.9, 1.0, 1.1, 1.25};
-  Eigen::Matrix<double, 3, 5> phase;
+  const auto sines = static_cast<Eigen::Index>(opt.wave_ratios.size());
+  Eigen::Matrix<double, 3, Eigen::Dynamic> phase(3, sines);
   for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 5; ++j) phase(i, j) = 2.0 * std::numbers::pi * rng.uniform();
+    for (Eigen::Index j = 0; j < sines; ++j) phase(i, j) = 2.0 * std::numbers::pi * rng.uniform();
   }
   const double w0 = model.wave_peak_frequency_rad_s.x();
-  const Eigen::Vector3d amplitude = opt.wave_rms / std::sqrt(2.5);  // rms of 5 = a·√(5/2)
+  // The rms of n sinusoids of amplitude a is a·√(n/2).
+  const Eigen::Vector3d amplitude = opt.wave_rms / std::sqrt(0.5 * static_cast<double>(sines));
   const Eigen::Matrix3d M_inv = model.M.inverse();
   const auto bias = [&](double t) -> Eigen::Vector3d {
     return t >= opt.bias_change_at_s ? (opt.bias_n + opt.bias_change_n).eval() : opt.bias_n;
@@ -146,7 +149,9 @@ inline std::vector<TruthSample> simulate_truth(const ObserverModel& model,
     s.nu_b = x.tail<3>();
     for (int i = 0; i < 3; ++i) {
       double w = 0.0;
-      for (int j = 0; j < 5; ++j) w += std::sin(kRatios[j] * w0 * s.t_s + phase(i, j));
+      for (Eigen::Index j = 0; j < sines; ++j) {
+        w += std::sin(opt.wave_ratios[static_cast<std::size_t>(j)] * w0 * s.t_s + phase(i, j));
+      }
       s.wave_n[i] = amplitude[i] * w;
       s.y_n[i] = s.eta_n[i] + s.wave_n[i] + opt.noise_std[i] * rng();
     }

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
+#include <vector>
 
 namespace dynpos::model {
 namespace {
@@ -132,6 +134,70 @@ TEST(WaveMotion, PositionStdIsTheSigmaOfTheSampledMotion) {
   }
   EXPECT_EQ(WaveMotion(SeaStateParams{}, WaveResponseParams{}, 1, 0.1).position_std(0.0).norm(),
             0.0);
+}
+
+// The unit-height response spectra of sea_state.hpp written out again: the wave amplitude's
+// with the hull's short-wave attenuation 1/(1 + (Lk/2π)²)² in surge and sway, times k² in yaw.
+double response_spectrum(const SeaStateParams& sea, double length_m, double omega, int dof) {
+  const double k = omega * omega / 9.81;
+  const double ratio = length_m * k / (2.0 * M_PI);
+  const double a = 1.0 / (1.0 + ratio * ratio);
+  return jonswap(omega, 1.0, sea.tp_s, sea.gamma) * a * a * (dof == 2 ? k * k : 1.0);
+}
+
+TEST(ResponseSpectrum, PeaksNearTheWavesInSurgeAndSwayAndAboveThemInYaw) {
+  SeaStateParams sea;
+  sea.tp_s = 8.0;
+  const double wp = 2.0 * M_PI / sea.tp_s;
+  const Eigen::Vector3d peak = response_peak_frequency(sea, WaveResponseParams{});
+  // The attenuation pulls the amplitude's peak a little below ω_p; k² pushes the yaw's above.
+  EXPECT_NEAR(peak.x(), wp, 0.02 * wp);
+  EXPECT_EQ(peak.y(), peak.x());
+  EXPECT_GT(peak.z(), peak.x());
+  for (int dof = 0; dof < 3; ++dof) {
+    const double s = response_spectrum(sea, 31.25, peak[dof], dof);
+    EXPECT_GT(s, response_spectrum(sea, 31.25, 0.97 * peak[dof], dof)) << dof;
+    EXPECT_GT(s, response_spectrum(sea, 31.25, 1.03 * peak[dof], dof)) << dof;
+  }
+}
+
+TEST(ResponseSpectrum, VarianceSharesAreTheSpectrumNearestEachComponent) {
+  SeaStateParams sea;
+  sea.tp_s = 8.0;
+  const WaveResponseParams hull;
+  const std::vector<double> ratios{1.0, 1.5, 2.0};
+  const Eigen::MatrixXd shares = response_variance_shares(sea, hull, ratios);
+  ASSERT_EQ(shares.rows(), 3);
+  ASSERT_EQ(shares.cols(), 3);
+  const Eigen::Vector3d peak = response_peak_frequency(sea, hull);
+  const double wp = 2.0 * M_PI / sea.tp_s;
+  for (int dof = 0; dof < 3; ++dof) {
+    EXPECT_NEAR(shares.row(dof).sum(), 1.0, 1e-12) << dof;
+    // Integrated again, finer, over the sea's band [0.5, 3] ω_p, split at the geometric means
+    // √1.5 and √3 of the components' frequencies.
+    Eigen::Vector3d band = Eigen::Vector3d::Zero();
+    const double lo = 0.5 * wp, hi = 3.0 * wp, dw = (hi - lo) / 40000.0;
+    for (double w = lo + 0.5 * dw; w < hi; w += dw) {
+      const int c = w < std::sqrt(1.5) * peak[dof] ? 0 : w < std::sqrt(3.0) * peak[dof] ? 1 : 2;
+      band[c] += response_spectrum(sea, hull.length_m, w, dof) * dw;
+    }
+    band /= band.sum();
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(shares(dof, c), band[c], 2e-3) << dof << " " << c;
+  }
+  // Yaw weighs short waves by k²: more of its variance lies in the upper components.
+  EXPECT_GT(shares(2, 1) + shares(2, 2), 2.0 * (shares(0, 1) + shares(0, 2)));
+  EXPECT_GT(shares(0, 0), 0.8);
+  // One component takes it all.
+  const Eigen::MatrixXd one = response_variance_shares(sea, hull, {1.0});
+  EXPECT_TRUE(one.isApprox(Eigen::MatrixXd::Ones(3, 1)));
+}
+
+TEST(ResponseSpectrum, VarianceSharesNeedRatiosFromOneUp) {
+  const SeaStateParams sea;
+  const WaveResponseParams hull;
+  EXPECT_THROW(response_variance_shares(sea, hull, {}), std::invalid_argument);
+  EXPECT_THROW(response_variance_shares(sea, hull, {1.5, 2.0}), std::invalid_argument);
+  EXPECT_THROW(response_variance_shares(sea, hull, {1.0, 2.0, 2.0}), std::invalid_argument);
 }
 
 TEST(WaveMotion, CalmSeaHasNoMotion) {

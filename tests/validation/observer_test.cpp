@@ -249,9 +249,12 @@ void stationkeeping_on_an_observer_is_close_to_the_ideal_one(const Trial& at45_a
 }
 
 // The 0.1° holds head on for the EKF, which also takes the rate gyro. At 45° to the
-// waves the wave-frequency yaw is 0.75° rms with much of it at 1–2 rad/s, beyond what one
-// second-order wave model per DOF follows: both observers leave 0.2–0.25° there (measured worst
-// 0.24°), guarded at 0.3° (not the bound: open, docs/theory.md).
+// waves the wave-frequency yaw is 0.75° rms spread over 0.6–2.5 rad/s, and the slowly varying
+// yaw moment the model does not know (wave drift, the gusts the wind feedforward misses) is
+// ≈ 2e-4 rad/s² over ≈ 20 s: the best linear estimator on the compass and gyro leaves ≈ 0.10°
+// there, on the compass alone ≈ 0.13° (docs/theory.md, "The heading at 45° to the waves").
+// Measured worst: EKF 0.124° (its three wave components; 0.227° with one), passive 0.185°
+// (one component, no gyro). Guarded at 0.15° and 0.22°, not the bound: open.
 void heading_error_rms(const Trial& at45_all) {
   SCOPED_TRACE("heading");
   for (ObserverKind kind : {ObserverKind::kPassive, ObserverKind::kEkf}) {
@@ -260,7 +263,8 @@ void heading_error_rms(const Trial& at45_all) {
       const double e = at45_all[static_cast<std::size_t>(kind)][static_cast<std::size_t>(s)]
                            .heading_error_rms_deg;
       worst = std::max(worst, e);
-      EXPECT_LE(e, 0.3) << observer_name(kind) << " at 45°, seed " << s + 1;
+      EXPECT_LE(e, kind == ObserverKind::kEkf ? 0.15 : 0.22)
+          << observer_name(kind) << " at 45°, seed " << s + 1;
     }
     std::printf("%s at 45° to the waves: heading error rms, worst of %d seeds: %.3f°\n",
                 observer_name(kind).data(), kSeeds, worst);

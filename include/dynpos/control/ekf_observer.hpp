@@ -1,13 +1,14 @@
 #pragma once
 /// \file
 /// The extended Kalman filter (EKF) for DP (Fossen 2011, ch. 11, sec. 11.3) on the model of
-/// observer.hpp, with the passive observer's state x = [ξ₁; ξ₂; η; ν; b] (15):
+/// observer.hpp with kWaveComponents wave components c per DOF, the state
+/// x = [ξ₁¹; ξ₂¹; η; ν; b; ξ₁²; ξ₂²; …] (the passive observer's 15, then 6 per further component):
 ///
-///     ξ̇ = A_w ξ + [0; w_w]                     (wave model, η_w = ξ₂)
+///     ξ̇ᶜ = A_wᶜ ξᶜ + [0; w_wᶜ]                  (wave model at ωᶜ, η_w = Σ ξ₂ᶜ)
 ///     η̇ = R(ψ) ν                                (2.20)
 ///     M ν̇ = −D ν + R(ψ)ᵀ b + τ + w_ν            (2.21), w_ν a force
 ///     ḃ = −T⁻¹ b + w_b                          (2.22)
-///     y = H x + v,   H = [0  I  I  0  0]
+///     y = H x + v,   H = [0  I  I  0  0  0  I  …]
 ///
 /// with w and v white. Each step first corrects on y, then predicts over dt with τ held, so the
 /// estimate, like the passive observer's, is the one at t + dt from y up to t.
@@ -27,12 +28,13 @@
 /// Unlike the passive observer's, its convergence is only local (about the linearisation).
 ///
 /// Tuning. The noise is given in units a vessel does not change: the wave noise by the WF
-/// motion σ it produces (the wave model driven by white noise of density q has the stationary
-/// variances q/(4λω₀³) in ξ₁ and q/(4λω₀) in ξ₂, so q = 4λω₀σ²), the force noise w_ν and the bias
-/// noise w_b per unit of M's diagonal, as accelerations (w_b per BODY axis, rotated into NED). The
-/// defaults (their sources below) keep the LF noise well below the wave model's, so the filter
-/// leaves what oscillates near ω₀ to ξ. On a simulated supply vessel they give an LF position error
-/// of 6 % of the wave motion and a b̂ that follows a change in about 30 s (ekf_observer_test).
+/// motion σ it produces (a component driven by white noise of density q has the stationary
+/// variances q/(4λω³) in ξ₁ and q/(4λω) in ξ₂, so q = 4λωσ² with σ² its share of the DOF's), the
+/// force noise w_ν and the bias noise w_b per unit of M's diagonal, as accelerations (w_b per BODY
+/// axis, rotated into NED). The defaults (their sources below) keep the LF noise well below the
+/// wave model's, so the filter leaves what oscillates near ω₀ to ξ. On a simulated supply vessel
+/// they give an LF position error of 6 % of the wave motion and a b̂ that follows a change in about
+/// 30 s (ekf_observer_test).
 
 #include <Eigen/Core>
 #include <limits>
@@ -52,11 +54,14 @@ struct EkfObserverTuning {
   /// (5e-5 rad/s²) correlated over ≈ 10 s: 5e-4·√(2·10 s).
   Eigen::Vector3d nu_accel_noise{2e-3, 2e-3, 2e-4};
   /// Density of the bias noise w_b over M's diagonal (BODY axes) [m/s²/√s, m/s²/√s, rad/s²/√s].
-  /// Source: reasoned — a mean load that wanders by ≈ 3e-3 m/s² (3e-4 rad/s²) in 100 s. On the
-  /// virtual Gunnerus under DP a faster bias (2.4e-3 in surge and sway) let the DP loop on the
-  /// estimate move less (1.5 for 2.3 times as much as on the true motion, seeds 1–3) but made
-  /// one seed in 20 oscillate: kept at the robust value.
-  Eigen::Vector3d bias_accel_noise{3e-4, 3e-4, 3e-5};
+  /// Source: reasoned — a mean load that wanders by ≈ 3e-3 m/s² in 100 s. On the virtual
+  /// Gunnerus under DP a faster bias (2.4e-3 in surge and sway) let the DP loop on the estimate
+  /// move less (1.5 for 2.3 times as much as on the true motion, seeds 1–3) but made one seed in
+  /// 20 oscillate: kept at the robust value. Yaw: calibrated on the virtual Gunnerus in H_s
+  /// 2.5 m, T_p 8 s (seeds 1–20), whose slowly varying yaw moment (wave drift and the gusts the
+  /// wind feedforward misses) is ≈ 2e-4 rad/s² over ≈ 20 s: 6e-5 took the heading error to
+  /// 0.048° head on and 0.124° at 45° to the waves (3e-5: 0.064° and 0.132°).
+  Eigen::Vector3d bias_accel_noise{3e-4, 3e-4, 6e-5};
   /// σ of ν at the start (u, v, r) [m/s, m/s, rad/s]. Source: reasoned — a vessel taken over
   /// by DP at up to ≈ 1 kn and 1 °/s.
   Eigen::Vector3d initial_nu_std{0.5, 0.5, 0.02};
@@ -69,12 +74,12 @@ struct EkfObserverTuning {
   /// σ of the heading measurement [rad]. Source: reasoned — the gyro compass of
   /// sensor_suite.hpp (0.05° noise, 0.01° resolution), doubled for margin: 0.1°.
   double heading_std_rad = core::deg_to_rad(0.1);
-  /// σ of the rate gyro's yaw rate [rad/s] (step()'s yaw_rate_rad_s) with the wave model's
-  /// misfit of the wave-frequency yaw rate. Source: calibrated on the virtual Gunnerus in
-  /// Hs 2.5 m, T_p 8 s (seed 1): the MRU's own 0.06 °/s gave a heading error of 0.024° in head
-  /// seas but 0.42° at 45° to the waves, where the second-order wave model misses the broad
-  /// yaw spectrum; 0.3 °/s gave 0.051° and 0.22°, 1 °/s 0.099° and 0.16°.
-  double yaw_rate_std_rad_s = core::deg_to_rad(0.3);
+  /// σ of the rate gyro's yaw rate [rad/s] (step()'s yaw_rate_rad_s). Source: an MRU 5 class
+  /// rate gyro (0.03 °/s, the virtual Gunnerus's MRUs). With one wave component per DOF the
+  /// gyro had to be taken as 10 times as noisy (0.3 °/s): at 45° to the waves a second-order
+  /// model misses the broad yaw spectrum, and trusting the gyro's wave-frequency rate gave
+  /// 0.42° of heading error; the three components of observer.hpp follow it.
+  double yaw_rate_std_rad_s = core::deg_to_rad(0.03);
   /// Throws std::invalid_argument unless every σ and density is finite and > 0.
   void validate() const;
 };
@@ -82,7 +87,10 @@ struct EkfObserverTuning {
 /// The filter (see the file comment).
 class EkfObserver {
  public:
-  using Covariance = Eigen::Matrix<double, 15, 15>;
+  /// The state's size: [ξ₁; ξ₂; η; ν; b] of the first wave component (15), then ξ₁, ξ₂ of each
+  /// other component (see the file comment).
+  static constexpr int kStates = 15 + 6 * (kWaveComponents - 1);
+  using Covariance = Eigen::Matrix<double, kStates, kStates>;
 
   /// Starts at rest at η₀ (N, E, ψ) [m, m, rad] (a measurement: its σ is the measurement's and
   /// the wave motion's) with no bias and no wave motion. Throws std::invalid_argument on a bad
@@ -97,11 +105,12 @@ class EkfObserver {
             double yaw_rate_rad_s = std::numeric_limits<double>::quiet_NaN());
 
   const ObserverEstimate& estimate() const noexcept { return estimate_; }
-  /// P of the state [ξ₁; ξ₂; η; ν; b] (see the file comment).
+  /// P of the state (kStates; see the file comment).
   const Covariance& covariance() const noexcept { return P_; }
 
  private:
-  using State = Eigen::Matrix<double, 15, 1>;  // ξ (6), η (3), ν (3), b (3)
+  using State = Eigen::Matrix<double, kStates, 1>;
+  Eigen::Vector3d frequency(int component) const;  // of a wave component, per DOF [rad/s]
   State derivative(const State& x, const Eigen::Vector3d& tau_b) const;
   Covariance jacobian(const State& x) const;
   Covariance process_noise(double psi_rad) const;

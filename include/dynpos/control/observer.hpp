@@ -21,6 +21,7 @@
 /// coasts on its model in that component.
 
 #include <Eigen/Core>
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -36,6 +37,16 @@ std::string_view observer_name(ObserverKind kind) noexcept;
 /// The kind named `name`, or nullopt.
 std::optional<ObserverKind> parse_observer(std::string_view name) noexcept;
 
+/// The EKF's wave model has this many second-order components per DOF, the n-th at
+/// kWaveComponentRatio[n] times the DOF's ω₀ with its share of the WF variance
+/// (ObserverModel::wave_variance_share): a broad response spectrum — the yaw's, which weighs
+/// short waves by k² — is followed where one component at its peak leaves much of it to the LF
+/// estimate. Fossen's one component where only the first has a share.
+inline constexpr int kWaveComponents = 3;
+inline constexpr std::array<double, kWaveComponents> kWaveComponentRatio{1.0, 1.5, 2.0};
+/// Shares per DOF (rows N, E, ψ) and component (columns).
+using WaveShares = Eigen::Matrix<double, 3, kWaveComponents>;
+
 /// The model both observers use.
 struct ObserverModel {
   Eigen::Matrix3d M = Eigen::Matrix3d::Identity();  ///< inertia with added mass, as (5.33)
@@ -47,8 +58,13 @@ struct ObserverModel {
   Eigen::Vector3d wave_peak_frequency_rad_s{0.8, 0.8, 1.2};
   /// λ, relative damping of the wave model [-]. Source: Fossen 2011 (0.05–0.1).
   double wave_damping_ratio = 0.1;
+  /// The share of each DOF's WF variance its wave-model components take (the EKF's; the passive
+  /// observer's wave model is the first component alone), ≥ 0, each row summing to 1. Default:
+  /// one component.
+  WaveShares wave_variance_share = (WaveShares() << 1, 0, 0, 1, 0, 0, 1, 0, 0).finished();
   /// Throws std::invalid_argument unless M is symmetric positive definite, D positive
-  /// semidefinite on its diagonal, T > 0, every ω₀ > 0 and 0 < λ ≤ 1.
+  /// semidefinite on its diagonal, T > 0, every ω₀ > 0, 0 < λ ≤ 1 and the shares are ≥ 0 with
+  /// each row summing to 1.
   void validate() const;
 };
 

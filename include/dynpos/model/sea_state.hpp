@@ -80,6 +80,16 @@ Eigen::Vector3d drift_force_b(const WaveResponseParams& response, double hs_m,
 Eigen::Vector3d response_peak_frequency(const SeaStateParams& sea,
                                         const WaveResponseParams& response);
 
+/// How the wave-frequency motion's variance in surge, sway and yaw (the spectra of
+/// response_peak_frequency) spreads over a wave model of several components per DOF, the n-th
+/// at `ratios[n]` times the DOF's peak frequency (ratios increasing, the first 1): row d, column
+/// n is the share of DOF d's variance nearest in log frequency to component n (the boundaries
+/// at the geometric means of neighbouring components; below the first, the first's). Each row
+/// sums to 1. Throws std::invalid_argument unless the ratios start at 1 and increase.
+Eigen::MatrixXd response_variance_shares(const SeaStateParams& sea,
+                                         const WaveResponseParams& response,
+                                         const std::vector<double>& ratios);
+
 /// One harmonic wave component.
 struct WaveComponent {
   double omega;      ///< ω [rad/s]

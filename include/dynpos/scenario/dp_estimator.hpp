@@ -39,7 +39,8 @@
 namespace dynpos::scenario {
 
 /// The observer model of the DP controller of `vessel` (M, D as dp_controller_params) with the
-/// wave model at the peaks of `sea`'s wave-frequency motion (model::response_peak_frequency):
+/// wave model at the peaks of `sea`'s wave-frequency motion (model::response_peak_frequency)
+/// and its components' shares of that motion's variance (model::response_variance_shares):
 /// what a DP system sets from the peak period its operator enters.
 control::ObserverModel observer_model(const VesselConfig& vessel, const model::Hull& hull,
                                       const model::SeaStateParams& sea);
@@ -48,7 +49,8 @@ control::ObserverModel observer_model(const VesselConfig& vessel, const model::H
 control::ObserverModel observer_model(const ScenarioSpec& spec, const VesselConfig& vessel,
                                       const model::Hull& hull);
 
-/// The EKF's tuning in the DP loop of a run in the sea of `waves` at heading ψ₀ [rad]:
+/// The EKF's tuning in the DP loop of a run in the sea of `waves` at heading ψ₀ [rad] with a
+/// rate gyro of σ yaw_rate_std_rad_s [rad/s] (the vessel's MRU's, the σ taken):
 /// EkfObserverTuning's defaults but for three values calibrated on the virtual Gunnerus under DP
 /// in H_s 2.5 m, T_p 8 s at 45° to the waves (seeds 1–20, tests/validation/observer_test.cpp).
 /// The defaults there let the loop on the estimate move up to 2.46 times as much as on the true
@@ -64,7 +66,8 @@ control::ObserverModel observer_model(const ScenarioSpec& spec, const VesselConf
 ///   oscillates;
 /// - the position σ: 0.05 m, an RTK fix (1–2 cm) with its lever-arm error (0.1 m: 1.41 times
 ///   at worst of seeds 4, 6, 9, 12 and 15 against 1.39).
-control::EkfObserverTuning dp_ekf_tuning(const model::WaveMotion& waves, double heading0_rad);
+control::EkfObserverTuning dp_ekf_tuning(const model::WaveMotion& waves, double heading0_rad,
+                                         double yaw_rate_std_rad_s);
 
 /// The motion the DP controller runs on.
 struct DpMotion {
