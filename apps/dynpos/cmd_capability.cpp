@@ -1,8 +1,6 @@
 // dynpos capability: DP capability after DNV-ST-0111 (levels 1-3) on the vessel model, intact
 // and after single failures, as a table, JSON and a capability rose (analysis/capability.hpp).
 
-#include <fmt/core.h>
-
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -12,7 +10,6 @@
 #include "dynpos/analysis/capability.hpp"
 #include "dynpos/analysis/capability_transient.hpp"
 #include "dynpos/analysis/feasibility.hpp"
-#include "dynpos/analysis/options.hpp"
 
 namespace dynpos::cli {
 namespace {
@@ -22,23 +19,6 @@ struct CapabilityCliOptions {
   std::filesystem::path loads;  ///< a load table: the feasibility mode
   analysis::Outputs outputs;    ///< --json, --out (the folder of rose.svg)
 };
-
-// --loads: the factor of each load of the table (analysis/feasibility.hpp). The outputs were
-// checked with every other before the run (check_outputs).
-void run_loads(const CapabilityCliOptions& o, const CLI::App& sub) {
-  for (const char* option :
-       {"--level", "--site", "--hs", "--tp", "--current", "--direction-step", "--wind-tolerance",
-        "--duration", "--settle", "--footprint", "--footprint-deg", "--seed", "--jobs", "--out",
-        "--transient", "--rows", "--after", "--seeds", "--observer"}) {
-    if (sub.count(option) > 0) {
-      throw analysis::option_error(
-          "loads", fmt::format("{} is not an option of the load table's factors", option),
-          "with --loads give --vessel, --failure and --json only");
-    }
-  }
-  const analysis::FeasibilityRequest request{o.request.vessel, o.loads, o.request.failure};
-  write_and_print(analysis::run_feasibility(request), o.outputs);
-}
 
 }  // namespace
 
@@ -107,10 +87,16 @@ void register_capability(CLI::App& app) {
       "dynamics) against the thrusters' limits exactly; level 3 bisects the environment until "
       "the vessel leaves its footprint. Example: dynpos capability --failure worst --out cap");
   sub->callback([o, sub] {
-    if (!o->loads.empty()) return run_loads(*o, *sub);
-    analysis::check_transient_options(o->request, [sub](std::string_view name) {
+    // Whether --NAME was given. The outputs were checked with every other before the run.
+    const auto given = [sub](std::string_view name) {
       return sub->count("--" + std::string(name)) > 0;
-    });
+    };
+    if (!o->loads.empty()) {
+      analysis::check_loads_options(given);
+      const analysis::FeasibilityRequest loads{o->request.vessel, o->loads, o->request.failure};
+      return write_and_print(analysis::run_feasibility(loads), o->outputs);
+    }
+    analysis::check_transient_options(o->request, given);
     if (o->request.transient) {
       return write_and_print(analysis::run_capability_transient(o->request), o->outputs);
     }

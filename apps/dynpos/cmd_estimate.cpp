@@ -12,19 +12,14 @@ namespace dynpos::cli {
 
 void EstimateCliOptions::add(CLI::App& sub) {
   analysis::EstimateRequest& r = request;
-  input.add_options(sub,
-                    "time; north, east (m, any offset) or lat, lon; heading; roll, pitch (an arm's "
-                    "height); per unit of the vessel thrust.NAME and its angle rudder.NAME or "
-                    "azimuth.NAME");
+  add_log_options(sub, r.source,
+                  "time; north, east (m, any offset) or lat, lon; heading; roll, pitch (an arm's "
+                  "height); per unit of the vessel thrust.NAME and its angle rudder.NAME or "
+                  "azimuth.NAME");
   sub.add_option("--vessel", r.vessel,
                  "Vessel file whose units the log's feedback names (default: "
                  "data/vessels/gunnerus.toml)");
-  sub.add_option("--arm", arm_m,
-                 "Lever arm X,Y[,Z] [m] (BODY: forward, starboard, down) of the antenna whose "
-                 "position is logged; the position is moved to the control origin, with roll and "
-                 "pitch when both are mapped (needed for a Z)")
-      ->expected(2, 3)
-      ->delimiter(',');
+  add_arm_option(sub, arm_m);
   sub.add_option("--observer", r.observer,
                  "passive (Fossen & Strand's nonlinear passive observer) or ekf (the extended "
                  "Kalman filter)")
@@ -50,10 +45,7 @@ void EstimateCliOptions::add(CLI::App& sub) {
 
 analysis::EstimateRequest EstimateCliOptions::resolved() const {
   analysis::EstimateRequest r = request;
-  r.source = input;
-  if (!arm_m.empty()) {
-    r.arm_m = Eigen::Vector3d(arm_m[0], arm_m[1], arm_m.size() > 2 ? arm_m[2] : 0.0);
-  }
+  r.arm_m = analysis::arm_from_numbers(arm_m, "arm");
   return r;
 }
 

@@ -2,8 +2,6 @@
 // the chapter 5 case studies, hybrid and conventional integral action side by side
 // (analysis/hybrid_case.hpp). `dynpos hybrid vessel` is in cmd_hybrid_vessel.cpp.
 
-#include <fmt/core.h>
-
 #include <memory>
 #include <string>
 
@@ -14,13 +12,8 @@
 namespace dynpos::cli {
 namespace {
 
-struct HybridOptions {
-  analysis::HybridCaseRequest request;
-  analysis::Outputs outputs;  ///< --json, --out (the folder of the plots)
-};
-
 void add_case(CLI::App& parent, analysis::HybridCase study_case, const std::string& description) {
-  auto opt = std::make_shared<HybridOptions>();
+  auto opt = std::make_shared<AnalysisOptions<analysis::HybridCaseRequest>>();
   analysis::HybridCaseRequest& r = opt->request;
   r.study_case = study_case;
   const bool first_order = study_case == analysis::HybridCase::kFirstOrder;

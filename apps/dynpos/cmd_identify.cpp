@@ -2,8 +2,6 @@
 // chapter 3 (and the DP failure tests) on any CSV log through a column map. `step` is here; the
 // others have a file each.
 
-#include <fmt/core.h>
-
 #include <memory>
 
 #include "commands.hpp"
@@ -13,40 +11,16 @@
 #include "log_input.hpp"
 
 namespace dynpos::cli {
-namespace {
-
-struct StepOptions {
-  analysis::StepRequest request;
-  analysis::Outputs outputs;
-};
-
-// The end of `live identify step`: the session, each run on the data so far.
-void run_live_step(const StepOptions& opt, const LiveCli& live) {
-  run_live_command<analysis::StepReport>(
-      live, opt.request.source,
-      [&opt](const analysis::LogSource& data) {
-        analysis::StepRequest request = opt.request;
-        request.source = data;
-        return analysis::run_step(request);
-      },
-      opt.outputs);
-}
-
-}  // namespace
 
 void add_identify_step(CLI::App& identify, LogMode mode) {
-  auto opt = std::make_shared<StepOptions>();
+  auto opt = std::make_shared<AnalysisOptions<analysis::StepRequest>>();
   analysis::StepRequest& r = opt->request;
   CLI::App* step = identify.add_subcommand(
       "step", "Step-test identification: FOPDT gain, time constant and dead time per step");
   const std::string roles =
       "time, input (the command), output (the response), trigger (e.g. power feedback, to time "
       "steps without a command)";
-  if (mode == LogMode::kLive) {
-    add_log_source_options(*step, r.source, roles);
-  } else {
-    add_log_options(*step, r.source, roles);
-  }
+  add_log_options(*step, r.source, roles, mode);
   add_enum_option(*step, "--method", r.method, analysis::step_method_from_name,
                   "lsq: least squares with the dead time; smith: Smith's two-point "
                   "method (3.8)-(3.9); smith2: Smith's second-order 20/60 %; rk: "
@@ -78,15 +52,10 @@ void add_identify_step(CLI::App& identify, LogMode mode) {
       "Warnings: steady_state_not_reached, poor_fit, short_window, few_samples, ... "
       "Example on a virtual trial log: dynpos identify step DIR/log.csv "
       "--col input=command.rpm.stb --col output=rpm.stb");
-  if (mode == LogMode::kLive) {
-    auto live = std::make_shared<LiveCli>();
-    add_live_options(*step, *live,
-                     "dynpos live identify step --follow DIR/log.csv --col input=command.rpm.stb "
-                     "--col output=rpm.stb --idle-exit 5");
-    step->callback([opt, live] { run_live_step(*opt, *live); });
-    return;
-  }
-  step->callback([opt] { write_and_print(analysis::run_step(opt->request), opt->outputs); });
+  set_run_callback<analysis::StepRequest>(
+      *step, mode, [opt] { return opt->request; }, analysis::run_step, opt->outputs,
+      "dynpos live identify step --follow DIR/log.csv --col input=command.rpm.stb --col "
+      "output=rpm.stb --idle-exit 5");
 }
 
 void register_identify(CLI::App& app) {

@@ -2,80 +2,31 @@
 // 63.2 % of the response of every thruster (and of the vessel's speed) after a joystick thrust
 // step in each direction, as a table, JSON and polar plots.
 
-#include <fmt/core.h>
-
 #include <memory>
-#include <optional>
-#include <sstream>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "commands.hpp"
 #include "dynpos/analysis/agility.hpp"
-#include "dynpos/analysis/options.hpp"
+#include "dynpos/analysis/agility_text.hpp"
 #include "log_input.hpp"
 
 namespace dynpos::cli {
 namespace {
 
 struct AgilityCliOptions {
-  LogInput input;
   std::vector<std::string> windows;  ///< T_STEP,T_END,DIR_DEG[,THRUST_PCT[,YAW_PCT]]
   std::string current;               ///< SPEED_MPS,TO_DEG as observed
-  analysis::AgilityRequest request;  ///< the typed options; source and the parsed ones are added
+  analysis::AgilityRequest request;  ///< the typed options; the parsed ones are added
   analysis::Outputs outputs;         ///< --json, --plot (figures: the SVG file)
 };
 
-// The comma-separated numbers of `text`, the value of the option `key`.
-std::vector<double> parse_numbers(const std::string& text, const std::string& key) {
-  std::vector<double> out;
-  std::stringstream ss(text);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    try {
-      std::size_t used = 0;
-      out.push_back(std::stod(item, &used));
-      if (used != item.size() && item.find_first_not_of(' ', used) != std::string::npos) {
-        throw std::invalid_argument(item);
-      }
-    } catch (const std::exception&) {
-      throw analysis::option_error(key, "'" + item + "' in '" + text + "' is not a number",
-                                   "give comma-separated numbers");
-    }
-  }
-  return out;
-}
-
-// --window T_STEP,T_END,DIR_DEG[,THRUST_PCT[,YAW_PCT]] (thrust 100 % when not given).
-ident::AgilityWindow parse_window(const std::string& spec) {
-  const std::vector<double> v = parse_numbers(spec, "window");
-  if (v.size() < 3 || v.size() > 5) {
-    throw analysis::option_error(
-        "window", "'" + spec + "' needs 3 to 5 numbers, has " + std::to_string(v.size()),
-        "--window T_STEP,T_END,DIR_DEG[,THRUST_PCT[,YAW_PCT]]");
-  }
-  ident::AgilityWindow w{v[0], v[1], v[2], v.size() > 3 ? v[3] : 100.0, std::nullopt};
-  if (v.size() > 4) w.yaw_pct = v[4];
-  return w;
-}
-
-// --current SPEED_MPS,TO_DEG; the request judges the values.
-analysis::ObservedCurrent parse_current(const std::string& spec) {
-  const std::vector<double> v = parse_numbers(spec, "current");
-  if (v.size() != 2) {
-    throw analysis::option_error("current", "'" + spec + "' is not SPEED,TO_DEG",
-                                 "e.g. --current 0.2,318 (0.2 m/s towards 318°, as observed)");
-  }
-  return analysis::ObservedCurrent{v[0], v[1]};
-}
-
 void run_cli(AgilityCliOptions& o) {
   analysis::AgilityRequest& request = o.request;
-  request.source = o.input;
-  if (!o.current.empty()) request.current = parse_current(o.current);
+  if (!o.current.empty()) request.current = analysis::parse_observed_current(o.current);
   request.windows.clear();
-  for (const std::string& w : o.windows) request.windows.push_back(parse_window(w));
+  for (const std::string& w : o.windows)
+    request.windows.push_back(analysis::parse_agility_window(w));
   write_and_print(analysis::run_agility(request), o.outputs);
 }
 
@@ -85,9 +36,9 @@ void add_identify_agility(CLI::App& identify) {
   auto o = std::make_shared<AgilityCliOptions>();
   CLI::App* sub = identify.add_subcommand(
       "agility", "Thrust agility: time to 63.2 % per direction and thruster, polar plot");
-  o->input.add_options(*sub,
-                       "time, command.surge, command.sway, command.yaw [%], thrust.NAME or "
-                       "rpm.NAME per thruster, u, v (speed), wind_speed, wind_dir, heading");
+  add_log_options(*sub, o->request.source,
+                  "time, command.surge, command.sway, command.yaw [%], thrust.NAME or rpm.NAME "
+                  "per thruster, u, v (speed), wind_speed, wind_dir, heading");
   add_json_option(*sub, o->outputs.json, "Write the response times as JSON to FILE, or '-'");
   output_file(sub->add_option("--plot", o->outputs.figures,
                               "Write the polar plot (SVG), one polar per case"));

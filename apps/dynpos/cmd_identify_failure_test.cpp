@@ -6,26 +6,17 @@
 
 #include "commands.hpp"
 #include "dynpos/analysis/failure_test.hpp"
+#include "dynpos/analysis/option_text.hpp"
 #include "log_input.hpp"
 
 namespace dynpos::cli {
 namespace {
 
 struct FailureTestCliOptions {
-  LogInput input;
   std::vector<double> arm_m;  ///< X,Y[,Z] [m]
   analysis::FailureTestRequest request;
   analysis::Outputs outputs;
 };
-
-void run_failure_test(FailureTestCliOptions& o) {
-  o.request.source = o.input;
-  if (!o.arm_m.empty()) {
-    o.request.arm_m =
-        Eigen::Vector3d(o.arm_m[0], o.arm_m[1], o.arm_m.size() > 2 ? o.arm_m[2] : 0.0);
-  }
-  write_and_print(analysis::run_failure_test(o.request), o.outputs);
-}
 
 }  // namespace
 
@@ -34,15 +25,10 @@ void add_identify_failure_test(CLI::App& identify) {
   analysis::FailureTestRequest& r = o->request;
   CLI::App* sub = identify.add_subcommand(
       "failure-test", "Thruster trips: position excursion, recovery and thrust redistribution");
-  o->input.add_options(*sub,
-                       "time; north, east (m, any offset) or lat, lon; heading; per unit "
-                       "thrust.NAME or rpm.NAME");
-  sub->add_option("--arm", o->arm_m,
-                  "Lever arm X,Y[,Z] [m] (BODY: forward, starboard, down) of the antenna whose "
-                  "position is logged; the position is moved to the control origin, with roll and "
-                  "pitch when both are mapped (needed for a Z)")
-      ->expected(2, 3)
-      ->delimiter(',');
+  add_log_options(*sub, r.source,
+                  "time; north, east (m, any offset) or lat, lon; heading; per unit thrust.NAME "
+                  "or rpm.NAME");
+  add_arm_option(*sub, o->arm_m);
   sub->add_flag("--rpm", r.use_rpm, "Use the shaft speed (rpm.NAME) even when thrust is logged");
   sub->add_option("--from", r.t_from_s, "Analyse from this time [s]");
   sub->add_option("--to", r.t_to_s, "Analyse up to this time [s]");
@@ -73,7 +59,10 @@ void add_identify_failure_test(CLI::App& identify) {
       "heading change [deg], and each other unit's mean feedback before and after. Example: "
       "dynpos identify failure-test trial.csv --col north=gnss1.north --col east=gnss1.east "
       "--arm 0.2,-0.6");
-  sub->callback([o] { run_failure_test(*o); });
+  sub->callback([o] {
+    o->request.arm_m = analysis::arm_from_numbers(o->arm_m, "arm");
+    write_and_print(analysis::run_failure_test(o->request), o->outputs);
+  });
 }
 
 }  // namespace dynpos::cli

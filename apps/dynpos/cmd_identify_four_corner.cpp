@@ -14,22 +14,12 @@ namespace dynpos::cli {
 namespace {
 
 struct FourCornerCliOptions {
-  LogInput input;
   std::string segment;        ///< a name of analysis::leg_segmentation_names()
   std::vector<double> arm_m;  ///< X,Y [m]
   std::string plot;
-  analysis::FourCornerRequest request;  ///< the typed options; source, segment, arm are added
+  analysis::FourCornerRequest request;  ///< the typed options; segment and arm are added
   analysis::Outputs outputs;
 };
-
-void run_four_corner(FourCornerCliOptions& o) {
-  o.request.source = o.input;
-  // The library's parser, so that a bad name reads as in the Python API: "(--segment): …".
-  o.request.segmentation = analysis::parse_leg_segmentation(o.segment);
-  if (!o.arm_m.empty()) o.request.arm_m = Eigen::Vector2d(o.arm_m[0], o.arm_m[1]);
-  o.outputs.figures = o.plot;
-  write_and_print(analysis::run_four_corner(o.request), o.outputs);
-}
 
 }  // namespace
 
@@ -37,9 +27,9 @@ void add_identify_four_corner(CLI::App& identify) {
   auto o = std::make_shared<FourCornerCliOptions>();
   CLI::App* sub = identify.add_subcommand(
       "four-corner", "DP 4-corner: legs, durations, accumulated thrust and energy");
-  o->input.add_options(*sub,
-                       "time, north, east (m, any offset) or lat, lon; heading; "
-                       "setpoint.north/east/heading; thrust.NAME, power.NAME");
+  add_log_options(*sub, o->request.source,
+                  "time, north, east (m, any offset) or lat, lon; heading; "
+                  "setpoint.north/east/heading; thrust.NAME, power.NAME");
   sub->add_option("--radius", o->request.radius_m, "Operating circle radius [m]")
       ->capture_default_str();
   sub->add_option("--heading-tol", o->request.heading_tol_deg,
@@ -64,7 +54,13 @@ void add_identify_four_corner(CLI::App& identify) {
       "energy ∫P dt [kJ] per thruster; a channel that is not logged is '—' / null. Example on "
       "a virtual trial log: dynpos identify four-corner DIR/log.csv --col north=gnss1.north "
       "--col east=gnss1.east --plot ne.svg");
-  sub->callback([o] { run_four_corner(*o); });
+  sub->callback([o] {
+    // The library's parser, so that a bad name reads as in the Python API: "(--segment): …".
+    o->request.segmentation = analysis::parse_leg_segmentation(o->segment);
+    if (!o->arm_m.empty()) o->request.arm_m = Eigen::Vector2d(o->arm_m[0], o->arm_m[1]);
+    o->outputs.figures = o->plot;
+    write_and_print(analysis::run_four_corner(o->request), o->outputs);
+  });
 }
 
 }  // namespace dynpos::cli

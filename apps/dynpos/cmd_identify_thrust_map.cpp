@@ -1,8 +1,6 @@
 // dynpos identify thrust-map: back-calculate the thrust map T = c·n|n| (3.17) of every thruster
 // with logged thrust and shaft speed, or apply a map to a log with shaft speed only (3.18).
 
-#include <fmt/core.h>
-
 #include <memory>
 
 #include "commands.hpp"
@@ -10,22 +8,13 @@
 #include "log_input.hpp"
 
 namespace dynpos::cli {
-namespace {
-
-struct ThrustMapOptions {
-  LogInput input;
-  analysis::ThrustMapRequest request;
-  analysis::Outputs outputs;
-};
-
-}  // namespace
 
 void add_identify_thrust_map(CLI::App& identify) {
-  auto o = std::make_shared<ThrustMapOptions>();
+  auto o = std::make_shared<AnalysisOptions<analysis::ThrustMapRequest>>();
   analysis::ThrustMapRequest& r = o->request;
   CLI::App* sub = identify.add_subcommand(
       "thrust-map", "Thrust map: back-calculate c+ and c- of T = c n|n| (3.17), or apply a map");
-  o->input.add_options(*sub, "time, rpm.NAME (shaft speed), thrust.NAME, per thruster NAME");
+  add_log_options(*sub, r.source, "time, rpm.NAME (shaft speed), thrust.NAME, per thruster NAME");
   sub->add_option("--min-speed", r.min_speed_rpm,
                   "Leave out samples with |n| below this [rpm]: near zero the thrust is noise")
       ->capture_default_str()
@@ -45,10 +34,7 @@ void add_identify_thrust_map(CLI::App& identify) {
       "origin), with 1σ from the residuals. Values in N/rps² in JSON (c_pos, c_neg, c_mean), "
       "kN/rps² in the table (thesis table 3.2: 8.13 / -5.8). Example: dynpos identify "
       "thrust-map DIR/log.csv --json map.json");
-  sub->callback([o] {
-    o->request.source = o->input;
-    write_and_print(analysis::run_thrust_map(o->request), o->outputs);
-  });
+  sub->callback([o] { write_and_print(analysis::run_thrust_map(o->request), o->outputs); });
 }
 
 }  // namespace dynpos::cli

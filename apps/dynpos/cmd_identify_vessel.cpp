@@ -4,7 +4,6 @@
 
 #include <memory>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "commands.hpp"
@@ -27,7 +26,15 @@ struct VesselIdOptions {
   analysis::Outputs outputs;
 };
 
-void add_identify_vessel(CLI::App& identify) {
+struct CompareTrialOptions {
+  analysis::CompareTrialRequest request;
+  std::string plot;
+  analysis::Outputs outputs;
+};
+
+}  // namespace
+
+void add_identify_vessel_command(CLI::App& identify) {
   auto o = std::make_shared<VesselIdOptions>();
   CLI::App* sub = identify.add_subcommand(
       "vessel", "Hull model of a vessel file (added mass, damping, coupling) fitted to trial logs");
@@ -72,37 +79,18 @@ void add_identify_vessel(CLI::App& identify) {
       "dynpos identify vessel RUN/surge-steps-forward/log.csv RUN/yaw-steps/log.csv "
       "RUN/zig-zag/log.csv --out my-vessel.toml --report vessel-report");
   sub->callback([o] {
-    o->request.jobs = o->log_options.jobs;
-    for (const std::string& log : o->logs) {
-      analysis::LogSource source = o->log_options;
-      source.log = log;
-      o->request.logs.push_back(std::move(source));
-    }
+    analysis::add_logs(o->request, o->log_options, o->logs);
     o->outputs.figures = o->report;
     const analysis::VesselIdReport report = analysis::run_vessel_id(o->request);
-    const analysis::Written written = analysis::write_outputs(report, o->out, o->outputs);
-    std::FILE* out = o->outputs.json == "-" ? stderr : stdout;
-    print_text(out, to_text(report));
-    for (const std::filesystem::path& file : written) print_text(out, "wrote {}\n", file.string());
+    print_report(text_out(o->outputs), report, analysis::write_outputs(report, o->out, o->outputs));
   });
 }
-
-struct CompareTrialOptions {
-  LogInput log;
-  analysis::CompareTrialRequest request;
-  std::string plot;
-  analysis::Outputs outputs;
-};
-
-}  // namespace
-
-void add_identify_vessel_command(CLI::App& identify) { add_identify_vessel(identify); }
 
 void register_compare_trial(CLI::App& app) {
   auto o = std::make_shared<CompareTrialOptions>();
   CLI::App* sub = app.add_subcommand(
       "compare-trial", "Re-simulate a logged test with its logged feedback and a vessel file");
-  o->log.add_options(*sub, kRoles);
+  add_log_options(*sub, o->request.source, kRoles);
   sub->add_option("--vessel", o->request.vessel_file,
                   "Vessel file (default: the built-in Gunnerus)")
       ->check(CLI::ExistingFile);
@@ -119,7 +107,6 @@ void register_compare_trial(CLI::App& app) {
       "fitted; the vessel is the file's. Example: dynpos compare-trial RUN/zig-zag/log.csv "
       "--vessel my-vessel.toml");
   sub->callback([o] {
-    o->request.source = o->log;
     o->outputs.figures = o->plot;
     write_and_print(analysis::run_compare_trial(o->request), o->outputs);
   });

@@ -1,19 +1,12 @@
 // dynpos leverarm gnss: GNSS antenna lever arms from vessel motion (thesis 4.2, 4.4.1).
 
-#include <fmt/core.h>
-
-#include <map>
 #include <memory>
-#include <optional>
-#include <string>
-#include <utility>
-#include <vector>
 
 #include "commands.hpp"
 #include "dynpos/analysis/leverarm_gnss.hpp"
+#include "dynpos/analysis/leverarm_gnss_text.hpp"
 #include "dynpos/analysis/leverarm_mru.hpp"
-#include "dynpos/analysis/option_spelling.hpp"
-#include "dynpos/analysis/options.hpp"
+#include "dynpos/analysis/option_text.hpp"
 #include "enum_option.hpp"
 #include "live_command.hpp"
 #include "log_input.hpp"
@@ -22,83 +15,10 @@ namespace dynpos::cli {
 namespace {
 
 struct GnssCliOptions {
-  LogInput input;
   analysis::LeverarmGnssRequest request;
+  analysis::LeverarmGnssText text;  ///< the options given as text, parsed into the request
   analysis::Outputs outputs;
-  // The options given as text, made typed by parse_text().
-  std::string imu_arm, utc_at_zero, w1, w2, gamma, L, init_p0;
-  std::vector<std::string> gnss_log, nmea, init;
 };
-
-// The example of an X,Y,Z option in its error's hint (gains, initial arms and P₀ alike).
-const char* const kGainExample = "0.02,0.02,20";
-
-// "gnssK=VALUE" → (gnssK, VALUE); option_error(key) naming the example otherwise.
-std::pair<std::string, std::string> split_eq(const std::string& text, const std::string& key,
-                                             const std::string& example) {
-  const auto eq = text.find('=');
-  if (eq == std::string::npos || eq == 0 || eq + 1 == text.size()) {
-    throw analysis::option_error(key, "malformed argument '" + text + "': expected " + example,
-                                 "for example " + analysis::option_spelling(key) + " " + example);
-  }
-  return {text.substr(0, eq), text.substr(eq + 1)};
-}
-
-std::map<std::string, std::filesystem::path> files_by_antenna(const std::vector<std::string>& specs,
-                                                              const std::string& key,
-                                                              const std::string& example) {
-  std::map<std::string, std::filesystem::path> out;
-  for (const std::string& s : specs) {
-    auto [antenna, file] = split_eq(s, key, example);
-    out[antenna] = file;
-  }
-  return out;
-}
-
-void set_vec3(std::optional<Eigen::Vector3d>& field, const std::string& text, const char* key,
-              const char* example) {
-  if (!text.empty()) field = analysis::parse_vec3(text, key, example);
-}
-
-// The text options as the request's typed fields, each error naming its request key.
-void parse_text(GnssCliOptions& o) {
-  analysis::LeverarmGnssRequest& q = o.request;
-  q.gnss_log = files_by_antenna(o.gnss_log, "gnss_log", "gnss1=FILE.csv");
-  if (!o.utc_at_zero.empty()) q.utc_at_zero = analysis::parse_utc_at_zero(o.utc_at_zero);
-  q.nmea = files_by_antenna(o.nmea, "nmea", "gnss1=FILE.nmea");
-  set_vec3(q.w1, o.w1, "w1", kGainExample);
-  set_vec3(q.w2, o.w2, "w2", kGainExample);
-  set_vec3(q.gamma, o.gamma, "gamma", kGainExample);
-  set_vec3(q.L, o.L, "L", kGainExample);
-  set_vec3(q.init_p0, o.init_p0, "init_p0", kGainExample);
-  for (const std::string& s : o.init) {
-    const auto [antenna, arm] = split_eq(s, "init", "gnss1=0.2,-0.6,-13.9");
-    q.init[antenna] = analysis::parse_vec3(arm, "init", kGainExample);
-  }
-  set_vec3(q.imu_arm, o.imu_arm, "imu_arm", "0.358,0.804,-4.321");
-}
-
-// X,Y,Z of a library default, for the help.
-std::string vec_text(const Eigen::Vector3d& v) { return fmt::format("{},{},{}", v(0), v(1), v(2)); }
-
-void run_gnss(GnssCliOptions& o) {
-  o.request.source = o.input;
-  parse_text(o);
-  write_and_print(analysis::run_leverarm_gnss(o.request), o.outputs);
-}
-
-// The end of `live leverarm gnss`: the session, each run on the data so far.
-void run_live_gnss(GnssCliOptions& o, const LiveCli& live) {
-  parse_text(o);
-  run_live_command<analysis::LeverarmGnssReport>(
-      live, o.input,
-      [&o](const analysis::LogSource& data) {
-        analysis::LeverarmGnssRequest request = o.request;
-        request.source = data;
-        return analysis::run_leverarm_gnss(request);
-      },
-      o.outputs);
-}
 
 }  // namespace
 
@@ -108,17 +28,17 @@ void add_leverarm_gnss(CLI::App& leverarm, LogMode mode) {
       "gnss",
       "GNSS antenna (and further MRU) lever arms: from the logger alone by GNSS/INS fusion, or "
       "by the thesis' Luenberger (4.26), adaptive (4.42, 4.48) or least-squares estimators");
-  o->input.add_options(*sub,
-                       "ins: mruK.roll/pitch/p/q/r/ax/ay/az and heading; thesis methods: time, "
-                       "roll, pitch, heading, p, q, r, u, v, w (optional); per antenna "
-                       "gnssK.lat/lon/height or gnssK.north/east/down",
-                       mode);
+  add_log_options(*sub, o->request.source,
+                  "ins: mruK.roll/pitch/p/q/r/ax/ay/az and heading; thesis methods: time, roll, "
+                  "pitch, heading, p, q, r, u, v, w (optional); per antenna gnssK.lat/lon/height "
+                  "or gnssK.north/east/down",
+                  mode);
   add_enum_option(*sub, "--method", o->request.method, analysis::gnss_method_from_name,
                   "auto, ins, luenberger, adaptive or lsq (auto: ins when the log has an MRU "
                   "with accelerations and the heading, else lsq)");
   sub->add_option("--imu", o->request.imu,
                   "ins: the MRU of the fusion, mruK (default: the first with every role)");
-  sub->add_option("--imu-arm", o->imu_arm,
+  sub->add_option("--imu-arm", o->text.imu_arm,
                   "ins: X,Y,Z of that MRU from CO [m]; given, every arm is from CO, else from "
                   "the MRU");
   add_enum_option(*sub, "--accel", o->request.accel, analysis::accel_from_name,
@@ -126,27 +46,27 @@ void add_leverarm_gnss(CLI::App& leverarm, LogMode mode) {
   sub->add_option("--antennas", o->request.antennas,
                   "Antennas to estimate, e.g. gnss1,gnss2 (default: every gnssK found)")
       ->delimiter(',');
-  sub->add_option("--gnss-log", o->gnss_log,
+  sub->add_option("--gnss-log", o->text.gnss_log,
                   "gnssK=FILE.csv: the antenna's fixes from a file of its own, own time column "
                   "on the same clock (repeatable)");
-  sub->add_option("--nmea", o->nmea, "gnssK=FILE: the antenna's fixes from NMEA 0183 (GGA)");
-  sub->add_option("--utc-at-zero", o->utc_at_zero,
+  sub->add_option("--nmea", o->text.nmea, "gnssK=FILE: the antenna's fixes from NMEA 0183 (GGA)");
+  sub->add_option("--utc-at-zero", o->text.utc_at_zero,
                   "UTC of the log's t = 0, HH:MM:SS[.sss] or YYYY-MM-DDTHH:MM:SS[.sss]Z (for "
                   "--nmea)");
   const calib::GnssArmOptions defaults;
-  sub->add_option("--init", o->init, "gnssK=X,Y,Z: initial arm of an observer [m]");
-  sub->add_option("--w1", o->w1, "Luenberger W1 on P0, X,Y,Z [1/s]")
-      ->default_str(vec_text(defaults.luenberger_w_p0));
-  sub->add_option("--w2", o->w2, "Luenberger W2 on each arm, X,Y,Z [1/s]")
-      ->default_str(vec_text(defaults.luenberger_w_arm));
-  sub->add_option("--gamma", o->gamma,
+  sub->add_option("--init", o->text.init, "gnssK=X,Y,Z: initial arm of an observer [m]");
+  sub->add_option("--w1", o->text.w1, "Luenberger W1 on P0, X,Y,Z [1/s]")
+      ->default_str(analysis::vec3_text(defaults.luenberger_w_p0));
+  sub->add_option("--w2", o->text.w2, "Luenberger W2 on each arm, X,Y,Z [1/s]")
+      ->default_str(analysis::vec3_text(defaults.luenberger_w_arm));
+  sub->add_option("--gamma", o->text.gamma,
                   "Adaptive Γ, X,Y,Z (default: rate·L/E|ω|², see --adaptive-rate)");
-  sub->add_option("--L", o->L, "Adaptive L, X,Y,Z [1/s]")
-      ->default_str(vec_text(defaults.adaptive_l));
+  sub->add_option("--L", o->text.L, "Adaptive L, X,Y,Z [1/s]")
+      ->default_str(analysis::vec3_text(defaults.adaptive_l));
   sub->add_option("--adaptive-rate", o->request.adaptive_rate,
                   "Adaptive: convergence rate that sets Γ when --gamma is not given [1/s]")
       ->capture_default_str();
-  sub->add_option("--init-p0", o->init_p0,
+  sub->add_option("--init-p0", o->text.init_p0,
                   "N,E,D: initial P0 of the Luenberger observer in the fixes' local NED frame "
                   "(origin at the first fix) [m]; default from the first fixes and --init");
   sub->add_option("--lag", o->request.lag, "lsq: difference fixes this many epochs apart")
@@ -184,15 +104,16 @@ void add_leverarm_gnss(CLI::App& leverarm, LogMode mode) {
       "--estimate-time-offset; from the logger's MRU and speed log: dynpos leverarm gnss "
       "DIR/log.csv --col roll=mru1.roll --col pitch=mru1.pitch --col p=mru1.p --col q=mru1.q "
       "--col r=mru1.r");
-  if (mode == LogMode::kLive) {
-    auto live = std::make_shared<LiveCli>();
-    add_live_options(*sub, *live,
-                     "dynpos live leverarm gnss --follow DIR/log.csv --imu-arm "
-                     "0.358,0.804,-4.321 --idle-exit 10");
-    sub->callback([o, live] { run_live_gnss(*o, *live); });
-    return;
-  }
-  sub->callback([o] { run_gnss(*o); });
+  set_run_callback<analysis::LeverarmGnssRequest>(
+      *sub, mode,
+      [o] {
+        analysis::LeverarmGnssRequest request = o->request;
+        analysis::parse_text(o->text, request);
+        return request;
+      },
+      analysis::run_leverarm_gnss, o->outputs,
+      "dynpos live leverarm gnss --follow DIR/log.csv --imu-arm 0.358,0.804,-4.321 --idle-exit "
+      "10");
 }
 
 }  // namespace dynpos::cli

@@ -2,15 +2,13 @@
 // case study 4.4.2): the Luenberger observer (4.80) or batch least squares, with the
 // excitation diagnostics of Proposition 3, a thesis-style table, JSON and plots (figure 4.13).
 
-#include <fmt/core.h>
-
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "commands.hpp"
 #include "dynpos/analysis/leverarm_mru.hpp"
-#include "dynpos/analysis/options.hpp"
+#include "dynpos/analysis/leverarm_mru_text.hpp"
 #include "enum_option.hpp"
 #include "log_input.hpp"
 
@@ -18,24 +16,10 @@ namespace dynpos::cli {
 namespace {
 
 struct MruCliOptions {
-  LogInput input;
   analysis::LeverarmMruRequest request;
   analysis::Outputs outputs;
-  std::vector<std::string> mru_log;  ///< NAME=FILE, made request.mru_log by run_cli
+  std::vector<std::string> mru_log;  ///< NAME=FILE, made request.mru_log when the command runs
 };
-
-void run_cli(MruCliOptions& o) {
-  o.request.source = o.input;
-  for (const std::string& spec : o.mru_log) {
-    const auto eq = spec.find('=');
-    if (eq == std::string::npos || eq == 0 || eq + 1 == spec.size()) {
-      throw analysis::option_error("mru_log", "malformed argument '" + spec + "'",
-                                   "expected NAME=FILE, e.g. --mru-log mru1=mru1.csv");
-    }
-    o.request.mru_log[spec.substr(0, eq)] = spec.substr(eq + 1);
-  }
-  write_and_print(analysis::run_leverarm_mru(o.request), o.outputs);
-}
 
 }  // namespace
 
@@ -43,9 +27,9 @@ void add_leverarm_mru(CLI::App& leverarm) {
   auto o = std::make_shared<MruCliOptions>();
   CLI::App* sub = leverarm.add_subcommand(
       "mru", "MRU lever arms: observer (4.80) or least squares, excitation diagnostics (4.77)");
-  o->input.add_options(*sub,
-                       "time, roll, pitch, heading, p, q, r, u, v, w (optional), and per MRU "
-                       "mruK.ax, mruK.ay, mruK.az (or --mru-log)");
+  add_log_options(*sub, o->request.source,
+                  "time, roll, pitch, heading, p, q, r, u, v, w (optional), and per MRU mruK.ax, "
+                  "mruK.ay, mruK.az (or --mru-log)");
   sub->add_option("--mru-log", o->mru_log,
                   "MRU accelerations in a file of their own (repeatable): NAME=FILE with "
                   "columns time, NAME.ax, NAME.ay, NAME.az");
@@ -74,7 +58,10 @@ void add_leverarm_mru(CLI::App& leverarm) {
       "rotation: a turning circle in waves. Example: dynpos leverarm mru DIR/truth.csv "
       "--mru-log mru1=DIR/log.csv --mru-log mru2=DIR/log.csv --json arms.json --plots plots; from "
       "the logger alone: dynpos leverarm mru DIR/log.csv --reference mru1");
-  sub->callback([o] { run_cli(*o); });
+  sub->callback([o] {
+    o->request.mru_log = analysis::parse_mru_logs(o->mru_log);
+    write_and_print(analysis::run_leverarm_mru(o->request), o->outputs);
+  });
 }
 
 }  // namespace dynpos::cli

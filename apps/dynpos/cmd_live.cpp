@@ -2,8 +2,6 @@
 // stream as it arrives (live/session.hpp). The analyses' own options are registered by their
 // files in live mode; this file holds the stream options and the parent commands.
 
-#include <fmt/core.h>
-
 #include <atomic>
 
 #include "commands.hpp"
@@ -60,7 +58,7 @@ void run_live_session(const live::LiveRequest& request, const analysis::LogSourc
   live::LiveRequest r = request;
   r.stop = [] { return session_state.load() == kStopAsked; };
   const RunningSession running;
-  print_live_summary(live::run_live(r, source, analysis, stdout, stderr));
+  print_text(stderr, live::summary_text(live::run_live(r, source, analysis, stdout, stderr)));
 }
 
 void add_live_options(CLI::App& sub, LiveCli& live, const std::string& example) {
@@ -113,17 +111,6 @@ live::LiveRequest live_request(const LiveCli& live, const analysis::LogSource& s
   if (live.page_port >= 0) request.http_port = static_cast<std::uint16_t>(live.page_port);
   request.strict = source.strict;
   return request;
-}
-
-void print_live_summary(const live::LiveSummary& s) {
-  const live::StreamCounts& c = s.counts;
-  print_text(stderr,
-             "dynpos live: {} bytes, {} datagrams, {} lines ({} with a tag block, {} dropped "
-             "for a bad tag block, {} other datagrams); at most {} lines ({:.1f} MB) waited "
-             "for the analysis; {} runs, {:.3f} s of processor; {} JSON lines\n",
-             c.bytes, c.datagrams, c.lines, c.tag_blocks, c.bad_tag_blocks, c.other_datagrams,
-             s.queue_peak_lines, static_cast<double>(s.queue_peak_bytes) / 1e6, s.runs, s.run_cpu_s,
-             s.lines_written);
 }
 
 namespace {

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "dynpos/analysis/outputs.hpp"
 
@@ -52,15 +53,35 @@ void print_text(std::FILE* out, fmt::format_string<Args...> format, Args&&... ar
   print_text(out, fmt::format(format, std::forward<Args>(args)...));
 }
 
-/// The end of every analysis subcommand: write_outputs(report, outputs) (the analysis' files and
-/// JSON), then to_text(report) and a "wrote FILE" line per file written, on standard output, or
-/// on standard error when the JSON goes to standard output.
+/// The options of an analysis subcommand: its typed request and its outputs (--json, figures).
+template <class Request>
+struct AnalysisOptions {
+  Request request;
+  analysis::Outputs outputs;
+};
+
+/// Adds --arm, the lever arm X,Y[,Z] [m] of the antenna whose position is logged, bound to
+/// `arm_m` (analysis::arm_from_numbers makes it the request's; output_options.cpp).
+CLI::Option* add_arm_option(CLI::App& sub, std::vector<double>& arm_m);
+
+/// Prints to_text(report) and a "wrote FILE" line per file `written` to `out`.
 template <class Report>
-void write_and_print(const Report& report, const analysis::Outputs& outputs) {
-  const analysis::Written written = write_outputs(report, outputs);
-  std::FILE* out = outputs.json == "-" ? stderr : stdout;
+void print_report(std::FILE* out, const Report& report, const analysis::Written& written) {
   print_text(out, to_text(report));
   for (const std::filesystem::path& file : written) print_text(out, "wrote {}\n", file.string());
+}
+
+/// Where a subcommand prints its text: standard output, or standard error when the JSON goes
+/// to standard output.
+inline std::FILE* text_out(const analysis::Outputs& outputs) {
+  return outputs.json == "-" ? stderr : stdout;
+}
+
+/// The end of every analysis subcommand: write_outputs(report, outputs) (the analysis' files and
+/// JSON), then print_report on text_out(outputs).
+template <class Report>
+void write_and_print(const Report& report, const analysis::Outputs& outputs) {
+  print_report(text_out(outputs), report, write_outputs(report, outputs));
 }
 
 /// How an analysis subcommand reads its log: LOG, a file read at once, its results written once

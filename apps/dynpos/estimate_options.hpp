@@ -6,18 +6,18 @@
 #include <vector>
 
 #include "dynpos/analysis/estimate.hpp"
+#include "dynpos/analysis/option_text.hpp"
 #include "log_input.hpp"
 
 namespace dynpos::cli {
 
 struct EstimateCliOptions {
-  LogInput input;
   std::vector<double> arm_m;  ///< X,Y[,Z] [m]
   analysis::EstimateRequest request;
 
   /// Adds the options to `sub` (cmd_estimate.cpp).
   void add(CLI::App& sub);
-  /// The request with the log source and the arm filled in.
+  /// The request with the arm filled in.
   analysis::EstimateRequest resolved() const;
 };
 

@@ -1,10 +1,13 @@
 #pragma once
-// dynpos live ANALYSIS: the stream options every live analysis shares, and the end of a live
-// subcommand (the session, then the final report's outputs). The session is live/session.hpp.
+// dynpos live ANALYSIS: the stream options every live analysis shares, and the end of an
+// analysis subcommand in either mode (for a stream: the session, then the final report's
+// outputs). The session is live/session.hpp.
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <functional>
+#include <memory>
+#include <type_traits>
 
 #include "commands.hpp"
 #include "dynpos/analysis/log_source.hpp"
@@ -28,9 +31,6 @@ void add_live_options(CLI::App& sub, LiveCli& live, const std::string& example);
 live::LiveRequest live_request(const LiveCli& live, const analysis::LogSource& source,
                                const analysis::Outputs& outputs);
 
-/// Prints the session's summary on standard error.
-void print_live_summary(const live::LiveSummary& summary);
-
 /// Runs the session (live::run_live on stdout and stderr) with Ctrl-C, SIGTERM and SIGHUP
 /// ending it as the end of the stream would (live_session_takes_signal), and prints its
 /// summary.
@@ -47,14 +47,39 @@ void run_live_command(const LiveCli& live, const analysis::LogSource& source,
   const live::LiveRequest request = live_request(live, source, outputs);
   const auto analyse = [&](const analysis::LogSource& data, bool final) {
     const Report report = run(data);
-    if (final) {
-      const analysis::Written written = write_outputs(report, outputs);
-      print_text(stderr, to_text(report));
-      for (const auto& file : written) print_text(stderr, "wrote {}\n", file.string());
-    }
+    if (final) print_report(stderr, report, write_outputs(report, outputs));
     return to_json(report);
   };
   run_live_session(request, source, analyse);
+}
+
+/// The callback of an analysis subcommand that reads a log in `mode`, its request made by
+/// `request()` when the command runs: for LOG, write_and_print(run(request)); for a stream, the
+/// stream options (`live_example` ends their footer) and run_live_command, each run on the
+/// request with the data so far as its source. `request` owns (shares) the options `outputs`
+/// is part of.
+template <class Request, class Report>
+void set_run_callback(CLI::App& sub, LogMode mode,
+                      std::type_identity_t<std::function<Request()>> request,
+                      Report (*run)(const Request&), const analysis::Outputs& outputs,
+                      const std::string& live_example = {}) {
+  if (mode == LogMode::kFile) {
+    sub.callback([=, &outputs] { write_and_print(run(request()), outputs); });
+    return;
+  }
+  auto live = std::make_shared<LiveCli>();
+  add_live_options(sub, *live, live_example);
+  sub.callback([=, &outputs] {
+    const Request base = request();
+    run_live_command<Report>(
+        *live, base.source,
+        [&](const analysis::LogSource& data) {
+          Request q = base;
+          q.source = data;
+          return run(q);
+        },
+        outputs);
+  });
 }
 
 }  // namespace dynpos::cli

@@ -44,8 +44,9 @@ void add_time_options(CLI::App& sub, analysis::LogSource& source) {
 
 }  // namespace
 
-void add_log_options(CLI::App& sub, analysis::LogSource& source, const std::string& roles_help) {
-  add_log_argument(sub, source);
+void add_log_options(CLI::App& sub, analysis::LogSource& source, const std::string& roles_help,
+                     LogMode mode) {
+  if (mode == LogMode::kFile) add_log_argument(sub, source);
   add_log_source_options(sub, source, roles_help);
 }
 
@@ -84,14 +85,6 @@ void add_log_source_options(CLI::App& sub, analysis::LogSource& source,
                  "Threads for reading and for independent fits (default 0: every core); the "
                  "results do not depend on it")
       ->check(CLI::Range(0u, 256u));
-}
-
-void LogInput::add_options(CLI::App& sub, const std::string& roles_help, LogMode mode) {
-  if (mode == LogMode::kLive) {
-    add_log_source_options(sub, *this, roles_help);
-  } else {
-    add_log_options(sub, *this, roles_help);
-  }
 }
 
 }  // namespace dynpos::cli

@@ -7,25 +7,16 @@
 
 #include "commands.hpp"
 #include "dynpos/analysis/log_source.hpp"
-#include "dynpos/analysis/options.hpp"
 
 namespace dynpos::cli {
 
-struct LogInput : analysis::LogSource {
-  /// Adds LOG (positional, required; not in live mode, where the stream is the log), --map,
-  /// --col, --unit, --clock-offset, --max-gap, --format, --strict and the time-stamp options to
-  /// `sub`.
-  void add_options(CLI::App& sub, const std::string& roles_help, LogMode mode = LogMode::kFile);
-};
-
-/// Adds LOG (positional, required), --map, --col (roles_help lists the roles), --unit,
-/// --clock-offset, --max-gap, --format, --strict and the time-stamp options to `sub`, filling
-/// `source`.
-void add_log_options(CLI::App& sub, analysis::LogSource& source, const std::string& roles_help);
+/// Adds LOG (positional, required; not in live mode, where the stream is the log), --map, --col
+/// (roles_help lists the roles), --unit, --clock-offset, --max-gap, --format, --strict and the
+/// time-stamp options to `sub`, filling `source`.
+void add_log_options(CLI::App& sub, analysis::LogSource& source, const std::string& roles_help,
+                     LogMode mode = LogMode::kFile);
 /// The options of add_log_options but LOG, for a command that reads several logs alike.
 void add_log_source_options(CLI::App& sub, analysis::LogSource& source,
                             const std::string& roles_help);
-
-using analysis::thruster_names;
 
 }  // namespace dynpos::cli

@@ -2,7 +2,6 @@
 // and a virtual sea trial of R/V Gunnerus. This file only wires the subcommands together.
 
 #include <fmt/core.h>
-#include <fmt/ranges.h>
 
 #include <pthread.h>
 
@@ -11,15 +10,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
-#include <filesystem>
-#include <new>
 #include <string>
-#include <system_error>
 #include <vector>
 
 #include "commands.hpp"
-#include "dynpos/analysis/option_spelling.hpp"
-#include "dynpos/core/error.hpp"
+#include "dynpos/analysis/error_report.hpp"
 #include "dynpos/io/temporary_files.hpp"
 
 namespace {
@@ -109,43 +104,11 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? kExitOk : kExitInputError;
-  } catch (const dynpos::core::InputError& e) {
-    fmt::print(stderr, "dynpos: error: {}\n", dynpos::analysis::cli_message(e));
-    return kExitInputError;
-  } catch (const std::filesystem::filesystem_error& e) {
-    // A folder or file of the outputs that cannot be made or written (or an input that cannot
-    // be read): the path and the system's reason, not the library's wording.
-    const std::string path = e.path1().empty()
-                                 ? std::string()
-                                 : "'" + dynpos::core::printable(e.path1().string()) + "': ";
-    fmt::print(stderr, "dynpos: error: {}{}; check the path and its permissions\n", path,
-               e.code().message());
-    return kExitInputError;
-  } catch (const std::system_error& e) {
-    if (e.code() != std::errc::resource_unavailable_try_again) {
-      fmt::print(stderr, "dynpos: error: {}\n", dynpos::core::printable(e.what()));
-      return kExitFailure;
-    }
-    // A thread the system would not start (a limit of memory or processes) where no fewer
-    // threads would do.
-    fmt::print(stderr,
-               "dynpos: error: the system cannot start another thread ({}); use --jobs 1, or "
-               "raise the limit of memory (ulimit -v) or of processes\n",
-               e.code().message());
-    return kExitInputError;
-  } catch (const std::bad_alloc&) {
-    // The machine's memory ran out: what the input or the options asked for (a log, a window,
-    // a run length) was too much for it. Runs are checked before they start where their size
-    // is known (simulate); this is the rest.
-    fmt::print(stderr,
-               "dynpos: error: out of memory running '{}'; give a shorter log or run, a window "
-               "(--from/--to), fewer --jobs, or a machine with more memory\n",
-               dynpos::core::printable(fmt::format(
-                   "{}", fmt::join(std::vector<std::string>(argv + 1, argv + argc), " "))));
-    return kExitInputError;
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "dynpos: error: {}\n", dynpos::core::printable(e.what()));
-    return kExitFailure;
+  } catch (...) {
+    const dynpos::analysis::ErrorReport error = dynpos::analysis::cli_error_report(
+        std::current_exception(), std::vector<std::string>(argv + 1, argv + argc));
+    fmt::print(stderr, "dynpos: error: {}\n", error.message);
+    return error.input_error ? kExitInputError : kExitFailure;
   }
   return kExitOk;
 }

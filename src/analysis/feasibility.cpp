@@ -1,5 +1,7 @@
 #include "dynpos/analysis/feasibility.hpp"
 
+#include <fmt/core.h>
+
 #include <optional>
 
 #include "dynpos/analysis/data_dir.hpp"
@@ -9,6 +11,19 @@
 #include "dynpos/scenario/vessel_config.hpp"
 
 namespace dynpos::analysis {
+
+void check_loads_options(const std::function<bool(std::string_view)>& given) {
+  for (const char* option :
+       {"level", "site", "hs", "tp", "current", "direction-step", "wind-tolerance", "duration",
+        "settle", "footprint", "footprint-deg", "seed", "jobs", "out", "transient", "rows", "after",
+        "seeds", "observer"}) {
+    if (given(option)) {
+      throw option_error("loads",
+                         fmt::format("--{} is not an option of the load table's factors", option),
+                         "with --loads give --vessel, --failure and --json only");
+    }
+  }
+}
 
 void FeasibilityRequest::validate() const {
   if (loads.empty()) throw option_error("loads", "no load table", "give --loads FILE.csv");

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <utility>
 
 #include "dynpos/analysis/data_dir.hpp"
 #include "dynpos/analysis/options.hpp"
@@ -399,6 +400,16 @@ std::vector<VesselParameter> parameters(Setup& s, const FitOutcome& o,
 }
 
 }  // namespace
+
+void add_logs(VesselIdRequest& request, const LogSource& shared,
+              const std::vector<std::string>& logs) {
+  request.jobs = shared.jobs;
+  for (const std::string& log : logs) {
+    LogSource source = shared;
+    source.log = log;
+    request.logs.push_back(std::move(source));
+  }
+}
 
 void VesselIdRequest::validate() const {
   if (logs.empty()) throw option_error("logs", "no log given", "name one log per test");

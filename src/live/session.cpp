@@ -224,6 +224,17 @@ std::string live_line(const nlohmann::json& document, std::optional<double> stre
   return text + "\"stream_time_s\":" + t.dump() + ",\"final\":" + (final ? "true" : "false") + "}";
 }
 
+std::string summary_text(const LiveSummary& s) {
+  const StreamCounts& c = s.counts;
+  return fmt::format(
+      "dynpos live: {} bytes, {} datagrams, {} lines ({} with a tag block, {} dropped for a bad "
+      "tag block, {} other datagrams); at most {} lines ({:.1f} MB) waited for the analysis; {} "
+      "runs, {:.3f} s of processor; {} JSON lines\n",
+      c.bytes, c.datagrams, c.lines, c.tag_blocks, c.bad_tag_blocks, c.other_datagrams,
+      s.queue_peak_lines, static_cast<double>(s.queue_peak_bytes) / 1e6, s.runs, s.run_cpu_s,
+      s.lines_written);
+}
+
 std::unique_ptr<StreamSource> open_stream(const LiveRequest& r) {
   r.validate();
   if (!r.udp.empty()) return listen_udp(parse_endpoint(r.udp, "udp"), "udp");

@@ -8,7 +8,9 @@
 /// validate, run) and feasibility_report.cpp (JSON, text, write_outputs); no demo section.
 
 #include <filesystem>
+#include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -39,6 +41,10 @@ struct FeasibilityReport {
   std::string failure;             ///< as asked
   std::vector<capability::FeasibilityPoint> points;
 };
+
+/// Throws option_error("loads") when an option of the capability roses was given with the load
+/// table (`given(name)`: the option --name was given, e.g. "direction-step"), naming it.
+void check_loads_options(const std::function<bool(std::string_view)>& given);
 
 /// Validates, reads the vessel and the table, and computes each row's factor.
 FeasibilityReport run_feasibility(const FeasibilityRequest& request);

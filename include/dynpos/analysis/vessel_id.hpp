@@ -57,6 +57,11 @@ struct VesselIdRequest {
   void validate() const;
 };
 
+/// Adds one log per path of `logs` to request.logs, each with the log options of `shared` (map,
+/// columns, units, formats) and its own path, and takes request.jobs from `shared`.
+void add_logs(VesselIdRequest& request, const LogSource& shared,
+              const std::vector<std::string>& logs);
+
 /// One value of the vessel file.
 struct VesselParameter {
   std::string key;          ///< "hull.x_u_Ns_m": the vessel file's table.key

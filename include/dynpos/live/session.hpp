@@ -90,6 +90,11 @@ struct LiveSummary {
 std::string live_line(const nlohmann::json& document, std::optional<double> stream_time_s,
                       bool final);
 
+/// What a session did as one line (newline included), as `dynpos live` prints it at its end:
+/// the bytes, datagrams and lines received, the lines that waited most, the runs and their
+/// processor time, the JSON lines written.
+std::string summary_text(const LiveSummary& summary);
+
 /// Validates `request`, opens the stream and runs the session to its end: JSON lines to `out`,
 /// the stream's name, the page's address and notes (a run that could not yet be made, and
 /// why) to `messages`. `source` holds the log options (columns, map, formats); its log and
