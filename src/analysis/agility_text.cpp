@@ -11,9 +11,9 @@ namespace dynpos::analysis {
 ident::AgilityWindow parse_agility_window(const std::string& spec) {
   const std::vector<double> v = parse_numbers(spec, "window");
   if (v.size() < 3 || v.size() > 5) {
-    throw option_error(
-        "window", "'" + spec + "' needs 3 to 5 numbers, has " + std::to_string(v.size()),
-        "--window T_STEP,T_END,DIR_DEG[,THRUST_PCT[,YAW_PCT]]");
+    throw option_error("window",
+                       "'" + spec + "' needs 3 to 5 numbers, has " + std::to_string(v.size()),
+                       "--window T_STEP,T_END,DIR_DEG[,THRUST_PCT[,YAW_PCT]]");
   }
   ident::AgilityWindow w{v[0], v[1], v[2], v.size() > 3 ? v[3] : 100.0, std::nullopt};
   if (v.size() > 4) w.yaw_pct = v[4];

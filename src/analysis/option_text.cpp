@@ -45,7 +45,9 @@ std::optional<std::uint64_t> parse_seed(std::string_view text) {
   return seed;
 }
 
-std::string vec3_text(const Eigen::Vector3d& v) { return fmt::format("{},{},{}", v(0), v(1), v(2)); }
+std::string vec3_text(const Eigen::Vector3d& v) {
+  return fmt::format("{},{},{}", v(0), v(1), v(2));
+}
 
 std::optional<Eigen::Vector3d> arm_from_numbers(const std::vector<double>& xyz_m,
                                                 const std::string& key) {

@@ -2,6 +2,7 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -62,11 +63,16 @@ void EkfObserverTuning::validate() const {
   require_positive(position_std_m, "position_std_m");
   require_positive(heading_std_rad, "heading_std_rad");
   require_positive(yaw_rate_std_rad_s, "yaw_rate_std_rad_s");
+  if (!std::isfinite(measurement_lost_after_s) || measurement_lost_after_s < 0.0) {
+    throw std::invalid_argument("EKF tuning: measurement_lost_after_s must be finite and >= 0");
+  }
 }
 
 EkfObserver::EkfObserver(const ObserverModel& model, const EkfObserverTuning& tuning,
                          const Eigen::Vector3d& eta0_n)
-    : model_(model), tuning_(tuning) {
+    : model_(model),
+      tuning_(tuning),
+      coast_(model.wave_peak_frequency_rad_s, std::max(tuning.measurement_lost_after_s, 0.0)) {
   model_.validate();
   tuning_.validate();
   M_inv_ = model_.M.inverse();
@@ -210,6 +216,7 @@ void EkfObserver::step(const Eigen::Vector3d& y_n, const Eigen::Vector3d& tau_b,
   if (!std::isfinite(dt_s) || !(dt_s > 0.0)) {
     throw std::invalid_argument("EKF observer: the step dt must be finite and > 0");
   }
+  coast_.start_if_lost(y_n, x_.segment<3>(kNu), x_.segment<3>(kBias));  // coast_start.hpp
   correct(y_n, yaw_rate_rad_s);
   predict(tau_b, dt_s);
   estimate_.wave_n.setZero();
@@ -217,6 +224,7 @@ void EkfObserver::step(const Eigen::Vector3d& y_n, const Eigen::Vector3d& tau_b,
   estimate_.eta_n = x_.segment<3>(kEta);
   estimate_.nu_b = x_.segment<3>(kNu);
   estimate_.bias_n = x_.segment<3>(kBias);
+  coast_.track(estimate_.nu_b, estimate_.bias_n, dt_s);
 }
 
 }  // namespace dynpos::control

@@ -151,7 +151,10 @@ ObserverTrack run_observer(const ObserverModel& model, const ObserverInputs& inp
     PassiveObserver o(model, passive_observer_gains(model, options.passive), eta0);
     return run(o, cursor, inputs, t0, options);
   }
-  EkfObserver o(model, options.ekf, eta0);
+  // Each fix is taken once: the steps between fixes are no loss of the position.
+  EkfObserverTuning tuning = options.ekf;
+  tuning.measurement_lost_after_s = options.max_hold_s;
+  EkfObserver o(model, tuning, eta0);
   return run(o, cursor, inputs, t0, options);
 }
 

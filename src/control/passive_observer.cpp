@@ -2,7 +2,6 @@
 
 #include <Eigen/LU>
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 
 namespace dynpos::control {
@@ -54,7 +53,7 @@ PassiveObserverGains passive_observer_gains(const ObserverModel& model,
 
 PassiveObserver::PassiveObserver(const ObserverModel& model, const PassiveObserverGains& gains,
                                  const Eigen::Vector3d& eta0_n)
-    : model_(model), gains_(gains) {
+    : model_(model), gains_(gains), coast_(model.wave_peak_frequency_rad_s) {
   model_.validate();
   M_inv_ = model_.M.inverse();
   x_.segment<3>(6) = eta0_n;
@@ -83,19 +82,8 @@ PassiveObserver::State PassiveObserver::derivative(const State& x, const Eigen::
 }
 
 void PassiveObserver::step(const Eigen::Vector3d& y_n, const Eigen::Vector3d& tau_b, double dt_s) {
-  // Lost now: coast from the wave-period means (see the file comment).
-  const bool position_lost = std::isnan(y_n.x()) || std::isnan(y_n.y());
-  const bool heading_lost = std::isnan(y_n.z());
-  if (position_lost && !position_lost_) {
-    x_.segment<2>(9) = nu_mean_b_.head<2>();
-    x_.segment<2>(12) = bias_mean_n_.head<2>();
-  }
-  if (heading_lost && !heading_lost_) {
-    x_(11) = nu_mean_b_.z();
-    x_(14) = bias_mean_n_.z();
-  }
-  position_lost_ = position_lost;
-  heading_lost_ = heading_lost;
+  // Lost now: coast from the wave-period means (coast_start.hpp).
+  coast_.start_if_lost(y_n, x_.segment<3>(9), x_.segment<3>(12));
   const State k1 = derivative(x_, y_n, tau_b);
   const State k2 = derivative(x_ + 0.5 * dt_s * k1, y_n, tau_b);
   const State k3 = derivative(x_ + 0.5 * dt_s * k2, y_n, tau_b);
@@ -105,13 +93,7 @@ void PassiveObserver::step(const Eigen::Vector3d& y_n, const Eigen::Vector3d& ta
   estimate_.eta_n = x_.segment<3>(6);
   estimate_.nu_b = x_.segment<3>(9);
   estimate_.bias_n = x_.segment<3>(12);
-  const Eigen::Vector3d measured(position_lost ? 0.0 : 1.0, position_lost ? 0.0 : 1.0,
-                                 heading_lost ? 0.0 : 1.0);
-  const Eigen::Vector3d alpha =
-      measured.array() *
-      (1.0 - (-dt_s * model_.wave_peak_frequency_rad_s.array() / (2.0 * std::numbers::pi)).exp());
-  nu_mean_b_ += alpha.cwiseProduct(estimate_.nu_b - nu_mean_b_);
-  bias_mean_n_ += alpha.cwiseProduct(estimate_.bias_n - bias_mean_n_);
+  coast_.track(estimate_.nu_b, estimate_.bias_n, dt_s);
 }
 
 }  // namespace dynpos::control

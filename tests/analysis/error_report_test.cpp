@@ -30,8 +30,8 @@ TEST(ErrorReport, AFileSystemErrorNamesThePathAndTheSystemsReason) {
   const std::error_code denied = std::make_error_code(std::errc::permission_denied);
   const ErrorReport r =
       report_of(std::filesystem::filesystem_error("cannot create", "out/\x1b[2Jplots", denied));
-  EXPECT_EQ(r.message, "'out/\\x1b[2Jplots': " + denied.message() +
-                           "; check the path and its permissions");
+  EXPECT_EQ(r.message,
+            "'out/\\x1b[2Jplots': " + denied.message() + "; check the path and its permissions");
   EXPECT_TRUE(r.input_error);
   EXPECT_EQ(report_of(std::filesystem::filesystem_error("x", denied)).message,
             denied.message() + "; check the path and its permissions");

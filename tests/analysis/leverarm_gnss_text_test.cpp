@@ -32,8 +32,8 @@ LeverarmGnssText every_option() {
 TEST(LeverarmGnssText, EveryOptionBecomesItsTypedField) {
   LeverarmGnssRequest q;
   parse_text(every_option(), q);
-  EXPECT_EQ(q.gnss_log, (std::map<std::string, std::filesystem::path>{{"gnss1", "a.csv"},
-                                                                      {"gnss2", "b.csv"}}));
+  EXPECT_EQ(q.gnss_log,
+            (std::map<std::string, std::filesystem::path>{{"gnss1", "a.csv"}, {"gnss2", "b.csv"}}));
   EXPECT_EQ(q.nmea, (std::map<std::string, std::filesystem::path>{{"gnss3", "c.nmea"}}));
   ASSERT_TRUE(q.utc_at_zero.has_value());
   EXPECT_DOUBLE_EQ(*q.utc_at_zero, 12 * 3600.0 + 30 * 60.0 + 15.5);
@@ -84,7 +84,8 @@ TEST(LeverarmGnssText, AnEmptyNameOrValueIsMalformed) {
       parse_text(t, q);
     });
     EXPECT_EQ(e.option(), "nmea") << spec;
-    EXPECT_EQ(e.problem(), "malformed argument '" + std::string(spec) + "': expected gnss1=FILE.nmea");
+    EXPECT_EQ(e.problem(),
+              "malformed argument '" + std::string(spec) + "': expected gnss1=FILE.nmea");
     EXPECT_EQ(e.hint(), "for example --nmea gnss1=FILE.nmea");
   }
   LeverarmGnssText t;

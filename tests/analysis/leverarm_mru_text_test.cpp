@@ -13,8 +13,8 @@ using testing::input_error;
 
 TEST(LeverarmMruText, MruFilesByName) {
   const auto files = parse_mru_logs({"mru1=a.csv", "mru2=b.csv", "mru1=c.csv"});
-  EXPECT_EQ(files, (std::map<std::string, std::filesystem::path>{{"mru1", "c.csv"},
-                                                                 {"mru2", "b.csv"}}));
+  EXPECT_EQ(files,
+            (std::map<std::string, std::filesystem::path>{{"mru1", "c.csv"}, {"mru2", "b.csv"}}));
   EXPECT_TRUE(parse_mru_logs({}).empty());
 }
 

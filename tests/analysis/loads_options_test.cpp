@@ -18,15 +18,13 @@ using testing::input_error;
 
 TEST(LoadsOptions, TheLoadTablesOwnOptionsPass) {
   const std::set<std::string, std::less<>> given = {"vessel", "failure", "json", "loads"};
-  EXPECT_NO_THROW(
-      check_loads_options([&](std::string_view name) { return given.contains(name); }));
+  EXPECT_NO_THROW(check_loads_options([&](std::string_view name) { return given.contains(name); }));
 }
 
 TEST(LoadsOptions, AnOptionOfTheRosesIsNamed) {
   for (const char* option : {"level", "direction-step", "seed", "out", "transient", "observer"}) {
-    const core::InputError e = input_error([&] {
-      check_loads_options([&](std::string_view name) { return name == option; });
-    });
+    const core::InputError e = input_error(
+        [&] { check_loads_options([&](std::string_view name) { return name == option; }); });
     EXPECT_EQ(e.option(), "loads");
     EXPECT_EQ(cli_message(e), "(--loads): --" + std::string(option) +
                                   " is not an option of the load table's factors; with --loads "

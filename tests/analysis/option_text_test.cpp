@@ -68,7 +68,9 @@ TEST(OptionText, AnArmHasTwoOrThreeNumbers) {
   EXPECT_EQ(arm_from_numbers({0.2, -0.6, -13.9}, "arm"), Eigen::Vector3d(0.2, -0.6, -13.9));
   const core::InputError e = input_error([] { arm_from_numbers({1.0}, "arm"); });
   EXPECT_EQ(cli_message(e), "(--arm): 1 numbers are not an arm; give X,Y or X,Y,Z [m]");
-  EXPECT_EQ(input_error([] { arm_from_numbers({1, 2, 3, 4}, "arm"); }).problem(),
+  EXPECT_EQ(input_error([] {
+              arm_from_numbers({1, 2, 3, 4}, "arm");
+            }).problem(),
             "4 numbers are not an arm");
 }
 

@@ -84,9 +84,12 @@ TEST(EkfObserver, CoastsOnItsModelWhenNothingIsMeasured) {
   const auto truth = simulate_truth(model, TruthOptions{});
   EkfObserver ekf(model, EkfObserverTuning{}, truth[0].y_n);
   for (std::size_t k = 0; k < at(300.0); ++k) ekf.step(truth[k].y_n, truth[k].tau_b, kDt);
-  State x = testing::state_of(ekf.estimate());
   const Eigen::Vector3d missing(kNaN, kNaN, kNaN);
-  for (std::size_t k = at(300.0); k < at(330.0); ++k) {
+  // The first step without a measurement starts the coast from the wave-period means
+  // (coast_start.hpp); from there it is the model's own integration.
+  ekf.step(missing, truth[at(300.0)].tau_b, kDt);
+  State x = testing::state_of(ekf.estimate());
+  for (std::size_t k = at(300.0) + 1; k < at(330.0); ++k) {
     ekf.step(missing, truth[k].tau_b, kDt);
     x = testing::model_step(model, x, truth[k].tau_b, kDt);
   }
@@ -133,6 +136,8 @@ TEST(EkfObserver, PropagatesTheCovarianceByTheModelsJacobian) {
   EkfObserver ekf(model, tuning, truth[0].y_n);
   const std::size_t k = at(100.0);  // b̂ and ν̂ settled, so the ψ columns matter
   for (std::size_t j = 0; j < k; ++j) ekf.step(truth[j].y_n, truth[j].tau_b, kDt);
+  // A first step on nothing starts the coast (coast_start.hpp); the next predicts only.
+  ekf.step(Eigen::Vector3d::Constant(kNaN), truth[k - 1].tau_b, kDt);
   using X = EkfObserver::Covariance::ColXpr::PlainObject;
   X x = X::Zero();  // the wave states enter f linearly: A does not depend on them
   x.head<15>() = testing::state_of(ekf.estimate());
@@ -268,6 +273,32 @@ TEST(EkfObserver, CoastsThroughAPositionDropout) {
   // 30 s).
   EXPECT_LT(var_m2[end + 1], 0.5 * var_m2[end]);
   EXPECT_LT(var_m2[end + at(30.0)], 1.05 * 1.05 * var_m2[start]);
+}
+
+// With the fast bias of the DP loop's tuning (dp_estimator.hpp: 2e-3 m/s²/√s in N and E) b̂
+// follows the wave motion; a lost position starts the coast from b̂'s wave-period mean instead.
+TEST(EkfObserver, ALostPositionStartsFromTheWavePeriodMeanBias) {
+  const ObserverModel model = vessel_model();
+  const auto truth = simulate_truth(model, TruthOptions{});
+  EkfObserverTuning tuning;
+  tuning.bias_accel_noise.head<2>().setConstant(2e-3);
+  EkfObserver ekf(model, tuning, truth[0].y_n);
+  const std::size_t start = at(300.0);
+  double sum_n2 = 0.0;
+  for (std::size_t k = 0; k < start; ++k) {
+    ekf.step(truth[k].y_n, truth[k].tau_b, kDt);
+    if (k + 1 >= at(200.0)) {
+      sum_n2 += (ekf.estimate().bias_n - truth[k + 1].bias_n).head<2>().squaredNorm();
+    }
+  }
+  const double before_n = std::sqrt(sum_n2 / static_cast<double>(start - at(200.0)));
+  Eigen::Vector3d y = truth[start].y_n;
+  y.head<2>().setConstant(kNaN);
+  ekf.step(y, truth[start].tau_b, kDt);
+  const double onset_n = (ekf.estimate().bias_n - truth[start + 1].bias_n).head<2>().norm();
+  std::printf("bias error: rms %.0f N while measured, %.0f N as the position is lost\n", before_n,
+              onset_n);
+  EXPECT_LT(onset_n, 0.5 * before_n);
 }
 
 TEST(EkfObserver, HeadingThroughNorthMakesNoJump) {

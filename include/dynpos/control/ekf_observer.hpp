@@ -14,7 +14,8 @@
 /// estimate, like the passive observer's, is the one at t + dt from y up to t.
 ///
 /// Correction on the components of y that are not NaN (the rows of the others are dropped; none
-/// left: the filter coasts), with ỹ = y − H x̂ and its heading wrapped to (−π, π]:
+/// left: the filter coasts, from the wave-period means of ν̂ and b̂ as the passive observer,
+/// coast_start.hpp; P is left as it is), with ỹ = y − H x̂ and its heading wrapped to (−π, π]:
 ///
 ///     K = P Hᵀ (H P Hᵀ + R)⁻¹,   x̂ ← x̂ + K ỹ,   P ← (I − K H) P (I − K H)ᵀ + K R Kᵀ (Joseph)
 ///
@@ -39,6 +40,7 @@
 #include <Eigen/Core>
 #include <limits>
 
+#include "dynpos/control/coast_start.hpp"
 #include "dynpos/control/observer.hpp"
 #include "dynpos/core/angle.hpp"
 
@@ -80,7 +82,12 @@ struct EkfObserverTuning {
   /// model misses the broad yaw spectrum, and trusting the gyro's wave-frequency rate gave
   /// 0.42° of heading error; the three components of observer.hpp follow it.
   double yaw_rate_std_rad_s = core::deg_to_rad(0.03);
-  /// Throws std::invalid_argument unless every σ and density is finite and > 0.
+  /// How long a measurement may be missing before the filter takes it as lost and coasts from
+  /// the wave-period means (coast_start.hpp) [s]: 0 where one comes every step; a log's longest
+  /// gap between fixes where each fix is taken once (observer_run.hpp).
+  double measurement_lost_after_s = 0.0;
+  /// Throws std::invalid_argument unless every σ and density is finite and > 0 and
+  /// measurement_lost_after_s finite and ≥ 0.
   void validate() const;
 };
 
@@ -123,6 +130,7 @@ class EkfObserver {
   State x_ = State::Zero();
   Covariance P_ = Covariance::Zero();
   ObserverEstimate estimate_;
+  CoastStart coast_;
 };
 
 }  // namespace dynpos::control

@@ -27,14 +27,11 @@
 /// T = 1000 s.
 ///
 /// A lost measurement (a GNSS dropout: N and E NaN; a gyro fault: ψ NaN) leaves ỹ = 0 in it and
-/// the observer coasts on its model. The fast LF loop leaves wave motion in ν̂ and b̂ (on the
-/// virtual Gunnerus in H_s 2.5 m up to 0.5 m/s and 10 kN at an instant), on which it would
-/// coast: when a measurement is lost, ν̂ and b̂ of its DOFs (u, v and b_N, b_E for the position;
-/// r and b_ψ for the heading) start from their means over the last wave period instead, a
-/// first-order low-pass of time constant 2π/ω₀ that the wave motion averages out of.
+/// the observer coasts on its model, from the wave-period means of ν̂ and b̂ (coast_start.hpp).
 
 #include <Eigen/Core>
 
+#include "dynpos/control/coast_start.hpp"
 #include "dynpos/control/observer.hpp"
 
 namespace dynpos::control {
@@ -89,10 +86,7 @@ class PassiveObserver {
   Eigen::Matrix3d M_inv_;
   State x_ = State::Zero();
   ObserverEstimate estimate_;
-  // ν̂ (BODY) and b̂ (NED) low-passed over a wave period, per DOF, while it is measured.
-  Eigen::Vector3d nu_mean_b_ = Eigen::Vector3d::Zero();
-  Eigen::Vector3d bias_mean_n_ = Eigen::Vector3d::Zero();
-  bool position_lost_ = false, heading_lost_ = false;
+  CoastStart coast_;
 };
 
 }  // namespace dynpos::control
