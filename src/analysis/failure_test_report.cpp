@@ -65,6 +65,8 @@ nlohmann::json event_json(const FailureTestReport& report, const ident::FailureE
   j["recovery_s"] = number_json(e.recovery_s);
   j["peak_heading_deg"] = number_json(e.peak_heading_rad, kDeg);
   j["footprint_m"] = number_json(e.footprint_m);
+  j["median_peak_m"] = number_json(e.median_peak_m);
+  j["recovery_at_footprint_edge"] = e.recovery_at_footprint_edge;
   j["pre_failure"] = {{"from_s", e.pre_from_s},
                       {"to_s", e.pre_to_s},
                       {"north_m", number_json(e.pre_north_m)},
@@ -97,7 +99,8 @@ nlohmann::json windows_json(const ident::FailureTestOptions& o) {
           {"response_window_s", o.response_window_s},
           {"max_fall_s", o.max_fall_s},
           {"min_off_s", o.min_off_s},
-          {"level_window_s", o.level_window_s}};
+          {"level_window_s", o.level_window_s},
+          {"footprint_edge_share", o.footprint_edge_share}};
 }
 
 // "stb 30.0 → 53.9 kN (+23.9)" per unit that did not trip.
@@ -179,6 +182,13 @@ std::string to_text(const FailureTestReport& report) {
   for (const std::string& note : report.notes) out += "  note: " + note + "\n";
   if (!report.result.events.empty()) out += report::render_text(failure_test_table(report));
   for (const ident::FailureEvent& e : report.result.events) {
+    if (e.recovery_at_footprint_edge) {
+      out += fmt::format(
+          "  note: {} at {:.1f} s: the recovery is at the footprint's edge (the distance's "
+          "median peaks at {:.2f} m against a footprint of {:.2f} m): whether the vessel left "
+          "it turns on where the footprint is drawn\n",
+          e.unit, e.time_s, *e.median_peak_m, *e.footprint_m);
+    }
     out += fmt::format("  redistribution after {} at {:.1f} s:\n", e.unit, e.time_s);
     out += redistribution_text(report, e);
   }

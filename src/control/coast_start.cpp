@@ -41,15 +41,15 @@ void CoastStart::start_if_lost(const Eigen::Vector3d& y_n, Eigen::Ref<Eigen::Vec
   }
 }
 
-void CoastStart::track(const Eigen::Vector3d& nu_b, const Eigen::Vector3d& bias_n,
-                       double dt_s) {
+void CoastStart::track(const Eigen::Vector3d& nu_b, const Eigen::Vector3d& bias_n, double dt_s) {
   Eigen::Array3d follow = Eigen::Array3d::Zero();
   for (int c = 0; c < 2; ++c) {
     channel_[c].missing_s += dt_s;  // the age of the last sample at the next step
     if (!channel_[c].lost) follow += dofs(c);
   }
   const Eigen::Vector3d alpha =
-      follow * (1.0 - (-dt_s * wave_peak_frequency_rad_s_.array() / (2.0 * std::numbers::pi)).exp());
+      follow *
+      (1.0 - (-dt_s * wave_peak_frequency_rad_s_.array() / (2.0 * std::numbers::pi)).exp());
   nu_mean_b_ += alpha.cwiseProduct(nu_b - nu_mean_b_);
   bias_mean_n_ += alpha.cwiseProduct(bias_n - bias_mean_n_);
 }

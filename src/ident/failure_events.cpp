@@ -191,6 +191,11 @@ void excursion(const FailureTestInput& in, const Neighbours& around, const Failu
       smooth_peak = k;
     }
   }
+  if (smooth_peak) {
+    e.median_peak_m = smooth[*smooth_peak];
+    e.recovery_at_footprint_edge =
+        std::abs(*e.median_peak_m - *e.footprint_m) <= o.footprint_edge_share * *e.footprint_m;
+  }
   if (!smooth_peak || !(smooth[*smooth_peak] > *e.footprint_m)) {
     e.recovery_s = 0.0;  // never left the footprint
     return;

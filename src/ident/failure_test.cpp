@@ -269,6 +269,9 @@ void FailureTestOptions::validate() const {
   if (!(takeover_fraction >= 0.0) || !std::isfinite(takeover_fraction)) {
     throw core::InputError::for_option("takeover_fraction", "must be ≥ 0");
   }
+  if (!(footprint_edge_share >= 0.0) || !std::isfinite(footprint_edge_share)) {
+    throw core::InputError::for_option("footprint_edge_share", "must be ≥ 0");
+  }
 }
 
 FailureTestResult analyse_failure_test(const FailureTestInput& in, const FailureTestOptions& o) {

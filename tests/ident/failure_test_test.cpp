@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <limits>
 #include <numbers>
@@ -96,6 +97,28 @@ Series one_trip(const Bump& bump = {}) {
                        {"azimuth", taking_over(20e3, 30e3, 300.5)}});
 }
 
+// A bump of the noise's own size: the median peak lies at the footprint (the largest of a
+// minute's 2 cm noise), so whether the vessel left it is a toss of the noise. The recovery is
+// flagged; the same bump at 0.3 m is not.
+TEST(FailureTest, ARecoveryAtTheFootprintsEdgeIsFlagged) {
+  for (const double peak_m : {0.3, 0.06}) {
+    Bump bump;
+    bump.peak_m = peak_m;
+    const FailureTestResult r = analyse_failure_test(one_trip(bump).in);
+    ASSERT_EQ(r.events.size(), 1u) << peak_m;
+    const FailureEvent& e = r.events.front();
+    ASSERT_TRUE(e.median_peak_m && e.footprint_m) << peak_m;
+    const double share = std::abs(*e.median_peak_m / *e.footprint_m - 1.0);
+    std::printf("bump %.2f m: median peak %.3f m, footprint %.3f m (%.0f %% apart)\n", peak_m,
+                *e.median_peak_m, *e.footprint_m, 100.0 * share);
+    EXPECT_EQ(e.recovery_at_footprint_edge, share <= 0.1) << peak_m;
+    EXPECT_EQ(e.recovery_at_footprint_edge, peak_m < 0.1) << peak_m;
+  }
+  FailureTestOptions o;
+  o.footprint_edge_share = -0.1;
+  EXPECT_THROW(o.validate(), core::InputError);
+}
+
 TEST(FailureTest, FindsATripAndItsExcursion) {
   const Bump bump;
   const FailureTestResult r = analyse_failure_test(one_trip(bump).in);
@@ -118,6 +141,10 @@ TEST(FailureTest, FindsATripAndItsExcursion) {
   EXPECT_GT(*e.footprint_m, 0.03);
   EXPECT_LT(*e.footprint_m, 0.12);
   EXPECT_NEAR(e.time_s + *e.recovery_s, bump.back_within(*e.footprint_m), 2.0);
+  // The 3 s median of the distance peaks with the bump, far from the footprint's edge.
+  ASSERT_TRUE(e.median_peak_m);
+  EXPECT_NEAR(*e.median_peak_m, 3.0, 0.05);
+  EXPECT_FALSE(e.recovery_at_footprint_edge);
   ASSERT_TRUE(e.peak_heading_rad);
   EXPECT_NEAR(*e.peak_heading_rad / kDeg, 2.0, 0.2);
   EXPECT_NEAR(e.pre_from_s, e.time_s - 60.0, 1e-9);
