@@ -2,7 +2,6 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -52,6 +51,11 @@ void require_positive(double v, const char* name) {
   }
 }
 
+const EkfObserverTuning& validated(const EkfObserverTuning& tuning) {
+  tuning.validate();
+  return tuning;
+}
+
 }  // namespace
 
 void EkfObserverTuning::validate() const {
@@ -71,10 +75,9 @@ void EkfObserverTuning::validate() const {
 EkfObserver::EkfObserver(const ObserverModel& model, const EkfObserverTuning& tuning,
                          const Eigen::Vector3d& eta0_n)
     : model_(model),
-      tuning_(tuning),
-      coast_(model.wave_peak_frequency_rad_s, std::max(tuning.measurement_lost_after_s, 0.0)) {
+      tuning_(validated(tuning)),
+      coast_(model.wave_peak_frequency_rad_s, tuning_.measurement_lost_after_s) {
   model_.validate();
-  tuning_.validate();
   M_inv_ = model_.M.inverse();
   x_.segment<3>(kEta) = eta0_n;
   estimate_.eta_n = eta0_n;

@@ -14,6 +14,14 @@ namespace {
 
 using testing::input_error;
 
+// The error parse_text() throws on `t`.
+core::InputError parse_error(const LeverarmGnssText& t) {
+  return input_error([&] {
+    LeverarmGnssRequest q;
+    parse_text(t, q);
+  });
+}
+
 LeverarmGnssText every_option() {
   LeverarmGnssText t;
   t.gnss_log = {"gnss1=a.csv", "gnss2=b.csv"};
@@ -63,10 +71,7 @@ TEST(LeverarmGnssText, EmptyTextLeavesTheRequestsValues) {
 TEST(LeverarmGnssText, AFileWithoutItsAntennaNamesTheOptionAndAnExample) {
   LeverarmGnssText t;
   t.gnss_log = {"gnss1"};
-  const core::InputError e = input_error([&] {
-    LeverarmGnssRequest q;
-    parse_text(t, q);
-  });
+  const core::InputError e = parse_error(t);
   EXPECT_EQ(e.option(), "gnss_log");
   EXPECT_EQ(e.problem(), "malformed argument 'gnss1': expected gnss1=FILE.csv");
   EXPECT_EQ(e.hint(), "for example --gnss-log gnss1=FILE.csv");
@@ -79,10 +84,7 @@ TEST(LeverarmGnssText, AnEmptyNameOrValueIsMalformed) {
   for (const char* spec : {"gnss1=", "=log.nmea", "="}) {
     LeverarmGnssText t;
     t.nmea = {spec};
-    const core::InputError e = input_error([&] {
-      LeverarmGnssRequest q;
-      parse_text(t, q);
-    });
+    const core::InputError e = parse_error(t);
     EXPECT_EQ(e.option(), "nmea") << spec;
     EXPECT_EQ(e.problem(),
               "malformed argument '" + std::string(spec) + "': expected gnss1=FILE.nmea");
@@ -90,10 +92,7 @@ TEST(LeverarmGnssText, AnEmptyNameOrValueIsMalformed) {
   }
   LeverarmGnssText t;
   t.init = {"0.2,-0.6,-13.9"};
-  const core::InputError e = input_error([&] {
-    LeverarmGnssRequest q;
-    parse_text(t, q);
-  });
+  const core::InputError e = parse_error(t);
   EXPECT_EQ(e.option(), "init");
   EXPECT_EQ(e.problem(), "malformed argument '0.2,-0.6,-13.9': expected gnss1=0.2,-0.6,-13.9");
 }
@@ -118,10 +117,7 @@ TEST(LeverarmGnssText, ABadVectorNamesItsKeyAndTheExample) {
   for (const Case& c : cases) {
     LeverarmGnssText t;
     c.set(t);
-    const core::InputError e = input_error([&] {
-      LeverarmGnssRequest q;
-      parse_text(t, q);
-    });
+    const core::InputError e = parse_error(t);
     EXPECT_EQ(e.option(), c.key);
     EXPECT_EQ(e.problem(), c.problem);
     EXPECT_EQ(e.hint(), c.hint);
@@ -131,10 +127,7 @@ TEST(LeverarmGnssText, ABadVectorNamesItsKeyAndTheExample) {
 TEST(LeverarmGnssText, ATimeThatIsNotUtcNamesUtcAtZero) {
   LeverarmGnssText t;
   t.utc_at_zero = "noon";
-  const core::InputError e = input_error([&] {
-    LeverarmGnssRequest q;
-    parse_text(t, q);
-  });
+  const core::InputError e = parse_error(t);
   EXPECT_EQ(e.option(), "utc_at_zero");
   EXPECT_THAT(e.problem(), ::testing::HasSubstr("noon"));
 }

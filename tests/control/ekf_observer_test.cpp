@@ -381,6 +381,11 @@ TEST(EkfObserver, RejectsBadTuningAndSteps) {
     t.heading_std_rad = bad;
     throws(t, "heading_std_rad");
   }
+  for (const double bad : {-1.0, kNaN, std::numeric_limits<double>::infinity()}) {
+    EkfObserverTuning t;
+    t.measurement_lost_after_s = bad;
+    throws(t, "measurement_lost_after_s");
+  }
   ObserverModel bad_model = model;
   bad_model.M(0, 0) = -1.0;
   EXPECT_THROW(EkfObserver(bad_model, EkfObserverTuning{}, eta0), std::invalid_argument);
