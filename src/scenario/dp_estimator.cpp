@@ -77,7 +77,27 @@ DpEstimator::DpEstimator(const ScenarioSpec& spec, const VesselConfig& vessel,
       wind_period_s_(vessel.sensors.wind_speed.timing.enabled()
                          ? 1.0 / vessel.sensors.wind_speed.timing.rate_hz
                          : period_s),
+      accel_x_noise_(vessel.sensors.mru.empty() ? 0.0 : vessel.sensors.mru.front().accel_std_mps2,
+                     sim::Rng(seed, "dp.accel.x")),
+      accel_y_noise_(vessel.sensors.mru.empty() ? 0.0 : vessel.sensors.mru.front().accel_std_mps2,
+                     sim::Rng(seed, "dp.accel.y")),
       last_raw_(eta0_n) {
+  if (spec.inertial_position_aid && !vessel.sensors.mru.empty()) {
+    // The bridge is set to the MRU's and the GNSS receiver's stated noise.
+    const sensors::MruParams& mru = vessel.sensors.mru.front();
+    control::InertialPositionTuning aid;
+    aid.accel_std_mps2 = mru.accel_std_mps2;
+    aid.accel_bias_std_mps2 = mru.accel_bias_std_mps2;
+    aid.accel_bias_time_constant_s = mru.accel_bias_time_constant_s;
+    aid.position_std_m = std::max(gnss_std_m(vessel), 1e-3);
+    inertial_.emplace(aid);
+    for (int i = 0; i < 2 && mru.accel_bias_std_mps2 > 0.0; ++i) {
+      accel_bias_[i] = sim::GaussMarkov::with_stationary_std(
+          mru.accel_bias_time_constant_s, mru.accel_bias_std_mps2, period_s,
+          sim::Rng(seed, i == 0 ? "dp.accel.bias.x" : "dp.accel.bias.y"));
+      accel_bias_[i]->reset_stationary();
+    }
+  }
   const control::ObserverModel model = observer_model(spec, vessel, plant.hull());
   if (kind_ == control::ObserverKind::kPassive) {
     observer_.emplace<control::PassiveObserver>(model, control::passive_observer_gains(model),
@@ -105,7 +125,33 @@ Eigen::Vector3d DpEstimator::measure(double t, const sim::ConstVectorRef& x) {
   wf_velocity_b_ = Eigen::Vector3d(wf.velocity[0], wf.velocity[1], wf.velocity[5]);
   yaw_rate_ = x[Plant::kHull + Hull::kYawRate] + wf.velocity[5] + rate_noise_.sample();
   if (any_covers(gnss_dropouts_, t)) y.x() = y.y() = core::kMissing;
+  if (inertial_) {
+    // The MRU's levelled acceleration turned into NED by the measured heading, then the bridge.
+    const Eigen::Vector2d velocity_b(x[Plant::kHull + Hull::kSurge] + wf.velocity[0],
+                                     x[Plant::kHull + Hull::kSway] + wf.velocity[1]);
+    const Eigen::Vector2d a_b =
+        measured_acceleration_b(Eigen::Vector2d(c * velocity_b.x() - s * velocity_b.y(),
+                                                s * velocity_b.x() + c * velocity_b.y()),
+                                psi + wf.position[5]);
+    const double cm = std::cos(y.z()), sm = std::sin(y.z());
+    const Eigen::Vector2d a_n(cm * a_b.x() - sm * a_b.y(), sm * a_b.x() + cm * a_b.y());
+    y.head<2>() = inertial_->step(y.head<2>(), a_n, period_s_);
+  }
   return y;
+}
+
+Eigen::Vector2d DpEstimator::measured_acceleration_b(const Eigen::Vector2d& velocity_n,
+                                                     double psi_rad) {
+  const Eigen::Vector2d accel_n = (velocity_n - last_velocity_n_) / period_s_;
+  last_velocity_n_ = velocity_n;
+  if (!accel_n.allFinite()) return accel_n;
+  const double c = std::cos(psi_rad), s = std::sin(psi_rad);
+  Eigen::Vector2d a_b(c * accel_n.x() + s * accel_n.y() + accel_x_noise_.sample(),
+                      -s * accel_n.x() + c * accel_n.y() + accel_y_noise_.sample());
+  for (int i = 0; i < 2; ++i) {
+    if (accel_bias_[i]) a_b[i] += accel_bias_[i]->step();
+  }
+  return a_b;
 }
 
 Eigen::Vector3d DpEstimator::measured_wind_force_b(double t, const sim::ConstVectorRef& x,

@@ -286,6 +286,7 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
                        "device_files",
                        "observer",
                        "observer_wind_feedforward",
+                       "inertial_position_aid",
                        "failure_at_s",
                        "failure",
                        "gnss_dropout"});
@@ -350,6 +351,7 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
     spec.observer = *kind;
   }
   spec.observer_wind_feedforward = root.boolean_or("observer_wind_feedforward", true);
+  spec.inertial_position_aid = root.boolean_or("inertial_position_aid", true);
   if (root.has("failure") || root.has("failure_at_s")) {
     spec.failure = FailureEvent{root.number("failure_at_s", 0.0, 1e6), root.string("failure")};
   }

@@ -138,6 +138,10 @@ TEST(ScenarioEvents, FileKeysAndTheirErrors) {
       load("observer = \"ekf\"\nobserver_wind_feedforward = false").observer_wind_feedforward);
   EXPECT_THAT(error_of([&] { load("observer_wind_feedforward = \"yes\""); }),
               ::testing::HasSubstr("observer_wind_feedforward"));
+  EXPECT_TRUE(ok.inertial_position_aid);  // the default
+  EXPECT_FALSE(load("inertial_position_aid = false").inertial_position_aid);
+  EXPECT_THAT(error_of([&] { load("inertial_position_aid = 1"); }),
+              ::testing::HasSubstr("inertial_position_aid"));
   ASSERT_TRUE(ok.failure);
   EXPECT_EQ(ok.failure->t_s, 50.0);
   EXPECT_TRUE(any_covers(ok.gnss_dropouts, 20.0));

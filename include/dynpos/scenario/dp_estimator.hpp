@@ -18,6 +18,14 @@
 /// bias then carries the rest (current, wave drift); the estimate's bias_n is the whole
 /// environmental load the DP system estimates: b̂ plus the wind force in NED.
 ///
+/// With ScenarioSpec::inertial_position_aid and an MRU on the vessel, the DP system bridges a
+/// GNSS loss on the horizontal acceleration of the control origin its first MRU measures (moved
+/// to the control origin and levelled): the true LF plus WF acceleration (the change of the
+/// total velocity over the control period) with the MRU's white noise (accel_std_mps2) and
+/// Gauss–Markov bias (accel_bias_std_mps2, accel_bias_time_constant_s), in BODY axes and turned
+/// into NED by the measured heading; the bridge is tuned to those values and the GNSS's noise. Its
+/// position fills the missing fix (control/inertial_position.hpp) for as long as the bridge holds.
+///
 /// "ideal" hands the controller the true low-frequency motion; "raw" the measurement itself with
 /// the measured velocity (low- plus wave-frequency), as a DP system without a wave filter would.
 
@@ -27,8 +35,10 @@
 #include <variant>
 
 #include "dynpos/control/ekf_observer.hpp"
+#include "dynpos/control/inertial_position.hpp"
 #include "dynpos/control/observer.hpp"
 #include "dynpos/control/passive_observer.hpp"
+#include "dynpos/core/log.hpp"
 #include "dynpos/model/environment.hpp"
 #include "dynpos/model/sea_state.hpp"
 #include "dynpos/scenario/scenario_spec.hpp"
@@ -93,8 +103,12 @@ class DpEstimator {
   std::optional<control::ObserverEstimate> estimate() const;
 
  private:
-  // The measurement y = (N, E, ψ) at t; position NaN during a GNSS dropout. Sets wf_velocity_b_.
+  // The measurement y = (N, E, ψ) at t; position NaN during a GNSS dropout unless bridged.
+  // Sets wf_velocity_b_ and yaw_rate_.
   Eigen::Vector3d measure(double t, const sim::ConstVectorRef& x);
+  // The MRU's acceleration (surge, sway) BODY at the control origin from the total NED velocity
+  // v_n now and at the last step, at the total heading ψ [rad]; NaN at the first step.
+  Eigen::Vector2d measured_acceleration_b(const Eigen::Vector2d& velocity_n, double psi_rad);
   // The wind force the DP system computes from its wind sensor (BODY) at heading ψ [rad].
   Eigen::Vector3d measured_wind_force_b(double t, const sim::ConstVectorRef& x, double psi_rad);
 
@@ -113,6 +127,10 @@ class DpEstimator {
   double wind_speed_mps_ = 0.0, wind_from_rad_ = 0.0;       // its last reading
   Eigen::Vector3d wind_force_b_ = Eigen::Vector3d::Zero();  // at the last step
   double yaw_rate_ = 0.0;  // the rate gyro's at the last measurement [rad/s]
+  std::optional<control::InertialPosition> inertial_;  // the GNSS bridge, when aided
+  sim::WhiteNoise accel_x_noise_, accel_y_noise_;
+  std::optional<sim::GaussMarkov> accel_bias_[2];  // the MRU's (x, y), when it has one
+  Eigen::Vector2d last_velocity_n_ = Eigen::Vector2d::Constant(core::kMissing);  // total [m/s]
   Eigen::Vector3d wf_velocity_b_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d last_raw_ = Eigen::Vector3d::Zero();  // "raw": the last measured position
   std::variant<std::monostate, control::PassiveObserver, control::EkfObserver> observer_;

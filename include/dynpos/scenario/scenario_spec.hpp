@@ -127,6 +127,10 @@ struct ScenarioSpec {
   /// systems feed the wind forward (file key `observer_wind_feedforward`; dp_estimator.hpp).
   /// Default true; false leaves the wind in the observer's bias estimate (docs/theory.md).
   bool observer_wind_feedforward = true;
+  /// Whether the DP system bridges a GNSS loss by dead reckoning on its MRU's acceleration
+  /// (file key `inertial_position_aid`; control/inertial_position.hpp, dp_estimator.hpp).
+  /// Default true; false leaves the observer to coast on its model through the loss.
+  bool inertial_position_aid = true;
   /// A unit that fails during the run (file keys `failure_at_s`, `failure`).
   std::optional<FailureEvent> failure;
   /// GNSS dropouts ([[gnss_dropout]] with t_s, duration_s), in increasing time.
