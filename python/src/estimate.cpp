@@ -61,20 +61,27 @@ void observer_options(py::class_<Q>& c, Get get) {
 
 // The observer's track in SI, as truth.csv names the true low-frequency motion: lf.north,
 // lf.east [m], lf.heading [rad, 0–2π), lf.u, lf.v [m/s], lf.r [rad/s], bias.north, bias.east [N],
-// bias.yaw [N*m] (b̂ in NED), one row per observer step.
+// bias.yaw [N*m] (b̂ in NED), position.age [s], one row per observer step.
 std::shared_ptr<core::Log> series_si(const control::ObserverTrack& track) {
   auto log = std::make_shared<core::Log>();
   const std::pair<const char*, const char*> columns[] = {
-      {"lf.north", "m"},   {"lf.east", "m"},   {"lf.heading", "rad"},
-      {"lf.u", "m/s"},     {"lf.v", "m/s"},    {"lf.r", "rad/s"},
-      {"bias.north", "N"}, {"bias.east", "N"}, {"bias.yaw", "N*m"}};
+      {"lf.north", "m"},   {"lf.east", "m"},     {"lf.heading", "rad"}, {"lf.u", "m/s"},
+      {"lf.v", "m/s"},     {"lf.r", "rad/s"},    {"bias.north", "N"},   {"bias.east", "N"},
+      {"bias.yaw", "N*m"}, {"position.age", "s"}};
   for (const auto& [name, unit] : columns) log->declare_channel(name, unit);
   log->reserve(track.t_s.size());
   for (std::size_t k = 0; k < track.t_s.size(); ++k) {
     const control::ObserverEstimate& e = track.estimate[k];
-    const std::array<double, 9> row = {e.eta_n.x(),  e.eta_n.y(),  core::wrap_2pi(e.eta_n.z()),
-                                       e.nu_b.x(),   e.nu_b.y(),   e.nu_b.z(),
-                                       e.bias_n.x(), e.bias_n.y(), e.bias_n.z()};
+    const std::array<double, 10> row = {e.eta_n.x(),
+                                        e.eta_n.y(),
+                                        core::wrap_2pi(e.eta_n.z()),
+                                        e.nu_b.x(),
+                                        e.nu_b.y(),
+                                        e.nu_b.z(),
+                                        e.bias_n.x(),
+                                        e.bias_n.y(),
+                                        e.bias_n.z(),
+                                        track.position_age_s.at(k)};
     log->append_row(track.t_s[k], row);
   }
   return log;

@@ -432,6 +432,9 @@ def test_estimate_against_the_truth(dp_run, tmp_path):
     assert np.allclose(csv[:, 0], s.time)
     assert np.allclose(csv[:, 3], np.degrees(s["lf.heading"]), atol=1e-6)
     assert np.allclose(csv[:, 7], s["bias.north"] / 1e3, atol=1e-6)
+    # The fixes' age: 1 Hz GNSS, so at most 1 s, as the JSON's longest.
+    assert np.allclose(csv[:, 10], s["position.age"], atol=1e-6)
+    assert abs(s["position.age"].max() - r.longest_without_position_s) < 1e-9
     frame = r.to_frame()
     assert list(frame.columns[:2]) == ["time", "lf.north"] and len(frame) == r.steps
     # The passive observer runs on the held fix: it never coasts.

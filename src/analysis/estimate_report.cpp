@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -40,6 +41,11 @@ nlohmann::json units_json(const std::vector<scenario::FeedbackChannel>& units) {
   return out;
 }
 
+// The largest position age of the track's estimates [s].
+double longest_without_position_s(const control::ObserverTrack& track) {
+  return *std::max_element(track.position_age_s.begin(), track.position_age_s.end());
+}
+
 std::string measurement_name(const control::ObserverRunOptions& run) {
   return run.holds_measurements() ? "held" : "fresh";
 }
@@ -49,17 +55,23 @@ std::string measurement_name(const control::ObserverRunOptions& run) {
 core::Log estimate_log(const control::ObserverTrack& track) {
   core::Log log;
   const std::pair<const char*, const char*> columns[] = {
-      {"lf.north", "m"},    {"lf.east", "m"},    {"lf.heading", "deg"},
-      {"lf.u", "m/s"},      {"lf.v", "m/s"},     {"lf.r", "deg/s"},
-      {"bias.north", "kN"}, {"bias.east", "kN"}, {"bias.yaw", "kN*m"}};
+      {"lf.north", "m"},    {"lf.east", "m"},     {"lf.heading", "deg"}, {"lf.u", "m/s"},
+      {"lf.v", "m/s"},      {"lf.r", "deg/s"},    {"bias.north", "kN"},  {"bias.east", "kN"},
+      {"bias.yaw", "kN*m"}, {"position.age", "s"}};
   for (const auto& [name, unit] : columns) log.declare_channel(name, unit);
   log.reserve(track.t_s.size());
   for (std::size_t k = 0; k < track.t_s.size(); ++k) {
     const control::ObserverEstimate& e = track.estimate[k];
-    const double row[] = {
-        e.eta_n.x(),         e.eta_n.y(),         core::rad_to_deg(core::wrap_2pi(e.eta_n.z())),
-        e.nu_b.x(),          e.nu_b.y(),          core::rad_to_deg(e.nu_b.z()),
-        e.bias_n.x() * 1e-3, e.bias_n.y() * 1e-3, e.bias_n.z() * 1e-3};
+    const double row[] = {e.eta_n.x(),
+                          e.eta_n.y(),
+                          core::rad_to_deg(core::wrap_2pi(e.eta_n.z())),
+                          e.nu_b.x(),
+                          e.nu_b.y(),
+                          core::rad_to_deg(e.nu_b.z()),
+                          e.bias_n.x() * 1e-3,
+                          e.bias_n.y() * 1e-3,
+                          e.bias_n.z() * 1e-3,
+                          track.position_age_s.at(k)};
     log.append_row(track.t_s[k], row);
   }
   return log;
@@ -90,6 +102,7 @@ nlohmann::json to_json(const EstimateReport& r) {
   doc["position_steps"] = r.track.position_steps;
   doc["coasting_steps"] = r.track.coasting_steps;
   doc["stale_thrust_steps"] = r.track.stale_thrust_steps;
+  doc["longest_without_position_s"] = longest_without_position_s(r.track);
   doc["csv"] = r.csv.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.csv.string());
   doc["bias"] = bias_json(r.bias);
   return doc;
@@ -112,9 +125,9 @@ std::string to_text(const EstimateReport& r) {
   }
   text += fmt::format(
       "\n{:.1f}–{:.1f} s: {} steps, {} with a position, {} coasting, {} on a "
-      "stale thrust\n",
+      "stale thrust; at most {:.1f} s from a position\n",
       r.track.start_s, r.track.t_s.back(), r.track.t_s.size(), r.track.position_steps,
-      r.track.coasting_steps, r.track.stale_thrust_steps);
+      r.track.coasting_steps, r.track.stale_thrust_steps, longest_without_position_s(r.track));
   if (r.bias) {
     const BiasSummary& b = *r.bias;
     text += fmt::format(

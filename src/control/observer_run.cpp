@@ -108,6 +108,7 @@ ObserverTrack run(Observer& observer, InputCursor& cursor, const ObserverInputs&
     observer.step(y, cursor.tau.value, dt);
     track.t_s.push_back(t_next);
     track.estimate.push_back(observer.estimate());
+    track.position_age_s.push_back(t_next - cursor.position.t_s);
     t_prev = t_k;
   }
   if (track.t_s.empty()) {

@@ -108,7 +108,7 @@ std::string TomlTable::string_or(std::string_view key, std::string fallback) con
 bool TomlTable::boolean_or(std::string_view key, bool fallback) const {
   const toml::node* node = table_->get(key);
   if (node == nullptr) return fallback;
-  std::optional<bool> value = node->value<bool>();
+  std::optional<bool> value = node->value_exact<bool>();
   if (!value) throw core::InputError(where(key), "expected true or false");
   return *value;
 }

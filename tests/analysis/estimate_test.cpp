@@ -62,6 +62,7 @@ control::ObserverTrack track_of(const std::vector<Eigen::Vector3d>& bias) {
     e.eta_n = {1.0, 2.0, -0.5};  // a heading below zero: written in [0, 360)
     e.nu_b = {0.1, 0.2, 0.01};
     t.estimate.push_back(e);
+    t.position_age_s.push_back(0.1 * static_cast<double>(k + 1));
   }
   return t;
 }
@@ -81,14 +82,16 @@ TEST(SummariseBias, MeanAndStdFromTheSettledSamples) {
 }
 
 TEST(EstimateLog, TheColumnsInTheirUnits) {
-  const core::Log log = estimate_log(track_of({{1e3, -2e3, 3e4}}));
-  ASSERT_EQ(log.channels().size(), 9u);
+  const core::Log log = estimate_log(track_of({{1e3, -2e3, 3e4}, {0.0, 0.0, 0.0}}));
+  ASSERT_EQ(log.channels().size(), 10u);
   EXPECT_EQ(log.channel("lf.heading").unit, "deg");
   EXPECT_NEAR(log.values("lf.heading")[0], 360.0 - 0.5 * 180.0 / std::numbers::pi, 1e-9);
   EXPECT_NEAR(log.values("lf.r")[0], 0.01 * 180.0 / std::numbers::pi, 1e-12);
   EXPECT_EQ(log.channel("bias.yaw").unit, "kN*m");
   EXPECT_NEAR(log.values("bias.east")[0], -2.0, 1e-12);
   EXPECT_NEAR(log.values("bias.yaw")[0], 30.0, 1e-12);
+  EXPECT_EQ(log.channel("position.age").unit, "s");
+  EXPECT_EQ(log.values("position.age")[1], 0.2);
 }
 
 // Three points of two cases: the summary's smallest margin, fractions and per-case minima.

@@ -11,13 +11,14 @@ map=(--col north=gnss1.north --col east=gnss1.east --col roll=mru1.roll --col pi
 "$exe" estimate "$out/run/log.csv" "${map[@]}" --out "$out/estimate.csv" --json "$out/estimate.json" \
   > "$out/stdout.txt"
 grep -q "ekf observer at 10 Hz, T_p 7 s" "$out/stdout.txt" || { cat "$out/stdout.txt"; exit 1; }
-header='time [s],lf.north [m],lf.east [m],lf.heading [deg],lf.u [m/s],lf.v [m/s],lf.r [deg/s],bias.north [kN],bias.east [kN],bias.yaw [kN*m]'
+header='time [s],lf.north [m],lf.east [m],lf.heading [deg],lf.u [m/s],lf.v [m/s],lf.r [deg/s],bias.north [kN],bias.east [kN],bias.yaw [kN*m],position.age [s]'
 [ "$(head -1 "$out/estimate.csv")" = "$header" ] || { head -1 "$out/estimate.csv"; exit 1; }
 rows=$(($(wc -l < "$out/estimate.csv") - 1))
 jq -e --argjson rows "$rows" '.steps == $rows and .steps == 4000 and .observer == "ekf" and
   .measurement == "fresh" and .position == "north/east" and .attitude == true and
   (.units | map(.name)) == ["port", "stb", "tunnel"] and .bias.from_s == 120 and
-  .coasting_steps == 9 * .position_steps' "$out/estimate.json" > /dev/null \
+  .coasting_steps == 9 * .position_steps and
+  (.longest_without_position_s - 1.0 | fabs) < 1e-6' "$out/estimate.json" > /dev/null \
   || { echo "unexpected summary"; jq -c 'del(.input)' "$out/estimate.json"; exit 1; }
 # The heading 0 hold, weather from the bow: the mean bias within 10 % of the true load's
 # horizontal magnitude in north and east, 15 % in yaw (tests/validation/estimate_test.cpp

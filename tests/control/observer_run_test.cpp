@@ -109,6 +109,14 @@ TEST(ObserverRun, CoastsThroughAGnssDropoutAndHoldsTheThrust) {
   const ObserverTrack track = run_observer(model, in, o);
   EXPECT_EQ(track.coasting_steps, 250u);     // 105–130 s
   EXPECT_EQ(track.stale_thrust_steps, 50u);  // 55–60 s, on the τ of 49.9 s
+  // Each estimate's position age: a step while the 10 Hz fixes come; through the dropout the
+  // time since the fix of 99.9 s, 30.1 s at the estimate of 130 s (the step from 129.9 s).
+  ASSERT_EQ(track.position_age_s.size(), track.t_s.size());
+  for (std::size_t k = 0; k < track.t_s.size(); ++k) {
+    const double t = track.t_s[k];
+    const double expected = t > 100.0 + 1e-6 && t < 130.0 + 1e-6 ? t - 99.9 : 0.1;
+    ASSERT_NEAR(track.position_age_s[k], expected, 1e-9) << "t " << t;
+  }
   for (const ObserverEstimate& e : track.estimate) ASSERT_TRUE(e.eta_n.allFinite());
 }
 

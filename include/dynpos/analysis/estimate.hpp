@@ -105,7 +105,8 @@ std::optional<BiasSummary> summarise_bias(const control::ObserverTrack& track, d
 // The report's adapters: estimate_report.cpp.
 
 /// The time series the CSV holds: lf.north, lf.east [m], lf.heading [deg, 0–360), lf.u, lf.v
-/// [m/s], lf.r [deg/s], bias.north, bias.east [kN] (NED), bias.yaw [kN*m].
+/// [m/s], lf.r [deg/s], bias.north, bias.east [kN] (NED), bias.yaw [kN*m], position.age [s]
+/// (ObserverTrack::position_age_s).
 core::Log estimate_log(const control::ObserverTrack& track);
 
 /// The `estimate --json` document (docs/cli.md).
