@@ -1,14 +1,17 @@
 // One step of the DP observers at the DP loop's 10 Hz: the passive observer (15 states, one RK4
 // step) and the EKF (27 states: three wave components per DOF; a correction on the position,
 // heading and yaw rate, an RK4 step and the covariance's propagation). A 900 s run of the
-// virtual trial takes 9000 of them.
+// virtual trial takes 9000 of them. And the inertial bridge's step (3 states per axis) that
+// the DP system takes before each: with a fix, and dead reckoning without one.
 
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "dynpos/control/ekf_observer.hpp"
+#include "dynpos/control/inertial_position.hpp"
 #include "dynpos/control/passive_observer.hpp"
 
 namespace {
@@ -58,6 +61,24 @@ void BM_EkfObserverStep(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_EkfObserverStep);
+
+// state.range(0): 1 with a fix every step, 0 without (dead reckoning; the bridge is restarted
+// on a fix whenever its σ passes its limit, once in about 650 steps).
+void BM_InertialPositionStep(benchmark::State& state) {
+  dynpos::control::InertialPosition ins;
+  const bool fixes = state.range(0) == 1;
+  long k = 0;
+  for (auto _ : state) {
+    const double t = 0.1 * static_cast<double>(k++);
+    const Eigen::Vector2d accel(-0.32 * std::sin(0.8 * t), -0.26 * std::sin(0.8 * t + 1.0));
+    const Eigen::Vector3d y = measurement(k);
+    const bool fix = fixes || !ins.bridging();
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    benchmark::DoNotOptimize(
+        ins.step(fix ? Eigen::Vector2d(y.head<2>()) : Eigen::Vector2d(nan, nan), accel, 0.1));
+  }
+}
+BENCHMARK(BM_InertialPositionStep)->Arg(1)->Arg(0);
 
 }  // namespace
 

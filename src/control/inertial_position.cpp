@@ -60,8 +60,8 @@ Eigen::Vector2d InertialPosition::step(const Eigen::Vector2d& fix_n, const Eigen
       // The bias learnt so far is kept (it is the sensor's); position and velocity restart.
       x_.row(0) = fix_n.transpose();
       x_.row(1).setZero();
-      const double bias_var = started_ ? P_(2, 2)
-                                       : tuning_.accel_bias_std_mps2 * tuning_.accel_bias_std_mps2;
+      const double bias_var =
+          started_ ? P_(2, 2) : tuning_.accel_bias_std_mps2 * tuning_.accel_bias_std_mps2;
       P_.setZero();
       P_.diagonal() << tuning_.position_std_m * tuning_.position_std_m,
           kInitialVelocityStd * kInitialVelocityStd, bias_var;
@@ -79,6 +79,7 @@ Eigen::Vector2d InertialPosition::step(const Eigen::Vector2d& fix_n, const Eigen
     bridging_ = true;
     return x_.row(0).transpose();
   }
+  valid_ = false;  // the bridge is over: the next fix restarts it (the bias learnt is kept)
   return Eigen::Vector2d::Constant(std::numeric_limits<double>::quiet_NaN());
 }
 

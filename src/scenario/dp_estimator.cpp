@@ -20,6 +20,14 @@ double gnss_std_m(const VesselConfig& vessel) {
   return vessel.sensors.gnss.empty() ? 0.01 : vessel.sensors.gnss.front().horizontal_std_m;
 }
 
+// The white noise of the MRU's acceleration averaged over a control period [m/s²]: its σ per
+// sample at its rate over √(samples per period).
+double accel_std_per_step_mps2(const VesselConfig& vessel, double period_s) {
+  if (vessel.sensors.mru.empty()) return 0.0;
+  const sensors::MruParams& mru = vessel.sensors.mru.front();
+  return mru.accel_std_mps2 / std::sqrt(std::max(1.0, mru.timing.rate_hz * period_s));
+}
+
 double rate_std_rad_s(const VesselConfig& vessel) {
   return vessel.sensors.mru.empty() ? core::deg_to_rad(0.03)
                                     : vessel.sensors.mru.front().rate_std_rad_s;
@@ -77,16 +85,15 @@ DpEstimator::DpEstimator(const ScenarioSpec& spec, const VesselConfig& vessel,
       wind_period_s_(vessel.sensors.wind_speed.timing.enabled()
                          ? 1.0 / vessel.sensors.wind_speed.timing.rate_hz
                          : period_s),
-      accel_x_noise_(vessel.sensors.mru.empty() ? 0.0 : vessel.sensors.mru.front().accel_std_mps2,
-                     sim::Rng(seed, "dp.accel.x")),
-      accel_y_noise_(vessel.sensors.mru.empty() ? 0.0 : vessel.sensors.mru.front().accel_std_mps2,
-                     sim::Rng(seed, "dp.accel.y")),
+      accel_x_noise_(accel_std_per_step_mps2(vessel, period_s), sim::Rng(seed, "dp.accel.x")),
+      accel_y_noise_(accel_std_per_step_mps2(vessel, period_s), sim::Rng(seed, "dp.accel.y")),
       last_raw_(eta0_n) {
   if (spec.inertial_position_aid && !vessel.sensors.mru.empty()) {
-    // The bridge is set to the MRU's and the GNSS receiver's stated noise.
+    // The bridge is set to the MRU's and the GNSS receiver's stated noise (at least 1e-4 m/s²
+    // and 1 mm, for a noise-free sensor's).
     const sensors::MruParams& mru = vessel.sensors.mru.front();
     control::InertialPositionTuning aid;
-    aid.accel_std_mps2 = mru.accel_std_mps2;
+    aid.accel_std_mps2 = std::max(accel_std_per_step_mps2(vessel, period_s), 1e-4);
     aid.accel_bias_std_mps2 = mru.accel_bias_std_mps2;
     aid.accel_bias_time_constant_s = mru.accel_bias_time_constant_s;
     aid.position_std_m = std::max(gnss_std_m(vessel), 1e-3);
@@ -178,7 +185,8 @@ DpMotion DpEstimator::update(double t, const sim::ConstVectorRef& x, const sim::
   const Eigen::Vector3d y = measure(t, x);
   if (kind_ == control::ObserverKind::kRaw) {
     DpMotion raw{y, truth.nu_b + wf_velocity_b_};
-    // Coasts on the last position through a dropout; the heading stays continuous.
+    // The bridged position through a dropout (the bridge is upstream of any wave filter); past
+    // it, or without it, the last position is held. The heading stays continuous.
     raw.eta_n.z() = truth.eta_n.z() + core::wrap_pi(y.z() - truth.eta_n.z());
     if (std::isnan(y.x())) raw.eta_n.head<2>() = last_raw_.head<2>();
     last_raw_ = raw.eta_n;
@@ -204,6 +212,8 @@ DpMotion DpEstimator::update(double t, const sim::ConstVectorRef& x, const sim::
       },
       observer_);
 }
+
+bool DpEstimator::position_bridged() const noexcept { return inertial_ && inertial_->bridging(); }
 
 std::optional<control::ObserverEstimate> DpEstimator::estimate() const {
   std::optional<control::ObserverEstimate> e;

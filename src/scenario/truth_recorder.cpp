@@ -59,6 +59,8 @@ std::vector<sim::RecordedSignal> TruthRecorder::observer_signals() {
                                 [this, k] { return sample_->env_load_n[k]; }));
   }
   if (!estimator->estimate()) return out;  // ideal or raw: no observer
+  out.push_back(truth_channel("observer.bridged", "1",
+                              [estimator] { return estimator->position_bridged() ? 1.0 : 0.0; }));
   const auto estimate = [estimator] { return *estimator->estimate(); };
   out.push_back(truth_channel("observer.north", "m", [=] { return estimate().eta_n.x(); }));
   out.push_back(truth_channel("observer.east", "m", [=] { return estimate().eta_n.y(); }));

@@ -285,9 +285,11 @@ void heading_error_rms(const Trial& at45_all) {
 // of 2 m: two thirds of a 3 m footprint, where a DP operator would have to act.
 // - With the inertial bridge (the default, control/inertial_position.hpp: dead reckoning on the
 //   MRU's acceleration fills the missing fixes) the observer goes on filtering: measured worst
-//   passive 0.74 m, EKF 0.75 m.
+//   passive 0.29 m, EKF 0.30 m.
 // - The same with the MRU's accelerometer bias on (σ 2e-3 m/s², 600 s; the bridge learns it from
-//   the fixes): 1.17 m and 1.20 m.
+//   the fixes): 0.70 m and 0.72 m.
+//   Both hold the 2 m bound; they are guarded at 0.4 m and 1.0 m (about a third above the
+//   measured worst), so that the bridge does not get worse unseen.
 // - Coasting on its model alone (inertial_position_aid = false; heading and thrust still
 //   measured) it holds a load of the last wave period while the load goes on changing: worst
 //   passive 2.45 m, EKF 2.59 m, over the 2 m bound, which holding even the true mean load of
@@ -304,8 +306,8 @@ TEST(ObserverDropout, CoastsThroughThirtySecondsWithoutGnss) {
     bool aided;
     double bound_m;
   };
-  const std::vector<Mode> modes = {{"inertial bridge", &vessel, true, 2.0},
-                                   {"inertial bridge, MRU bias", &biased, true, 2.0},
+  const std::vector<Mode> modes = {{"inertial bridge", &vessel, true, 0.4},
+                                   {"inertial bridge, MRU bias", &biased, true, 1.0},
                                    {"coasting on the model", &vessel, false, 2.75}};
   const std::vector<ObserverKind> kinds = {ObserverKind::kPassive, ObserverKind::kEkf};
   const std::size_t runs = kinds.size() * kSeeds;

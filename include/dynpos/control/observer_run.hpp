@@ -68,9 +68,9 @@ struct ObserverTrack {
   double start_s = 0.0;                    ///< t₀ (the initial estimate, at rest)
   std::vector<double> t_s;                 ///< t₁, t₂, … [s]
   std::vector<ObserverEstimate> estimate;  ///< the estimate at each t_s
-  /// At each t_s, how old the newest position sample the estimate has seen is [s]: a step
-  /// interval or a fix's interval while fixes come; through a dropout, how long the observer has
-  /// coasted on its model since the last one.
+  /// At each t_s, the time since the newest position sample the estimate has seen [s]: a step
+  /// or a fix interval while fixes come; through a dropout it grows, the observer coasting on
+  /// its model once the sample is older than max_hold_s (held) or one step (fresh).
   std::vector<double> position_age_s;
   std::size_t position_steps = 0;      ///< steps with a position measurement
   std::size_t coasting_steps = 0;      ///< steps without one

@@ -21,10 +21,15 @@
 /// With ScenarioSpec::inertial_position_aid and an MRU on the vessel, the DP system bridges a
 /// GNSS loss on the horizontal acceleration of the control origin its first MRU measures (moved
 /// to the control origin and levelled): the true LF plus WF acceleration (the change of the
-/// total velocity over the control period) with the MRU's white noise (accel_std_mps2) and
-/// Gauss–Markov bias (accel_bias_std_mps2, accel_bias_time_constant_s), in BODY axes and turned
-/// into NED by the measured heading; the bridge is tuned to those values and the GNSS's noise. Its
-/// position fills the missing fix (control/inertial_position.hpp) for as long as the bridge holds.
+/// total velocity over the control period) with the MRU's white noise (accel_std_mps2 per
+/// sample at its rate, so σ/√(rate·period) over a control period, as the DP system averages its
+/// samples) and Gauss–Markov bias (accel_bias_std_mps2, accel_bias_time_constant_s), in BODY
+/// axes and turned into NED by the measured heading; the bridge is tuned to those values and
+/// the GNSS's noise. Its position fills the missing fix (control/inertial_position.hpp) for as
+/// long as the bridge holds, for the observers and for "raw" alike: the bridge is part of the
+/// position reference, upstream of any wave filter. The MRU's levelling error
+/// (angle_bias_std_rad, a gravity leak g·δθ) is not simulated here; the bridge's bias would take
+/// it.
 ///
 /// "ideal" hands the controller the true low-frequency motion; "raw" the measurement itself with
 /// the measured velocity (low- plus wave-frequency), as a DP system without a wave filter would.
@@ -101,6 +106,8 @@ class DpEstimator {
   control::ObserverKind kind() const noexcept { return kind_; }
   /// The observer's estimate; nullopt for "ideal" and "raw".
   std::optional<control::ObserverEstimate> estimate() const;
+  /// Whether the last step's position was the inertial bridge's (a fix missing).
+  bool position_bridged() const noexcept;
 
  private:
   // The measurement y = (N, E, ψ) at t; position NaN during a GNSS dropout unless bridged.
