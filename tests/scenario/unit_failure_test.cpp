@@ -193,6 +193,15 @@ TEST(ScenarioEvents, ADropoutLeavesTheLoggedFixesMissingAndTheObserverCoasts) {
     if (truth.time()[i] > 30.0) {
       EXPECT_LT(e, 2.0) << "t = " << truth.time()[i];
     }
+    // The DP system's position is the inertial bridge's through the dropout, the fix outside
+    // (the log's 0.1 s rows clear of the edges).
+    const double ti = truth.time()[i];
+    const double bridged = truth.values("observer.bridged")[i];
+    if (ti > 60.05 && ti < 89.95) {
+      EXPECT_EQ(bridged, 1.0) << ti;
+    } else if (ti < 59.95 || ti > 90.05) {
+      EXPECT_EQ(bridged, 0.0) << ti;
+    }
   }
 }
 
