@@ -39,6 +39,12 @@ void EstimateCliOptions::add(CLI::App& sub) {
   sub.add_option("--settle", r.settle_s,
                  "The summary's mean bias leaves out this long after the observer starts [s]")
       ->capture_default_str();
+  sub.add_option("--mru", r.mru,
+                 "Bridge a GNSS gap longer than --max-hold on this MRU's logged acceleration "
+                 "(mruK.ax/ay/az, with roll and pitch; lever arm and noise from the vessel file): "
+                 "auto (the first the log has), none, or its name")
+      ->type_name("NAME")
+      ->capture_default_str();
   sub.add_option("--from", r.t_from_s, "Analyse from this time [s]");
   sub.add_option("--to", r.t_to_s, "Analyse up to this time [s]");
 }

@@ -445,7 +445,8 @@ def estimate(log, col=None, unit=None, map=None, *, json=None, out=None,
     Z); per unit of the vessel ``thrust.NAME`` and its ``rudder.NAME`` or ``azimuth.NAME``.
     Options as ``dynpos estimate``: ``vessel`` (file), ``arm`` ((X, Y) or (X, Y, Z) [m]),
     ``observer`` ("ekf", "passive"), ``tp`` [s] (the wave peak period the wave model is set
-    for), ``rate`` [Hz], ``max_hold``, ``settle``, ``from_``, ``to`` [s]; ``out`` (the series'
+    for), ``rate`` [Hz], ``max_hold``, ``settle``, ``from_``, ``to`` [s], ``mru`` (the MRU a
+    GNSS gap is bridged on: "auto", "none" or its name); ``out`` (the series'
     CSV as the CLI writes it: deg, kN)."""
     q = _request(_dynpos.EstimateRequest, log, col, unit, map, options)
     doc, series = _dynpos.run_estimate(q, _path(json), _path(out, "out"))

@@ -49,6 +49,9 @@ void observer_options(py::class_<Q>& c, Get get) {
           "max_hold", [get](const Q& q) { return get(q).max_hold_s; },
           [get](Q& q, double v) { get(q).max_hold_s = v; })
       .def_property(
+          "mru", [get](const Q& q) { return get(q).mru; },
+          [get](Q& q, const std::string& name) { get(q).mru = name; })
+      .def_property(
           "settle", [get](const Q& q) { return get(q).settle_s; },
           [get](Q& q, double v) { get(q).settle_s = v; })
       .def_property(

@@ -435,6 +435,9 @@ def test_estimate_against_the_truth(dp_run, tmp_path):
     # The fixes' age: 1 Hz GNSS, so at most 1 s, as the JSON's longest.
     assert np.allclose(csv[:, 10], s["position.age"], atol=1e-6)
     assert abs(s["position.age"].max() - r.longest_without_position_s) < 1e-9
+    # The logged MRU stands by for a GNSS gap (none in this log); mru="none" leaves it out.
+    assert r.bridge["mru"] == "mru1" and r.bridge["rows"] == 0
+    assert dynpos.estimate(log, col=DP_COL, arm=arm, tp=7, mru="none").bridge is None
     frame = r.to_frame()
     assert list(frame.columns[:2]) == ["time", "lf.north"] and len(frame) == r.steps
     # The passive observer runs on the held fix: it never coasts.

@@ -9,11 +9,13 @@
 
 #include "dynpos/analysis/control_origin_track.hpp"
 #include "dynpos/analysis/data_dir.hpp"
+#include "dynpos/analysis/inertial_bridge.hpp"
 #include "dynpos/analysis/options.hpp"
 #include "dynpos/model/hull.hpp"
 #include "dynpos/model/sea_state.hpp"
 #include "dynpos/scenario/dp_estimator.hpp"
 #include "dynpos/scenario/vessel_config.hpp"
+#include "leverarm_mru_roles.hpp"
 
 namespace dynpos::analysis {
 namespace {
@@ -25,7 +27,7 @@ bool wanted_role(const std::string& role) {
   for (const char* prefix : {"thrust.", "rudder.", "azimuth."}) {
     if (role.rfind(prefix, 0) == 0) return true;
   }
-  return false;
+  return detail::is_mru_accel_role(role);
 }
 
 bool has_valid_sample(const std::vector<double>& x) {
@@ -96,6 +98,74 @@ void thrust_series(const EstimateRequest& q, const core::Log& log,
   }
 }
 
+// Whether the log has `role` with a valid sample.
+bool has_channel(const core::Log& log, const std::string& role) {
+  return log.has(role) && has_valid_sample(log.values(role));
+}
+
+// The first of NAME.ax, .ay, .az without a valid sample in the log; empty: none.
+std::string missing_accel(const core::Log& log, const std::string& name) {
+  for (const char* axis : {".ax", ".ay", ".az"}) {
+    if (!has_channel(log, name + axis)) return name + axis;
+  }
+  return "";
+}
+
+// The vessel's MRU the request bridges on, or none (EstimateRequest::mru).
+const sensors::MruParams* bridge_mru(const EstimateRequest& q, const core::Log& log,
+                                     const scenario::VesselConfig& vessel) {
+  if (q.mru == "none") return nullptr;
+  const bool attitude = has_channel(log, "roll") && has_channel(log, "pitch");
+  const std::vector<sensors::MruParams>& mrus = vessel.sensors.mru;
+  if (q.mru == "auto") {
+    if (!attitude) return nullptr;
+    const auto it = std::find_if(mrus.begin(), mrus.end(), [&](const sensors::MruParams& m) {
+      return missing_accel(log, m.name).empty();
+    });
+    return it == mrus.end() ? nullptr : &*it;
+  }
+  const auto it = std::find_if(mrus.begin(), mrus.end(),
+                               [&](const sensors::MruParams& m) { return m.name == q.mru; });
+  if (it == mrus.end()) {
+    throw option_error("mru", "the vessel " + vessel.name + " has no MRU '" + q.mru + "'",
+                       "auto, none, or the name of one of its [mruK] tables");
+  }
+  if (const std::string role = missing_accel(log, it->name); !role.empty()) {
+    throw q.source.error(role, "no " + role + " with a valid sample in the log for the bridge",
+                         "map it (--col " + role + "=COLUMN), or --mru none");
+  }
+  if (!attitude) {
+    throw q.source.error("roll/pitch", "the bridge on " + it->name + " needs roll and pitch",
+                         "map roll and pitch (e.g. --col roll=" + it->name +
+                             ".roll --col pitch=" + it->name + ".pitch), or --mru none");
+  }
+  return &*it;
+}
+
+// The control origin's fixes with the GNSS gaps bridged on `mru` (inertial_bridge.hpp).
+BridgedTrack bridged_track(const EstimateRequest& q, const core::Log& log,
+                           const scenario::VesselConfig& vessel, const sensors::MruParams& mru,
+                           const ControlOriginTrack& co) {
+  BridgeSeries s;
+  s.t_s = log.time();
+  s.north_m = co.north_m;
+  s.east_m = co.east_m;
+  s.heading_rad = co.heading_rad;
+  s.roll_rad = log.values("roll");
+  s.pitch_rad = log.values("pitch");
+  const auto &ax = log.values(mru.name + ".ax"), &ay = log.values(mru.name + ".ay"),
+             &az = log.values(mru.name + ".az");
+  s.accel_b.resize(log.size());
+  for (std::size_t i = 0; i < log.size(); ++i) s.accel_b[i] = {ax[i], ay[i], az[i]};
+  control::InertialPositionTuning tuning;
+  tuning.accel_std_mps2 = std::max(mru.accel_std_mps2, 1e-4);  // per logged sample
+  tuning.accel_bias_std_mps2 = mru.accel_bias_std_mps2;
+  tuning.accel_bias_time_constant_s = mru.accel_bias_time_constant_s;
+  tuning.position_std_m = std::max(
+      vessel.sensors.gnss.empty() ? 0.01 : vessel.sensors.gnss.front().horizontal_std_m, 1e-3);
+  return bridge_gnss_gaps(s, mru.lever_arm_b, tuning, q.max_hold_s);
+}
+
 // The observer's model for the vessel and the operator's T_p.
 control::ObserverModel observer_model(const scenario::VesselConfig& vessel, double tp_s) {
   model::SeaStateParams sea;
@@ -134,6 +204,9 @@ void EstimateRequest::validate() const {
   if (!(std::isfinite(max_hold_s) && max_hold_s > 0.0)) {
     throw option_error("max_hold",
                        fmt::format("the longest hold must be > 0 s, got {}", max_hold_s), "e.g. 5");
+  }
+  if (mru.empty()) {
+    throw option_error("mru", "no MRU named", "auto, none, or the name of a vessel's [mruK]");
   }
   if (!(std::isfinite(settle_s) && settle_s >= 0.0)) {
     throw option_error("settle", fmt::format("the settling time must be ≥ 0 s, got {}", settle_s),
@@ -198,6 +271,15 @@ EstimateReport run_estimate(const EstimateRequest& q) {
   }
   r.position = co.position;
   r.attitude = co.attitude;
+  if (const sensors::MruParams* mru = bridge_mru(q, log, vessel)) {
+    BridgedTrack bridged = bridged_track(q, log, vessel, *mru, co);
+    r.bridge_mru = mru->name;
+    r.bridge_arm_m = mru->lever_arm_b;
+    r.bridged_rows = bridged.bridged_rows;
+    r.longest_gap_bridged_s = bridged.longest_gap_bridged_s;
+    co.north_m = std::move(bridged.north_m);
+    co.east_m = std::move(bridged.east_m);
+  }
   control::ObserverInputs in;
   thrust_series(q, log, feedback, vessel.name, in);
   in.t_s = log.time();

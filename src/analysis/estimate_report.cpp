@@ -103,6 +103,11 @@ nlohmann::json to_json(const EstimateReport& r) {
   doc["coasting_steps"] = r.track.coasting_steps;
   doc["stale_thrust_steps"] = r.track.stale_thrust_steps;
   doc["longest_without_position_s"] = longest_without_position_s(r.track);
+  doc["bridge"] = r.bridge_mru.empty() ? nlohmann::json(nullptr)
+                                       : nlohmann::json{{"mru", r.bridge_mru},
+                                                        {"arm_m", vec3_json(r.bridge_arm_m)},
+                                                        {"rows", r.bridged_rows},
+                                                        {"longest_gap_s", r.longest_gap_bridged_s}};
   doc["csv"] = r.csv.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.csv.string());
   doc["bias"] = bias_json(r.bias);
   return doc;
@@ -128,6 +133,13 @@ std::string to_text(const EstimateReport& r) {
       "stale thrust; at most {:.1f} s from a position\n",
       r.track.start_s, r.track.t_s.back(), r.track.t_s.size(), r.track.position_steps,
       r.track.coasting_steps, r.track.stale_thrust_steps, longest_without_position_s(r.track));
+  if (!r.bridge_mru.empty()) {
+    text += fmt::format(
+        "GNSS gaps over {:g} s bridged on {} (arm {:g}, {:g}, {:g} m): {} rows, the longest gap "
+        "{:.1f} s\n",
+        r.run.max_hold_s, r.bridge_mru, r.bridge_arm_m.x(), r.bridge_arm_m.y(), r.bridge_arm_m.z(),
+        r.bridged_rows, r.longest_gap_bridged_s);
+  }
   if (r.bias) {
     const BiasSummary& b = *r.bias;
     text += fmt::format(

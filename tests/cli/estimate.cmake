@@ -16,3 +16,13 @@ dynpos_cli_test(estimate_raw_observer
 dynpos_cli_test(estimate_bad_tp
   COMMAND bash ${EXPECT_EXIT} 2 "\\(--tp\\): the wave peak period must be from 2 to 20 s, got 30"
           ${DYNPOS_EXE} estimate ${CMAKE_CURRENT_SOURCE_DIR}/short_steps.csv --tp 30)
+dynpos_cli_test(estimate_unknown_mru
+  COMMAND bash ${EXPECT_EXIT} 2 "\\(--mru\\): the vessel .* has no MRU 'mru9'"
+          ${DYNPOS_EXE} estimate ${CMAKE_CURRENT_SOURCE_DIR}/short_steps.csv
+          --col north=response --col east=response --col heading=cmd --unit heading=rad
+          --mru mru9)
+dynpos_cli_test(estimate_mru_without_channels
+  COMMAND bash ${EXPECT_EXIT} 2 "short_steps.csv \\(mru1.ax\\).*no mru1.ax with a valid sample in the log for the bridge.*--mru none"
+          ${DYNPOS_EXE} estimate ${CMAKE_CURRENT_SOURCE_DIR}/short_steps.csv
+          --col north=response --col east=response --col heading=cmd --unit heading=rad
+          --mru mru1)

@@ -9,7 +9,9 @@
 /// (BODY) of each unit's feedback through the vessel's actuator models
 /// (scenario/thrust_feedback.hpp). The observer's model: M and D of the vessel's DP controller and
 /// the wave model at the peaks of the vessel's wave-frequency motion in a sea of the peak period
-/// T_p the operator enters (scenario/dp_estimator.hpp observer_model).
+/// T_p the operator enters (scenario/dp_estimator.hpp observer_model). A GNSS gap longer than
+/// max_hold_s is bridged on a logged MRU (inertial_bridge.hpp), as the DP system's inertial
+/// bridge does in the loop.
 ///
 /// estimate.cpp (request, validate, run); estimate_report.cpp (JSON, text, CSV, outputs).
 
@@ -33,7 +35,8 @@ namespace dynpos::analysis {
 /// The options of the analysis; request keys in parentheses (analysis/options.hpp).
 struct EstimateRequest {
   /// time; north, east [m, any offset] or lat, lon; heading; roll, pitch (with an arm's
-  /// height); per unit of the vessel thrust.NAME and its angle rudder.NAME or azimuth.NAME.
+  /// height, and for the bridge); per unit of the vessel thrust.NAME and its angle rudder.NAME
+  /// or azimuth.NAME; mruK.ax, ay, az (the bridge).
   LogSource source;
   std::filesystem::path vessel;  ///< vessel file (vessel); empty: the built-in Gunnerus
   /// Lever arm (x forward, y starboard, z down; BODY) [m] of the antenna whose position is
@@ -51,6 +54,11 @@ struct EstimateRequest {
   /// zero (the EKF follows a change in about 30 s; the passive observer's slow pole has a time
   /// constant of 20–26 s on a T_p of 8 s, passive_observer.hpp).
   double settle_s = 120.0;
+  /// The MRU a GNSS gap longer than max_hold_s is bridged on (mru; inertial_bridge.hpp):
+  /// "auto" (the first of the vessel's MRUs whose mruK.ax/ay/az the log has, with roll and
+  /// pitch mapped; none: no bridge), "none", or a vessel MRU's name (its channels, roll and
+  /// pitch required). Its lever arm and noise are the vessel file's.
+  std::string mru = "auto";
   /// Analyse from / up to this log time [s] (from, to): only these rows are read.
   std::optional<double> t_from_s;
   std::optional<double> t_to_s;
@@ -88,6 +96,12 @@ struct EstimateReport {
   Eigen::Vector3d wave_peak_frequency_rad_s = Eigen::Vector3d::Zero();  ///< ω₀ (N, E, ψ)
   control::ObserverRunOptions run;  ///< rate, hold and whether the measurement is held
   double settle_s = 120.0;
+  /// The MRU GNSS gaps were bridged on (empty: none), its lever arm (BODY) [m], the rows given
+  /// the bridge's position and the longest gap bridged [s].
+  std::string bridge_mru;
+  Eigen::Vector3d bridge_arm_m = Eigen::Vector3d::Zero();
+  std::size_t bridged_rows = 0;
+  double longest_gap_bridged_s = 0.0;
   control::ObserverTrack track;
   std::optional<BiasSummary> bias;  ///< none when the log ends within the settling time
   std::filesystem::path csv;        ///< where write_outputs() writes the series (the out)
