@@ -159,11 +159,33 @@ BridgedTrack bridged_track(const EstimateRequest& q, const core::Log& log,
   for (std::size_t i = 0; i < log.size(); ++i) s.accel_b[i] = {ax[i], ay[i], az[i]};
   control::InertialPositionTuning tuning;
   tuning.accel_std_mps2 = std::max(mru.accel_std_mps2, 1e-4);  // per logged sample
-  tuning.accel_bias_std_mps2 = mru.accel_bias_std_mps2;
+  // At least the class's 2e-3 m/s²: the logged attitude's error leaks gravity into the
+  // levelled reading (0.01°: 1.7e-3 m/s²), for the filter to learn from the fixes.
+  tuning.accel_bias_std_mps2 =
+      std::max(mru.accel_bias_std_mps2, control::InertialPositionTuning{}.accel_bias_std_mps2);
   tuning.accel_bias_time_constant_s = mru.accel_bias_time_constant_s;
   tuning.position_std_m = std::max(
       vessel.sensors.gnss.empty() ? 0.01 : vessel.sensors.gnss.front().horizontal_std_m, 1e-3);
-  return bridge_gnss_gaps(s, mru.lever_arm_b, tuning, q.max_hold_s);
+  BridgedTrack bridged = bridge_gnss_gaps(s, mru.lever_arm_b, tuning, q.max_hold_s);
+  // A vessel's mean acceleration over a log is ≈ 0 (5 m/s gained in 10 min: 0.008 m/s²); the
+  // levelled reading's far above it when roll and pitch do not fit it (a wrong unit, another
+  // sensor's angles, a reading already levelled), and a bridge on it would drift by metres.
+  // Downwards the mean is 0 (kinematic) or −g (specific force) within the heave's; 0.5 m/s² is
+  // an attitude some 4° off on average.
+  constexpr double kLargestMeanAccel_mps2 = 0.05, kLargestDownOffset_mps2 = 0.5;
+  const double down = bridged.mean_down_accel_mps2;
+  if (bridged.mean_horizontal_accel_mps2 > kLargestMeanAccel_mps2 ||
+      std::min(std::abs(down), std::abs(down + 9.81)) > kLargestDownOffset_mps2) {
+    throw q.source.error(
+        "roll/pitch",
+        fmt::format("{}'s acceleration turned by the logged roll, pitch and heading averages "
+                    "{:.3f} m/s² horizontally and {:.2f} m/s² down over the log (a vessel's: "
+                    "about 0, and 0 or -9.81): the attitude does not fit the readings",
+                    mru.name, bridged.mean_horizontal_accel_mps2, down),
+        "map the MRU's own roll and pitch in their units (e.g. --col roll=" + mru.name +
+            ".roll --col pitch=" + mru.name + ".pitch), or --mru none");
+  }
+  return bridged;
 }
 
 // The observer's model for the vessel and the operator's T_p.

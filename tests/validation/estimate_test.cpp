@@ -25,6 +25,7 @@
 #include "../source_dir.hpp"
 #include "dynpos/analysis/estimate.hpp"
 #include "dynpos/core/angle.hpp"
+#include "dynpos/core/error.hpp"
 #include "dynpos/io/csv_reader.hpp"
 #include "dynpos/model/rudder.hpp"
 #include "dynpos/model/thruster.hpp"
@@ -225,7 +226,7 @@ TEST(EstimateValidation, TheObserverCorrectsOnEachFixOrHoldsIt) {
 // bridged on the logged MRU (the default --mru auto: mru1's 10 Hz samples, its lever arm and
 // noise from the vessel file) against coasting on its model (--mru none). The LF position error
 // at the last estimate before the fix returns, against truth.csv's lf.*: measured bridged
-// 0.16 m (EKF) and 0.11 m (passive), coasting 0.91 m and 1.25 m. Bound 0.4 m, the DP loop's
+// 0.15 m (EKF) and 0.10 m (passive), coasting 0.91 m and 1.25 m. Bound 0.4 m, the DP loop's
 // guard for its bridge (observer_test.cpp: 0.29–0.30 m worst of 20 seeds at 45° in H_s 2.5 m),
 // and at most half the coast's error.
 TEST(EstimateValidation, AGnssDropoutIsBridgedOnTheLoggedMru) {
@@ -257,7 +258,7 @@ TEST(EstimateValidation, AGnssDropoutIsBridgedOnTheLoggedMru) {
     q.mru = "none";
     const analysis::EstimateReport coasting = analysis::run_estimate(q);
     EXPECT_EQ(bridged.bridge_mru, "mru1");
-    EXPECT_EQ(bridged.bridged_rows, 259u);  // 254.1 … 279.9 s: past the 5 s hold after 249 s
+    EXPECT_EQ(bridged.bridged_rows, 309u);  // 249.1 … 279.9 s: the gap is over the 5 s hold
     EXPECT_TRUE(coasting.bridge_mru.empty());
     const double e_bridged = lf_error_m(bridged), e_coasting = lf_error_m(coasting);
     EXPECT_LE(e_bridged, 0.4) << observer;
@@ -266,6 +267,37 @@ TEST(EstimateValidation, AGnssDropoutIsBridgedOnTheLoggedMru) {
         "%s: LF position error at the end of a 30 s GNSS dropout in the log: bridged "
         "%.2f m, coasting %.2f m\n",
         observer.c_str(), e_bridged, e_coasting);
+  }
+}
+
+// The bridge refuses readings the logged attitude does not fit: an MRU logging specific force
+// with another channel mapped as its roll (here the heading, 45°) turns gravity off the down
+// axis, and a bridge on it would drift by metres. An input error naming roll/pitch (exit 2).
+TEST(EstimateValidation, TheBridgeRefusesAnAttitudeThatDoesNotFitTheReadings) {
+  scenario::VesselConfig v = vessel();
+  v.sensors.mru_acceleration = sensors::AccelerationConvention::kSpecificForce;
+  scenario::ScenarioSpec spec = pure_dp();
+  spec.set_duration(200.0);
+  spec.initial_heading_deg = 45.0;
+  spec.setpoints = {{0.0, 0.0, 0.0, 45.0, "hold"}};
+  const auto dir = std::filesystem::temp_directory_path() / "dynpos_estimate_validation_sf";
+  scenario::write_scenario_run(scenario::run_scenario(spec, v, 1), dir);
+  analysis::EstimateRequest q;
+  q.source.log = dir / "log.csv";
+  q.source.columns = {"north=gnss1.north", "east=gnss1.east", "roll=mru1.roll", "pitch=mru1.pitch"};
+  q.arm_m = v.sensors.gnss.front().lever_arm_b;
+  q.tp_s = spec.environment.tp_s;
+  const analysis::EstimateReport ok = analysis::run_estimate(q);  // the right unit: bridged
+  EXPECT_EQ(ok.bridge_mru, "mru1");
+  q.source.columns = {"north=gnss1.north", "east=gnss1.east", "heading=heading", "roll=heading",
+                      "pitch=mru1.pitch"};
+  try {
+    analysis::run_estimate(q);
+    ADD_FAILURE() << "no error";
+  } catch (const core::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("the attitude does not fit the readings"),
+              std::string::npos)
+        << e.what();
   }
 }
 
