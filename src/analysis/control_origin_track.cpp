@@ -3,16 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "dynpos/core/samples.hpp"
 #include "dynpos/ident/control_origin.hpp"
 
 namespace dynpos::analysis {
-namespace {
-
-bool has_valid_sample(const std::vector<double>& x) {
-  return std::any_of(x.begin(), x.end(), [](double v) { return !std::isnan(v); });
-}
-
-}  // namespace
 
 ControlOriginTrack control_origin_track(const LogSource& source, const core::Log& log,
                                         const std::optional<Eigen::Vector3d>& arm_m) {
@@ -27,7 +21,7 @@ ControlOriginTrack control_origin_track(const LogSource& source, const core::Log
   track.north_m = std::move(p->north_m);
   track.east_m = std::move(p->east_m);
   track.heading_rad = values_or_empty(log, "heading");
-  track.has_heading = has_valid_sample(track.heading_rad);
+  track.has_heading = core::has_valid_sample(track.heading_rad);
   if (!arm_m) return track;
   if (!track.has_heading) {
     throw source.error("heading", "the lever arm (--arm) needs the heading",
@@ -35,7 +29,7 @@ ControlOriginTrack control_origin_track(const LogSource& source, const core::Log
   }
   const Eigen::Vector3d& arm = *arm_m;
   std::vector<double> roll = values_or_empty(log, "roll"), pitch = values_or_empty(log, "pitch");
-  track.attitude = has_valid_sample(roll) && has_valid_sample(pitch);
+  track.attitude = core::has_valid_sample(roll) && core::has_valid_sample(pitch);
   if (arm.z() != 0.0 && !track.attitude) {
     throw source.error("roll/pitch", "the arm's height (--arm X,Y,Z) needs roll and pitch",
                        "map roll and pitch (e.g. --col roll=mru1.roll --col "

@@ -11,6 +11,7 @@
 #include "dynpos/analysis/data_dir.hpp"
 #include "dynpos/analysis/inertial_bridge.hpp"
 #include "dynpos/analysis/options.hpp"
+#include "dynpos/core/samples.hpp"
 #include "dynpos/model/hull.hpp"
 #include "dynpos/model/sea_state.hpp"
 #include "dynpos/scenario/dp_estimator.hpp"
@@ -20,25 +21,30 @@
 namespace dynpos::analysis {
 namespace {
 
-bool wanted_role(const std::string& role) {
-  for (const char* r : {"north", "east", "lat", "lon", "heading", "roll", "pitch"}) {
-    if (role == r) return true;
-  }
-  for (const char* prefix : {"thrust.", "rudder.", "azimuth."}) {
-    if (role.rfind(prefix, 0) == 0) return true;
-  }
-  return detail::is_mru_accel_role(role);
+// The roles estimate reads; of the MRUs' accelerations only the bridge's (every MRU's for
+// "auto", none for "none": EstimateRequest::mru).
+RoleFilter wanted_roles(const std::string& mru) {
+  return [mru](const std::string& role) {
+    for (const char* r : {"north", "east", "lat", "lon", "heading", "roll", "pitch"}) {
+      if (role == r) return true;
+    }
+    for (const char* prefix : {"thrust.", "rudder.", "azimuth."}) {
+      if (role.rfind(prefix, 0) == 0) return true;
+    }
+    return detail::is_mru_accel_role(role) && (mru == "auto" || role.rfind(mru + ".", 0) == 0);
+  };
 }
 
-bool has_valid_sample(const std::vector<double>& x) {
-  return std::any_of(x.begin(), x.end(), [](double v) { return !std::isnan(v); });
+// Whether the log has `role` with a valid sample.
+bool has_channel(const core::Log& log, const std::string& role) {
+  return log.has(role) && core::has_valid_sample(log.values(role));
 }
 
 // The channel of `role`, required with a valid sample: else an error naming the role.
 const std::vector<double>& required(const EstimateRequest& q, const core::Log& log,
                                     const std::string& role, const std::string& unit_name,
                                     const std::string& vessel) {
-  if (log.has(role) && has_valid_sample(log.values(role))) return log.values(role);
+  if (has_channel(log, role)) return log.values(role);
   throw q.source.error(
       role,
       fmt::format("no {} of unit '{}' of {} ({}) with a valid sample in the log",
@@ -48,37 +54,21 @@ const std::vector<double>& required(const EstimateRequest& q, const core::Log& l
                   role));
 }
 
-// A channel held: each row's last valid value at or before it while at most max_hold_s old
-// (else NaN), and that value's time.
-struct HeldChannel {
-  std::vector<double> value, sampled_s;
-};
-
-HeldChannel held(const std::vector<double>& t_s, const std::vector<double>& x, double max_hold_s) {
-  HeldChannel out{std::vector<double>(x.size(), core::kMissing),
-                  std::vector<double>(x.size(), core::kMissing)};
-  double last_t = -std::numeric_limits<double>::infinity(), last = core::kMissing;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    if (!std::isnan(x[i])) last_t = t_s[i], last = x[i];
-    if (t_s[i] - last_t <= max_hold_s) out.value[i] = last, out.sampled_s[i] = last_t;
-  }
-  return out;
-}
-
 // τ_b at each row from every unit's thrust and angle held (observer_run.hpp's hold); NaN where
 // one of them is missing. Into `in`, with the time of each row's oldest sample.
 void thrust_series(const EstimateRequest& q, const core::Log& log,
                    const scenario::ThrustFeedback& feedback, const std::string& vessel,
                    control::ObserverInputs& in) {
   const std::size_t n_units = feedback.channels().size();
-  std::vector<HeldChannel> thrust, angle;
+  std::vector<core::HeldSamples> thrust, angle;
   for (const scenario::FeedbackChannel& c : feedback.channels()) {
-    thrust.push_back(
-        held(log.time(), required(q, log, c.thrust_role, c.unit, vessel), q.max_hold_s));
-    angle.push_back(
-        c.angle_role.empty()
-            ? HeldChannel{std::vector<double>(log.size(), 0.0), log.time()}
-            : held(log.time(), required(q, log, c.angle_role, c.unit, vessel), q.max_hold_s));
+    thrust.push_back(core::hold_samples(log.time(), required(q, log, c.thrust_role, c.unit, vessel),
+                                        q.max_hold_s));
+    angle.push_back(c.angle_role.empty()
+                        ? core::HeldSamples{std::vector<double>(log.size(), 0.0), log.time()}
+                        : core::hold_samples(log.time(),
+                                             required(q, log, c.angle_role, c.unit, vessel),
+                                             q.max_hold_s));
   }
   in.tau_b.assign(log.size(), Eigen::Vector3d::Constant(core::kMissing));
   in.tau_sampled_s.assign(log.size(), core::kMissing);
@@ -96,11 +86,6 @@ void thrust_series(const EstimateRequest& q, const core::Log& log,
     in.tau_b[i] = feedback.tau_b(t, a);
     in.tau_sampled_s[i] = oldest;
   }
-}
-
-// Whether the log has `role` with a valid sample.
-bool has_channel(const core::Log& log, const std::string& role) {
-  return log.has(role) && has_valid_sample(log.values(role));
 }
 
 // The first of NAME.ax, .ay, .az without a valid sample in the log; empty: none.
@@ -271,7 +256,7 @@ EstimateReport run_estimate(const EstimateRequest& q) {
   LogSource source = q.source;
   source.window_from_s = q.t_from_s;
   source.window_to_s = q.t_to_s;
-  LoadedLog loaded = source.load(wanted_role);
+  LoadedLog loaded = source.load(wanted_roles(q.mru));
   const core::Log& log = loaded.log;
   EstimateReport r;
   r.log = q.source.log;

@@ -8,6 +8,7 @@
 #include "dynpos/analysis/control_origin_track.hpp"
 #include "dynpos/analysis/options.hpp"
 #include "dynpos/core/error.hpp"
+#include "dynpos/core/samples.hpp"
 
 namespace dynpos::analysis {
 namespace {
@@ -18,10 +19,6 @@ bool wanted_role(const std::string& role) {
   }
   return role.rfind("thrust.", 0) == 0 || role.rfind("rpm.", 0) == 0 ||
          role.rfind("command.thrust.", 0) == 0 || role.rfind("command.rpm.", 0) == 0;
-}
-
-bool has_valid_sample(const std::vector<double>& x) {
-  return std::any_of(x.begin(), x.end(), [](double v) { return !std::isnan(v); });
 }
 
 // Each unit's feedback: its thrust when logged with a valid sample (unless use_rpm), else its
@@ -37,7 +34,7 @@ void read_units(const FailureTestRequest& request, const core::Log& log, Failure
     for (const char* kind : {"thrust", "rpm"}) {
       const std::string channel = std::string(kind) + "." + name;
       if ((request.use_rpm && channel.rfind("thrust.", 0) == 0) || !log.has(channel)) continue;
-      if (!has_valid_sample(log.values(channel))) {
+      if (!core::has_valid_sample(log.values(channel))) {
         report.notes.push_back(channel + " has no valid sample: left out");
         continue;
       }

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "dynpos/core/rotation.hpp"
+#include "dynpos/core/samples.hpp"
 
 namespace dynpos::analysis {
 namespace {
@@ -16,13 +17,9 @@ constexpr double kNever = -std::numeric_limits<double>::infinity();
 
 void check(const BridgeSeries& s) {
   const std::size_t n = s.t_s.size();
-  for (const std::vector<double>* v :
-       {&s.north_m, &s.east_m, &s.heading_rad, &s.roll_rad, &s.pitch_rad}) {
-    if (v->size() != n) throw std::invalid_argument("inertial bridge: the series differ in length");
-  }
-  if (s.accel_b.size() != n) {
-    throw std::invalid_argument("inertial bridge: the series differ in length");
-  }
+  const bool equal = s.accel_b.size() == n && s.north_m.size() == n && s.east_m.size() == n &&
+                     s.heading_rad.size() == n && s.roll_rad.size() == n && s.pitch_rad.size() == n;
+  if (!equal) throw std::invalid_argument("inertial bridge: the series differ in length");
   for (std::size_t i = 1; i < n; ++i) {
     if (!(s.t_s[i] > s.t_s[i - 1])) {
       throw std::invalid_argument("inertial bridge: time does not increase at row " +
@@ -31,23 +28,11 @@ void check(const BridgeSeries& s) {
   }
 }
 
-// An angle's last sample at each row while at most max_hold_s old, else NaN.
-std::vector<double> held(const std::vector<double>& t_s, const std::vector<double>& x,
-                         double max_hold_s) {
-  std::vector<double> out(x.size(), kNaN);
-  double last_t = kNever, last = kNaN;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    if (!std::isnan(x[i])) last_t = t_s[i], last = x[i];
-    if (t_s[i] - last_t <= max_hold_s) out[i] = last;
-  }
-  return out;
-}
-
 // R_nb at each row from the held attitude (NaN where an angle is missing or stale).
 std::vector<Eigen::Matrix3d> attitudes(const BridgeSeries& s, double max_hold_s) {
-  const std::vector<double> roll = held(s.t_s, s.roll_rad, max_hold_s);
-  const std::vector<double> pitch = held(s.t_s, s.pitch_rad, max_hold_s);
-  const std::vector<double> heading = held(s.t_s, s.heading_rad, max_hold_s);
+  const std::vector<double> roll = core::hold_samples(s.t_s, s.roll_rad, max_hold_s).value;
+  const std::vector<double> pitch = core::hold_samples(s.t_s, s.pitch_rad, max_hold_s).value;
+  const std::vector<double> heading = core::hold_samples(s.t_s, s.heading_rad, max_hold_s).value;
   std::vector<Eigen::Matrix3d> R(s.t_s.size(), Eigen::Matrix3d::Constant(kNaN));
   for (std::size_t i = 0; i < R.size(); ++i) {
     if (!std::isnan(roll[i]) && !std::isnan(pitch[i]) && !std::isnan(heading[i])) {
@@ -85,20 +70,22 @@ std::vector<Eigen::Vector2d> accel_n(const BridgeSeries& s, const std::vector<Ei
   return out;
 }
 
+bool has_fix(const BridgeSeries& s, std::size_t i) {
+  return !std::isnan(s.north_m[i]) && !std::isnan(s.east_m[i]);
+}
+
 // The length of the GNSS gap each row without a fix lies in (from the fix before to the fix
 // after, or the log's end) [s]; 0 on a fix.
 std::vector<double> gap_lengths(const BridgeSeries& s) {
   const std::size_t n = s.t_s.size();
-  std::vector<double> next_fix(n, n > 0 ? s.t_s.back() : 0.0), gap(n, 0.0);
+  std::vector<double> next_fix(n), gap(n);
   for (std::size_t i = n; i-- > 0;) {
-    const bool fix = !std::isnan(s.north_m[i]) && !std::isnan(s.east_m[i]);
-    next_fix[i] = fix ? s.t_s[i] : (i + 1 < n ? next_fix[i + 1] : s.t_s[i]);
+    next_fix[i] = has_fix(s, i) || i + 1 == n ? s.t_s[i] : next_fix[i + 1];
   }
   double last_fix = kNever;
   for (std::size_t i = 0; i < n; ++i) {
-    const bool fix = !std::isnan(s.north_m[i]) && !std::isnan(s.east_m[i]);
-    if (fix) last_fix = s.t_s[i];
-    gap[i] = fix ? 0.0 : next_fix[i] - last_fix;
+    if (has_fix(s, i)) last_fix = s.t_s[i];
+    gap[i] = has_fix(s, i) ? 0.0 : next_fix[i] - last_fix;
   }
   return gap;
 }
@@ -126,13 +113,11 @@ BridgedTrack bridge_gnss_gaps(const BridgeSeries& s, const Eigen::Vector3d& arm_
   }
   for (std::size_t i = 1; i < s.t_s.size(); ++i) {
     const Eigen::Vector2d arm_n = (R[i] * arm_b).head<2>();
-    const Eigen::Vector2d fix(s.north_m[i], s.east_m[i]);
     // Over (t_{i−1}, t_i] on the mean of the accelerations at its ends, then the fix at t_i
-    // moved to the MRU's point.
-    const Eigen::Vector2d p =
-        ins.step(fix.allFinite() ? Eigen::Vector2d(fix + arm_n) : Eigen::Vector2d::Constant(kNaN),
-                 0.5 * (a_n[i - 1] + a_n[i]), s.t_s[i] - s.t_s[i - 1]);
-    if (!fix.allFinite() && gap[i] > max_hold_s && ins.bridging() && arm_n.allFinite()) {
+    // moved to the MRU's point (NaN without one).
+    const Eigen::Vector2d p = ins.step(Eigen::Vector2d(s.north_m[i], s.east_m[i]) + arm_n,
+                                       0.5 * (a_n[i - 1] + a_n[i]), s.t_s[i] - s.t_s[i - 1]);
+    if (!has_fix(s, i) && gap[i] > max_hold_s && ins.bridging() && arm_n.allFinite()) {
       out.north_m[i] = p.x() - arm_n.x();
       out.east_m[i] = p.y() - arm_n.y();
       ++out.bridged_rows;

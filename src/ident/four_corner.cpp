@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "dynpos/core/error.hpp"
+#include "dynpos/core/samples.hpp"
 #include "dynpos/ident/control_origin.hpp"
 
 namespace dynpos::ident {
@@ -23,10 +24,6 @@ double wrap(double a) { return std::remainder(a, 2.0 * kPi); }
 
 double at(const std::vector<double>& x, std::size_t i) {
   return i < x.size() ? x[i] : std::nan("");
-}
-
-bool logged(const std::vector<double>& x) {
-  return std::any_of(x.begin(), x.end(), [](double v) { return !std::isnan(v); });
 }
 
 // The last valid sample of x at or before index i (NaN if none).
@@ -323,17 +320,18 @@ FourCornerResult analyse_four_corner(const FourCornerInput& in, const FourCorner
   if (in.t_s.size() < 2) {
     throw core::InputError({{}, {}, {}, "time"}, "the log has fewer than two rows");
   }
-  if (!logged(in.north_m) || !logged(in.east_m)) {
+  if (!core::has_valid_sample(in.north_m) || !core::has_valid_sample(in.east_m)) {
     throw core::InputError({{}, {}, {}, "north/east"}, "the position is not in the log",
                            "map north and east (e.g. --col north=gnss1.north --col "
                            "east=gnss1.east) or lat and lon");
   }
-  if (!logged(in.heading_rad)) {
+  if (!core::has_valid_sample(in.heading_rad)) {
     throw core::InputError({{}, {}, {}, "heading"}, "the heading is not in the log",
                            "map heading (e.g. --col heading=gyro)");
   }
-  const bool have_setpoints =
-      logged(in.setpoint_north_m) || logged(in.setpoint_east_m) || logged(in.setpoint_heading_rad);
+  const bool have_setpoints = core::has_valid_sample(in.setpoint_north_m) ||
+                              core::has_valid_sample(in.setpoint_east_m) ||
+                              core::has_valid_sample(in.setpoint_heading_rad);
   if (o.segmentation == LegSegmentation::kSetpoints && !have_setpoints) {
     throw core::InputError({{}, {}, {}, "setpoint.north"}, "the DP setpoints are not in the log",
                            "map setpoint.north, setpoint.east, setpoint.heading, or segment "
@@ -353,8 +351,9 @@ FourCornerResult analyse_four_corner(const FourCornerInput& in, const FourCorner
 namespace {
 
 FourCornerResult analyse_at_origin(const FourCornerInput& in, const FourCornerOptions& o) {
-  const bool have_setpoints =
-      logged(in.setpoint_north_m) || logged(in.setpoint_east_m) || logged(in.setpoint_heading_rad);
+  const bool have_setpoints = core::has_valid_sample(in.setpoint_north_m) ||
+                              core::has_valid_sample(in.setpoint_east_m) ||
+                              core::has_valid_sample(in.setpoint_heading_rad);
   FourCornerResult r;
   if (o.segmentation != LegSegmentation::kTrack && have_setpoints) {
     r.legs = setpoint_legs(in, o);

@@ -67,15 +67,19 @@ const std::filesystem::path& run_dir() {
 
 core::Log read_truth() { return io::read_csv_all(run_dir() / "truth.csv"); }
 
-analysis::EstimateReport estimate(const std::string& observer) {
-  const scenario::VesselConfig v = vessel();
+// The request on the log in `dir`: the DP antenna's fixes moved by its arm, mru1's attitude.
+analysis::EstimateRequest request(const std::filesystem::path& dir, const std::string& observer) {
   analysis::EstimateRequest q;
-  q.source.log = run_dir() / "log.csv";
+  q.source.log = dir / "log.csv";
   q.source.columns = {"north=gnss1.north", "east=gnss1.east", "roll=mru1.roll", "pitch=mru1.pitch"};
-  q.arm_m = v.sensors.gnss.front().lever_arm_b;
+  q.arm_m = vessel().sensors.gnss.front().lever_arm_b;
   q.observer = observer;
   q.tp_s = pure_dp().environment.tp_s;  // the operator enters the sea's T_p
-  return analysis::run_estimate(q);
+  return q;
+}
+
+analysis::EstimateReport estimate(const std::string& observer) {
+  return analysis::run_estimate(request(run_dir(), observer));
 }
 
 Eigen::Matrix3d rotation(double psi) {
@@ -247,13 +251,7 @@ TEST(EstimateValidation, AGnssDropoutIsBridgedOnTheLoggedMru) {
     return std::hypot(eta.x() - truth.values("lf.north")[j], eta.y() - truth.values("lf.east")[j]);
   };
   for (const std::string observer : {"ekf", "passive"}) {
-    analysis::EstimateRequest q;
-    q.source.log = dir / "log.csv";
-    q.source.columns = {"north=gnss1.north", "east=gnss1.east", "roll=mru1.roll",
-                        "pitch=mru1.pitch"};
-    q.arm_m = vessel().sensors.gnss.front().lever_arm_b;
-    q.observer = observer;
-    q.tp_s = spec.environment.tp_s;
+    analysis::EstimateRequest q = request(dir, observer);
     const analysis::EstimateReport bridged = analysis::run_estimate(q);
     q.mru = "none";
     const analysis::EstimateReport coasting = analysis::run_estimate(q);
@@ -282,12 +280,8 @@ TEST(EstimateValidation, TheBridgeRefusesAnAttitudeThatDoesNotFitTheReadings) {
   spec.setpoints = {{0.0, 0.0, 0.0, 45.0, "hold"}};
   const auto dir = std::filesystem::temp_directory_path() / "dynpos_estimate_validation_sf";
   scenario::write_scenario_run(scenario::run_scenario(spec, v, 1), dir);
-  analysis::EstimateRequest q;
-  q.source.log = dir / "log.csv";
-  q.source.columns = {"north=gnss1.north", "east=gnss1.east", "roll=mru1.roll", "pitch=mru1.pitch"};
-  q.arm_m = v.sensors.gnss.front().lever_arm_b;
-  q.tp_s = spec.environment.tp_s;
-  const analysis::EstimateReport ok = analysis::run_estimate(q);  // the right unit: bridged
+  analysis::EstimateRequest q = request(dir, "ekf");
+  const analysis::EstimateReport ok = analysis::run_estimate(q);  // its own roll: bridged
   EXPECT_EQ(ok.bridge_mru, "mru1");
   q.source.columns = {"north=gnss1.north", "east=gnss1.east", "heading=heading", "roll=heading",
                       "pitch=mru1.pitch"};
